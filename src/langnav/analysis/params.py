@@ -1,0 +1,37 @@
+"""Named analysis thresholds, in metres, so results do not change with the map's resolution."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class AnalysisParams:
+    #: Robot radius (TurtleBot 4 / Create 3 are ~0.17 m). Gaps narrower than 2x this are not passable.
+    robot_radius_m: float = 0.17
+    #: Clearance every computed goal keeps from occupied and unknown cells (the bench's 0.15 m + margin).
+    goal_clearance_m: float = 0.20
+    #: Door openings are between these widths (a narrow interior door to a double door).
+    door_min_width_m: float = 0.55
+    door_max_width_m: float = 1.6
+    #: A wall is at most this thick; door jambs are found within this depth.
+    door_max_depth_m: float = 0.45
+    #: Narrow passages: clear width between 2 x robot radius and this, longer than a door is deep.
+    passage_max_width_m: float = 1.0
+    passage_min_length_m: float = 0.6
+    #: Rooms smaller than this (m2) are merged into a neighbour: closets and segmentation slivers.
+    room_min_area_m2: float = 1.0
+    #: A space whose length / width exceeds this and whose width is below hallway_max_width_m is a hallway.
+    hallway_min_elongation: float = 3.0
+    hallway_max_width_m: float = 3.0
+    #: Occupied clusters smaller than this are noise; larger ones apart from the walls are obstacles.
+    obstacle_min_area_m2: float = 0.01
+    #: Unknown regions smaller than this are noise specks, not unexplored areas (bench README).
+    unexplored_min_area_m2: float = 0.05
+    #: Straight wall segments shorter than this are not reported.
+    wall_min_length_m: float = 0.5
+    #: Maximum deviation of wall points from their fitted segment.
+    wall_max_deviation_m: float = 0.1
+
+
+DEFAULT_PARAMS = AnalysisParams()

@@ -1,0 +1,1 @@
+"""Intent + map analysis + robot pose -> robot commands whose coordinates code computed."""

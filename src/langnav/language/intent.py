@@ -1,0 +1,133 @@
+"""The intent: what a prompt asks for, as data (the paper's prompt template).
+
+One :class:`Step` per instruction, in order. A step names a *reference element* and its
+*properties*, a *movement type* and a *movement detail*; never coordinates. This schema is
+also the JSON schema given to LLM translators; their answers are parsed into it and validated.
+"""
+
+from __future__ import annotations
+
+from enum import StrEnum
+from typing import Annotated, Literal
+
+from pydantic import BaseModel, ConfigDict, Field
+
+
+class Element(StrEnum):
+    DOOR = "door"
+    WALL = "wall"
+    ROOM = "room"
+    HALLWAY = "hallway"
+    NARROW_PASSAGE = "narrow_passage"
+    OBSTACLE = "obstacle"
+    CORNER = "corner"
+    UNEXPLORED_AREA = "unexplored_area"
+    NONE = "none"
+
+
+class Movement(StrEnum):
+    NAVIGATE = "navigate"   # go somewhere relative to an element
+    MOVE = "move"           # straight line: forward / backward / left / right
+    ROTATE = "rotate"       # turn in place
+    STOP = "stop"
+    FOLLOW = "follow"       # follow / drive along a wall or hallway
+    QUERY = "query"         # where are you, what path, show the map
+    EXPLORE = "explore"     # frontier exploration until done ("explore", "map this floor")
+
+
+class Detail(StrEnum):
+    TO = "to"
+    NEXT_TO = "next_to"
+    TOWARDS = "towards"
+    THROUGH = "through"
+    OPPOSITE_SIDE_OF = "opposite_side_of"
+    ALONG = "along"
+    BETWEEN = "between"
+    STOP_AT = "stop_at"
+    MIDDLE = "middle"
+
+
+class Side(StrEnum):
+    """Where the element lies relative to the robot (or, for corners and walls of a room,
+    which one: "the left corner", "the right wall")."""
+
+    LEFT = "left"
+    RIGHT = "right"
+    AHEAD = "ahead"
+    BEHIND = "behind"
+
+
+class Superlative(StrEnum):
+    NEAREST = "nearest"
+    FARTHEST = "farthest"
+    BIGGEST = "biggest"
+    SMALLEST = "smallest"
+    WIDEST = "widest"
+    NARROWEST = "narrowest"
+
+
+class Direction(StrEnum):
+    FORWARD = "forward"
+    BACKWARD = "backward"
+    LEFT = "left"
+    RIGHT = "right"
+    AROUND = "around"  # rotate 180 degrees, either way
+
+
+class Query(StrEnum):
+    POSE = "pose"
+    PATH = "path"
+    MAP = "map"
+
+
+class Amount(StrEnum):
+    """A move or turn given without a number."""
+
+    LITTLE = "little"   # "a bit", "slightly": 0.3 m or 20 degrees
+    DEFAULT = "default"  # "turn left" alone: 90 degrees
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True, use_enum_values=False)
+
+
+class ElementRef(_Model):
+    """A reference to one element of the map, by kind and the properties the words give."""
+
+    kind: Element
+    ordinal: Annotated[int, Field(ge=1, le=20)] | None = Field(
+        default=None, description="first = 1, second = 2 ... counted by distance from the robot")
+    superlative: Superlative | None = None
+    side: Side | None = Field(default=None, description="relative to the robot: left, right, ahead, behind")
+    in_current_room: bool = Field(default=False, description="'this room', 'the room you are in'")
+    within: Element | None = Field(
+        default=None, description="the space that contains it: 'the corner of the hallway' -> hallway")
+    name: Annotated[str, Field(max_length=80)] | None = Field(
+        default=None, description="a proper name the map cannot know ('kitchen', 'the desk')")
+
+
+class Step(_Model):
+    movement: Movement
+    detail: Detail | None = None
+    target: ElementRef | None = None
+    second_target: ElementRef | None = Field(default=None, description="the B of 'between A and B'")
+    direction: Direction | None = None
+    distance_m: Annotated[float, Field(ge=0, le=100)] | None = None
+    angle_deg: Annotated[float, Field(ge=0, le=3600)] | None = None
+    amount: Amount | None = None
+    query: Query | None = None
+    text: Annotated[str, Field(max_length=500)] = Field(default="", description="the words of this step")
+
+
+class Intent(_Model):
+    """The reading of a whole prompt. ``clarification`` is set (and ``steps`` may be empty) when
+    the right answer is to run nothing and explain or ask: out of scope, unknown names, unsafe."""
+
+    steps: list[Step] = Field(default_factory=list, max_length=20)
+    clarification: Annotated[str, Field(max_length=500)] | None = None
+    translator: str = "unknown"
+    confidence: Annotated[float, Field(ge=0, le=1)] = 1.0
+    unread: list[str] = Field(default_factory=list, description="parts of the prompt not understood")
+
+
+Mode = Literal["offline", "gemini", "openai", "local", "auto"]

@@ -1,0 +1,203 @@
+"""Reading and writing maps: map_server YAML (+PGM/PNG), bare images, and map_saver output.
+
+Map_server semantics (Nav2 ``nav2_map_server/src/map_io.cpp``):
+
+* the pixel shade is the mean of its colour channels, in [0, 1];
+* ``occ = 1 - shade`` (or ``shade`` when ``negate: 1``);
+* ``trinary``: occ > occupied_thresh -> occupied, occ < free_thresh -> free, otherwise unknown;
+* ``scale``: like trinary, but in-between values become 1..99 (and transparent pixels unknown);
+  langnav then reduces them with the ROS thresholds of :func:`langnav.maps.grid.from_ros_data`;
+* ``raw``: the pixel value *is* the ROS value (0..100; anything else unknown).
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from pathlib import Path
+from typing import Any, Final
+
+import numpy as np
+import numpy.typing as npt
+import yaml
+from PIL import Image, UnidentifiedImageError
+
+from langnav.maps.errors import MapError
+from langnav.maps.grid import FREE, MAX_CELLS, OCCUPIED, UNKNOWN, OccupancyGrid, from_ros_data
+
+log = logging.getLogger(__name__)
+
+#: Bare images (IPA / ROSE² style): pixel >= this is free.
+BARE_FREE_MIN: Final = 250
+#: Bare images: pixel <= this is occupied; values between are unknown.
+BARE_OCCUPIED_MAX: Final = 50
+#: Resolution assumed for bare images when none is given (the IPA authors' 5 cm).
+DEFAULT_BARE_RESOLUTION_M: Final = 0.05
+#: map_saver's defaults, also used when a YAML omits a threshold.
+DEFAULT_OCCUPIED_THRESH: Final = 0.65
+DEFAULT_FREE_THRESH: Final = 0.25
+MODES: Final = ("trinary", "scale", "raw")
+IMAGE_SUFFIXES: Final = (".pgm", ".png", ".bmp", ".jpg", ".jpeg", ".tif", ".tiff", ".gif")
+
+# PIL refuses decompression bombs itself; keep its limit in line with ours.
+Image.MAX_IMAGE_PIXELS = MAX_CELLS
+
+
+def load_map(path: str | Path, resolution_m: float | None = None) -> OccupancyGrid:
+    """Load a map_server YAML, or a bare image (with ``resolution_m``, default 0.05 m)."""
+    p = Path(path)
+    if not p.exists():
+        raise MapError(f"{p}: no such file")
+    if p.is_dir():
+        raise MapError(f"{p}: is a directory; give a map .yaml or an image")
+    if p.suffix.lower() in (".yaml", ".yml"):
+        if resolution_m is not None:
+            log.warning("%s: --resolution ignored, the YAML gives the resolution", p)
+        return load_map_yaml(p)
+    if p.suffix.lower() in IMAGE_SUFFIXES:
+        return load_bare_image(p, resolution_m if resolution_m is not None else DEFAULT_BARE_RESOLUTION_M)
+    raise MapError(f"{p}: unknown map type {p.suffix!r}; give a .yaml (map_server) or an image "
+                   f"({', '.join(IMAGE_SUFFIXES)})")
+
+
+def _read_yaml(path: Path) -> dict[str, Any]:
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise MapError(f"{path}: cannot read: {exc}") from exc
+    try:
+        doc = yaml.safe_load(text)
+    except yaml.YAMLError as exc:
+        raise MapError(f"{path}: not valid YAML: {exc}") from exc
+    if not isinstance(doc, dict):
+        raise MapError(f"{path}: expected a YAML mapping with image, resolution and origin")
+    return doc
+
+
+def _number(path: Path, doc: dict[str, Any], key: str, default: float | None = None) -> float:
+    if key not in doc:
+        if default is None:
+            raise MapError(f"{path}: missing required key {key!r}")
+        return default
+    val = doc[key]
+    if isinstance(val, bool) or not isinstance(val, int | float) or not math.isfinite(float(val)):
+        raise MapError(f"{path}: {key} must be a finite number, got {val!r}")
+    return float(val)
+
+
+def load_map_yaml(path: str | Path) -> OccupancyGrid:
+    """Load a ROS map_server map (YAML + image)."""
+    p = Path(path)
+    doc = _read_yaml(p)
+    image = doc.get("image")
+    if not isinstance(image, str) or not image:
+        raise MapError(f"{p}: missing or empty 'image' key")
+    resolution = _number(p, doc, "resolution")
+    origin = doc.get("origin")
+    if (not isinstance(origin, list) or len(origin) not in (2, 3)
+            or not all(isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v)
+                       for v in origin)):
+        raise MapError(f"{p}: origin must be [x, y, yaw] (numbers), got {origin!r}")
+    ox, oy = float(origin[0]), float(origin[1])
+    oyaw = float(origin[2]) if len(origin) == 3 else 0.0
+    negate = doc.get("negate", 0)
+    if negate not in (0, 1, True, False):
+        raise MapError(f"{p}: negate must be 0 or 1, got {negate!r}")
+    occ_th = _number(p, doc, "occupied_thresh", DEFAULT_OCCUPIED_THRESH)
+    free_th = _number(p, doc, "free_thresh", DEFAULT_FREE_THRESH)
+    if not (0.0 <= free_th < occ_th <= 1.0):
+        raise MapError(f"{p}: need 0 <= free_thresh < occupied_thresh <= 1, got "
+                       f"free_thresh={free_th}, occupied_thresh={occ_th}")
+    mode = doc.get("mode", "trinary")
+    if mode not in MODES:
+        raise MapError(f"{p}: mode {mode!r} is not one of {', '.join(MODES)}")
+    img_path = Path(image) if Path(image).is_absolute() else p.parent / image
+    pixels, alpha = _read_image(img_path)
+    ros = _pixels_to_ros(pixels, alpha, mode=mode, negate=bool(negate), occ_th=occ_th, free_th=free_th)
+    h, w = ros.shape
+    return from_ros_data(np.flipud(ros).reshape(-1), w, h, resolution, ox, oy, oyaw, source=str(p))
+
+
+def _read_image(path: Path) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64] | None]:
+    """Pixel shades in [0, 1] (mean of colour channels) and alpha in [0, 1] if any, image orientation."""
+    if not path.exists():
+        raise MapError(f"{path}: map image not found")
+    try:
+        with Image.open(path) as im:
+            im.load()
+            bands = im.getbands()
+            if im.mode in ("I", "I;16", "I;16B", "F"):
+                arr = np.asarray(im, dtype=np.float64)
+                top = 65535.0 if arr.max(initial=0) > 255 else 255.0
+                return np.clip(arr / top, 0, 1), None
+            has_alpha = "A" in bands
+            rgb = im.convert("RGBA" if has_alpha else ("RGB" if len(bands) >= 3 else "L"))
+            arr = np.asarray(rgb, dtype=np.float64) / 255.0
+    except Image.DecompressionBombError as exc:
+        raise MapError(f"{path}: image is absurdly large ({exc})") from exc
+    except UnidentifiedImageError as exc:
+        raise MapError(f"{path}: not a readable image (bad or unknown header)") from exc
+    except (OSError, SyntaxError, ValueError) as exc:
+        raise MapError(f"{path}: broken image data: {exc}") from exc
+    if arr.ndim == 2:
+        return arr, None
+    if has_alpha:
+        return arr[..., :-1].mean(axis=2), arr[..., -1]
+    return arr.mean(axis=2), None
+
+
+def _pixels_to_ros(shade: npt.NDArray[np.float64], alpha: npt.NDArray[np.float64] | None, *, mode: str,
+                   negate: bool, occ_th: float, free_th: float) -> npt.NDArray[np.int16]:
+    """map_server's per-pixel rule -> ROS values (-1, 0..100), image orientation."""
+    if mode == "raw":
+        raw = np.rint(shade * 255.0).astype(np.int16)
+        return np.where(raw <= 100, raw, -1).astype(np.int16)
+    occ = shade if negate else 1.0 - shade
+    out = np.full(shade.shape, -1, dtype=np.int16)
+    out[occ > occ_th] = 100
+    out[occ < free_th] = 0
+    if mode == "scale":
+        mid = (occ >= free_th) & (occ <= occ_th)
+        out[mid] = np.rint((occ[mid] - free_th) / (occ_th - free_th) * 99.0).astype(np.int16)
+        if alpha is not None:
+            out[alpha < 1.0] = -1
+    return out
+
+
+def load_bare_image(path: str | Path, resolution_m: float = DEFAULT_BARE_RESOLUTION_M) -> OccupancyGrid:
+    """A bare map image (IPA / ROSE² style): >= 250 free, <= 50 occupied, between unknown. Origin 0, 0."""
+    p = Path(path)
+    shade, alpha = _read_image(p)
+    val = np.rint(shade * 255.0)
+    cells = np.full(val.shape, UNKNOWN, dtype=np.int8)
+    cells[val >= BARE_FREE_MIN] = FREE
+    cells[val <= BARE_OCCUPIED_MAX] = OCCUPIED
+    if alpha is not None:
+        cells[alpha < 0.5] = UNKNOWN
+    return OccupancyGrid(np.flipud(cells).copy(), float(resolution_m), 0.0, 0.0, 0.0, source=str(p))
+
+
+def save_map(grid: OccupancyGrid, yaml_path: str | Path) -> tuple[Path, Path]:
+    """Save as map_saver does: a trinary P5 PGM (0/205/254) beside a YAML. Returns both paths."""
+    y = Path(yaml_path)
+    if y.suffix.lower() not in (".yaml", ".yml"):
+        y = y.with_suffix(".yaml")
+    pgm = y.with_suffix(".pgm")
+    y.parent.mkdir(parents=True, exist_ok=True)
+    img = grid.to_image()
+    header = f"P5\n# CREATOR: langnav {grid.resolution_m:.3f} m/pix\n{grid.width} {grid.height}\n255\n"
+    pgm.write_bytes(header.encode("ascii") + img.tobytes())
+    doc = {
+        "image": pgm.name,
+        "mode": "trinary",
+        "resolution": float(grid.resolution_m),
+        "origin": [float(grid.origin_x_m), float(grid.origin_y_m), float(grid.origin_yaw_rad)],
+        "negate": 0,
+        "occupied_thresh": DEFAULT_OCCUPIED_THRESH,
+        "free_thresh": DEFAULT_FREE_THRESH,
+    }
+    y.write_text(yaml.safe_dump(doc, sort_keys=False), encoding="utf-8")
+    return y, pgm
+
+
+__all__ = ["FREE", "OCCUPIED", "UNKNOWN", "load_bare_image", "load_map", "load_map_yaml", "save_map"]
