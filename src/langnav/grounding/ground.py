@@ -1,0 +1,663 @@
+"""Intent + map analysis + robot pose -> robot commands, coordinates computed here, step by step.
+
+Each step is read from where the earlier steps leave the robot: a NavigateThroughPoses ends at its
+last pose, heading along its last segment; Move and Rotate update the pose. The meanings of the
+words are those of ``../shared/bench/README.md``; every goal is a free cell at least
+``params.goal_clearance_m`` from occupied and unknown cells and reachable from the robot.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Final, Literal
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from langnav.analysis.elements import (
+    Corner,
+    Door,
+    Element,
+    ElementKind,
+    MapAnalysis,
+    NarrowPassage,
+    Obstacle,
+    Room,
+    UnexploredArea,
+    reference_point,
+)
+from langnav.analysis.params import AnalysisParams
+from langnav.grounding.errors import GroundingError
+from langnav.grounding.geometry import (
+    BoolArray,
+    FloatArray,
+    FreeSpace,
+    Point,
+    Pose,
+    free_space_for,
+    nearest_point,
+    room_mask,
+    segment_distances,
+    unit,
+)
+from langnav.grounding.selection import (
+    WallLine,
+    describe_ref,
+    select,
+    select_pair,
+    select_wall,
+    space_of,
+)
+from langnav.language.intent import (
+    Amount,
+    Detail,
+    Direction,
+    ElementRef,
+    Intent,
+    Movement,
+    Query,
+    Step,
+)
+from langnav.language.intent import Element as Kind
+from langnav.plan.commands import (
+    Command,
+    GetCurrentPath,
+    GetMap,
+    GetRobotPoseLast,
+    Move,
+    NavigateThroughPoses,
+    Rotate,
+    Stop,
+    steps_for_angle,
+    steps_for_distance,
+)
+
+# -- distances of the goals, each inside the README's tolerance with room to snap to a free cell ---
+#: "to the door": stand this far before the door centre, on the robot's side (README: within 0.75 m).
+DOOR_STANDOFF_M: Final = 0.4
+DOOR_GOAL_MAX_M: Final = 0.65
+#: "through": a pose this far before the opening, then one this far past it (README: within 2 m).
+THROUGH_BEFORE_M: Final = 0.5
+THROUGH_BEYOND_M: Final = 0.8
+THROUGH_MIN_PAST_M: Final = 0.3
+THROUGH_MAX_M: Final = 1.8
+#: "to the corner": README 1.0 m from the meeting point of the walls.
+CORNER_GOAL_MAX_M: Final = 0.9
+#: "next to X": stand this far from X's edge, never farther than NEXT_TO_MAX_M (README: 1.0 m).
+NEXT_TO_STANDOFF_M: Final = 0.45
+NEXT_TO_MAX_M: Final = 0.9
+#: "towards an unexplored area": README about 1.0 m from its frontier.
+FRONTIER_GOAL_MAX_M: Final = 0.9
+#: frontier cells tried (nearest first) before giving up on an area.
+FRONTIER_TRIES: Final = 400
+#: "middle of the room", "between A and B": README 0.75 m.
+MIDDLE_GOAL_MAX_M: Final = 0.65
+#: "along the wall": README within 1.0 m of the wall; poses every ALONG_SPACING_M, the last one
+#: ALONG_END_MARGIN_M before the wall's end.
+ALONG_OFFSET_M: Final = 0.5
+ALONG_MAX_M: Final = 0.9
+ALONG_SPACING_M: Final = 2.5
+ALONG_END_MARGIN_M: Final = 0.5
+ALONG_MIN_RUN_M: Final = 1.0
+ALONG_BACKOFF_M: Final = 0.2
+#: "a little": README 0.15-0.5 m and 10-40 deg.
+LITTLE_MOVE_M: Final = 0.3
+LITTLE_TURN_DEG: Final = 20.0
+#: "turn left" alone is a quarter turn; "move forward" alone is one metre.
+DEFAULT_TURN_DEG: Final = 90.0
+DEFAULT_MOVE_M: Final = 1.0
+#: Named places: the goal lies within this distance of the remembered point.
+NAMED_PLACE_MAX_M: Final = 0.75
+#: "opposite side of a room": the far third (README).
+OPPOSITE_FRACTION: Final = 2.0 / 3.0
+
+
+@dataclass(frozen=True)
+class GroundedStep:
+    """One intent step made concrete. ``explore`` marks frontier exploration: the executor keeps
+    choosing frontiers after the first goal until none is left."""
+
+    index: int
+    step: Step
+    commands: tuple[Command, ...]
+    start_pose: Pose
+    end_pose: Pose
+    note: str
+    element_ids: tuple[str, ...] = ()
+    explore: bool = False
+    messages: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class GroundedPlan:
+    steps: tuple[GroundedStep, ...]
+    start_pose: Pose
+    messages: tuple[str, ...] = field(default=())
+
+    @property
+    def commands(self) -> list[Command]:
+        return [c for s in self.steps for c in s.commands]
+
+    @property
+    def end_pose(self) -> Pose:
+        return self.steps[-1].end_pose if self.steps else self.start_pose
+
+
+def as_pose(pose: Pose | Sequence[float]) -> Pose:
+    """A Pose, or (x_m, y_m, yaw_deg) as the bench and the CLI give it."""
+    if isinstance(pose, Pose):
+        return pose
+    x, y, yaw = (float(v) for v in pose)
+    if not all(math.isfinite(v) for v in (x, y, yaw)):
+        raise GroundingError(f"the robot pose {tuple(pose)} is not a finite (x, y, yaw) triple")
+    return Pose.from_deg(x, y, yaw)
+
+
+def ground(intent: Intent, analysis: MapAnalysis, pose: Pose | Sequence[float], *,
+           params: AnalysisParams | None = None,
+           named_places: Mapping[str, Point] | None = None) -> GroundedPlan:
+    """Every step of ``intent`` as commands, each read from where the previous ones leave the robot.
+
+    Raises GroundingError with a sentence for the user when a step names something the map
+    does not have, or asks for something unsafe (a move into a wall).
+    """
+    if intent.clarification and not intent.steps:
+        raise GroundingError(intent.clarification)
+    if not intent.steps:
+        raise GroundingError("I did not find an instruction in that; tell me where to go, e.g. "
+                             "'go to the nearest door'.")
+    p = params or analysis.params
+    start = as_pose(pose)
+    ctx = _Ctx(analysis, free_space_for(analysis.grid, p), p, dict(named_places or {}))
+    steps: list[GroundedStep] = []
+    cur = start
+    for i, step in enumerate(intent.steps):
+        gs = ground_step(step, ctx, cur, i)
+        steps.append(gs)
+        cur = gs.end_pose
+    return GroundedPlan(tuple(steps), start)
+
+
+@dataclass
+class _Ctx:
+    analysis: MapAnalysis
+    space: FreeSpace
+    params: AnalysisParams
+    named: dict[str, Point]
+
+
+def ground_step(step: Step, ctx: _Ctx, pose: Pose, index: int = 0) -> GroundedStep:
+    """One step from ``pose``."""
+    m = step.movement
+    if m == Movement.STOP:
+        return GroundedStep(index, step, (Stop(note="stop now"),), pose, pose, "stop now")
+    if m == Movement.QUERY:
+        cmd: Command
+        if step.query == Query.PATH:
+            cmd = GetCurrentPath(note="report the path I am following")
+        elif step.query == Query.MAP:
+            cmd = GetMap(note="show the map")
+        else:
+            cmd = GetRobotPoseLast(note="report where I am")
+        return GroundedStep(index, step, (cmd,), pose, pose, cmd.note)
+    if m == Movement.ROTATE or (m == Movement.MOVE and step.direction == Direction.AROUND):
+        return _rotate(step, pose, index)
+    if m == Movement.MOVE or (m == Movement.NAVIGATE and step.target is None and step.direction is not None):
+        return _move(step, ctx, pose, index)
+    if m == Movement.EXPLORE:
+        return _explore(step, ctx, pose, index)
+    return _navigate(step, ctx, pose, index)
+
+
+# ------------------------------------------------------------------------------ rotate / move
+def _rotate(step: Step, pose: Pose, index: int) -> GroundedStep:
+    d = step.direction
+    direction: Literal["left", "right"]
+    if d == Direction.AROUND:
+        angle = step.angle_deg if step.angle_deg else 180.0
+        direction = "left"
+    elif d in (Direction.LEFT, Direction.RIGHT):
+        direction = "left" if d == Direction.LEFT else "right"
+        if step.angle_deg is not None:
+            angle = step.angle_deg
+        elif step.amount == Amount.LITTLE:
+            angle = LITTLE_TURN_DEG
+        else:
+            angle = DEFAULT_TURN_DEG
+    else:
+        raise GroundingError("Which way should I turn, left or right?")
+    if angle <= 0:
+        raise GroundingError("A turn of 0 degrees does nothing; say how far to turn, e.g. 'turn left 45 degrees'.")
+    n = steps_for_angle(angle)
+    sign = 1.0 if direction == "left" else -1.0
+    end = Pose(pose.x_m, pose.y_m, pose.yaw_rad + sign * math.radians(n * 10.0))
+    note = "turn around" if d == Direction.AROUND else f"turn {direction} {angle:g}°"
+    return GroundedStep(index, step, (Rotate(direction=direction, repeat=n, note=note),), pose, end, note)
+
+
+MoveDir = Literal["forward", "backward", "left", "right"]
+_MOVE_HEADING: Final[dict[Direction, tuple[MoveDir, float]]] = {
+    Direction.FORWARD: ("forward", 0.0), Direction.BACKWARD: ("backward", math.pi),
+    Direction.LEFT: ("left", math.pi / 2), Direction.RIGHT: ("right", -math.pi / 2)}
+
+
+def _move(step: Step, ctx: _Ctx, pose: Pose, index: int) -> GroundedStep:
+    d = step.direction or Direction.FORWARD
+    if d not in _MOVE_HEADING:
+        raise GroundingError(f"I can move forward, backward, left or right, not {d.value}.")
+    if step.distance_m is not None:
+        dist = step.distance_m
+    elif step.amount == Amount.LITTLE:
+        dist = LITTLE_MOVE_M
+    else:
+        dist = DEFAULT_MOVE_M
+    if dist <= 0:
+        raise GroundingError("A move of 0 m does nothing; say how far, e.g. 'move forward 1 meter'.")
+    n = steps_for_distance(dist)
+    real = n * 0.03
+    word, offset = _MOVE_HEADING[d]
+    a = pose.yaw_rad + offset
+    end_xy = (pose.x_m + real * math.cos(a), pose.y_m + real * math.sin(a))
+    clear, free_run = ctx.space.segment_clear(pose.xy, end_xy, ctx.params.robot_radius_m)
+    if not clear:
+        safe = max(0.0, free_run - 0.05)
+        raise GroundingError(
+            f"Moving {d.value} {dist:g} m would take me into a wall or an obstacle after about "
+            f"{free_run:.1f} m; I can safely move {d.value} at most {safe:.1f} m here. Nothing was run.")
+    note = f"move {d.value} {dist:g} m"
+    return GroundedStep(index, step, (Move(direction=word, repeat=n, note=note),), pose,
+                        Pose(end_xy[0], end_xy[1], pose.yaw_rad), note)
+
+
+# ------------------------------------------------------------------------------ navigation
+def _component(ctx: _Ctx, pose: Pose) -> int:
+    comp = ctx.space.component_at(pose.x_m, pose.y_m)
+    if comp == 0:
+        raise GroundingError(
+            f"I find no free space around my position ({pose.x_m:.2f}, {pose.y_m:.2f}); "
+            "check that my pose on the map is right before sending me anywhere.")
+    return comp
+
+
+def _nav_step(step: Step, pose: Pose, index: int, poses: list[Point], note: str,
+              ids: tuple[str, ...] = (), explore: bool = False, messages: tuple[str, ...] = ()) -> GroundedStep:
+    cmd = NavigateThroughPoses(poses=[[round(x, 3), round(y, 3)] for x, y in poses], note=note)
+    prev = pose.xy if len(poses) == 1 else poses[-2]
+    last = poses[-1]
+    yaw = math.atan2(last[1] - prev[1], last[0] - prev[0]) if math.dist(prev, last) > 1e-6 else pose.yaw_rad
+    return GroundedStep(index, step, (cmd,), pose, Pose(last[0], last[1], yaw), note, ids, explore, messages)
+
+
+def _navigate(step: Step, ctx: _Ctx, pose: Pose, index: int) -> GroundedStep:
+    ref = step.target
+    detail = step.detail or Detail.TO
+    if ref is None:
+        if detail in (Detail.MIDDLE, Detail.OPPOSITE_SIDE_OF):
+            ref = ElementRef(kind=Kind.ROOM, in_current_room=True)
+        else:
+            raise GroundingError("Where should I go? Name a place on the map, e.g. 'the door on your left'.")
+    if ref.name and ref.name.lower() in {k.lower() for k in ctx.named}:
+        xy = next(v for k, v in ctx.named.items() if k.lower() == ref.name.lower())
+        comp = _component(ctx, pose)
+        goal = ctx.space.safe_point_near(xy, comp, NAMED_PLACE_MAX_M)
+        if goal is None:
+            raise GroundingError(f"I cannot reach '{ref.name}' from here: no free space I can get to near it.")
+        return _nav_step(step, pose, index, [goal], f"to {ref.name}")
+    comp = _component(ctx, pose)
+    if detail == Detail.BETWEEN:
+        return _between(step, ref, ctx, pose, comp, index)
+    if step.movement == Movement.FOLLOW or detail == Detail.ALONG:
+        if ref.kind == Kind.WALL:
+            return _along_wall(step, ref, ctx, pose, comp, index)
+        if ref.kind in (Kind.HALLWAY, Kind.ROOM):
+            return _follow_space(step, ref, ctx, pose, comp, index)
+        raise GroundingError(f"I can follow a wall or a hallway, not {describe_ref(ref)}.")
+    if ref.kind == Kind.WALL:
+        wall = select_wall(ref, ctx.analysis, pose)
+        goal = _next_to_wall(wall, ctx, pose, comp)
+        return _nav_step(step, pose, index, [goal], f"next to {describe_ref(ref)}", wall.ids)
+    if ref.kind in (Kind.ROOM, Kind.HALLWAY) and detail in (Detail.MIDDLE, Detail.OPPOSITE_SIDE_OF, Detail.TO,
+                                                          Detail.STOP_AT, Detail.TOWARDS, Detail.NEXT_TO,
+                                                          Detail.THROUGH):
+        room = select(ref, ctx.analysis, pose)
+        assert isinstance(room, Room)
+        return _room_goal(step, ref, room, detail, ctx, pose, comp, index)
+    if ref.kind == Kind.UNEXPLORED_AREA and detail == Detail.MIDDLE:
+        detail = Detail.TOWARDS
+    e = select(ref, ctx.analysis, pose)
+    desc = describe_ref(ref)
+    if detail == Detail.THROUGH and isinstance(e, Door | NarrowPassage):
+        poses = _through(e, ctx, pose, comp, desc)
+        return _nav_step(step, pose, index, poses, f"through {desc}", (e.id,))
+    goal = _goal_at(e, detail, ctx, pose, comp, desc)
+    verb = {Detail.NEXT_TO: "next to", Detail.TOWARDS: "towards"}.get(detail, "to")
+    return _nav_step(step, pose, index, [goal], f"{verb} {desc}", (e.id,))
+
+
+def _goal_at(e: Element, detail: Detail, ctx: _Ctx, pose: Pose, comp: int, desc: str) -> Point:
+    """The goal for 'to / at / next to / towards' an element (not rooms, walls)."""
+    goal: Point | None
+    if isinstance(e, Door):
+        goal = _door_near_side(e, ctx, pose, comp)
+    elif isinstance(e, Corner):
+        goal = None
+        if ctx.space.is_goal_ok(*e.approach, component=comp) and math.dist(e.approach, e.point) <= CORNER_GOAL_MAX_M:
+            goal = ctx.space.cell_centre(*e.approach)
+            if not ctx.space.is_goal_ok(*goal, component=comp):
+                goal = None
+        if goal is None:
+            goal = ctx.space.safe_point_near(e.point, comp, CORNER_GOAL_MAX_M, prefer=e.approach)
+    elif isinstance(e, Obstacle):
+        goal = _next_to_cells(e.cells_xy if len(e.cells_xy) else np.array([e.centroid]), ctx, pose, comp)
+    elif isinstance(e, UnexploredArea):
+        goal = _towards_frontier(e, ctx, pose, comp)
+    elif isinstance(e, NarrowPassage):
+        near = min(e.ends, key=lambda p: math.dist(p, pose.xy))
+        goal = ctx.space.safe_point_near(near, comp, DOOR_GOAL_MAX_M, prefer=near)
+    else:
+        goal = ctx.space.safe_point_near(reference_point(e), comp, NEXT_TO_MAX_M)
+    if goal is None:
+        raise GroundingError(f"I cannot get to {desc}: there is no free space I can reach next to it.")
+    return goal
+
+
+def _door_normal(d: Door) -> Point:
+    (ax, ay), (bx, by) = d.jambs
+    if math.hypot(bx - ax, by - ay) > 1e-6:
+        return unit((-(by - ay), bx - ax))
+    if math.hypot(*d.normal) > 1e-6:
+        return unit(d.normal)
+    raise GroundingError(f"door {d.id} has no direction; the map analysis gave it neither jambs nor a normal")
+
+
+def _robot_side_normal(centre: Point, normal: Point, pose: Pose) -> Point:
+    """The door normal pointing to the robot's side of the opening."""
+    s = (pose.x_m - centre[0]) * normal[0] + (pose.y_m - centre[1]) * normal[1]
+    if abs(s) < 0.1:  # standing in the opening: the side it came from is behind its heading
+        hx, hy = pose.heading()
+        s = -(hx * normal[0] + hy * normal[1])
+    return normal if s >= 0 else (-normal[0], -normal[1])
+
+
+def _side_filter(centre: Point, n: Point, min_dot: float):  # type: ignore[no-untyped-def]
+    def where(xs: FloatArray, ys: FloatArray) -> BoolArray:
+        return np.asarray((xs - centre[0]) * n[0] + (ys - centre[1]) * n[1] >= min_dot, dtype=bool)
+    return where
+
+
+def _door_near_side(d: Door, ctx: _Ctx, pose: Pose, comp: int) -> Point | None:
+    n = _robot_side_normal(d.center, _door_normal(d), pose)
+    prefer = (d.center[0] + n[0] * DOOR_STANDOFF_M, d.center[1] + n[1] * DOOR_STANDOFF_M)
+    goal = ctx.space.safe_point_near(d.center, comp, DOOR_GOAL_MAX_M, prefer=prefer,
+                                     where=_side_filter(d.center, n, 0.0))
+    return goal or ctx.space.safe_point_near(d.center, comp, DOOR_GOAL_MAX_M, prefer=prefer)
+
+
+def _through(e: Door | NarrowPassage, ctx: _Ctx, pose: Pose, comp: int, desc: str) -> list[Point]:
+    if isinstance(e, Door):
+        n_near = _robot_side_normal(e.center, _door_normal(e), pose)
+        near_mouth = far_mouth = e.center
+    else:
+        a, b = e.ends
+        if math.dist(a, b) < 1e-6:
+            raise GroundingError(f"{desc} has no length in the map analysis; I cannot tell its two ends apart")
+        near_mouth, far_mouth = (a, b) if math.dist(a, pose.xy) <= math.dist(b, pose.xy) else (b, a)
+        axis = unit((far_mouth[0] - near_mouth[0], far_mouth[1] - near_mouth[1]))
+        n_near = (-axis[0], -axis[1])
+    n_far = (-n_near[0], -n_near[1])
+    beyond_t = (far_mouth[0] + n_far[0] * THROUGH_BEYOND_M, far_mouth[1] + n_far[1] * THROUGH_BEYOND_M)
+    beyond = ctx.space.safe_point_near(far_mouth, comp, THROUGH_MAX_M, prefer=beyond_t,
+                                       where=_side_filter(far_mouth, n_far, THROUGH_MIN_PAST_M))
+    if beyond is None:
+        raise GroundingError(f"I cannot go through {desc}: there is no free space I can reach on its far side.")
+    poses: list[Point] = []
+    before_t = (near_mouth[0] + n_near[0] * THROUGH_BEFORE_M, near_mouth[1] + n_near[1] * THROUGH_BEFORE_M)
+    if math.dist(pose.xy, near_mouth) > THROUGH_BEFORE_M + 0.2:
+        before = ctx.space.safe_point_near(before_t, comp, 0.4, where=_side_filter(near_mouth, n_near, 0.1))
+        if before is not None:
+            poses.append(before)
+    if isinstance(e, NarrowPassage):
+        mid = ctx.space.safe_point_near(e.center, comp, min(0.3, e.length_m / 2))
+        if mid is not None:
+            poses.append(mid)
+    poses.append(beyond)
+    return poses
+
+
+def _kdtree_where(cells: FloatArray, max_m: float):  # type: ignore[no-untyped-def]
+    tree = cKDTree(np.asarray(cells, dtype=float).reshape(-1, 2))
+
+    def where(xs: FloatArray, ys: FloatArray) -> BoolArray:
+        d, _ = tree.query(np.column_stack([xs.ravel(), ys.ravel()]), distance_upper_bound=max_m + 1e-6)
+        return np.asarray(np.isfinite(d).reshape(xs.shape), dtype=bool)
+    return where
+
+
+def _next_to_cells(cells: FloatArray, ctx: _Ctx, pose: Pose, comp: int) -> Point | None:
+    """A free point within NEXT_TO_MAX_M of the nearest of ``cells``, on the robot's side."""
+    _, q = nearest_point(pose.xy, cells)
+    dx, dy = pose.x_m - q[0], pose.y_m - q[1]
+    n = unit((dx, dy)) if math.hypot(dx, dy) > 1e-6 else (-pose.heading()[0], -pose.heading()[1])
+    prefer = (q[0] + n[0] * NEXT_TO_STANDOFF_M, q[1] + n[1] * NEXT_TO_STANDOFF_M)
+    return ctx.space.safe_point_near(q, comp, NEXT_TO_MAX_M + 0.5, prefer=prefer,
+                                     where=_kdtree_where(cells, NEXT_TO_MAX_M))
+
+
+def _towards_frontier(u: UnexploredArea, ctx: _Ctx, pose: Pose, comp: int) -> Point | None:
+    if len(u.frontier) == 0:
+        return None
+    f = np.asarray(u.frontier, dtype=float).reshape(-1, 2)
+    order = np.argsort(np.hypot(f[:, 0] - pose.x_m, f[:, 1] - pose.y_m))
+    stride = max(1, len(order) // FRONTIER_TRIES)
+    for i in order[::stride]:
+        p = (float(f[i, 0]), float(f[i, 1]))
+        g = ctx.space.safe_point_near(p, comp, FRONTIER_GOAL_MAX_M)
+        if g is not None:
+            return g
+    return None
+
+
+def _room_cells_mask(ctx: _Ctx, room: Room) -> BoolArray:
+    return room_mask(ctx.analysis.labels, room.label)
+
+
+def _room_goal(step: Step, ref: ElementRef, room: Room, detail: Detail, ctx: _Ctx, pose: Pose, comp: int,
+               index: int) -> GroundedStep:
+    desc = describe_ref(ref)
+    mask = _room_cells_mask(ctx, room)
+    label = room.label
+    labels = ctx.analysis.labels
+    grid = ctx.analysis.grid
+
+    def in_room(xs: FloatArray, ys: FloatArray) -> BoolArray:
+        rr, cc = grid.world_to_index(xs, ys)
+        ok = grid.in_bounds(rr, cc)
+        out = np.zeros(xs.shape, dtype=bool)
+        out[ok] = labels[rr[ok], cc[ok]] == label
+        return out
+
+    messages: tuple[str, ...] = ()
+    if detail == Detail.OPPOSITE_SIDE_OF:
+        goal = _opposite_side(room, mask, ctx, pose, comp)
+        if goal is None:
+            raise GroundingError(f"I cannot reach the far side of {desc}.")
+        return _nav_step(step, pose, index, [goal], f"to the opposite side of {desc}", (room.id,))
+    goal = ctx.space.safe_point_near(room.centroid, comp, MIDDLE_GOAL_MAX_M, where=in_room)
+    if goal is None:
+        goal = ctx.space.best_in_mask(mask, comp, room.centroid)
+        if goal is None:
+            raise GroundingError(f"I cannot get into {desc}: none of its free space is reachable from here.")
+        if detail == Detail.MIDDLE:
+            messages = (f"The middle of {desc} is taken up; I will stop at the nearest free spot, "
+                        f"{math.dist(goal, room.centroid):.1f} m from it.",)
+    verb = "to the middle of" if detail == Detail.MIDDLE else "into"
+    return _nav_step(step, pose, index, [goal], f"{verb} {desc}", (room.id,), messages=messages)
+
+
+def _opposite_side(room: Room, mask: BoolArray, ctx: _Ctx, pose: Pose, comp: int) -> Point | None:
+    xs, ys = ctx.space.xs[mask], ctx.space.ys[mask]
+    if xs.size == 0:
+        return None
+    v = (room.centroid[0] - pose.x_m, room.centroid[1] - pose.y_m)
+    d = unit(v) if math.hypot(*v) > 0.5 else pose.heading()
+    t = (xs - pose.x_m) * d[0] + (ys - pose.y_m) * d[1]
+    cut = t.min() + OPPOSITE_FRACTION * (t.max() - t.min())
+    far = mask.copy()
+    far[mask] = t >= cut
+    sel = t >= cut
+    prefer = (float(xs[sel].mean()), float(ys[sel].mean()))
+    return ctx.space.best_in_mask(far, comp, prefer)
+
+
+def _between(step: Step, ref: ElementRef, ctx: _Ctx, pose: Pose, comp: int, index: int) -> GroundedStep:
+    a, b = select_pair(ref, step.second_target, ctx.analysis, pose)
+    pa, pb = reference_point(a), reference_point(b)
+    mid = ((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2)
+    goal = ctx.space.safe_point_near(mid, comp, MIDDLE_GOAL_MAX_M)
+    second = describe_ref(step.second_target) if step.second_target else "the other"
+    if goal is None:
+        raise GroundingError(f"There is no free space I can reach between {describe_ref(ref)} and {second}.")
+    note = f"between {describe_ref(ref)} and {second}" if step.second_target else \
+        f"between the two {describe_ref(ref).removeprefix('the ')}s"
+    return _nav_step(step, pose, index, [goal], note, (a.id, b.id))
+
+
+# ------------------------------------------------------------------------------ walls, hallways
+def _oriented(wall: WallLine, pose: Pose) -> tuple[Point, Point, Point]:
+    """(start, direction of travel, inward normal toward the robot) of a wall line."""
+    d = wall.direction
+    hx, hy = pose.heading()
+    start, end = wall.start, wall.end
+    dot = d[0] * hx + d[1] * hy
+    t_robot = (pose.x_m - start[0]) * d[0] + (pose.y_m - start[1]) * d[1]
+    # facing the wall: go towards its farther end
+    forward = (wall.length_m - t_robot) >= t_robot if abs(dot) < 0.2 else dot > 0
+    if not forward:
+        start, d = end, (-d[0], -d[1])
+    n = wall.inward
+    if (pose.x_m - start[0]) * n[0] + (pose.y_m - start[1]) * n[1] < 0:
+        n = (-n[0], -n[1])
+    return start, d, n
+
+
+def _next_to_wall(wall: WallLine, ctx: _Ctx, pose: Pose, comp: int) -> Point:
+    start, d, n = _oriented(wall, pose)
+    t = min(max((pose.x_m - start[0]) * d[0] + (pose.y_m - start[1]) * d[1], 0.0), wall.length_m)
+    base = (start[0] + d[0] * t, start[1] + d[1] * t)
+    prefer = (base[0] + n[0] * NEXT_TO_STANDOFF_M, base[1] + n[1] * NEXT_TO_STANDOFF_M)
+    goal = ctx.space.safe_point_near(prefer, comp, NEXT_TO_MAX_M, where=_wall_band(wall, n, NEXT_TO_MAX_M))
+    if goal is None:
+        raise GroundingError("I cannot get next to that wall: no free space I can reach beside it.")
+    return goal
+
+
+def _wall_band(wall: WallLine, n: Point, max_m: float):  # type: ignore[no-untyped-def]
+    def where(xs: FloatArray, ys: FloatArray) -> BoolArray:
+        side = (xs - wall.start[0]) * n[0] + (ys - wall.start[1]) * n[1] > 0
+        return np.asarray(side & (segment_distances(xs, ys, wall.start, wall.end) <= max_m), dtype=bool)
+    return where
+
+
+def _along_wall(step: Step, ref: ElementRef, ctx: _Ctx, pose: Pose, comp: int, index: int) -> GroundedStep:
+    wall = select_wall(ref, ctx.analysis, pose)
+    desc = describe_ref(ref)
+    start, d, n = _oriented(wall, pose)
+    length = wall.length_m
+    t0 = min(max((pose.x_m - start[0]) * d[0] + (pose.y_m - start[1]) * d[1], 0.0), length)
+    t_end = length - ALONG_END_MARGIN_M
+    if t_end - t0 < ALONG_MIN_RUN_M:
+        raise GroundingError(f"I am already at the end of {desc}; turn around to drive along it the other way.")
+    band = _wall_band(wall, n, ALONG_MAX_M)
+
+    def at(t: float, radius: float) -> Point | None:
+        base = (start[0] + d[0] * t, start[1] + d[1] * t)
+        target = (base[0] + n[0] * ALONG_OFFSET_M, base[1] + n[1] * ALONG_OFFSET_M)
+        return ctx.space.safe_point_near(target, comp, radius, where=band)
+
+    end: Point | None = None
+    t = t_end
+    while t > t0 + ALONG_MIN_RUN_M / 2:
+        end = at(t, 0.5)
+        if end is not None:
+            break
+        t -= ALONG_BACKOFF_M
+    if end is None:
+        raise GroundingError(f"I cannot drive along {desc}: there is no free space I can reach beside it.")
+    t_last = t
+    k = max(2, math.ceil((t_last - t0) / ALONG_SPACING_M))
+    poses: list[Point] = []
+    for i in range(1, k):
+        p = at(t0 + (t_last - t0) * i / k, 0.5)
+        if p is not None and (not poses or math.dist(p, poses[-1]) > 0.3):
+            poses.append(p)
+    poses.append(end)
+    return _nav_step(step, pose, index, poses, f"along {desc}", wall.ids)
+
+
+def _follow_space(step: Step, ref: ElementRef, ctx: _Ctx, pose: Pose, comp: int, index: int) -> GroundedStep:
+    """Follow a hallway (or a room) along its long axis, to its far end in the direction of travel."""
+    if ref.ordinal is None and ref.superlative is None and ref.side is None:
+        here = space_of(ctx.analysis, pose.xy)
+        want = ElementKind.HALLWAY if ref.kind == Kind.HALLWAY else ElementKind.ROOM
+        room = here if here is not None and here.kind == want else select(ref, ctx.analysis, pose)
+    else:
+        room = select(ref, ctx.analysis, pose)
+    assert isinstance(room, Room)
+    desc = describe_ref(ref)
+    mask = _room_cells_mask(ctx, room)
+    xs, ys = ctx.space.xs[mask], ctx.space.ys[mask]
+    if xs.size < 2:
+        raise GroundingError(f"{desc} has no free space to follow.")
+    c = (float(xs.mean()), float(ys.mean()))
+    cov = np.cov(np.vstack([xs - c[0], ys - c[1]]))
+    w, v = np.linalg.eigh(cov)
+    axis = (float(v[0, int(np.argmax(w))]), float(v[1, int(np.argmax(w))]))
+    t = (xs - c[0]) * axis[0] + (ys - c[1]) * axis[1]
+    hx, hy = pose.heading()
+    tr = (pose.x_m - c[0]) * axis[0] + (pose.y_m - c[1]) * axis[1]
+    dot = axis[0] * hx + axis[1] * hy
+    if abs(dot) < 0.2:
+        sign = 1.0 if (t.max() - tr) >= (tr - t.min()) else -1.0
+    else:
+        sign = 1.0 if dot > 0 else -1.0
+    t_far = (t.max() if sign > 0 else t.min()) - sign * ALONG_END_MARGIN_M
+    run = (t_far - tr) * sign
+    if run < ALONG_MIN_RUN_M:
+        raise GroundingError(f"I am already at the end of {desc}; turn around to follow it the other way.")
+    k = max(2, math.ceil(run / ALONG_SPACING_M))
+    poses: list[Point] = []
+    for i in range(1, k + 1):
+        ti = tr + (t_far - tr) * i / k
+        target = (c[0] + axis[0] * ti, c[1] + axis[1] * ti)
+        p = ctx.space.best_in_mask(mask & (np.abs(((ctx.space.xs - c[0]) * axis[0]
+                                                   + (ctx.space.ys - c[1]) * axis[1]) - ti) <= 0.5),
+                                   comp, target)
+        if p is not None and (not poses or math.dist(p, poses[-1]) > 0.3):
+            poses.append(p)
+    if not poses:
+        raise GroundingError(f"I cannot follow {desc}: none of it is reachable from here.")
+    return _nav_step(step, pose, index, poses, f"follow {desc}", (room.id,))
+
+
+# ------------------------------------------------------------------------------ explore
+def _explore(step: Step, ctx: _Ctx, pose: Pose, index: int) -> GroundedStep:
+    comp = _component(ctx, pose)
+    areas = list(ctx.analysis.unexplored)
+    if step.target is not None and step.target.kind not in (Kind.NONE, Kind.UNEXPLORED_AREA):
+        # "explore the hallway": go there first, exploring from there
+        inner = _navigate(step.model_copy(update={"movement": Movement.NAVIGATE}), ctx, pose, index)
+        return GroundedStep(index, step, inner.commands, pose, inner.end_pose, "explore " + inner.note,
+                            inner.element_ids, True)
+    areas.sort(key=lambda u: nearest_point(pose.xy, u.frontier)[0] if len(u.frontier) else math.inf)
+    for u in areas:
+        g = _towards_frontier(u, ctx, pose, comp)
+        if g is not None:
+            return _nav_step(step, pose, index, [g], "explore, starting at the nearest unexplored area",
+                             (u.id,), explore=True)
+    raise GroundingError("There is nothing left to explore that I can reach: every frontier of the map is "
+                         "mapped or out of reach.")
+
+
+__all__ = ["GroundedPlan", "GroundedStep", "as_pose", "ground", "ground_step"]

@@ -1,0 +1,509 @@
+"""Which element of the map the words mean: kind, side, order, superlatives, "this room", "of the hallway".
+
+The meanings follow ``../shared/bench/README.md``:
+
+* left / right: the element's reference point has a positive / negative lateral offset;
+  ahead: within +-60 deg of the heading; behind: beyond +-120 deg;
+* nearest / farthest and first, second ...: straight-line distance from the robot to the element's
+  reference point (door: centre; room: nearest cell; obstacle: nearest cell; unexplored area: nearest
+  frontier cell), among the elements the other words select; "the X on your left" = the nearest;
+* biggest / smallest: by area; "this room": the room holding the robot; a corner with no room named
+  is a corner of the robot's room; "the left corner": of the room's corners ahead, the farthest left.
+
+Doors and passages of the space the robot is in are counted before the others: "the third door on
+your left" in a hallway means the hallway's doors, not one seen through a wall.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Final
+
+import numpy as np
+
+from langnav.analysis.elements import (
+    Corner,
+    Door,
+    Element,
+    ElementKind,
+    MapAnalysis,
+    NarrowPassage,
+    Obstacle,
+    Room,
+    UnexploredArea,
+    Wall,
+    reference_point,
+)
+from langnav.grounding.errors import GroundingError
+from langnav.grounding.geometry import (
+    AHEAD_HALF_ANGLE_DEG,
+    Point,
+    Pose,
+    bearing_rad,
+    closest_on_segment,
+    is_ahead,
+    is_behind,
+    is_left,
+    is_right,
+    lateral_offset,
+    nearest_point,
+    to_robot_frame,
+)
+from langnav.language.intent import Element as Kind
+from langnav.language.intent import ElementRef, Side, Superlative
+
+#: A robot standing in a doorway belongs to the nearest space within this distance.
+SPACE_SNAP_M: Final = 0.6
+#: Walls whose lines are within this angle / offset of each other are one wall (split by doors).
+WALL_MERGE_ANGLE_DEG: Final = 10.0
+WALL_MERGE_OFFSET_M: Final = 0.3
+#: A wall runs "along" the robot (left / right wall) within this angle of the heading.
+WALL_PARALLEL_DEG: Final = 45.0
+#: Wall pieces shorter than this are jambs and stubs, not "the left wall".
+WALL_MIN_CHAIN_M: Final = 1.0
+#: Corners whose lateral offsets differ by less than this are equally far left / right.
+CORNER_SIDE_TIE_M: Final = 0.3
+#: An element counts as inside a space when its point is within this distance of the space's cells.
+IN_SPACE_M: Final = 0.5
+
+ORDINAL_WORDS: Final = {1: "first", 2: "second", 3: "third", 4: "fourth", 5: "fifth", 6: "sixth",
+                        7: "seventh", 8: "eighth", 9: "ninth", 10: "tenth"}
+NUMBER_WORDS: Final = {0: "no", 1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six",
+                       7: "seven", 8: "eight", 9: "nine", 10: "ten"}
+KIND_NOUN: Final = {Kind.DOOR: ("door", "doors"), Kind.WALL: ("wall", "walls"), Kind.ROOM: ("room", "rooms"),
+                    Kind.HALLWAY: ("hallway", "hallways"),
+                    Kind.NARROW_PASSAGE: ("narrow passage", "narrow passages"),
+                    Kind.OBSTACLE: ("obstacle", "obstacles"), Kind.CORNER: ("corner", "corners"),
+                    Kind.UNEXPLORED_AREA: ("unexplored area", "unexplored areas"),
+                    Kind.NONE: ("place", "places")}
+SIDE_WORDS: Final = {Side.LEFT: "on your left", Side.RIGHT: "on your right", Side.AHEAD: "in front of you",
+                     Side.BEHIND: "behind you"}
+
+
+@dataclass(frozen=True)
+class WallLine:
+    """One wall as a person sees it: collinear wall segments of a space joined across doorways."""
+
+    ids: tuple[str, ...]
+    start: Point
+    end: Point
+    inward: Point
+    room: str | None
+
+    @property
+    def length_m(self) -> float:
+        return math.dist(self.start, self.end)
+
+    @property
+    def direction(self) -> Point:
+        n = self.length_m or 1.0
+        return ((self.end[0] - self.start[0]) / n, (self.end[1] - self.start[1]) / n)
+
+
+# ------------------------------------------------------------------------------ descriptions
+def describe_ref(ref: ElementRef) -> str:
+    """"the second door on your left", "the biggest room", "the left corner of this room"."""
+    if ref.name:
+        return f"'{ref.name}'"
+    noun = KIND_NOUN[ref.kind][0]
+    plain = ref.ordinal is None and ref.superlative is None and ref.side is None and ref.within is None
+    if ref.kind in (Kind.ROOM, Kind.HALLWAY) and ref.in_current_room and plain:
+        return f"this {noun}"
+    words = ["the"]
+    if ref.ordinal is not None:
+        words.append(ORDINAL_WORDS.get(ref.ordinal, f"{ref.ordinal}th"))
+    if ref.superlative is not None:
+        words.append(ref.superlative.value)
+    if ref.side is not None and ref.kind in (Kind.CORNER, Kind.WALL) and ref.side in (Side.LEFT, Side.RIGHT):
+        words.append(ref.side.value)
+        words.append(noun)
+    else:
+        words.append(noun)
+        if ref.side is not None:
+            words.append(SIDE_WORDS[ref.side])
+    if ref.within is not None:
+        words.append(f"of the {KIND_NOUN[ref.within][0]}")
+    elif ref.in_current_room:
+        words.append("in this room")
+    return " ".join(words)
+
+
+def _count_phrase(n: int, ref: ElementRef) -> str:
+    singular, plural = KIND_NOUN[ref.kind]
+    noun = singular if n == 1 else plural
+    where = ""
+    if ref.side is not None and not (ref.kind in (Kind.CORNER, Kind.WALL) and ref.side in (Side.LEFT, Side.RIGHT)):
+        where = " " + SIDE_WORDS[ref.side]
+    if ref.within is not None:
+        where += f" in the {KIND_NOUN[ref.within][0]}"
+    elif ref.in_current_room:
+        where += " in this room"
+    return f"{NUMBER_WORDS.get(n, str(n))} {noun}{where}"
+
+
+# ------------------------------------------------------------------------------ spaces
+def space_of(analysis: MapAnalysis, xy: Point) -> Room | None:
+    """The room or hallway holding a point (or, in a doorway, the nearest one within SPACE_SNAP_M)."""
+    room = analysis.room_at(*xy)
+    if room is not None:
+        return room
+    best: tuple[float, Room] | None = None
+    for r in analysis.rooms:
+        if len(r.cells_xy) == 0:
+            continue
+        d, _ = nearest_point(xy, r.cells_xy)
+        if d <= SPACE_SNAP_M and (best is None or d < best[0]):
+            best = (d, r)
+    return None if best is None else best[1]
+
+
+def _space_for_ref(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room | None:
+    """The space the words restrict to: 'of the hallway', 'in this room', or None."""
+    here = space_of(analysis, pose.xy)
+    if ref.within is not None and ref.within in (Kind.ROOM, Kind.HALLWAY):
+        want = ElementKind.HALLWAY if ref.within == Kind.HALLWAY else ElementKind.ROOM
+        if here is not None and here.kind == want:
+            return here
+        spaces = [r for r in analysis.rooms if r.kind == want and len(r.cells_xy)]
+        if not spaces:
+            raise GroundingError(f"I see no {KIND_NOUN[ref.within][0]} in this map.")
+        return min(spaces, key=lambda r: nearest_point(pose.xy, r.cells_xy)[0])
+    if ref.in_current_room or (ref.kind == Kind.CORNER) or (ref.kind == Kind.WALL):
+        if here is None:
+            raise GroundingError("I cannot tell which room I am in: I seem to be outside every room of the map.")
+        return here
+    return None
+
+
+def _in_space(e: Element, space: Room, analysis: MapAnalysis) -> bool:
+    if isinstance(e, Door | NarrowPassage):
+        if space.id in e.connects:
+            return True
+        return not e.connects and _near_space(e.center, space)
+    if isinstance(e, Obstacle):
+        if e.room is not None:
+            return e.room == space.id
+        return _near_space(e.centroid, space)
+    if isinstance(e, Corner | Wall):
+        if e.room is not None:
+            return e.room == space.id
+        return _near_space(reference_point(e), space)
+    if isinstance(e, UnexploredArea):
+        if len(e.frontier) == 0:
+            return False
+        rr, cc = analysis.grid.world_to_index(e.frontier[:, 0], e.frontier[:, 1])
+        inside = analysis.grid.in_bounds(rr, cc)
+        return bool(np.any(analysis.labels[rr[inside], cc[inside]] == space.label))
+    if isinstance(e, Room):
+        return e.id == space.id
+    return False
+
+
+def _near_space(p: Point, space: Room) -> bool:
+    return len(space.cells_xy) > 0 and nearest_point(p, space.cells_xy)[0] <= IN_SPACE_M
+
+
+# ------------------------------------------------------------------------------ measures
+def distance_to(e: Element, xy: Point) -> float:
+    """The README's distance from a point to an element's reference point."""
+    if isinstance(e, Room):
+        return nearest_point(xy, e.cells_xy)[0] if len(e.cells_xy) else math.dist(xy, e.centroid)
+    if isinstance(e, Obstacle):
+        return nearest_point(xy, e.cells_xy)[0] if len(e.cells_xy) else math.dist(xy, e.centroid)
+    if isinstance(e, UnexploredArea):
+        return nearest_point(xy, e.frontier)[0] if len(e.frontier) else math.dist(xy, e.centroid)
+    if isinstance(e, Wall):
+        return math.dist(xy, closest_on_segment(xy, e.start, e.end))
+    return math.dist(xy, reference_point(e))
+
+
+def side_point(e: Element, pose: Pose) -> Point:
+    """The point whose side of the robot decides 'on your left' (the reference point)."""
+    if isinstance(e, UnexploredArea) and len(e.frontier):
+        return nearest_point(pose.xy, e.frontier)[1]
+    if isinstance(e, Wall):
+        return closest_on_segment(pose.xy, e.start, e.end)
+    return reference_point(e)
+
+
+def size_of(e: Element) -> float:
+    if isinstance(e, Room | Obstacle | UnexploredArea):
+        return e.area_m2
+    if isinstance(e, Door | NarrowPassage):
+        return e.width_m
+    if isinstance(e, Wall):
+        return e.length_m
+    return 0.0
+
+
+def width_of(e: Element) -> float:
+    if isinstance(e, Room | Door | NarrowPassage):
+        return e.width_m
+    if isinstance(e, Obstacle):
+        return min(e.extent_m)
+    return size_of(e)
+
+
+def matches_side(e: Element, pose: Pose, side: Side) -> bool:
+    p = side_point(e, pose)
+    if side == Side.LEFT:
+        return is_left(pose, p)
+    if side == Side.RIGHT:
+        return is_right(pose, p)
+    if side == Side.AHEAD:
+        return is_ahead(pose, p)
+    return is_behind(pose, p)
+
+
+def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
+    if kind == Kind.DOOR:
+        return list(analysis.doors)
+    if kind == Kind.ROOM:
+        return [r for r in analysis.rooms if r.kind == ElementKind.ROOM]
+    if kind == Kind.HALLWAY:
+        return [r for r in analysis.rooms if r.kind == ElementKind.HALLWAY]
+    if kind == Kind.NARROW_PASSAGE:
+        return list(analysis.narrow_passages)
+    if kind == Kind.OBSTACLE:
+        return list(analysis.obstacles)
+    if kind == Kind.CORNER:
+        return list(analysis.corners)
+    if kind == Kind.UNEXPLORED_AREA:
+        return list(analysis.unexplored)
+    if kind == Kind.WALL:
+        return list(analysis.walls)
+    return []
+
+
+# ------------------------------------------------------------------------------ selection
+def select(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Element:
+    """The one element the words mean. Raises GroundingError saying what the map has instead."""
+    return select_many(ref, analysis, pose, 1)[0]
+
+
+def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int) -> list[Element]:
+    """``count`` elements the words mean, best first ("the two obstacles in this room")."""
+    if ref.name:
+        raise GroundingError(
+            f"I don't know where '{ref.name}' is: the map has walls, doors and free space but no names. "
+            "Tell me where it is (e.g. 'the second door on your left'), or drive me there and name it.")
+    if ref.kind == Kind.NONE:
+        raise GroundingError("I don't know which place you mean; name a door, room, corner, wall or obstacle.")
+    if ref.kind == Kind.WALL:
+        raise GroundingError("internal: walls are selected with select_wall")  # pragma: no cover
+    if ref.kind == Kind.CORNER:
+        return [_select_corner(ref, analysis, pose)]
+    if ref.kind in (Kind.ROOM, Kind.HALLWAY) and ref.in_current_room and ref.superlative is None \
+            and ref.ordinal is None:
+        here = space_of(analysis, pose.xy)
+        if here is None:
+            raise GroundingError("I cannot tell which room I am in: I seem to be outside every room.")
+        return [here]
+
+    pool = elements_of_kind(analysis, ref.kind)
+    noun_plural = KIND_NOUN[ref.kind][1]
+    if not pool:
+        raise GroundingError(f"I see no {noun_plural} in this map.")
+    space = _space_for_ref(ref, analysis, pose)
+    if space is not None and ref.kind not in (Kind.ROOM, Kind.HALLWAY):
+        pool = [e for e in pool if _in_space(e, space, analysis)]
+    if ref.side is not None:
+        pool = [e for e in pool if matches_side(e, pose, ref.side)]
+
+    here = space_of(analysis, pose.xy)
+
+    def local_first(e: Element) -> int:
+        if here is None or space is not None or not isinstance(e, Door | NarrowPassage):
+            return 0
+        return 0 if _in_space(e, here, analysis) else 1
+
+    sup = ref.superlative
+    if sup in (Superlative.BIGGEST, Superlative.SMALLEST):
+        ordered = sorted(pool, key=size_of, reverse=sup == Superlative.BIGGEST)
+    elif sup in (Superlative.WIDEST, Superlative.NARROWEST):
+        ordered = sorted(pool, key=width_of, reverse=sup == Superlative.WIDEST)
+    elif sup == Superlative.FARTHEST:
+        ordered = sorted(pool, key=lambda e: (local_first(e), -distance_to(e, pose.xy)))
+    else:
+        ordered = sorted(pool, key=lambda e: (local_first(e), distance_to(e, pose.xy)))
+
+    k = (ref.ordinal or 1) - 1
+    if len(ordered) < k + count:
+        if not ordered:
+            raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]}{_where(ref)}, so I cannot find "
+                                 f"{describe_ref(ref)}.")
+        raise GroundingError(f"I see only {_count_phrase(len(ordered), ref)}, so I cannot find "
+                             f"{describe_ref(ref) if count == 1 else f'{count} of them'}.")
+    return ordered[k:k + count]
+
+
+def _where(ref: ElementRef) -> str:
+    s = ""
+    if ref.side is not None:
+        s += " " + SIDE_WORDS[ref.side]
+    if ref.within is not None:
+        s += f" in the {KIND_NOUN[ref.within][0]}"
+    elif ref.in_current_room:
+        s += " in this room"
+    return s
+
+
+def _select_corner(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Corner:
+    space = _space_for_ref(ref, analysis, pose)
+    assert space is not None
+    corners = [c for c in analysis.corners if _in_space(c, space, analysis)]
+    room_word = "hallway" if space.kind == ElementKind.HALLWAY else "room"
+    if not corners:
+        raise GroundingError(f"I found no corners in this {room_word}.")
+    side = ref.side
+    if side in (Side.LEFT, Side.RIGHT):
+        ahead = [c for c in corners if is_ahead(pose, c.point)]
+        if not ahead:  # nothing within +-60 deg: take the front half
+            ahead = [c for c in corners if abs(math.degrees(bearing_rad(pose, c.point))) < 90.0]
+        if not ahead:
+            raise GroundingError(f"No corner of this {room_word} is in front of me; turn towards the "
+                                 f"corners you mean, or say 'the nearest corner'.")
+        sign = 1.0 if side == Side.LEFT else -1.0
+        best_lat = max(sign * lateral_offset(pose, c.point) for c in ahead)
+        tied = [c for c in ahead if sign * lateral_offset(pose, c.point) >= best_lat - CORNER_SIDE_TIE_M]
+        # among corners equally far to that side, the room's far corner (not a door jamb on the way)
+        return max(tied, key=lambda c: math.dist(pose.xy, c.point))
+    if side == Side.AHEAD:
+        corners = [c for c in corners if is_ahead(pose, c.point)]
+    elif side == Side.BEHIND:
+        corners = [c for c in corners if is_behind(pose, c.point)]
+    if not corners:
+        raise GroundingError(f"I see no corner of this {room_word} {SIDE_WORDS[side] if side else ''}.".strip())
+    far = ref.superlative == Superlative.FARTHEST
+    ordered = sorted(corners, key=lambda c: math.dist(pose.xy, c.point), reverse=far)
+    k = (ref.ordinal or 1) - 1
+    if k >= len(ordered):
+        raise GroundingError(f"This {room_word} has only {NUMBER_WORDS.get(len(ordered), len(ordered))} "
+                             f"corners{_where(ref)}.")
+    return ordered[k]
+
+
+def select_pair(first: ElementRef, second: ElementRef | None, analysis: MapAnalysis,
+                pose: Pose) -> tuple[Element, Element]:
+    """The two elements of 'between A and B' (or 'between the two obstacles')."""
+    if second is None:
+        a, b = select_many(first, analysis, pose, 2)
+        return a, b
+    a = select(first, analysis, pose)
+    if second == first or (second.kind == first.kind and second.ordinal is None and second.superlative is None
+                           and second.side is None):
+        others = [e for e in select_many(second, analysis, pose, 2) if e is not a]
+        return a, others[0]
+    b = select(second, analysis, pose)
+    if a is b:
+        raise GroundingError(f"{describe_ref(first)} and {describe_ref(second)} are the same place; "
+                             "'between' needs two different ones.")
+    return a, b
+
+
+# ------------------------------------------------------------------------------ walls
+def wall_lines(walls: Sequence[Wall]) -> list[WallLine]:
+    """Join collinear wall segments facing the same way (a wall split by doorways is one wall)."""
+    groups: list[list[Wall]] = []
+    for w in sorted(walls, key=lambda w: -w.length_m):
+        if w.length_m == 0:
+            continue
+        placed = False
+        for g in groups:
+            if _collinear(g[0], w):
+                g.append(w)
+                placed = True
+                break
+        if not placed:
+            groups.append([w])
+    lines: list[WallLine] = []
+    for g in groups:
+        base = g[0]
+        d = ((base.end[0] - base.start[0]) / base.length_m, (base.end[1] - base.start[1]) / base.length_m)
+        ts = [t for w in g for t in (_proj(w.start, base.start, d), _proj(w.end, base.start, d))]
+        lo, hi = min(ts), max(ts)
+        start = (base.start[0] + d[0] * lo, base.start[1] + d[1] * lo)
+        end = (base.start[0] + d[0] * hi, base.start[1] + d[1] * hi)
+        lines.append(WallLine(tuple(w.id for w in g), start, end, base.inward, base.room))
+    return lines
+
+
+def _proj(p: Point, o: Point, d: Point) -> float:
+    return (p[0] - o[0]) * d[0] + (p[1] - o[1]) * d[1]
+
+
+def _collinear(a: Wall, b: Wall) -> bool:
+    da = math.atan2(a.end[1] - a.start[1], a.end[0] - a.start[0])
+    db = math.atan2(b.end[1] - b.start[1], b.end[0] - b.start[0])
+    diff = abs(math.degrees(da - db)) % 180.0
+    if min(diff, 180.0 - diff) > WALL_MERGE_ANGLE_DEG:
+        return False
+    if a.inward[0] * b.inward[0] + a.inward[1] * b.inward[1] <= 0:
+        return False
+    # perpendicular offset of b's midpoint from a's line
+    n = a.inward
+    off = (b.midpoint[0] - a.start[0]) * n[0] + (b.midpoint[1] - a.start[1]) * n[1]
+    return abs(off) <= WALL_MERGE_OFFSET_M
+
+
+def select_wall(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> WallLine:
+    """'The left wall', 'the right wall of the hallway', 'the wall in front of you', 'the nearest wall'."""
+    space = _space_for_ref(ref, analysis, pose)
+    assert space is not None
+    room_word = "hallway" if space.kind == ElementKind.HALLWAY else "room"
+    walls = [w for w in analysis.walls if _in_space(w, space, analysis)]
+    # a wall bounds the space when its inward normal points at the robot's side of it
+    facing = [w for w in walls
+              if (pose.x_m - w.start[0]) * w.inward[0] + (pose.y_m - w.start[1]) * w.inward[1] > 0]
+    lines = [ln for ln in wall_lines(facing or walls) if ln.length_m >= WALL_MIN_CHAIN_M]
+    if not lines:
+        raise GroundingError(f"I found no walls in this {room_word}.")
+    hx, hy = pose.heading()
+
+    def parallel(ln: WallLine) -> bool:
+        dx, dy = ln.direction
+        return abs(dx * hx + dy * hy) >= math.cos(math.radians(WALL_PARALLEL_DEG))
+
+    def line_lateral(ln: WallLine) -> float:
+        # signed offset of the wall's line from the robot, in the robot frame (left > 0)
+        p = _foot_on_line(pose.xy, ln)
+        return to_robot_frame(pose, p)[1]
+
+    def line_forward(ln: WallLine) -> float:
+        return to_robot_frame(pose, _foot_on_line(pose.xy, ln))[0]
+
+    side = ref.side
+    if side in (Side.LEFT, Side.RIGHT):
+        sign = 1.0 if side == Side.LEFT else -1.0
+        cands = [ln for ln in lines if parallel(ln) and sign * line_lateral(ln) > 0]
+        if not cands:
+            raise GroundingError(f"I see no wall running along my {side.value} side in this {room_word}; "
+                                 "turn so the wall is beside me, or say 'the nearest wall'.")
+        return max(cands, key=lambda ln: sign * line_lateral(ln))
+    if side in (Side.AHEAD, Side.BEHIND):
+        sign = 1.0 if side == Side.AHEAD else -1.0
+        cands = [ln for ln in lines if not parallel(ln) and sign * line_forward(ln) > 0]
+        if not cands:
+            raise GroundingError(f"I see no wall {SIDE_WORDS[side]} in this {room_word}.")
+        return min(cands, key=lambda ln: abs(line_forward(ln)))
+    far = ref.superlative == Superlative.FARTHEST
+    if ref.superlative in (Superlative.BIGGEST, Superlative.WIDEST):
+        return max(lines, key=lambda ln: ln.length_m)
+    ordered = sorted(lines, key=lambda ln: math.dist(pose.xy, closest_on_segment(pose.xy, ln.start, ln.end)),
+                     reverse=far)
+    k = (ref.ordinal or 1) - 1
+    if k >= len(ordered):
+        raise GroundingError(f"This {room_word} has only {NUMBER_WORDS.get(len(ordered), len(ordered))} walls.")
+    return ordered[k]
+
+
+def _foot_on_line(p: Point, ln: WallLine) -> Point:
+    d = ln.direction
+    t = _proj(p, ln.start, d)
+    return (ln.start[0] + d[0] * t, ln.start[1] + d[1] * t)
+
+
+__all__ = ["AHEAD_HALF_ANGLE_DEG", "WallLine", "describe_ref", "distance_to", "matches_side", "select",
+           "select_many", "select_pair", "select_wall", "side_point", "space_of", "wall_lines"]
