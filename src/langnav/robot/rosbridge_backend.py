@@ -1,0 +1,707 @@
+"""The ``rosbridge`` backend: drive a ROS 2 robot running Nav2 through rosbridge_suite, with roslibpy.
+
+* NavigateThroughPoses: Nav2's ``nav2_msgs/action/NavigateThroughPoses`` via rosbridge's action
+  ops (rosbridge_suite >= 2.0). Start rosbridge with ``send_action_goals_in_new_thread:=true``:
+  otherwise rosbridge reads nothing from the socket while a goal runs and a cancel is never seen
+  (langnav then reports the cancel as unconfirmed after ``cancel_timeout_s`` and zeroes cmd_vel).
+* Move / Rotate: ``cmd_vel`` at ``cmd_rate_hz``, as Twist (Jazzy) or TwistStamped (Kilted; Nav2's
+  ``enable_stamped_cmd_vel``), closed-loop on odometry: it stops when the distance or angle is
+  covered, slowing down over the last few centimetres / degrees. Move left / right on a
+  differential base is rotate 90°, drive, rotate back.
+* /map (slam_toolbox and map_server publish it transient local; rosbridge_suite matches a
+  transient-local publisher's durability on subscribe, so the latched map arrives at once),
+  /plan, /scan, and the pose from tf (``map -> base_link`` composed from /tf and /tf_static) or
+  from a pose topic (/amcl_pose, /pose or an Odometry topic).
+
+Faults: a lost connection fails every running task with a reason (and the stop is queued for
+when the robot is reachable again); a malformed message from the robot raises a RobotError (for
+feedback: fails the task and stops the robot); every wait has a timeout from
+:class:`RosbridgeConfig`.
+
+roslibpy runs its transport (twisted reactor, or an asyncio loop) in a background thread that
+can start only once per process; :meth:`RosbridgeBackend.close` closes the connection and stops
+reconnecting but never terminates that loop, so any number of backends can come and go.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import threading
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any, Final, Literal
+
+import roslibpy
+from pydantic import BaseModel, ConfigDict, Field
+
+from langnav.maps.grid import OccupancyGrid
+from langnav.plan.commands import MOVE_STEP_M, ROTATE_STEP_DEG
+from langnav.robot import ros_messages as rm
+from langnav.robot.errors import RobotError, RobotTimeout
+from langnav.robot.protocol import (
+    DEFAULT_REQUEST_TIMEOUT_S,
+    DEFAULT_TASK_TIMEOUT_S,
+    LaserScan,
+    Pose2D,
+    RobotState,
+    TaskFeedback,
+    TaskHandle,
+    TaskResult,
+    TaskStatus,
+    register_backend,
+)
+
+log = logging.getLogger(__name__)
+
+#: How often a waiting loop re-checks its condition.
+_POLL_S: Final = 0.02
+
+
+class RosbridgeConfig(BaseModel):
+    """Where the robot is and what its topics, frames and limits are called."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    host: str = "127.0.0.1"
+    port: int = Field(default=9090, ge=1, le=65535)
+    secure: bool = False
+    #: roslibpy transport: "twisted" (its default) or "asyncio"; one per process (txaio binds one).
+    transport: Literal["twisted", "asyncio"] | None = None
+    #: Prefix for every topic, action and service name (TurtleBot 4 ``namespace:=/robot1``).
+    namespace: str = ""
+
+    nav_action: str = "/navigate_through_poses"
+    #: "pose_array" (Humble, Jazzy: PoseStamped[] poses) or "goals" (Kilted+: nav_msgs/Goals).
+    goal_format: Literal["pose_array", "goals"] = "pose_array"
+    behavior_tree: str = ""
+    cmd_vel_topic: str = "/cmd_vel"
+    #: TwistStamped (Kilted, Nav2 enable_stamped_cmd_vel) or Twist (Jazzy, Create 3).
+    cmd_vel_stamped: bool = False
+    map_topic: str = "/map"
+    plan_topic: str = "/plan"
+    scan_topic: str = "/scan"
+    odom_topic: str = "/odom"
+    tf_topic: str = "/tf"
+    tf_static_topic: str = "/tf_static"
+    #: Where the pose comes from: the tf tree, or a pose topic.
+    pose_source: Literal["tf", "topic"] = "tf"
+    pose_topic: str = "/amcl_pose"
+    pose_topic_type: str = rm.POSE_WITH_COV_STAMPED
+    #: Optional nav_msgs/srv/GetMap fallback when no /map arrives ("" = none), e.g.
+    #: "/slam_toolbox/dynamic_map" or "/map_server/map".
+    map_service: str = ""
+    map_frame: str = "map"
+    odom_frame: str = "odom"
+    base_frame: str = "base_link"
+
+    #: Move / Rotate pace: TurtleBot 4's teleop defaults are 0.5 m/s, 1 rad/s; steps of 3 cm and
+    #: 10° are small, so a gentler pace keeps the overshoot under a centimetre / a degree.
+    linear_speed_mps: float = Field(default=0.15, gt=0, le=1.0)
+    angular_speed_radps: float = Field(default=0.6, gt=0, le=3.0)
+    #: Slowest commanded speed near the end: slower and a real base stalls on friction.
+    min_linear_speed_mps: float = Field(default=0.02, gt=0)
+    min_angular_speed_radps: float = Field(default=0.1, gt=0)
+    #: Proportional slow-down near the goal (1/s): speed = gain x remaining.
+    slowdown_gain_per_s: float = Field(default=2.0, gt=0)
+    #: Stop when this close: 5 mm, 1° (a step is 3 cm / 10°).
+    distance_tolerance_m: float = Field(default=0.005, gt=0)
+    angle_tolerance_rad: float = Field(default=math.radians(1.0), gt=0)
+    #: Nav2's controller runs at 20 Hz; so does this loop.
+    cmd_rate_hz: float = Field(default=20.0, gt=0, le=100)
+    #: A move takes at most its nominal duration x this + motion_slack_s, else it fails.
+    motion_timeout_factor: float = Field(default=3.0, ge=1.0)
+    motion_slack_s: float = Field(default=5.0, ge=0.0)
+    #: Where odometry is read from for Move / Rotate: the odom topic, or the robot pose.
+    motion_pose_source: Literal["odom", "pose"] = "odom"
+
+    connect_timeout_s: float = Field(default=10.0, gt=0)
+    #: Odometry older than this while moving stops the move (the base or the link stalled).
+    odom_stale_s: float = Field(default=1.0, gt=0)
+    #: Fail navigation when no feedback came for this long (Nav2 sends it every BT tick).
+    feedback_timeout_s: float = Field(default=10.0, gt=0)
+    #: After cancel(), wait this long for the robot to confirm before giving up on it.
+    cancel_timeout_s: float = Field(default=5.0, gt=0)
+    #: Reconnect backoff cap (roslibpy's default is an hour).
+    reconnect_max_delay_s: float = Field(default=10.0, gt=0)
+
+    def name(self, topic: str) -> str:
+        """A topic, action or service name with the namespace applied."""
+        if not self.namespace or not topic.startswith("/"):
+            return topic
+        return "/" + self.namespace.strip("/") + topic
+
+    @property
+    def url(self) -> str:
+        return f"{'wss' if self.secure else 'ws'}://{self.host}:{self.port}"
+
+
+@dataclass(frozen=True)
+class _Stamped:
+    msg: Any
+    received_s: float
+
+
+class _Task:
+    """A TaskHandle whose state is set from roslibpy's thread and read from the caller's."""
+
+    def __init__(self, kind: str, on_cancel: Callable[[_Task], None]) -> None:
+        self.kind = kind
+        self._cond = threading.Condition()
+        self._status = TaskStatus.RUNNING
+        self._feedback: TaskFeedback | None = None
+        self._result: TaskResult | None = None
+        self._on_cancel = on_cancel
+        self.cancel_requested_s: float | None = None
+        self.last_news_s = time.monotonic()
+        self.goal_id = ""
+
+    def status(self) -> TaskStatus:
+        with self._cond:
+            return self._status
+
+    def feedback(self) -> TaskFeedback | None:
+        with self._cond:
+            return self._feedback
+
+    def cancel(self) -> None:
+        with self._cond:
+            if self._status is not TaskStatus.RUNNING or self.cancel_requested_s is not None:
+                return
+            self.cancel_requested_s = time.monotonic()
+        self._on_cancel(self)
+
+    def wait(self, timeout_s: float = DEFAULT_TASK_TIMEOUT_S) -> TaskResult:
+        with self._cond:
+            if not self._cond.wait_for(lambda: self._result is not None, timeout_s):
+                raise RobotTimeout(f"{self.kind} still running after {timeout_s} s; it was left running "
+                                   f"(cancel() it, or wait longer)")
+            assert self._result is not None
+            return self._result
+
+    def set_feedback(self, fb: TaskFeedback) -> None:
+        with self._cond:
+            self.last_news_s = time.monotonic()
+            if self._status is TaskStatus.RUNNING:
+                self._feedback = fb
+
+    def finish(self, status: TaskStatus, message: str, pose: Pose2D | None = None) -> bool:
+        """Set the result once; later calls are ignored (first outcome wins)."""
+        with self._cond:
+            if self._result is not None:
+                return False
+            self._status = status
+            self._result = TaskResult(status, message, pose)
+            self._cond.notify_all()
+        log.info("%s %s: %s", self.kind, status.value, message)
+        return True
+
+    @property
+    def done(self) -> bool:
+        with self._cond:
+            return self._result is not None
+
+
+class RosbridgeBackend:
+    """A :class:`RobotBackend` over rosbridge (see the module docstring)."""
+
+    name = "rosbridge"
+
+    def __init__(self, config: RosbridgeConfig | None = None, **options: Any) -> None:
+        if config is not None and options:
+            raise RobotError("give either a RosbridgeConfig or keyword options, not both")
+        self.config = config or RosbridgeConfig(**options)
+        c = self.config
+        self._lock = threading.RLock()
+        self._closed = False
+        self._connected = False
+        self._latest: dict[str, _Stamped] = {}
+        self._tf = rm.TransformTree()
+        self._tf_error: RobotError | None = None
+        self._tasks: set[_Task] = set()
+        self._map_cache: tuple[Any, OccupancyGrid] | None = None
+        try:
+            self._ros = roslibpy.Ros(c.host, c.port, is_secure=c.secure, transport=c.transport)
+        except RuntimeError as exc:  # txaio already bound to the other framework
+            raise RobotError(f"cannot use roslibpy transport {c.transport!r}: {exc}") from exc
+        self._ros.factory.maxDelay = c.reconnect_max_delay_s
+        self._ros.on("close", self._on_close)
+        self._ros.on("ready", self._on_ready)
+        try:
+            self._ros.run(timeout=c.connect_timeout_s)
+        except roslibpy.core.RosTimeoutError:
+            self._stop_reconnecting()
+            raise RobotError(
+                f"cannot reach rosbridge at {c.url} within {c.connect_timeout_s} s; on the robot run "
+                f"`ros2 launch rosbridge_server rosbridge_websocket_launch.xml "
+                f"send_action_goals_in_new_thread:=true` (or `langnav sim --rosbridge-port {c.port}`) "
+                f"and check host and port") from None
+        self._connected = True
+        self._nav = roslibpy.ActionClient(self._ros, c.name(c.nav_action), rm.NAVIGATE_THROUGH_POSES)
+        self._cmd_vel = roslibpy.Topic(self._ros, c.name(c.cmd_vel_topic),
+                                       rm.TWIST_STAMPED if c.cmd_vel_stamped else rm.TWIST, queue_size=1)
+        self._subs: list[roslibpy.Topic] = []
+        self._subscribe(c.map_topic, rm.OCCUPANCY_GRID)
+        self._subscribe(c.plan_topic, rm.PATH)
+        self._subscribe(c.scan_topic, rm.LASER_SCAN)
+        self._subscribe(c.odom_topic, rm.ODOMETRY)
+        if c.pose_source == "tf":
+            self._subscribe(c.tf_topic, rm.TF_MESSAGE, self._on_tf)
+            self._subscribe(c.tf_static_topic, rm.TF_MESSAGE, self._on_tf)
+        else:
+            self._subscribe(c.pose_topic, c.pose_topic_type)
+        log.info("rosbridge backend connected to %s", c.url)
+
+    # -- connection ------------------------------------------------------------------------------
+    def _subscribe(self, topic: str, msg_type: str, callback: Callable[[str, Any], None] | None = None) -> None:
+        name = self.config.name(topic)
+        t = roslibpy.Topic(self._ros, name, msg_type, queue_length=1)
+        handler = callback or self._store
+
+        def on_message(msg: Any) -> None:
+            try:
+                handler(topic, msg)
+            except Exception:  # a callback must never kill roslibpy's thread
+                log.exception("handling a message on %s", name)
+
+        t.subscribe(on_message)
+        self._subs.append(t)
+
+    def _store(self, topic: str, msg: Any) -> None:
+        self._latest[topic] = _Stamped(msg, time.monotonic())
+
+    def _on_tf(self, topic: str, msg: Any) -> None:
+        try:
+            with self._lock:
+                self._tf.update(msg, self.config.name(topic))
+                self._tf_error = None
+            self._store(topic, msg)
+        except RobotError as exc:
+            self._tf_error = exc
+            log.warning("%s", exc)
+
+    def _on_ready(self, *_: Any) -> None:
+        self._connected = True
+
+    def _on_close(self, *_: Any) -> None:
+        was = self._connected
+        self._connected = False
+        if self._closed:
+            return
+        if was:
+            log.warning("lost the rosbridge connection to %s", self.config.url)
+        reason = (f"lost the rosbridge connection to {self.config.url} mid-task; the robot was told to "
+                  f"stop (sent when it is reachable again); check the network and rosbridge")
+        with self._lock:
+            tasks = list(self._tasks)
+        for task in tasks:
+            task.finish(TaskStatus.FAILED, reason, self._cached_pose())
+        self._send_stop()
+
+    def _stop_reconnecting(self) -> None:
+        factory = self._ros.factory
+        stop_trying = getattr(factory, "stopTrying", None)
+        if callable(stop_trying):  # twisted ReconnectingClientFactory
+            stop_trying()
+            connector = getattr(factory, "connector", None)
+            if connector is not None:
+                try:
+                    connector.disconnect()
+                except Exception as exc:  # best effort on an already dead connector
+                    log.debug("disconnecting the roslibpy connector: %s", exc)
+        else:  # asyncio transport: its reconnect loop checks this flag
+            factory._stop = True
+
+    def _require_connection(self) -> None:
+        if self._closed:
+            raise RobotError("the rosbridge backend is closed; create a new one")
+        if not (self._connected and self._ros.is_connected):
+            raise RobotError(f"not connected to rosbridge at {self.config.url} (roslibpy keeps "
+                             f"reconnecting); check that rosbridge runs and the network is up")
+
+    def close(self) -> None:
+        if self._closed:
+            return
+        try:
+            if self._connected:
+                self.stop()
+        finally:
+            self._closed = True
+            with self._lock:
+                tasks = list(self._tasks)
+            for task in tasks:
+                task.finish(TaskStatus.FAILED, "the rosbridge backend was closed")
+            for t in self._subs:
+                t.unsubscribe()
+            try:
+                self._ros.close(timeout=self.config.connect_timeout_s)
+            except roslibpy.core.RosTimeoutError:
+                log.warning("rosbridge connection did not close within %s s", self.config.connect_timeout_s)
+            self._stop_reconnecting()
+
+    # -- reading -------------------------------------------------------------------------------
+    def _wait_for(self, topic: str, timeout_s: float, what: str) -> _Stamped:
+        deadline = time.monotonic() + timeout_s
+        while True:
+            got = self._latest.get(topic)
+            if got is not None:
+                return got
+            self._require_connection()
+            if time.monotonic() >= deadline:
+                raise RobotTimeout(f"no {what} on {self.config.name(topic)} within {timeout_s} s; is it "
+                                   f"published (ros2 topic info {self.config.name(topic)})?")
+            time.sleep(_POLL_S)
+
+    def _cached_pose(self) -> Pose2D | None:
+        try:
+            return self._pose_now()
+        except RobotError:
+            return None
+
+    def _pose_now(self) -> Pose2D | None:
+        c = self.config
+        if c.pose_source == "tf":
+            with self._lock:
+                p = self._tf.lookup(c.map_frame, c.base_frame)
+                err = self._tf_error
+            if p is None and err is not None:
+                raise err
+            return p
+        got = self._latest.get(c.pose_topic)
+        if got is None:
+            return None
+        p, _frame = rm.parse_robot_pose(got.msg, c.name(c.pose_topic))
+        return p
+
+    def get_robot_pose(self, timeout_s: float = DEFAULT_REQUEST_TIMEOUT_S) -> Pose2D:
+        deadline = time.monotonic() + timeout_s
+        c = self.config
+        while True:
+            p = self._pose_now()
+            if p is not None:
+                return p
+            self._require_connection()
+            if time.monotonic() >= deadline:
+                if c.pose_source == "tf":
+                    with self._lock:
+                        frames = self._tf.frames()
+                    raise RobotTimeout(f"no transform {c.map_frame} -> {c.base_frame} within {timeout_s} s "
+                                       f"(frames seen: {', '.join(frames) or 'none'}); is SLAM or AMCL "
+                                       f"running, and are map_frame/base_frame right?")
+                raise RobotTimeout(f"no pose on {c.name(c.pose_topic)} within {timeout_s} s")
+            time.sleep(_POLL_S)
+
+    def get_map(self, timeout_s: float = DEFAULT_REQUEST_TIMEOUT_S) -> OccupancyGrid:
+        c = self.config
+        try:
+            got = self._wait_for(c.map_topic, timeout_s, "map (nav_msgs/OccupancyGrid)")
+        except RobotTimeout:
+            if not c.map_service:
+                raise
+            return self._map_from_service(timeout_s)
+        cached = self._map_cache
+        if cached is not None and cached[0] is got.msg:
+            return cached[1]
+        grid = rm.parse_occupancy_grid(got.msg, c.name(c.map_topic))
+        self._map_cache = (got.msg, grid)
+        return grid
+
+    def _map_from_service(self, timeout_s: float) -> OccupancyGrid:
+        name = self.config.name(self.config.map_service)
+        service = roslibpy.Service(self._ros, name, rm.GET_MAP_SRV)
+        try:
+            response = service.call(roslibpy.ServiceRequest({}), timeout=timeout_s)
+        except roslibpy.core.RosTimeoutError:
+            raise RobotTimeout(f"{name} did not answer within {timeout_s} s") from None
+        except roslibpy.core.ServiceException as exc:
+            raise RobotError(f"{name} failed: {exc}") from None
+        if not isinstance(response, dict) and not hasattr(response, "get"):
+            raise RobotError(f"malformed {name} response: {response!r}")
+        return rm.parse_occupancy_grid(dict(response).get("map"), name)
+
+    def get_current_path(self, timeout_s: float = DEFAULT_REQUEST_TIMEOUT_S) -> list[tuple[float, float]]:
+        """The last /plan Nav2 published ([] before any): it is published while planning, not on request."""
+        got = self._latest.get(self.config.plan_topic)
+        if got is None:
+            self._require_connection()
+            return []
+        pts, _frame = rm.parse_path(got.msg, self.config.name(self.config.plan_topic))
+        return pts
+
+    def _odom(self) -> tuple[Pose2D, float, float, float] | None:
+        """(pose, linear, angular, received_s) from the odom topic, or None."""
+        got = self._latest.get(self.config.odom_topic)
+        if got is None:
+            return None
+        m = rm.validate(rm.OdometryMsg, got.msg, f"{self.config.name(self.config.odom_topic)} ({rm.ODOMETRY})")
+        lin = m.twist.twist.linear.x if m.twist else 0.0
+        ang = m.twist.twist.angular.z if m.twist else 0.0
+        return rm.pose2d_from_pose(m.pose.pose), lin, ang, got.received_s
+
+    def state(self) -> RobotState:
+        pose = self._cached_pose()
+        lin = ang = 0.0
+        try:
+            odom = self._odom()
+            if odom is not None:
+                lin, ang = odom[1], odom[2]
+        except RobotError as exc:
+            log.debug("state: %s", exc)
+        scan: LaserScan | None = None
+        got = self._latest.get(self.config.scan_topic)
+        if got is not None and pose is not None:
+            try:
+                scan = rm.parse_laser_scan(got.msg, pose, self.config.name(self.config.scan_topic))
+            except RobotError as exc:
+                log.debug("state: %s", exc)
+        try:
+            path = tuple(self.get_current_path())
+        except RobotError:
+            path = ()
+        with self._lock:
+            busy = any(not t.done for t in self._tasks)
+        return RobotState(pose=pose or Pose2D(0.0, 0.0, 0.0), connected=self._connected and not self._closed,
+                          linear_mps=lin, angular_radps=ang, scan=scan, path=path, busy=busy,
+                          extra={"pose_known": pose is not None, "url": self.config.url})
+
+    # -- commanding ------------------------------------------------------------------------------
+    def _publish_cmd(self, linear_mps: float, angular_radps: float) -> None:
+        c = self.config
+        self._cmd_vel.publish(roslibpy.Message(rm.cmd_vel(linear_mps, angular_radps, c.cmd_vel_stamped, c.base_frame)))
+
+    def _send_stop(self) -> None:
+        """Zero velocity; queued by roslibpy until the link is back when it is down."""
+        try:
+            self._publish_cmd(0.0, 0.0)
+        except Exception as exc:  # roslibpy may fail in odd ways on a half-closed link
+            log.warning("could not send the stop command: %s", exc)
+
+    def stop(self) -> None:
+        with self._lock:
+            tasks = list(self._tasks)
+        for task in tasks:
+            task.cancel()
+        self._send_stop()
+
+    def _add_task(self, task: _Task) -> None:
+        with self._lock:
+            self._tasks.add(task)
+
+    def _end_task(self, task: _Task) -> None:
+        with self._lock:
+            self._tasks.discard(task)
+
+    def navigate_through_poses(self, poses: list[tuple[float, float] | tuple[float, float, float]]) -> TaskHandle:
+        self._require_connection()
+        if not poses:
+            raise RobotError("navigate_through_poses needs at least one pose")
+        c = self.config
+        targets = self._targets(poses)
+        goal = rm.navigate_through_poses_goal(targets, c.map_frame, c.goal_format, c.behavior_tree)
+        task = _Task(f"navigate through {len(targets)} pose(s)", self._cancel_nav)
+        goal_id: list[str] = []
+
+        def on_result(result: Any) -> None:
+            status = result.get("status")
+            code = getattr(status, "value", status)
+            values = result.get("values")
+            msg = values.get("error_msg", "") if isinstance(values, dict) else str(values or "")
+            if code == rm.GOAL_STATUS_SUCCEEDED:
+                task.finish(TaskStatus.SUCCEEDED, msg or "reached the last pose", self._cached_pose())
+            elif code == rm.GOAL_STATUS_CANCELED:
+                task.finish(TaskStatus.CANCELED, msg or "canceled", self._cached_pose())
+            else:
+                err = values.get("error_code") if isinstance(values, dict) else None
+                task.finish(TaskStatus.FAILED, f"Nav2 aborted the goal (status {code}, error_code {err}): "
+                            f"{msg or 'no reason given'}", self._cached_pose())
+
+        def on_error(result: Any) -> None:
+            values = result.get("values") if hasattr(result, "get") else result
+            task.finish(TaskStatus.FAILED, f"{c.name(c.nav_action)} could not run the goal: {values}",
+                        self._cached_pose())
+
+        def on_feedback(values: Any) -> None:
+            try:
+                task.set_feedback(rm.parse_navigate_through_poses_feedback(dict(values), c.name(c.nav_action)))
+            except RobotError as exc:
+                if task.finish(TaskStatus.FAILED, f"{exc}; the goal was cancelled and the robot stopped",
+                               self._cached_pose()):
+                    self._cancel_goal_id(goal_id)
+                    self._send_stop()
+
+        self._add_task(task)
+        goal_id.append(self._nav.send_goal(roslibpy.Goal(goal), on_result, on_feedback, on_error))
+        task.goal_id = goal_id[0]
+        self._watch(task, self._nav_watchdog)
+        return task
+
+    def _targets(self, poses: list[tuple[float, float] | tuple[float, float, float]]) -> list[Pose2D]:
+        """(x, y[, yaw_deg]) -> poses; a pose without yaw faces along the leg that reaches it."""
+        prev = self._cached_pose()
+        out: list[Pose2D] = []
+        for p in poses:
+            if len(p) not in (2, 3) or not all(math.isfinite(v) for v in p):
+                raise RobotError(f"a pose is (x, y) or (x, y, yaw_deg) in metres and degrees, got {p!r}")
+            x, y = float(p[0]), float(p[1])
+            if len(p) == 3:
+                yaw = math.radians(p[2])  # type: ignore[misc]
+            elif prev is not None and math.hypot(x - prev.x_m, y - prev.y_m) > 1e-6:
+                yaw = math.atan2(y - prev.y_m, x - prev.x_m)
+            else:
+                yaw = prev.yaw_rad if prev is not None else 0.0
+            pose = Pose2D(x, y, yaw)
+            out.append(pose)
+            prev = pose
+        return out
+
+    def _cancel_nav(self, task: _Task) -> None:
+        self._cancel_goal_id([task.goal_id])
+
+    def _cancel_goal_id(self, goal_id: list[str]) -> None:
+        if goal_id and goal_id[0]:
+            self._nav.cancel_goal(goal_id[0])
+
+    def _watch(self, task: _Task, check: Callable[[_Task], None]) -> None:
+        def run() -> None:
+            try:
+                while not task.done:
+                    check(task)
+                    time.sleep(0.05)
+            finally:
+                self._end_task(task)
+
+        threading.Thread(target=run, daemon=True, name=f"rosbridge-{task.kind}").start()
+
+    def _nav_watchdog(self, task: _Task) -> None:
+        c = self.config
+        now = time.monotonic()
+        if task.cancel_requested_s is not None and now - task.cancel_requested_s > c.cancel_timeout_s:
+            self._send_stop()
+            task.finish(TaskStatus.FAILED, f"the robot did not confirm the cancel within {c.cancel_timeout_s} s "
+                        f"(zero velocity sent); start rosbridge with send_action_goals_in_new_thread:=true "
+                        f"so it can cancel a running goal", self._cached_pose())
+        elif now - task.last_news_s > c.feedback_timeout_s:
+            self._cancel_nav(task)
+            self._send_stop()
+            task.finish(TaskStatus.FAILED, f"no feedback from {c.name(c.nav_action)} for {c.feedback_timeout_s} s; "
+                        f"the goal was cancelled and the robot stopped", self._cached_pose())
+
+    # -- Move / Rotate by cmd_vel ----------------------------------------------------------------
+    def move(self, direction: str, steps: int) -> TaskHandle:
+        if direction not in ("forward", "backward", "left", "right"):
+            raise RobotError(f"move direction must be forward, backward, left or right, got {direction!r}")
+        if steps < 1:
+            raise RobotError(f"move needs at least one step, got {steps}")
+        dist = steps * MOVE_STEP_M
+        phases: list[tuple[str, float]]
+        if direction == "forward":
+            phases = [("drive", dist)]
+        elif direction == "backward":
+            phases = [("drive", -dist)]
+        else:  # a differential base turns, drives, and turns back
+            side = math.pi / 2 if direction == "left" else -math.pi / 2
+            phases = [("turn", side), ("drive", dist), ("turn", -side)]
+        return self._start_motion(f"move {direction} {dist:.2f} m", phases)
+
+    def rotate(self, direction: str, steps: int) -> TaskHandle:
+        if direction not in ("left", "right"):
+            raise RobotError(f"rotate direction must be left or right, got {direction!r}")
+        if steps < 1:
+            raise RobotError(f"rotate needs at least one step, got {steps}")
+        angle = math.radians(steps * ROTATE_STEP_DEG)
+        return self._start_motion(f"rotate {direction} {math.degrees(angle):.0f}°",
+                                  [("turn", angle if direction == "left" else -angle)])
+
+    def _start_motion(self, kind: str, phases: list[tuple[str, float]]) -> TaskHandle:
+        self._require_connection()
+        with self._lock:
+            for t in self._tasks:  # one motion at a time: a new command replaces the old
+                t.cancel()
+        task = _Task(kind, lambda _t: None)
+        self._add_task(task)
+        threading.Thread(target=self._run_motion, args=(task, phases), daemon=True,
+                         name=f"rosbridge-{kind}").start()
+        return task
+
+    def _motion_pose(self) -> tuple[Pose2D, float] | None:
+        if self.config.motion_pose_source == "odom":
+            odom = self._odom()
+            return None if odom is None else (odom[0], odom[3])
+        p = self._pose_now()
+        return None if p is None else (p, time.monotonic())
+
+    def _run_motion(self, task: _Task, phases: list[tuple[str, float]]) -> None:
+        try:
+            for kind, amount in phases:
+                if not self._run_phase(task, kind, amount):
+                    return
+            task.finish(TaskStatus.SUCCEEDED, f"{task.kind} done", self._cached_pose())
+        except RobotError as exc:
+            self._send_stop()
+            task.finish(TaskStatus.FAILED, f"{task.kind}: {exc}; the robot was stopped", self._cached_pose())
+        finally:
+            self._end_task(task)
+
+    def _run_phase(self, task: _Task, kind: str, amount: float) -> bool:
+        """Drive (metres, signed) or turn (radians, signed) closed-loop; False when the task ended."""
+        c = self.config
+        linear = kind == "drive"
+        speed = c.linear_speed_mps if linear else c.angular_speed_radps
+        min_speed = c.min_linear_speed_mps if linear else c.min_angular_speed_radps
+        tol = c.distance_tolerance_m if linear else c.angle_tolerance_rad
+        limit_s = abs(amount) / speed * c.motion_timeout_factor + c.motion_slack_s
+        start_s = time.monotonic()
+        first = self._motion_pose()
+        while first is None:
+            self._require_connection()
+            if time.monotonic() - start_s > c.odom_stale_s:
+                raise RobotError(f"no odometry on {c.name(c.odom_topic)} within {c.odom_stale_s} s; "
+                                 f"is the base driver running?")
+            time.sleep(_POLL_S)
+            first = self._motion_pose()
+        start = first[0]
+        last_yaw, turned = start.yaw_rad, 0.0
+        period = 1.0 / c.cmd_rate_hz
+        sign = 1.0 if amount >= 0 else -1.0
+        while True:
+            if task.done:
+                self._send_stop()
+                return False
+            if task.cancel_requested_s is not None:
+                self._send_stop()
+                task.finish(TaskStatus.CANCELED, f"{task.kind} canceled", self._cached_pose())
+                return False
+            self._require_connection()
+            now = time.monotonic()
+            got = self._motion_pose()
+            assert got is not None
+            cur, received_s = got
+            if now - received_s > c.odom_stale_s:
+                raise RobotError(f"odometry stopped arriving (last one {now - received_s:.1f} s ago)")
+            if now - start_s > limit_s:
+                raise RobotError(f"did not finish within {limit_s:.1f} s (blocked, or the base ignores cmd_vel "
+                                 f"on {c.name(c.cmd_vel_topic)}?)")
+            if linear:
+                dx, dy = cur.x_m - start.x_m, cur.y_m - start.y_m
+                done = dx * math.cos(start.yaw_rad) + dy * math.sin(start.yaw_rad)
+            else:
+                turned += rm.wrap_angle(cur.yaw_rad - last_yaw)
+                last_yaw = cur.yaw_rad
+                done = turned
+            remaining = (amount - done) * sign
+            task.set_feedback(TaskFeedback(pose=cur, distance_remaining_m=max(0.0, remaining) if linear else None,
+                                           elapsed_s=now - start_s, message=f"{kind} {max(0.0, remaining):.3f} left"))
+            if remaining <= tol:
+                self._publish_cmd(0.0, 0.0)
+                return True
+            v = sign * min(speed, max(min_speed, c.slowdown_gain_per_s * remaining))
+            self._publish_cmd(v, 0.0) if linear else self._publish_cmd(0.0, v)
+            time.sleep(period)
+
+
+def _factory(**options: Any) -> RosbridgeBackend:
+    return RosbridgeBackend(**options)
+
+
+register_backend("rosbridge", _factory)
