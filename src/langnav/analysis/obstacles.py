@@ -1,0 +1,105 @@
+"""Obstacles: occupied clusters apart from the building's wall structure.
+
+Occupied cells are grouped into 8-connected components. A component is *wall structure* when
+it is the largest one, touches the grid border or the unknown world outside the building, or
+bounds two or more different spaces (a partition between rooms, a wall stub between doors).
+Every other component at least ``params.obstacle_min_area_m2`` large is an obstacle: furniture,
+a box, a pillar standing in one space. Its area counts unknown cells it encloses (a SLAM map
+often sees only the outline of a piece of furniture).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+from scipy import ndimage as ndi
+
+from langnav.analysis.elements import Obstacle
+from langnav.analysis.params import AnalysisParams
+from langnav.analysis.unexplored import EIGHT, adjacent_pairs, border_labels, exterior_unknown_mask
+from langnav.maps.grid import OccupancyGrid
+
+BoolArray = npt.NDArray[np.bool_]
+
+
+@dataclass(frozen=True, eq=False)
+class ObstacleResult:
+    """The obstacles and a mask (grid orientation) of their occupied cells."""
+
+    obstacles: tuple[Obstacle, ...]
+    mask: BoolArray
+
+
+def find_obstacles(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArray[np.int32],
+                   room_ids: Mapping[int, str], exterior: BoolArray | None = None) -> ObstacleResult:
+    """Occupied clusters that are not part of the walls, with the space that holds each.
+
+    ``labels`` are space labels (grid orientation, 0 = none); ``room_ids`` maps label -> id.
+    ``exterior`` is the outside-world unknown mask (computed when not given).
+    """
+    occ = grid.occupied
+    comp, n = ndi.label(occ, structure=EIGHT)
+    empty = ObstacleResult((), np.zeros(occ.shape, dtype=bool))
+    if n == 0:
+        return empty
+    sizes = np.bincount(comp.ravel(), minlength=n + 1)
+    sizes[0] = 0
+    structural = np.zeros(n + 1, dtype=bool)
+    structural[int(np.argmax(sizes))] = True
+    structural[border_labels(comp)] = True
+    if exterior is None:
+        exterior = exterior_unknown_mask(grid)
+    ext_pairs = adjacent_pairs(exterior.astype(np.int8), comp)
+    structural[ext_pairs[:, 1]] = True
+    # Which space labels each component borders: (space cell, component) pairs -> (comp, label).
+    lab_pairs = adjacent_pairs(labels, comp)
+    space_of_pair = labels.ravel()[lab_pairs[:, 0]].astype(np.int64)
+    comp_space = np.unique(np.stack([lab_pairs[:, 1], space_of_pair], axis=1), axis=0)
+    n_spaces = np.bincount(comp_space[:, 0], minlength=n + 1)
+    structural[n_spaces >= 2] = True
+    # Most-bordered space per component (by the number of neighbouring cells).
+    pair_codes = lab_pairs[:, 1] * (int(labels.max()) + 1) + space_of_pair
+    codes, counts = np.unique(pair_codes, return_counts=True)
+    best_space = np.zeros(n + 1, dtype=np.int64)
+    best_count = np.zeros(n + 1, dtype=np.int64)
+    for code, cnt in zip(codes.tolist(), counts.tolist(), strict=True):
+        c, s = divmod(code, int(labels.max()) + 1)
+        if cnt > best_count[c]:
+            best_count[c] = cnt
+            best_space[c] = s
+
+    min_cells = params.obstacle_min_area_m2 / grid.cell_area_m2
+    candidates = np.flatnonzero(~structural & (sizes >= min_cells))
+    candidates = candidates[candidates > 0]
+    if len(candidates) == 0:
+        return empty
+    mask = np.isin(comp, candidates)
+    slices = ndi.find_objects(comp)
+    obstacles: list[Obstacle] = []
+    for k, c in enumerate(candidates.tolist(), start=1):
+        sl = slices[c - 1]
+        assert sl is not None
+        own = comp[sl] == c
+        filled = ndi.binary_fill_holes(own)
+        rr, cc = np.nonzero(filled)
+        rr = rr + sl[0].start
+        cc = cc + sl[1].start
+        xs, ys = grid.cell_to_world(rr, cc)
+        orr, occ_c = np.nonzero(own)
+        oxs, oys = grid.cell_to_world(orr + sl[0].start, occ_c + sl[1].start)
+        # Extent: bounding box of the cell squares in the map frame (cells are res wide).
+        res = grid.resolution_m
+        extent = ((float(xs.max() - xs.min()) + res), (float(ys.max() - ys.min()) + res))
+        space = int(best_space[c])
+        obstacles.append(Obstacle(
+            id=f"obstacle_{k}",
+            centroid=(float(xs.mean()), float(ys.mean())),
+            area_m2=float(len(rr) * grid.cell_area_m2),
+            extent_m=extent,
+            room=room_ids.get(space) if space > 0 else None,
+            cells_xy=np.stack([oxs, oys], axis=1),
+        ))
+    return ObstacleResult(tuple(obstacles), mask)

@@ -1,0 +1,179 @@
+"""Narrow passages: corridor-like constrictions of free space that are not doors.
+
+On the skeleton of the navigable space, the clear width at a skeleton cell is twice its distance
+to the nearest blocking cell (occupied, or unknown beyond a noise speck). Skeleton cells whose
+width is between the robot's diameter and ``params.passage_max_width_m`` form candidate chains.
+A chain's *core* is where the width stays close to its narrowest (the stretch between two
+parallel sides, without the flaring mouths). A core is a passage when it is longer than
+``params.passage_min_length_m`` and clearly longer than wide (a short gap beside a chair is a
+gap, not a passage), and it is not a doorway.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from typing import Final
+
+import numpy as np
+import numpy.typing as npt
+from scipy import ndimage as ndi
+from skimage.morphology import skeletonize
+
+from langnav.analysis.elements import Door, NarrowPassage
+from langnav.analysis.params import AnalysisParams
+from langnav.analysis.unexplored import EIGHT
+from langnav.maps.grid import OccupancyGrid
+
+#: A passage is at least this many times longer than wide: a corridor, not a gap beside an
+#: object (a 0.9 m gap along a 0.7 m table is where you walk round it, not a passage).
+PASSAGE_MIN_ELONGATION: Final = 2.0
+#: The core of a chain: cells no wider than its narrowest width (20th percentile, robust to one
+#: noisy cell) plus this, i.e. the stretch with near-parallel sides.
+CORE_WIDTH_TOL_M: Final = 0.15
+#: A passage has sides: at this share of its core, blocking cells lie close on both sides (a
+#: strip along a wall whose other side is a row of separate objects is not a passage).
+MIN_BOUNDED_FRACTION: Final = 0.7
+#: "Close" for a side: within the half-width plus this.
+SIDE_TOL_M: Final = 0.15
+#: A passage axis within this (degrees) of a grid axis is taken as that axis: pixel noise tilts
+#: the fitted axis of a straight passage by a degree or two.
+AXIS_SNAP_DEG: Final = 3.0
+#: Look this far beyond a mouth for the space the passage opens into.
+MOUTH_SEARCH_M: Final = 1.0
+
+BoolArray = npt.NDArray[np.bool_]
+
+
+def clearance_m(grid: OccupancyGrid, blocking: BoolArray) -> npt.NDArray[np.float64]:
+    """Per cell: distance (m) from its centre to the nearest blocking cell centre (0 on those)."""
+    return np.asarray(ndi.distance_transform_edt(~blocking), dtype=np.float64) * grid.resolution_m
+
+
+def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArray[np.int32],
+                  room_ids: Mapping[int, str], doors: Sequence[Door], blocking: BoolArray,
+                  dist_m: npt.NDArray[np.float64] | None = None) -> tuple[NarrowPassage, ...]:
+    """Narrow passages of the navigable space ``~blocking`` (see the module docstring).
+
+    ``dist_m`` is :func:`clearance_m` of ``blocking`` when the caller already has it.
+    """
+    res = grid.resolution_m
+    open_ = ~blocking & ~grid.occupied
+    rows_any = np.flatnonzero(open_.any(axis=1))
+    cols_any = np.flatnonzero(open_.any(axis=0))
+    if len(rows_any) == 0:
+        return ()
+    r0, r1 = int(rows_any[0]), int(rows_any[-1]) + 1
+    c0, c1 = int(cols_any[0]), int(cols_any[-1]) + 1
+    sub = open_[r0:r1, c0:c1]
+    dist = (clearance_m(grid, blocking) if dist_m is None else dist_m)[r0:r1, c0:c1]
+    skel = skeletonize(sub)
+    # Width across the skeleton: the centre-to-centre distance to a side, minus half a cell, twice.
+    width = np.where(skel, 2.0 * dist - res, 0.0)
+    narrow = skel & (width > 2.0 * params.robot_radius_m) & (width <= params.passage_max_width_m)
+    chains, n = ndi.label(narrow, structure=EIGHT)
+    if n == 0:
+        return ()
+    idx = np.flatnonzero(chains.ravel())
+    cid = chains.ravel()[idx]
+    w = width.ravel()[idx]
+    # Per chain: the 20th-percentile width (sort by (chain, width), pick the rank).
+    order = np.lexsort((w, cid))
+    cid_s, w_s = cid[order], w[order]
+    starts = np.searchsorted(cid_s, np.arange(1, n + 1))
+    counts = np.bincount(cid, minlength=n + 1)[1:]
+    ref = w_s[starts + (counts * 0.2).astype(int)]
+    core = np.zeros_like(narrow)
+    core.ravel()[idx] = w <= ref[cid - 1] + CORE_WIDTH_TOL_M
+    cores, _m = ndi.label(core, structure=EIGHT)
+    passages: list[NarrowPassage] = []
+    for k, sl in enumerate(ndi.find_objects(cores), start=1):
+        if sl is None:
+            continue
+        rr, cc = np.nonzero(cores[sl] == k)
+        rr = rr + sl[0].start
+        cc = cc + sl[1].start
+        if len(rr) < 2:
+            continue
+        pts = np.stack([cc + 0.5, rr + 0.5], axis=1).astype(float)
+        mean = pts.mean(axis=0)
+        cov = np.cov((pts - mean).T)
+        evals, evecs = np.linalg.eigh(cov)
+        axis = evecs[:, int(np.argmax(evals))]
+        # Snap a nearly axis-aligned passage onto the grid axis (cleaner width sampling).
+        if abs(axis[0]) >= math.cos(math.radians(AXIS_SNAP_DEG)):
+            axis = np.array([math.copysign(1.0, axis[0]), 0.0])
+        elif abs(axis[1]) >= math.cos(math.radians(AXIS_SNAP_DEG)):
+            axis = np.array([0.0, math.copysign(1.0, axis[1])])
+        proj = (pts - mean) @ axis
+        length_m = (float(proj.max() - proj.min()) + 1.0) * res
+        # Cheap test first, with the skeleton's width (at most a cell narrower than the true one).
+        rough_w = float(np.median(width[rr, cc]))
+        if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * rough_w:
+            continue
+        sides = _side_distances(sub, pts, dist[rr, cc] / res, np.array([-axis[1], axis[0]]),
+                                SIDE_TOL_M / res)
+        bounded = np.isfinite(sides).all(axis=1)
+        if bounded.mean() < MIN_BOUNDED_FRACTION:
+            continue
+        # Width: across the passage between its two sides (exact for axis-aligned sides).
+        width_m = (float(np.median(sides[bounded].sum(axis=1))) - 0.5) * res
+        if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * width_m:
+            continue
+        ends_g = [mean + proj.min() * axis, mean + proj.max() * axis]
+        centre_g = mean + 0.5 * (proj.min() + proj.max()) * axis
+        cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
+        centre = (float(cx), float(cy))
+        if any(math.dist(centre, d.center) <= d.width_m / 2 + params.door_max_depth_m for d in doors):
+            continue
+        ends_w: list[tuple[float, float]] = []
+        spaces: list[str] = []
+        for sign, e in zip((-1.0, 1.0), ends_g, strict=True):
+            ex, ey = grid.grid_to_world(e[1] + r0, e[0] + c0)
+            ends_w.append((float(ex), float(ey)))
+            sid = _space_beyond(labels, e + np.array([c0, r0]), sign * axis, res, room_ids)
+            if sid is not None and sid not in spaces:
+                spaces.append(sid)
+        passages.append(NarrowPassage(id=f"passage_{len(passages) + 1}", center=centre, width_m=width_m,
+                                      length_m=length_m, ends=(ends_w[0], ends_w[1]),
+                                      connects=tuple(spaces)))
+    return tuple(passages)
+
+
+def _side_distances(open_: BoolArray, pts: npt.NDArray[np.float64], reach: npt.NDArray[np.float64],
+                    normal: npt.NDArray[np.float64], tol_cells: float) -> npt.NDArray[np.float64]:
+    """Per point (x, y in grid cells): distance (cells) to the first non-open cell along -normal
+    and +normal, within reach + tol; ``inf`` where that side is open. Shape (N, 2).
+
+    Sampling every half cell from a cell centre, the first blocked sample is 0 to 0.5 cell past
+    the side's edge: the two sides summed, minus half a cell, is the width.
+    """
+    steps = np.arange(0.0, float(reach.max()) + tol_cells + 0.5, 0.5)
+    out = np.full((len(pts), 2), np.inf)
+    for j, sign in enumerate((-1.0, 1.0)):
+        for t in steps.tolist():
+            x = pts[:, 0] + sign * t * normal[0]
+            y = pts[:, 1] + sign * t * normal[1]
+            r = np.floor(y).astype(int)
+            c = np.floor(x).astype(int)
+            inside = (r >= 0) & (r < open_.shape[0]) & (c >= 0) & (c < open_.shape[1])
+            blocked = ~inside
+            blocked[inside] = ~open_[r[inside], c[inside]]
+            new = blocked & (t <= reach + tol_cells) & np.isinf(out[:, j])
+            out[new, j] = t
+    return out
+
+
+def _space_beyond(labels: npt.NDArray[np.int32], end_g: npt.NDArray[np.float64],
+                  direction: npt.NDArray[np.float64], res: float, room_ids: Mapping[int, str]) -> str | None:
+    """The first labelled space met walking from a mouth outwards along the axis (grid coords)."""
+    steps = int(MOUTH_SEARCH_M / res)
+    for t in range(0, steps + 1):
+        x, y = end_g + t * direction
+        r, c = math.floor(y), math.floor(x)
+        if not (0 <= r < labels.shape[0] and 0 <= c < labels.shape[1]):
+            return None
+        lab = int(labels[r, c])
+        if lab > 0 and lab in room_ids:
+            return room_ids[lab]
+    return None

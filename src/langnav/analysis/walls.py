@@ -1,0 +1,214 @@
+"""Walls: straight segments of the boundary between each space's free cells and occupied cells.
+
+For every free cell of a space that touches a wall cell (4-neighbour), the direction into the
+wall is the gradient of the lightly smoothed wall mask; the *face point* is on the cell edge
+towards the wall. Per space, face points are grouped by direction (histogram peaks), then by
+offset along that direction (points within ``params.wall_max_deviation_m`` of one line), then
+split along the line where the gap is wider than a doorway (a door does not break a wall: the
+wall of a room is the whole side). Runs shorter than ``params.wall_min_length_m`` are dropped.
+Everything is computed in grid coordinates and turned into world metres at the end, so a map
+with a rotated origin gives rotated walls.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Final
+
+import numpy as np
+import numpy.typing as npt
+from scipy import ndimage as ndi
+
+from langnav.analysis.elements import Wall
+from langnav.analysis.params import AnalysisParams
+from langnav.maps.grid import OccupancyGrid
+
+#: Smoothing of the wall mask before taking its gradient, in cells: enough to turn a pixel
+#: staircase into one direction, small enough that a corner only blurs its last cell or two.
+GRADIENT_SIGMA_CELLS: Final = 1.0
+#: Direction histogram bin (degrees); wall directions within this of each other are one group.
+DIRECTION_BIN_DEG: Final = 5.0
+#: A face point joins a wall direction when its own direction is within this (degrees).
+DIRECTION_TOL_DEG: Final = 20.0
+#: At most this many lines are taken out of one direction group (guards noisy real maps).
+MAX_LINES_PER_DIRECTION: Final = 200
+
+FloatArray = npt.NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class WallLine:
+    """A fitted wall in grid coordinates (x = col, y = row, in cells; continuous)."""
+
+    label: int
+    normal: tuple[float, float]  # unit, grid frame, pointing *into the wall* (out of the room)
+    rho: float  # face line: p . normal = rho
+    s0: float  # extent along the tangent (-ny, nx)
+    s1: float
+
+    @property
+    def tangent(self) -> tuple[float, float]:
+        return (-self.normal[1], self.normal[0])
+
+    def point(self, s: float) -> tuple[float, float]:
+        nx, ny = self.normal
+        tx, ty = self.tangent
+        return (self.rho * nx + s * tx, self.rho * ny + s * ty)
+
+
+def _face_points(labels: npt.NDArray[np.int32], wall: npt.NDArray[np.bool_]
+                 ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, npt.NDArray[np.int32]]:
+    """Face points (x, y) in grid cells, their unit normals into the wall, and their space label."""
+    cross = ndi.generate_binary_structure(2, 1)
+    near_wall = ndi.binary_dilation(wall, structure=cross)
+    boundary = (labels > 0) & near_wall & ~wall
+    rows, cols = np.nonzero(boundary)
+    empty = np.zeros(0)
+    if len(rows) == 0:
+        return empty, empty, empty, empty, np.zeros(0, dtype=np.int32)
+    # Smooth only the window holding the boundary (real maps are mostly unknown margin).
+    pad = int(4 * GRADIENT_SIGMA_CELLS) + 2
+    r0, r1 = max(0, rows.min() - pad), min(wall.shape[0], rows.max() + pad + 1)
+    c0, c1 = max(0, cols.min() - pad), min(wall.shape[1], cols.max() + pad + 1)
+    sm = ndi.gaussian_filter(wall[r0:r1, c0:c1].astype(np.float32), GRADIENT_SIGMA_CELLS)
+    gy = ndi.sobel(sm, axis=0)[rows - r0, cols - c0].astype(float)
+    gx = ndi.sobel(sm, axis=1)[rows - r0, cols - c0].astype(float)
+    norm = np.hypot(gx, gy)
+    ok = norm > 1e-6
+    rows, cols, gx, gy, norm = rows[ok], cols[ok], gx[ok], gy[ok], norm[ok]
+    nx, ny = gx / norm, gy / norm
+    # Face point: the cell centre moved half a cell towards the wall (on the free/occupied edge).
+    x = cols + 0.5 + 0.5 * nx
+    y = rows + 0.5 + 0.5 * ny
+    return x, y, nx, ny, labels[rows, cols]
+
+
+def _direction_peaks(theta_deg: FloatArray, min_points: float) -> list[float]:
+    """Dominant directions (degrees) of a set of face normals: peaks of a circular histogram."""
+    nbins = round(360 / DIRECTION_BIN_DEG)
+    hist = np.bincount((theta_deg // DIRECTION_BIN_DEG).astype(int) % nbins, minlength=nbins).astype(float)
+    smooth = hist + 0.5 * (np.roll(hist, 1) + np.roll(hist, -1))
+    peaks: list[float] = []
+    order = np.argsort(-smooth)
+    taken = np.zeros(nbins, dtype=bool)
+    for b in order.tolist():
+        if smooth[b] < min_points:
+            break
+        if taken[b]:
+            continue
+        if smooth[b] < smooth[(b - 1) % nbins] or smooth[b] < smooth[(b + 1) % nbins]:
+            continue
+        span = math.ceil(DIRECTION_TOL_DEG / DIRECTION_BIN_DEG)
+        for d in range(-span, span + 1):
+            taken[(b + d) % nbins] = True
+        peaks.append((b + 0.5) * DIRECTION_BIN_DEG)
+    return peaks
+
+
+def _ang_diff(a: FloatArray, b: float) -> FloatArray:
+    return np.abs((a - b + 180.0) % 360.0 - 180.0)
+
+
+def _refit(x: FloatArray, y: FloatArray, n_x: float, n_y: float) -> tuple[float, float, float] | None:
+    """Total-least-squares line through face points: (normal x, normal y, offset), the normal
+    towards the wall; ``None`` when the fit turns more than half the direction tolerance away
+    from the group's direction (a degenerate set of points), so the caller keeps the group's line.
+    """
+    if len(x) < 3:
+        return None
+    mx, my = float(x.mean()), float(y.mean())
+    _evals, evecs = np.linalg.eigh(np.cov(np.stack([x - mx, y - my])))
+    fx, fy = float(evecs[0, 0]), float(evecs[1, 0])  # smallest eigenvalue: the normal
+    if fx * n_x + fy * n_y < 0:
+        fx, fy = -fx, -fy
+    if fx * n_x + fy * n_y < math.cos(math.radians(DIRECTION_TOL_DEG / 2)):
+        return None
+    return fx, fy, mx * fx + my * fy
+
+
+def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArray[np.int32],
+                   wall: npt.NDArray[np.bool_]) -> list[WallLine]:
+    """Straight wall lines per space label, in grid coordinates (see the module docstring)."""
+    x, y, nx, ny, lab = _face_points(labels, wall)
+    res = grid.resolution_m
+    min_len = params.wall_min_length_m / res
+    max_dev = max(params.wall_max_deviation_m / res, 0.5)
+    max_gap = params.door_max_width_m / res + 1.0
+    lines: list[WallLine] = []
+    if len(x) == 0:
+        return lines
+    theta = np.degrees(np.arctan2(ny, nx)) % 360.0
+    order = np.argsort(lab, kind="stable")
+    bounds = [*np.searchsorted(lab[order], np.unique(lab), side="left").tolist(), len(lab)]
+    for i, space in enumerate(np.unique(lab).tolist()):
+        idx = order[bounds[i]:bounds[i + 1]]
+        th = theta[idx]
+        # The histogram alone can merge two close directions; the tolerance keeps groups tight.
+        for peak in _direction_peaks(th, min_points=min_len * 0.5):
+            near = _ang_diff(th, peak) <= DIRECTION_TOL_DEG
+            if near.sum() < min_len * 0.5:
+                continue
+            sel = idx[near]
+            # Refine the direction: circular mean of the members.
+            phi = math.atan2(float(ny[sel].sum()), float(nx[sel].sum()))
+            n_x, n_y = math.cos(phi), math.sin(phi)
+            rho = x[sel] * n_x + y[sel] * n_y
+            s = -x[sel] * n_y + y[sel] * n_x
+            remaining = np.ones(len(sel), dtype=bool)
+            for _ in range(MAX_LINES_PER_DIRECTION):
+                if remaining.sum() < min_len * 0.5:
+                    break
+                r_rem = rho[remaining]
+                base = math.floor(float(r_rem.min()))
+                hist = np.bincount((r_rem - base).astype(int))
+                # Count within +-max_dev of each bin: the densest line offset.
+                k = math.ceil(max_dev)
+                dens = np.convolve(hist, np.ones(2 * k + 1), mode="same")
+                centre = base + float(np.argmax(dens)) + 0.5
+                member = remaining & (np.abs(rho - centre) <= max_dev)
+                if member.sum() == 0:
+                    break
+                centre = float(np.median(rho[member]))
+                member = remaining & (np.abs(rho - centre) <= max_dev)
+                remaining &= ~member
+                if member.sum() < min_len * 0.5:
+                    continue
+                fit = _refit(x[sel][member], y[sel][member], n_x, n_y)
+                m_nx, m_ny, m_centre = (n_x, n_y, centre) if fit is None else fit
+                s_line = -x[sel][member] * m_ny + y[sel][member] * m_nx
+                s_m = np.sort(s_line)
+                gaps = np.flatnonzero(np.diff(s_m) > max_gap)
+                starts = np.concatenate([[0], gaps + 1])
+                ends = np.concatenate([gaps, [len(s_m) - 1]])
+                for a, b in zip(starts.tolist(), ends.tolist(), strict=True):
+                    # Face points are cell centres projected on the face: the run covers half a
+                    # cell more at each end.
+                    s0, s1 = float(s_m[a]) - 0.5, float(s_m[b]) + 0.5
+                    if s1 - s0 >= min_len and (b - a + 1) >= 0.5 * (s1 - s0):
+                        lines.append(WallLine(int(space), (m_nx, m_ny), m_centre, s0, s1))
+    return lines
+
+
+def line_to_world(grid: OccupancyGrid, line: WallLine) -> tuple[tuple[float, float], tuple[float, float], tuple[float, float]]:
+    """(start, end, inward unit normal) of a grid-frame line in world metres."""
+    p0 = line.point(line.s0)
+    p1 = line.point(line.s1)
+    x0, y0 = grid.grid_to_world(p0[1], p0[0])
+    x1, y1 = grid.grid_to_world(p1[1], p1[0])
+    c, s = math.cos(grid.origin_yaw_rad), math.sin(grid.origin_yaw_rad)
+    inx, iny = -line.normal[0], -line.normal[1]
+    return ((float(x0), float(y0)), (float(x1), float(y1)), (c * inx - s * iny, s * inx + c * iny))
+
+
+def find_walls(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArray[np.int32],
+               room_ids: Mapping[int, str], wall: npt.NDArray[np.bool_] | None = None) -> tuple[Wall, ...]:
+    """Wall segments bounding each space. ``wall`` is the mask of wall cells (default: occupied;
+    the pipeline removes obstacles from it so furniture sides are not walls)."""
+    mask = grid.occupied if wall is None else wall
+    walls: list[Wall] = []
+    for k, line in enumerate(fit_wall_lines(grid, params, labels, mask), start=1):
+        start, end, inward = line_to_world(grid, line)
+        walls.append(Wall(id=f"wall_{k}", start=start, end=end, room=room_ids.get(line.label), inward=inward))
+    return tuple(walls)
