@@ -155,7 +155,6 @@ def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
             phi = math.atan2(float(ny[sel].sum()), float(nx[sel].sum()))
             n_x, n_y = math.cos(phi), math.sin(phi)
             rho = x[sel] * n_x + y[sel] * n_y
-            s = -x[sel] * n_y + y[sel] * n_x
             remaining = np.ones(len(sel), dtype=bool)
             for _ in range(MAX_LINES_PER_DIRECTION):
                 if remaining.sum() < min_len * 0.5:
