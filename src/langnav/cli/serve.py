@@ -1,0 +1,60 @@
+"""``langnav serve``: the web app (chat + live map) with a robot backend, on one port."""
+
+from __future__ import annotations
+
+import argparse
+import logging
+from pathlib import Path
+
+from langnav.web.settings import DEFAULT_HOST, DEFAULT_PORT, WebSettings, make_token
+
+log = logging.getLogger(__name__)
+
+
+def _pose(text: str) -> tuple[float, float, float]:
+    try:
+        parts = [float(v) for v in text.split(",")]
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"--pose wants X,Y,YAW_DEG in metres and degrees, got {text!r}") from None
+    if len(parts) == 2:
+        parts.append(0.0)
+    if len(parts) != 3:
+        raise argparse.ArgumentTypeError(f"--pose wants X,Y,YAW_DEG, got {text!r}")
+    return parts[0], parts[1], parts[2]
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--world", type=Path, default=None,
+                   help="map of the simulated world (map_server YAML or image); default: the bundled demo world")
+    p.add_argument("--backend", default="sim", help="robot backend: sim (default), rosbridge, ros2")
+    p.add_argument("--translator", default="offline",
+                   help="who reads prompts: offline (default), auto, gemini, openai, local")
+    p.add_argument("--host", default=DEFAULT_HOST,
+                   help="address to listen on (default 127.0.0.1; any other needs the printed token)")
+    p.add_argument("--port", type=int, default=DEFAULT_PORT, help=f"port (default {DEFAULT_PORT})")
+    p.add_argument("--known-map", action="store_true", help="the robot starts with the whole world map as its own")
+    p.add_argument("--pose", type=_pose, default=None, help="start pose X,Y,YAW_DEG (default: the world's open spot)")
+    p.add_argument("--db", type=Path, default=Path("langnav.db"), help="SQLite file of the conversation")
+
+
+def run(args: argparse.Namespace) -> int:
+    import uvicorn
+
+    from langnav.web.app import create_app
+
+    settings = WebSettings.from_env(world=args.world, backend=args.backend, translator=args.translator,
+                                    host=args.host, port=args.port, known_map=args.known_map or None,
+                                    start_pose=args.pose, db_path=args.db)
+    if settings.requires_token and not settings.token:
+        settings = settings.model_copy(update={"token": make_token()})
+    settings = settings.checked()
+    shown_host = f"[{settings.host}]" if ":" in settings.host else settings.host
+    url = f"http://{shown_host}:{settings.port}/"
+    if settings.requires_token:
+        print(f"langnav is reachable from other machines on {settings.host}: moving the robot needs this token "
+              f"(shown once):\n  {settings.token}\nopen {url}?token={settings.token}", flush=True)
+    else:
+        print(f"langnav: open {url}", flush=True)
+    app = create_app(settings)
+    uvicorn.run(app, host=settings.host, port=settings.port, log_level="warning", ws_ping_interval=20.0)
+    return 0

@@ -1,0 +1,443 @@
+"""One robot, its planner and its plan executor, shared by every page the app serves.
+
+:class:`RobotSession` owns
+* the robot backend (``create_backend``; the simulator runs its clock in real time),
+* the planner (prompt -> intent -> grounded, validated commands) and the plan executor,
+* the conversation store, and the :class:`~langnav.web.broadcast.Broadcaster` of state frames.
+
+A sampler thread reads ``robot.state()`` at ``settings.state_hz`` (<= 10 Hz) and publishes one
+state frame; it checks the map every MAP_CHECK_PERIOD_S and publishes it only when its cells
+changed; a map change also schedules a new analysis (at most every ANALYSIS_MIN_PERIOD_S, on
+its own thread), whose elements are published for drawing. None of this holds the robot's lock
+for longer than one ``state()`` / ``get_map()`` call, so the control loop never waits on a client.
+
+Mid-plan prompts: a prompt that only asks (where are you, what path, the map) is answered at
+once and the plan goes on; any other prompt replaces the running plan (it is cancelled first),
+as a person redirecting the robot would expect. STOP always wins at once.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import threading
+import time
+from collections.abc import Sequence
+from typing import Any, Final
+
+from langnav.analysis.elements import MapAnalysis
+from langnav.errors import LangnavError
+from langnav.language.translator import available as translator_names
+from langnav.language.translator import clean_prompt
+from langnav.maps.grid import OccupancyGrid
+from langnav.plan.commands import (
+    Command,
+    GetCurrentPath,
+    GetMap,
+    GetRobotPoseLast,
+    NavigateThroughPoses,
+    describe,
+)
+from langnav.plan.errors import PlanRejected
+from langnav.robot.errors import RobotError
+from langnav.robot.protocol import RobotBackend, create_backend
+from langnav.web.broadcast import Broadcaster
+from langnav.web.feedback import FeedbackManager, describe_intent
+from langnav.web.mapframes import elements_frame, grid_digest, map_frame, map_png, state_frame
+from langnav.web.settings import WebSettings
+from langnav.web.store import ConversationStore, Message
+
+log = logging.getLogger(__name__)
+
+#: Map changes are looked for twice a second: slam-like maps change at the scan rate (5 Hz) but a
+#: person cannot follow faster, and each check copies the grid.
+MAP_CHECK_PERIOD_S: Final = 0.5
+#: Re-analyse a changing map at most this often (an analysis of a floor takes ~0.1-1 s).
+ANALYSIS_MIN_PERIOD_S: Final = 2.0
+#: The robot's radius for drawing when the backend does not say (TurtleBot 4 / Create 3).
+DEFAULT_RADIUS_M: Final = 0.17
+#: Wait this long for a cancelled plan to wind down before starting the next one.
+CANCEL_WAIT_S: Final = 3.0
+#: Wait this long for the sampler thread to end when closing.
+THREAD_JOIN_S: Final = 3.0
+QUERY_COMMANDS: Final = (GetRobotPoseLast, GetCurrentPath, GetMap)
+
+
+class SessionBusy(LangnavError):
+    """Another prompt is being planned right now."""
+
+
+def load_world(settings: WebSettings) -> OccupancyGrid:
+    """The world map: ``settings.world``, or the bundled demo world."""
+    from langnav.maps.io import load_map
+
+    if settings.world is not None:
+        return load_map(settings.world)
+    try:
+        from langnav.maps.demo import demo_map_path
+    except ModuleNotFoundError as exc:
+        raise LangnavError("no --world given and the bundled demo world is not installed; "
+                           "pass --world MAP.yaml") from exc
+    return load_map(demo_map_path())
+
+
+class RobotSession:
+    """See the module docstring. Create, :meth:`start`, use from any thread, :meth:`close`."""
+
+    def __init__(self, settings: WebSettings, robot: RobotBackend | None = None) -> None:
+        self.settings = settings
+        self.store = ConversationStore(settings.db_path)
+        self.broadcaster = Broadcaster()
+        if robot is None:
+            options: dict[str, Any] = dict(settings.backend_options)
+            if settings.backend == "sim":
+                options.setdefault("world", load_world(settings))
+                options.setdefault("known_map", settings.known_map)
+                if settings.start_pose is not None:
+                    options.setdefault("pose", settings.start_pose)
+            import langnav.robot  # noqa: F401  (registers the built-in backends)
+
+            robot = create_backend(settings.backend, **options)
+        self.robot = robot
+        self.radius_m = float(getattr(getattr(robot, "config", None), "robot_radius_m", DEFAULT_RADIUS_M))
+        self.translator = settings.translator
+        self._planner = self._make_planner(self.translator)
+        self._plan_lock = threading.Lock()   # one prompt planned at a time
+        self._state_lock = threading.Lock()
+        self._analysis: MapAnalysis | None = None
+        self._analysis_digest = ""
+        self._analysis_running = False
+        self._last_analysis_s = -math.inf
+        self._map_digest = ""
+        self._map_version: Any = None
+        self._grid: OccupancyGrid | None = None
+        self._plan_id = self.store.last_plan_id()
+        self._run: PlanRun | None = None
+        self.feedback = FeedbackManager(lambda: self._analysis)
+        self._halt = threading.Event()
+        self._sampler: threading.Thread | None = None
+        self.frames_published = 0
+
+    # -- lifecycle -------------------------------------------------------------------------------
+    def start(self) -> None:
+        starter = getattr(self.robot, "start", None)
+        if callable(starter) and not getattr(self.robot, "running", False):
+            starter(realtime=True)
+        self._refresh_map(force=True)
+        self._sampler = threading.Thread(target=self._sample_loop, name="langnav-web-sampler", daemon=True)
+        self._sampler.start()
+
+    def close(self) -> None:
+        self._halt.set()
+        run = self._run
+        if run is not None:
+            run.cancel()
+        if self._sampler is not None:
+            self._sampler.join(THREAD_JOIN_S)
+        try:
+            self.robot.close()
+        finally:
+            self.store.close()
+
+    # -- status ----------------------------------------------------------------------------------
+    def plan_state(self) -> dict[str, Any]:
+        run = self._run
+        if run is None or run.done:
+            return {"state": "idle"}
+        return {"state": "paused" if run.paused else "running", "plan_id": run.plan_id,
+                "index": run.index, "total": run.total}
+
+    def status(self) -> dict[str, Any]:
+        st = self.robot.state()
+        return {"backend": self.robot.name, "connected": st.connected, "translator": self.translator,
+                "translators": translator_names(), "plan": self.plan_state(),
+                "max_prompt_chars": self.settings.max_prompt_chars,
+                "requires_token": self.settings.requires_token, "viewers": self.broadcaster.subscriber_count,
+                "pose": list(st.pose.as_tuple()), "where": self.feedback.where_am_i(st.pose)}
+
+    def map_png(self) -> bytes:
+        return map_png(self.robot.get_map())
+
+    def analysis(self) -> MapAnalysis | None:
+        return self._analysis
+
+    # -- chat ------------------------------------------------------------------------------------
+    def say(self, role: str, kind: str, payload: dict[str, Any], plan_id: int | None = None) -> Message:
+        """Store a chat message and send it to every page."""
+        msg = self.store.add(role, kind, payload, plan_id)
+        self.broadcaster.publish_event({"type": "message", "message": msg.to_json()})
+        return msg
+
+    def submit_prompt(self, text: str) -> list[Message]:
+        """Read, ground and validate a prompt; show the plan; run it. Returns the new messages."""
+        text = clean_prompt(text)
+        if not self._plan_lock.acquire(timeout=0.1):
+            raise SessionBusy("still working out the previous prompt; try again in a moment")
+        try:
+            out = [self.say("user", "prompt", {"text": text})]
+            pose = self.robot.get_robot_pose()
+            source: Any = self._current_analysis() or self.robot.get_map()
+            try:
+                result = self._planner.plan(text, source, (pose.x_m, pose.y_m, math.degrees(pose.yaw_rad)))
+            except PlanRejected as exc:
+                out.append(self.say("robot", "rejected", {"text": "I won't do that, nothing moved.",
+                                                           "reasons": exc.reasons}))
+                return out
+            except LangnavError as exc:
+                out.append(self.say("robot", "rejected", {"text": f"I could not plan that: {exc}",
+                                                           "reasons": []}))
+                return out
+            out.extend(self._show_and_run(result, source="prompt"))
+            return out
+        finally:
+            self._plan_lock.release()
+
+    def go_to(self, x_m: float, y_m: float) -> list[Message]:
+        """Send the robot to a clicked point, through the same validator as any prompt."""
+        if not self._plan_lock.acquire(timeout=0.1):
+            raise SessionBusy("still working out the previous prompt; try again in a moment")
+        try:
+            out = [self.say("user", "prompt", {"text": f"Go to the point I clicked: x {x_m:.2f}, y {y_m:.2f}"})]
+            cmd = NavigateThroughPoses(poses=[[x_m, y_m]], note="the point you clicked")
+            try:
+                commands = self._validate([cmd])
+            except PlanRejected as exc:
+                out.append(self.say("robot", "rejected", {"text": "I can't go there, nothing moved.",
+                                                           "reasons": exc.reasons}))
+                return out
+            out.extend(self._start_plan(f"I'll go to x {x_m:.2f}, y {y_m:.2f}.", "map click", [commands], [],
+                                        source="click"))
+            return out
+        finally:
+            self._plan_lock.release()
+
+    def stop(self) -> dict[str, Any]:
+        """Halt now: the robot first, then the plan; then say so."""
+        self.robot.stop()
+        run = self._run
+        if run is not None and not run.done:
+            run.cancel()
+        pose = self.robot.get_robot_pose()
+        msg = self.say("system", "info", {"text": self.feedback.stopped(pose, "you pressed STOP")})
+        return {"ok": True, "message": msg.to_json()}
+
+    def pause(self) -> dict[str, Any]:
+        run = self._run
+        if run is None or run.done:
+            return {"ok": False, "plan": self.plan_state()}
+        run.pause()
+        msg = self.say("system", "info", {"text": "Paused. Press Resume to carry on, or STOP."})
+        return {"ok": True, "plan": self.plan_state(), "message": msg.to_json()}
+
+    def resume(self) -> dict[str, Any]:
+        run = self._run
+        if run is None or run.done or not run.paused:
+            return {"ok": False, "plan": self.plan_state()}
+        run.resume()
+        msg = self.say("system", "info", {"text": "Resuming the plan."})
+        return {"ok": True, "plan": self.plan_state(), "message": msg.to_json()}
+
+    def set_translator(self, name: str) -> dict[str, Any]:
+        names = translator_names()
+        if name not in names:
+            raise LangnavError(f"unknown translator {name!r}; choose one of: {', '.join(names)}")
+        planner = self._make_planner(name)
+        with self._plan_lock:
+            self._planner, self.translator = planner, name
+        self.say("system", "info", {"text": f"Translator: {name}."})
+        self.broadcaster.publish_event({"type": "status", "status": self.status()})
+        return {"ok": True, "translator": name}
+
+    # -- planning internals -----------------------------------------------------------------------
+    def _make_planner(self, translator: str) -> Any:
+        from langnav.pipeline import Planner
+
+        return Planner(translator=translator)
+
+    def _validate(self, commands: Sequence[Command]) -> list[Command]:
+        """Commands made here (a map click) go through the same validator as a prompt's."""
+        pose = self.robot.get_robot_pose()
+        source: Any = self._current_analysis() or self.robot.get_map()
+        checked = self._planner.validate(list(commands), source, (pose.x_m, pose.y_m, math.degrees(pose.yaw_rad)))
+        return list(checked)
+
+    def _show_and_run(self, result: Any, source: str) -> list[Message]:
+        if getattr(result, "clarification", None):
+            return [self.say("robot", "clarification", {"text": result.clarification,
+                                                         "translator": getattr(result, "translator", "")})]
+        items = list(getattr(result, "items", []) or [])
+        groups = [list(item.commands) for item in items]
+        if not any(groups):
+            return [self.say("robot", "clarification", {
+                "text": "I did not find anything to do in that. Try e.g. “go to the nearest door”."})]
+        notes = [str(m) for m in getattr(result, "messages", []) or []]
+        intent = getattr(result, "intent", None)
+        intent_text = describe_intent(intent) if intent is not None else "Here is the plan."
+        return self._start_plan(intent_text, getattr(result, "translator", self.translator), groups, notes,
+                                source=source, result=result)
+
+    def _start_plan(self, intent_text: str, translator: str, groups: list[list[Command]], notes: list[str],
+                    source: str, result: Any = None) -> list[Message]:
+        flat = [c for g in groups for c in g]
+        only_queries = all(isinstance(c, QUERY_COMMANDS) for c in flat)
+        if only_queries:
+            # Questions are answered at once; a running plan goes on.
+            return [self.say("robot", "answer", {"text": self._answer(c)}) for c in flat]
+        with self._state_lock:
+            self._plan_id += 1
+            plan_id = self._plan_id
+        commands = [{"index": i, "text": describe(c), "command": c.model_dump(exclude={"note"})}
+                    for i, c in enumerate(flat)]
+        card = self.say("robot", "plan", {"intent_text": intent_text, "translator": translator, "source": source,
+                                          "commands": commands, "notes": notes}, plan_id=plan_id)
+        previous = self._run
+        if previous is not None and not previous.done:
+            previous.cancel()
+            previous.join(CANCEL_WAIT_S)
+        run = PlanRun(self, plan_id, groups, result)
+        self._run = run
+        run.start()
+        return [card]
+
+    def _answer(self, cmd: Command) -> str:
+        if isinstance(cmd, GetRobotPoseLast):
+            return self.feedback.where_am_i(self.robot.get_robot_pose())
+        if isinstance(cmd, GetCurrentPath):
+            return self.feedback.path(self.robot.get_current_path())
+        return self.feedback.map(self.robot.get_map())
+
+    # -- map, analysis, state frames -------------------------------------------------------------------
+    def _current_analysis(self) -> MapAnalysis | None:
+        """The analysis of the robot's map as it is now (analysed here if the cached one is stale)."""
+        grid = self.robot.get_map()
+        digest = grid_digest(grid)
+        if self._analysis is not None and digest == self._analysis_digest:
+            return self._analysis
+        analysis = self._analyze(grid)
+        if analysis is not None:
+            self._set_analysis(analysis, digest)
+        return analysis
+
+    def _analyze(self, grid: OccupancyGrid) -> MapAnalysis | None:
+        from langnav.analysis.pipeline import analyze
+
+        try:
+            return analyze(grid)
+        except LangnavError as exc:
+            log.warning("map analysis failed: %s", exc)
+            return None
+
+    def _set_analysis(self, analysis: MapAnalysis, digest: str) -> None:
+        with self._state_lock:
+            self._analysis, self._analysis_digest = analysis, digest
+        self.broadcaster.publish_frame("elements", elements_frame(analysis, digest))
+
+    def _analysis_worker(self, grid: OccupancyGrid, digest: str) -> None:
+        try:
+            analysis = self._analyze(grid)
+            if analysis is not None:
+                self._set_analysis(analysis, digest)
+        finally:
+            self._analysis_running = False
+
+    def _refresh_map(self, force: bool = False) -> None:
+        version = self.robot.state().extra.get("map_version")
+        if not force and version is not None and version == self._map_version:
+            return
+        grid = self.robot.get_map()
+        digest = grid_digest(grid)
+        self._map_version = version
+        if digest == self._map_digest:
+            return
+        self._map_digest, self._grid = digest, grid
+        self.broadcaster.publish_frame("map", map_frame(grid, digest))
+        now = time.monotonic()
+        if not self._analysis_running and (force or now - self._last_analysis_s >= ANALYSIS_MIN_PERIOD_S):
+            self._analysis_running = True
+            self._last_analysis_s = now
+            threading.Thread(target=self._analysis_worker, args=(grid, digest), name="langnav-web-analysis",
+                             daemon=True).start()
+
+    def _sample_loop(self) -> None:
+        period = 1.0 / self.settings.state_hz
+        next_map = 0.0
+        while not self._halt.wait(period):
+            try:
+                st = self.robot.state()
+                self.broadcaster.publish_frame("state", state_frame(
+                    st, self.robot.name, self.feedback.where_am_i(st.pose), self.plan_state(), self.radius_m))
+                self.frames_published += 1
+                now = time.monotonic()
+                if now >= next_map:
+                    next_map = now + MAP_CHECK_PERIOD_S
+                    self._refresh_map()
+            except RobotError as exc:
+                log.warning("robot state unavailable: %s", exc)
+                self._halt.wait(1.0)
+
+
+class PlanRun:
+    """One plan on the executor, with its events turned into chat messages and progress."""
+
+    def __init__(self, session: RobotSession, plan_id: int, groups: list[list[Command]], result: Any) -> None:
+        self.session = session
+        self.plan_id = plan_id
+        self.groups = groups
+        self.result = result
+        self.total = sum(len(g) for g in groups)
+        self.index: int | None = None
+        self.paused = False
+        self.done = False
+        self._handle: Any = None
+        self._finished = threading.Event()
+
+    def start(self) -> None:
+        from langnav.plan.executor import PlanExecutor
+
+        executor = PlanExecutor(self.session.robot)
+        self._handle = executor.start(self.groups, on_event=self._on_event)
+
+    def cancel(self) -> None:
+        if self._handle is not None:
+            self._handle.cancel()
+
+    def pause(self) -> None:
+        if self._handle is not None:
+            self._handle.pause()
+            self.paused = True
+
+    def resume(self) -> None:
+        if self._handle is not None:
+            self._handle.resume()
+            self.paused = False
+
+    def join(self, timeout_s: float) -> bool:
+        return self._finished.wait(timeout_s)
+
+    def _on_event(self, event: Any) -> None:
+        s = self.session
+        kind = str(getattr(event, "kind", ""))
+        index = getattr(event, "index", None)
+        if index is not None:
+            self.index = int(index)
+        if kind == "progress":
+            s.broadcaster.publish_event({"type": "progress", "plan_id": self.plan_id, "index": self.index,
+                                         "text": getattr(event, "message", ""),
+                                         "fraction": getattr(event, "fraction", None)})
+            return
+        if kind in ("started", "succeeded", "failed", "cancelled"):
+            status = "running" if kind == "started" else kind
+            s.say("robot", "step", {"index": self.index, "status": status,
+                                    "text": getattr(event, "message", "")}, plan_id=self.plan_id)
+        if kind == "finished":
+            self.done = True
+            self._finished.set()
+            pose = s.robot.get_robot_pose()
+            status = str(getattr(event, "status", ""))
+            if status == "succeeded":
+                text = s.feedback.arrived(pose)
+            elif status == "cancelled":
+                text = s.feedback.stopped(pose)
+            else:
+                text = s.feedback.failed(getattr(event, "message", "") or "the plan failed", pose)
+            s.say("robot", "outcome", {"status": status, "text": text}, plan_id=self.plan_id)
