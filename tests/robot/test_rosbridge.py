@@ -1,0 +1,340 @@
+"""End to end on loopback: the rosbridge v2 server (backed by the simulator) driven by the
+``rosbridge`` backend through roslibpy, plus the faults: a dropped link, malformed messages from
+the robot, and timeouts.
+
+roslibpy's transport loop (twisted reactor) starts once per process and is never terminated here:
+each backend closes only its own connection, so any number of them can come and go.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import math
+import threading
+import time
+from collections.abc import Callable, Iterator
+from typing import Any
+
+import pytest
+from websockets.asyncio.server import ServerConnection, serve
+from websockets.sync.client import connect
+
+from langnav.maps.draw import MapBuilder
+from langnav.maps.grid import OccupancyGrid
+from langnav.robot import ros_messages as rm
+from langnav.robot.errors import RobotError, RobotTimeout
+from langnav.robot.protocol import (
+    Pose2D,
+    RobotBackend,
+    RobotState,
+    TaskHandle,
+    TaskStatus,
+    create_backend,
+)
+from langnav.robot.rosbridge_backend import RosbridgeBackend
+from langnav.robot.rosbridge_server import RosbridgeServer, RosbridgeServerConfig
+
+#: The simulated clock runs this many times faster than the wall clock in these tests.
+SIM_SPEED = 4.0
+START = (1.5, 3.0, 0.0)
+GOAL = (6.0, 3.0)
+
+
+def _world() -> OccupancyGrid:
+    return MapBuilder(8, 6).room(0.5, 0.5, 7.5, 5.5).box(3.5, 2.0, 4.0, 4.0).build("test room")
+
+
+def _until(cond: Callable[[], bool], timeout_s: float, what: str) -> None:
+    deadline = time.monotonic() + timeout_s
+    while not cond():
+        if time.monotonic() > deadline:
+            raise AssertionError(f"timed out after {timeout_s} s waiting for {what}")
+        time.sleep(0.02)
+
+
+class Served:
+    def __init__(self, backend: RobotBackend, **server_options: Any) -> None:
+        self.robot = backend
+        self.server = RosbridgeServer(backend, RosbridgeServerConfig(**server_options))
+        self.port = self.server.start("127.0.0.1", 0)
+
+    def client(self, **options: Any) -> RosbridgeBackend:
+        options.setdefault("connect_timeout_s", 5.0)
+        return RosbridgeBackend(host="127.0.0.1", port=self.port, **options)
+
+    def close(self) -> None:
+        self.server.close()
+        self.robot.close()
+
+
+def _sim() -> Any:
+    sim = create_backend("sim", world=_world(), pose=START, known_map=True)
+    sim.start(realtime=True, speed=SIM_SPEED)  # type: ignore[attr-defined]
+    return sim
+
+
+@pytest.fixture(scope="module")
+def sim_served() -> Iterator[tuple[Served, RosbridgeBackend]]:
+    served = Served(_sim())
+    robot = served.client()
+    yield served, robot
+    robot.close()
+    served.close()
+
+
+@pytest.fixture
+def fresh_served() -> Iterator[Served]:
+    served = Served(_sim())
+    yield served
+    served.close()
+
+
+# -- the happy path ----------------------------------------------------------------------------
+def test_pose_map_and_navigation_with_feedback_and_plan(sim_served: tuple[Served, RosbridgeBackend]) -> None:
+    served, robot = sim_served
+    pose = robot.get_robot_pose(timeout_s=3.0)
+    truth = served.robot.get_robot_pose()
+    assert (pose.x_m, pose.y_m) == (pytest.approx(truth.x_m, abs=0.05), pytest.approx(truth.y_m, abs=0.05))
+
+    grid = robot.get_map(timeout_s=3.0)
+    sim_grid = served.robot.get_map()
+    assert grid.cells.shape == sim_grid.cells.shape
+    assert (grid.cells == sim_grid.cells).mean() > 0.99
+    assert (grid.origin_x_m, grid.resolution_m) == (sim_grid.origin_x_m, sim_grid.resolution_m)
+
+    handle = robot.navigate_through_poses([GOAL])
+    distances: list[float] = []
+    paths: list[list[tuple[float, float]]] = []
+    deadline = time.monotonic() + 20.0
+    while handle.status() is TaskStatus.RUNNING and time.monotonic() < deadline:
+        fb = handle.feedback()
+        if fb is not None and fb.distance_remaining_m is not None:
+            distances.append(fb.distance_remaining_m)
+        paths.append(robot.get_current_path())
+        time.sleep(0.1)
+    result = handle.wait(timeout_s=5.0)
+    assert result.status is TaskStatus.SUCCEEDED, result.message
+    end = robot.get_robot_pose()
+    assert math.hypot(end.x_m - GOAL[0], end.y_m - GOAL[1]) < 0.3
+    # feedback streamed and the distance shrank; the planned path led to the goal around the box
+    assert len(distances) >= 3 and distances[-1] < distances[0] - 2.0
+    longest = max(paths, key=len)
+    assert len(longest) >= 2
+    assert math.hypot(longest[-1][0] - GOAL[0], longest[-1][1] - GOAL[1]) < 0.3
+    assert any(not (2.0 <= y <= 4.0) for x, y in longest if 3.3 <= x <= 4.2)  # it goes around the box
+
+
+def test_cancel_mid_goal_stops_the_robot(sim_served: tuple[Served, RosbridgeBackend]) -> None:
+    served, robot = sim_served
+    handle = robot.navigate_through_poses([(1.5, 1.5), (6.5, 1.2)])
+    _until(lambda: handle.feedback() is not None, 5.0, "first feedback")
+    handle.cancel()
+    result = handle.wait(timeout_s=5.0)
+    assert result.status is TaskStatus.CANCELED
+    _until(lambda: not served.robot.state().busy, 3.0, "the simulated robot to idle")
+    time.sleep(0.3)
+    state = served.robot.state()
+    assert abs(state.linear_mps) < 1e-9 and abs(state.angular_radps) < 1e-9
+
+
+# -- faults ------------------------------------------------------------------------------------
+def test_connection_dropped_mid_goal_fails_the_handle_and_stops_the_robot(fresh_served: Served) -> None:
+    robot = fresh_served.client()
+    try:
+        handle = robot.navigate_through_poses([GOAL])
+        _until(lambda: handle.feedback() is not None, 5.0, "first feedback")
+        fresh_served.server.stop()
+        result = handle.wait(timeout_s=5.0)
+        assert result.status is TaskStatus.FAILED
+        assert "lost the rosbridge connection" in result.message
+        assert not fresh_served.robot.state().busy  # the server cancelled the dropped client's goal
+        with pytest.raises(RobotError, match="not connected"):
+            robot.navigate_through_poses([START[:2]])
+    finally:
+        robot.close()
+
+
+def test_unreachable_rosbridge_is_a_clear_error_within_the_timeout() -> None:
+    server = RosbridgeServer(_DummyRobot())
+    port = server.start()
+    server.close()  # the port is now closed
+    t0 = time.monotonic()
+    with pytest.raises(RobotError, match=r"cannot reach rosbridge .*rosbridge_websocket_launch\.xml"):
+        RosbridgeBackend(port=port, connect_timeout_s=1.0)
+    assert time.monotonic() - t0 < 5.0
+
+
+def test_server_answers_malformed_input_with_status_and_keeps_serving(sim_served: tuple[Served, RosbridgeBackend]) -> None:
+    served, _ = sim_served
+    with connect(f"ws://127.0.0.1:{served.port}", open_timeout=5) as ws:
+        def ask(payload: str) -> dict[str, Any]:
+            ws.send(payload)
+            return json.loads(ws.recv(timeout=5))
+
+        assert ask("{not json")["level"] == "error"
+        assert "must be a JSON object" in ask("[1, 2]")["msg"]
+        bogus = ask(json.dumps({"op": "bogus", "id": "b1"}))
+        assert (bogus["op"], bogus["id"]) == ("status", "b1") and "unknown operation 'bogus'" in bogus["msg"]
+        assert "no topic '/nope'" in ask(json.dumps({"op": "subscribe", "topic": "/nope"}))["msg"]
+        wrong = ask(json.dumps({"op": "subscribe", "topic": "/map", "type": "sensor_msgs/msg/Image"}))
+        assert "has type nav_msgs/msg/OccupancyGrid" in wrong["msg"]
+        # the simulator takes no velocity commands: a clear refusal, not a crash
+        refused = ask(json.dumps({"op": "publish", "topic": "/cmd_vel", "msg": rm.twist(0.1, 0.0)}))
+        assert "cannot be driven by velocity" in refused["msg"]
+        bad_goal = json.dumps({"op": "send_action_goal", "id": "g1", "action": "/navigate_through_poses",
+                               "action_type": rm.NAVIGATE_THROUGH_POSES, "args": {"poses": []}})
+        ws.send(bad_goal)
+        replies = [json.loads(ws.recv(timeout=5)) for _ in range(2)]
+        result = next(r for r in replies if r["op"] == "action_result")
+        assert (result["result"], result["status"], result["id"]) == (False, rm.GOAL_STATUS_UNKNOWN, "g1")
+        # still serving: a service call answers with the pose
+        reply = ask(json.dumps({"op": "call_service", "id": "s1", "service": "/langnav/get_robot_pose"}))
+        assert reply["op"] == "service_response" and reply["result"] is True
+        pose, frame = rm.parse_pose_stamped(reply["values"]["pose"])
+        assert frame == "map" and math.isfinite(pose.x_m)
+
+
+# -- a robot that speaks nonsense -------------------------------------------------------------------
+class _BadRobot:
+    """A raw rosbridge server whose /map and NavigateThroughPoses feedback are malformed and
+    which never publishes tf: the robot side of the 'malformed message' fault."""
+
+    def __init__(self) -> None:
+        self.port = 0
+        self.cmd_vel: list[dict[str, Any]] = []
+        self._ready = threading.Event()
+        self._stop: asyncio.Event | None = None
+        self._loop: asyncio.AbstractEventLoop | None = None
+        self._thread = threading.Thread(target=lambda: asyncio.run(self._main()), daemon=True)
+        self._thread.start()
+        assert self._ready.wait(5), "bad robot did not start"
+
+    async def _main(self) -> None:
+        self._loop = asyncio.get_running_loop()
+        self._stop = asyncio.Event()
+        async with serve(self._handle, "127.0.0.1", 0) as server:
+            self.port = next(iter(server.sockets)).getsockname()[1]
+            self._ready.set()
+            await self._stop.wait()
+
+    async def _handle(self, ws: ServerConnection) -> None:
+        async for raw in ws:
+            msg = json.loads(raw)
+            if msg["op"] == "subscribe" and msg["topic"] == "/map":
+                await ws.send(json.dumps({"op": "publish", "topic": "/map",
+                                          "msg": {"info": {"resolution": -1, "width": 2}, "data": "oops"}}))
+            elif msg["op"] == "send_action_goal":
+                await ws.send(json.dumps({"op": "action_feedback", "id": msg["id"], "action": msg["action"],
+                                          "values": {"current_pose": {"pose": "nowhere"}}}))
+            elif msg["op"] == "publish" and msg["topic"] == "/cmd_vel":
+                self.cmd_vel.append(msg["msg"])
+
+    def close(self) -> None:
+        if self._loop is not None and self._stop is not None:
+            self._loop.call_soon_threadsafe(self._stop.set)
+        self._thread.join(5)
+
+
+def test_malformed_messages_from_the_robot_give_clear_errors() -> None:
+    bad = _BadRobot()
+    robot = RosbridgeBackend(port=bad.port, connect_timeout_s=5.0)
+    try:
+        with pytest.raises(RobotError, match=r"malformed /map \(nav_msgs/msg/OccupancyGrid\)"):
+            robot.get_map(timeout_s=3.0)
+        handle = robot.navigate_through_poses([(1.0, 2.0, 90.0)])
+        result = handle.wait(timeout_s=5.0)
+        assert result.status is TaskStatus.FAILED
+        assert "malformed /navigate_through_poses feedback" in result.message
+        assert "robot stopped" in result.message
+        _until(lambda: any(m["linear"]["x"] == 0.0 for m in bad.cmd_vel), 3.0, "a zero cmd_vel")
+        t0 = time.monotonic()
+        with pytest.raises(RobotTimeout, match=r"no transform map -> base_link within 0\.3 s"):
+            robot.get_robot_pose(timeout_s=0.3)
+        assert time.monotonic() - t0 < 2.0
+        assert robot.state().connected  # the backend is still usable
+    finally:
+        robot.close()
+        bad.close()
+
+
+# -- Move / Rotate by cmd_vel, closed loop on odometry ------------------------------------------
+class _DummyRobot:
+    """A unicycle driven only by velocity (a base without Nav2): a test double of the Protocol."""
+
+    name = "velocity-double"
+
+    def __init__(self) -> None:
+        self._lock = threading.Lock()
+        self._pose = Pose2D(0.0, 0.0, 0.0)
+        self._v = self._w = 0.0
+        self._halt = threading.Event()
+        self._thread = threading.Thread(target=self._run, daemon=True)
+        self._thread.start()
+
+    def _run(self) -> None:
+        dt = 0.01
+        while not self._halt.wait(dt):
+            with self._lock:
+                p = self._pose
+                self._pose = Pose2D(p.x_m + self._v * dt * math.cos(p.yaw_rad),
+                                    p.y_m + self._v * dt * math.sin(p.yaw_rad),
+                                    rm.wrap_angle(p.yaw_rad + self._w * dt))
+
+    def set_velocity(self, linear_mps: float, angular_radps: float) -> None:
+        with self._lock:
+            self._v, self._w = linear_mps, angular_radps
+
+    def navigate_through_poses(self, poses: Any) -> TaskHandle:
+        raise RobotError("this base has no navigation stack")
+
+    def move(self, direction: str, steps: int) -> TaskHandle:
+        raise RobotError("drive me by velocity")
+
+    def rotate(self, direction: str, steps: int) -> TaskHandle:
+        raise RobotError("drive me by velocity")
+
+    def stop(self) -> None:
+        self.set_velocity(0.0, 0.0)
+
+    def get_current_path(self, timeout_s: float = 5.0) -> list[tuple[float, float]]:
+        return []
+
+    def get_map(self, timeout_s: float = 5.0) -> OccupancyGrid:
+        return _world()
+
+    def get_robot_pose(self, timeout_s: float = 5.0) -> Pose2D:
+        with self._lock:
+            return self._pose
+
+    def state(self) -> RobotState:
+        with self._lock:
+            return RobotState(pose=self._pose, linear_mps=self._v, angular_radps=self._w)
+
+    def close(self) -> None:
+        self._halt.set()
+        self._thread.join(2)
+
+
+@pytest.mark.parametrize("stamped", [False, True], ids=["Twist", "TwistStamped"])
+def test_move_and_rotate_by_cmd_vel_closed_loop(stamped: bool) -> None:
+    served = Served(_DummyRobot(), state_rate_hz=50.0)
+    robot = served.client(cmd_vel_stamped=stamped, linear_speed_mps=0.3, angular_speed_radps=1.5,
+                          slowdown_gain_per_s=5.0)
+    try:
+        start = robot.get_robot_pose(timeout_s=3.0)
+        turn = robot.rotate("left", 9)
+        assert turn.wait(timeout_s=10.0).status is TaskStatus.SUCCEEDED
+        time.sleep(0.2)
+        after_turn = served.robot.get_robot_pose()
+        assert math.degrees(rm.wrap_angle(after_turn.yaw_rad - start.yaw_rad)) == pytest.approx(90.0, abs=3.0)
+        move = robot.move("forward", 10)
+        assert move.wait(timeout_s=10.0).status is TaskStatus.SUCCEEDED
+        time.sleep(0.2)
+        end = served.robot.get_robot_pose()
+        assert math.hypot(end.x_m - after_turn.x_m, end.y_m - after_turn.y_m) == pytest.approx(0.30, abs=0.02)
+        assert end.y_m > after_turn.y_m + 0.25  # forward after turning left is +y
+        assert served.robot.state().linear_mps == 0.0
+    finally:
+        robot.close()
+        served.close()
