@@ -33,8 +33,13 @@ lint: $(STAMP)
 typecheck: $(STAMP)
 	$(VENV)/bin/mypy
 
-test: $(STAMP) lint typecheck
+test: $(STAMP) lint typecheck browser-deps
 	$(PY) -m pytest
+
+# Debian's Chromium for the web app's end-to-end tests (driven by the playwright package;
+# never `playwright install`: no browser downloads).
+browser-deps:
+	@test -x /usr/bin/chromium || (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium)
 
 bench: $(STAMP)
 	$(PY) benchmarks/run_all.py
