@@ -1,0 +1,66 @@
+"""``langnav sim``: run the simulated robot in real time and serve it over rosbridge.
+
+    langnav sim --world MAP.yaml --pose X,Y,YAW_DEG [--known-map] [--rosbridge-port 9090] [--host 127.0.0.1]
+
+Foxglove (Open connection -> Rosbridge -> ws://HOST:PORT), roslibjs pages and roslibpy scripts
+see a ROS 2 robot: /map, /scan, /plan, /tf, /tf_static, /odom, /amcl_pose and the
+/navigate_through_poses action. ``langnav run --backend rosbridge`` drives it like a real one.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import time
+from typing import Any
+
+from langnav.robot.errors import RobotError
+from langnav.robot.protocol import Pose2D, create_backend
+from langnav.robot.rosbridge_server import RosbridgeServer
+
+#: How often the console line with the pose is refreshed.
+STATUS_PERIOD_S = 2.0
+
+
+def _pose(text: str) -> tuple[float, float, float]:
+    try:
+        parts = [float(v) for v in text.split(",")]
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"--pose is X,Y,YAW_DEG in metres and degrees, got {text!r}") from None
+    if len(parts) not in (2, 3) or not all(math.isfinite(v) for v in parts):
+        raise argparse.ArgumentTypeError(f"--pose is X,Y[,YAW_DEG] (finite numbers), got {text!r}")
+    return (parts[0], parts[1], parts[2] if len(parts) == 3 else 0.0)
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--world", required=True, help="ground-truth map (map_server YAML or image)")
+    parser.add_argument("--pose", type=_pose, default=None, help="start pose X,Y,YAW_DEG (default: the most open spot)")
+    parser.add_argument("--known-map", action="store_true", help="start with the whole map known (a floor already mapped)")
+    parser.add_argument("--rosbridge-port", type=int, default=9090, help="rosbridge WebSocket port (0: any free port)")
+    parser.add_argument("--host", default="127.0.0.1", help="interface to listen on (0.0.0.0 for the LAN)")
+    parser.add_argument("--seed", type=int, default=0, help="random seed of the lidar noise")
+    parser.add_argument("--duration", type=float, default=None, help="stop after this many seconds (default: run until Ctrl-C)")
+
+
+def run(args: argparse.Namespace) -> int:
+    if not 0 <= args.rosbridge_port <= 65535:
+        raise RobotError(f"--rosbridge-port must be 0..65535, got {args.rosbridge_port}")
+    sim: Any = create_backend("sim", world=args.world, pose=args.pose, known_map=args.known_map, seed=args.seed)
+    server = RosbridgeServer(sim)
+    try:
+        sim.start(realtime=True)
+        port = server.start(args.host, args.rosbridge_port)
+        p: Pose2D = sim.get_robot_pose()
+        print(f"langnav sim: {args.world} from ({p.x_m:.2f}, {p.y_m:.2f}, {math.degrees(p.yaw_rad):.0f}°), "
+              f"{'known' if args.known_map else 'unknown'} map", flush=True)
+        print(f"rosbridge v2 on ws://{args.host}:{port} (Ctrl-C to stop)", flush=True)
+        t_end = None if args.duration is None else time.monotonic() + args.duration
+        while t_end is None or time.monotonic() < t_end:
+            time.sleep(STATUS_PERIOD_S if t_end is None else max(0.0, min(STATUS_PERIOD_S, t_end - time.monotonic())))
+            st = sim.state()
+            print(f"t={st.time_s:7.1f} s  pose=({st.pose.x_m:6.2f}, {st.pose.y_m:6.2f}, "
+                  f"{math.degrees(st.pose.yaw_rad):5.0f}°)  {'busy' if st.busy else 'idle'}", flush=True)
+    finally:
+        server.close()
+        sim.close()
+    return 0
