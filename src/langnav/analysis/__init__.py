@@ -15,7 +15,8 @@ from langnav.analysis.elements import (
 )
 from langnav.analysis.errors import AnalysisError
 from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
+from langnav.analysis.pipeline import AnalysisCache, analyze
 
-__all__ = ["DEFAULT_PARAMS", "AnalysisError", "AnalysisParams", "Corner", "Door", "Element",
+__all__ = ["DEFAULT_PARAMS", "AnalysisCache", "AnalysisError", "AnalysisParams", "Corner", "Door", "Element",
            "ElementKind", "MapAnalysis", "NarrowPassage", "Obstacle", "Room", "UnexploredArea",
-           "Wall", "reference_point"]
+           "Wall", "analyze", "reference_point"]

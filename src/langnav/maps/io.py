@@ -36,6 +36,9 @@ DEFAULT_BARE_RESOLUTION_M: Final = 0.05
 #: map_saver's defaults, also used when a YAML omits a threshold.
 DEFAULT_OCCUPIED_THRESH: Final = 0.65
 DEFAULT_FREE_THRESH: Final = 0.25
+#: free_thresh written by save_map: ROS map_saver's classic 0.196, so that the 205 it writes for
+#: unknown (occ = 50/255 = 0.19608) reads back as unknown; with 0.25 it would read back as free.
+SAVE_FREE_THRESH: Final = 0.196
 MODES: Final = ("trinary", "scale", "raw")
 IMAGE_SUFFIXES: Final = (".pgm", ".png", ".bmp", ".jpg", ".jpeg", ".tif", ".tiff", ".gif")
 
@@ -194,7 +197,7 @@ def save_map(grid: OccupancyGrid, yaml_path: str | Path) -> tuple[Path, Path]:
         "origin": [float(grid.origin_x_m), float(grid.origin_y_m), float(grid.origin_yaw_rad)],
         "negate": 0,
         "occupied_thresh": DEFAULT_OCCUPIED_THRESH,
-        "free_thresh": DEFAULT_FREE_THRESH,
+        "free_thresh": SAVE_FREE_THRESH,
     }
     y.write_text(yaml.safe_dump(doc, sort_keys=False), encoding="utf-8")
     return y, pgm
