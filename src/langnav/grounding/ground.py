@@ -170,7 +170,7 @@ def ground(intent: Intent, analysis: MapAnalysis, pose: Pose | Sequence[float], 
                              "'go to the nearest door'.")
     p = params or analysis.params
     start = as_pose(pose)
-    ctx = _Ctx(analysis, free_space_for(analysis.grid, p), p, dict(named_places or {}))
+    ctx = GroundingContext(analysis, free_space_for(analysis.grid, p), p, dict(named_places or {}))
     steps: list[GroundedStep] = []
     cur = start
     for i, step in enumerate(intent.steps):
@@ -181,14 +181,16 @@ def ground(intent: Intent, analysis: MapAnalysis, pose: Pose | Sequence[float], 
 
 
 @dataclass
-class _Ctx:
+class GroundingContext:
+    """What every step is grounded against: the analysis, its free space, thresholds, named places."""
+
     analysis: MapAnalysis
     space: FreeSpace
     params: AnalysisParams
     named: dict[str, Point]
 
 
-def ground_step(step: Step, ctx: _Ctx, pose: Pose, index: int = 0) -> GroundedStep:
+def ground_step(step: Step, ctx: GroundingContext, pose: Pose, index: int = 0) -> GroundedStep:
     """One step from ``pose``."""
     m = step.movement
     if m == Movement.STOP:
@@ -243,7 +245,7 @@ _MOVE_HEADING: Final[dict[Direction, tuple[MoveDir, float]]] = {
     Direction.LEFT: ("left", math.pi / 2), Direction.RIGHT: ("right", -math.pi / 2)}
 
 
-def _move(step: Step, ctx: _Ctx, pose: Pose, index: int) -> GroundedStep:
+def _move(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> GroundedStep:
     d = step.direction or Direction.FORWARD
     if d not in _MOVE_HEADING:
         raise GroundingError(f"I can move forward, backward, left or right, not {d.value}.")
@@ -272,7 +274,7 @@ def _move(step: Step, ctx: _Ctx, pose: Pose, index: int) -> GroundedStep:
 
 
 # ------------------------------------------------------------------------------ navigation
-def _component(ctx: _Ctx, pose: Pose) -> int:
+def _component(ctx: GroundingContext, pose: Pose) -> int:
     comp = ctx.space.component_at(pose.x_m, pose.y_m)
     if comp == 0:
         raise GroundingError(
@@ -290,7 +292,7 @@ def _nav_step(step: Step, pose: Pose, index: int, poses: list[Point], note: str,
     return GroundedStep(index, step, (cmd,), pose, Pose(last[0], last[1], yaw), note, ids, explore, messages)
 
 
-def _navigate(step: Step, ctx: _Ctx, pose: Pose, index: int) -> GroundedStep:
+def _navigate(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> GroundedStep:
     ref = step.target
     detail = step.detail or Detail.TO
     if ref is None:
@@ -326,7 +328,7 @@ def _navigate(step: Step, ctx: _Ctx, pose: Pose, index: int) -> GroundedStep:
         return _room_goal(step, ref, room, detail, ctx, pose, comp, index)
     if ref.kind == Kind.UNEXPLORED_AREA and detail == Detail.MIDDLE:
         detail = Detail.TOWARDS
-    e = select(ref, ctx.analysis, pose)
+    e = select(ref, ctx.analysis, pose, step.text)
     desc = describe_ref(ref)
     if detail == Detail.THROUGH and isinstance(e, Door | NarrowPassage):
         poses = _through(e, ctx, pose, comp, desc)
@@ -336,7 +338,7 @@ def _navigate(step: Step, ctx: _Ctx, pose: Pose, index: int) -> GroundedStep:
     return _nav_step(step, pose, index, [goal], f"{verb} {desc}", (e.id,))
 
 
-def _goal_at(e: Element, detail: Detail, ctx: _Ctx, pose: Pose, comp: int, desc: str) -> Point:
+def _goal_at(e: Element, detail: Detail, ctx: GroundingContext, pose: Pose, comp: int, desc: str) -> Point:
     """The goal for 'to / at / next to / towards' an element (not rooms, walls)."""
     goal: Point | None
     if isinstance(e, Door):
@@ -387,7 +389,7 @@ def _side_filter(centre: Point, n: Point, min_dot: float):  # type: ignore[no-un
     return where
 
 
-def _door_near_side(d: Door, ctx: _Ctx, pose: Pose, comp: int) -> Point | None:
+def _door_near_side(d: Door, ctx: GroundingContext, pose: Pose, comp: int) -> Point | None:
     n = _robot_side_normal(d.center, _door_normal(d), pose)
     prefer = (d.center[0] + n[0] * DOOR_STANDOFF_M, d.center[1] + n[1] * DOOR_STANDOFF_M)
     goal = ctx.space.safe_point_near(d.center, comp, DOOR_GOAL_MAX_M, prefer=prefer,
@@ -395,7 +397,7 @@ def _door_near_side(d: Door, ctx: _Ctx, pose: Pose, comp: int) -> Point | None:
     return goal or ctx.space.safe_point_near(d.center, comp, DOOR_GOAL_MAX_M, prefer=prefer)
 
 
-def _through(e: Door | NarrowPassage, ctx: _Ctx, pose: Pose, comp: int, desc: str) -> list[Point]:
+def _through(e: Door | NarrowPassage, ctx: GroundingContext, pose: Pose, comp: int, desc: str) -> list[Point]:
     if isinstance(e, Door):
         n_near = _robot_side_normal(e.center, _door_normal(e), pose)
         near_mouth = far_mouth = e.center
@@ -435,7 +437,7 @@ def _kdtree_where(cells: FloatArray, max_m: float):  # type: ignore[no-untyped-d
     return where
 
 
-def _next_to_cells(cells: FloatArray, ctx: _Ctx, pose: Pose, comp: int) -> Point | None:
+def _next_to_cells(cells: FloatArray, ctx: GroundingContext, pose: Pose, comp: int) -> Point | None:
     """A free point within NEXT_TO_MAX_M of the nearest of ``cells``, on the robot's side."""
     _, q = nearest_point(pose.xy, cells)
     dx, dy = pose.x_m - q[0], pose.y_m - q[1]
@@ -445,7 +447,7 @@ def _next_to_cells(cells: FloatArray, ctx: _Ctx, pose: Pose, comp: int) -> Point
                                      where=_kdtree_where(cells, NEXT_TO_MAX_M))
 
 
-def _towards_frontier(u: UnexploredArea, ctx: _Ctx, pose: Pose, comp: int) -> Point | None:
+def _towards_frontier(u: UnexploredArea, ctx: GroundingContext, pose: Pose, comp: int) -> Point | None:
     if len(u.frontier) == 0:
         return None
     f = np.asarray(u.frontier, dtype=float).reshape(-1, 2)
@@ -459,11 +461,11 @@ def _towards_frontier(u: UnexploredArea, ctx: _Ctx, pose: Pose, comp: int) -> Po
     return None
 
 
-def _room_cells_mask(ctx: _Ctx, room: Room) -> BoolArray:
+def _room_cells_mask(ctx: GroundingContext, room: Room) -> BoolArray:
     return room_mask(ctx.analysis.labels, room.label)
 
 
-def _room_goal(step: Step, ref: ElementRef, room: Room, detail: Detail, ctx: _Ctx, pose: Pose, comp: int,
+def _room_goal(step: Step, ref: ElementRef, room: Room, detail: Detail, ctx: GroundingContext, pose: Pose, comp: int,
                index: int) -> GroundedStep:
     desc = describe_ref(ref)
     mask = _room_cells_mask(ctx, room)
@@ -496,7 +498,7 @@ def _room_goal(step: Step, ref: ElementRef, room: Room, detail: Detail, ctx: _Ct
     return _nav_step(step, pose, index, [goal], f"{verb} {desc}", (room.id,), messages=messages)
 
 
-def _opposite_side(room: Room, mask: BoolArray, ctx: _Ctx, pose: Pose, comp: int) -> Point | None:
+def _opposite_side(room: Room, mask: BoolArray, ctx: GroundingContext, pose: Pose, comp: int) -> Point | None:
     xs, ys = ctx.space.xs[mask], ctx.space.ys[mask]
     if xs.size == 0:
         return None
@@ -511,8 +513,8 @@ def _opposite_side(room: Room, mask: BoolArray, ctx: _Ctx, pose: Pose, comp: int
     return ctx.space.best_in_mask(far, comp, prefer)
 
 
-def _between(step: Step, ref: ElementRef, ctx: _Ctx, pose: Pose, comp: int, index: int) -> GroundedStep:
-    a, b = select_pair(ref, step.second_target, ctx.analysis, pose)
+def _between(step: Step, ref: ElementRef, ctx: GroundingContext, pose: Pose, comp: int, index: int) -> GroundedStep:
+    a, b = select_pair(ref, step.second_target, ctx.analysis, pose, step.text)
     pa, pb = reference_point(a), reference_point(b)
     mid = ((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2)
     goal = ctx.space.safe_point_near(mid, comp, MIDDLE_GOAL_MAX_M)
@@ -542,7 +544,7 @@ def _oriented(wall: WallLine, pose: Pose) -> tuple[Point, Point, Point]:
     return start, d, n
 
 
-def _next_to_wall(wall: WallLine, ctx: _Ctx, pose: Pose, comp: int) -> Point:
+def _next_to_wall(wall: WallLine, ctx: GroundingContext, pose: Pose, comp: int) -> Point:
     start, d, n = _oriented(wall, pose)
     t = min(max((pose.x_m - start[0]) * d[0] + (pose.y_m - start[1]) * d[1], 0.0), wall.length_m)
     base = (start[0] + d[0] * t, start[1] + d[1] * t)
@@ -560,7 +562,7 @@ def _wall_band(wall: WallLine, n: Point, max_m: float):  # type: ignore[no-untyp
     return where
 
 
-def _along_wall(step: Step, ref: ElementRef, ctx: _Ctx, pose: Pose, comp: int, index: int) -> GroundedStep:
+def _along_wall(step: Step, ref: ElementRef, ctx: GroundingContext, pose: Pose, comp: int, index: int) -> GroundedStep:
     wall = select_wall(ref, ctx.analysis, pose)
     desc = describe_ref(ref)
     start, d, n = _oriented(wall, pose)
@@ -596,7 +598,7 @@ def _along_wall(step: Step, ref: ElementRef, ctx: _Ctx, pose: Pose, comp: int, i
     return _nav_step(step, pose, index, poses, f"along {desc}", wall.ids)
 
 
-def _follow_space(step: Step, ref: ElementRef, ctx: _Ctx, pose: Pose, comp: int, index: int) -> GroundedStep:
+def _follow_space(step: Step, ref: ElementRef, ctx: GroundingContext, pose: Pose, comp: int, index: int) -> GroundedStep:
     """Follow a hallway (or a room) along its long axis, to its far end in the direction of travel."""
     if ref.ordinal is None and ref.superlative is None and ref.side is None:
         here = space_of(ctx.analysis, pose.xy)
@@ -642,7 +644,7 @@ def _follow_space(step: Step, ref: ElementRef, ctx: _Ctx, pose: Pose, comp: int,
 
 
 # ------------------------------------------------------------------------------ explore
-def _explore(step: Step, ctx: _Ctx, pose: Pose, index: int) -> GroundedStep:
+def _explore(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> GroundedStep:
     comp = _component(ctx, pose)
     areas = list(ctx.analysis.unexplored)
     if step.target is not None and step.target.kind not in (Kind.NONE, Kind.UNEXPLORED_AREA):
@@ -660,4 +662,4 @@ def _explore(step: Step, ctx: _Ctx, pose: Pose, index: int) -> GroundedStep:
                          "mapped or out of reach.")
 
 
-__all__ = ["GroundedPlan", "GroundedStep", "as_pose", "ground", "ground_step"]
+__all__ = ["GroundedPlan", "GroundedStep", "GroundingContext", "as_pose", "ground", "ground_step"]

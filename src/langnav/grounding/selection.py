@@ -17,6 +17,7 @@ your left" in a hallway means the hallway's doors, not one seen through a wall.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Final
@@ -67,6 +68,19 @@ WALL_MIN_CHAIN_M: Final = 1.0
 CORNER_SIDE_TIE_M: Final = 0.3
 #: An element counts as inside a space when its point is within this distance of the space's cells.
 IN_SPACE_M: Final = 0.5
+
+#: Nouns for obstacles of a compact footprint ("the box") and of a long one ("the shelf"). When the
+#: words use one, obstacles of that shape are chosen before the others.
+COMPACT_NOUNS: Final = ("box", "boxes", "crate", "crates", "pillar", "pillars", "column", "columns", "post",
+                        "posts", "bin", "bins", "chair", "chairs", "stool", "stools", "cube", "cubes",
+                        "barrel", "barrels", "plant", "plants", "pot", "pots")
+LONG_NOUNS: Final = ("shelf", "shelves", "bench", "benches", "sofa", "sofas", "couch", "couches", "bookcase",
+                     "bookcases", "shelving", "rack", "racks", "counter", "counters")
+#: Footprint aspect ratios (long side / short side) of a compact and of a long obstacle.
+COMPACT_MAX_ASPECT: Final = 1.6
+LONG_MIN_ASPECT: Final = 2.0
+_COMPACT_RE: Final = re.compile(r"\b(?:" + "|".join(COMPACT_NOUNS) + r")\b", re.IGNORECASE)
+_LONG_RE: Final = re.compile(r"\b(?:" + "|".join(LONG_NOUNS) + r")\b", re.IGNORECASE)
 
 ORDINAL_WORDS: Final = {1: "first", 2: "second", 3: "third", 4: "fourth", 5: "fifth", 6: "sixth",
                         7: "seventh", 8: "eighth", 9: "ninth", 10: "tenth"}
@@ -278,12 +292,29 @@ def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
 
 
 # ------------------------------------------------------------------------------ selection
-def select(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Element:
-    """The one element the words mean. Raises GroundingError saying what the map has instead."""
-    return select_many(ref, analysis, pose, 1)[0]
+def select(ref: ElementRef, analysis: MapAnalysis, pose: Pose, words: str = "") -> Element:
+    """The one element the words mean. Raises GroundingError saying what the map has instead.
+    ``words`` is the step's text, read only for the shape of an obstacle ("the box")."""
+    return select_many(ref, analysis, pose, 1, words)[0]
 
 
-def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int) -> list[Element]:
+def aspect_ratio(o: Obstacle) -> float:
+    lo, hi = sorted(o.extent_m)
+    return hi / lo if lo > 0 else math.inf
+
+
+def shape_filter(pool: list[Element], words: str) -> list[Element]:
+    """Obstacles of the shape a noun in ``words`` implies, when there are any; else ``pool``."""
+    if _COMPACT_RE.search(words):
+        keep = [e for e in pool if isinstance(e, Obstacle) and aspect_ratio(e) <= COMPACT_MAX_ASPECT]
+    elif _LONG_RE.search(words):
+        keep = [e for e in pool if isinstance(e, Obstacle) and aspect_ratio(e) >= LONG_MIN_ASPECT]
+    else:
+        return pool
+    return keep or pool
+
+
+def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, words: str = "") -> list[Element]:
     """``count`` elements the words mean, best first ("the two obstacles in this room")."""
     if ref.name:
         raise GroundingError(
@@ -311,6 +342,8 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int) 
         pool = [e for e in pool if _in_space(e, space, analysis)]
     if ref.side is not None:
         pool = [e for e in pool if matches_side(e, pose, ref.side)]
+    if ref.kind == Kind.OBSTACLE and words:
+        pool = shape_filter(pool, words)
 
     here = space_of(analysis, pose.xy)
 
@@ -386,17 +419,17 @@ def _select_corner(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Corner
 
 
 def select_pair(first: ElementRef, second: ElementRef | None, analysis: MapAnalysis,
-                pose: Pose) -> tuple[Element, Element]:
+                pose: Pose, words: str = "") -> tuple[Element, Element]:
     """The two elements of 'between A and B' (or 'between the two obstacles')."""
     if second is None:
-        a, b = select_many(first, analysis, pose, 2)
+        a, b = select_many(first, analysis, pose, 2, words)
         return a, b
-    a = select(first, analysis, pose)
+    a = select(first, analysis, pose, words)
     if second == first or (second.kind == first.kind and second.ordinal is None and second.superlative is None
                            and second.side is None):
-        others = [e for e in select_many(second, analysis, pose, 2) if e is not a]
+        others = [e for e in select_many(second, analysis, pose, 2, words) if e is not a]
         return a, others[0]
-    b = select(second, analysis, pose)
+    b = select(second, analysis, pose, words)
     if a is b:
         raise GroundingError(f"{describe_ref(first)} and {describe_ref(second)} are the same place; "
                              "'between' needs two different ones.")
