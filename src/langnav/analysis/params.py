@@ -28,6 +28,23 @@ class AnalysisParams:
     obstacle_min_area_m2: float = 0.01
     #: Unknown regions smaller than this are noise specks, not unexplored areas (bench README).
     unexplored_min_area_m2: float = 0.05
+    #: Segmentation: occupied specks up to this area (m2) touching free space are scan noise (floor).
+    seg_speck_max_area_m2: float = 0.02
+    #: Segmentation: unknown holes enclosed by free space up to this area (m2) are floor (unscanned
+    #: spots behind furniture, sensor dropouts); larger enclosed ones still count in a room's area.
+    seg_hole_max_area_m2: float = 0.5
+    #: Segmentation: a space must be this much wider (clearance, m) than the doorway to it to be a
+    #: space of its own rather than a bulge of its neighbour.
+    seg_persistence_m: float = 0.15
+    #: Segmentation: ... and its clearance peak must be at least this multiple of the doorway's.
+    seg_peak_saddle_ratio: float = 1.0
+    #: Segmentation: a connected piece of wall/unknown at least this big (m2) is the wall network.
+    seg_wall_network_min_area_m2: float = 4.0
+    #: Segmentation: a smaller piece is a wall stub (a door jamb) when thin (<= 2 x door_max_depth_m)
+    #: and at least this long (m); otherwise it is furniture, and gaps beside it are not doorways.
+    seg_wall_min_length_m: float = 0.5
+    #: Segmentation: clearance (m) below which a free cell cannot start a space (about a robot radius).
+    seg_min_peak_m: float = 0.15
     #: Straight wall segments shorter than this are not reported.
     wall_min_length_m: float = 0.5
     #: Maximum deviation of wall points from their fitted segment.

@@ -1,0 +1,157 @@
+"""Doorways from a segmentation: where two spaces touch, and where a space opens into unknown.
+
+A doorway between two spaces is a connected piece of their shared boundary; its width comes
+from the clearance at its widest crossing (about half the opening), its centre is that crossing,
+its normal the mean step from the first space to the second.
+
+An opening into unexplored territory is found by a second flood, over the floor *and* the
+unknown around it (unknown counts as open space here): the spaces flood from their cores, the
+unknown from its own interior, and where the two meet at a saddle as narrow as a door, bounded
+by walls, there is a doorway into the unknown.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Final
+
+import numpy as np
+import numpy.typing as npt
+from scipy import ndimage as ndi
+from skimage.segmentation import watershed
+
+from langnav.analysis.params import AnalysisParams
+from langnav.analysis.seg_core import EIGHT, BoolArray, FloatArray, IntArray
+
+#: Label given to the unknown in the second flood (larger than any space label).
+_OUTSIDE_OFFSET: Final = 1
+#: Unknown farther than this from the floor plays no part in finding openings into it.
+OPENING_BAND_M: Final = 2.5
+#: A space's core for the second flood: cells with at least this share of its peak clearance.
+CORE_FRACTION: Final = 0.6
+
+
+@dataclass(frozen=True)
+class RawDoor:
+    """A doorway in grid coordinates: continuous (row, col) of its centre, unit normal (drow, dcol)
+    pointing from space ``a`` to space ``b`` (``b`` = 0: unexplored territory), and its width."""
+
+    a: int
+    b: int
+    center_rc: tuple[float, float]
+    normal_rc: tuple[float, float]
+    width_m: float
+
+
+def _boundary_pairs(labels: IntArray) -> tuple[npt.NDArray[np.int64], ...]:
+    """All 4-neighbour cell pairs (p, q) with different non-zero labels: rows/cols of p and q."""
+    out: list[tuple[npt.NDArray[np.int64], ...]] = []
+    h, w = labels.shape
+    for dr, dc in ((0, 1), (1, 0)):
+        lp = labels[: h - dr, : w - dc]
+        lq = labels[dr:, dc:]
+        rr, cc = np.nonzero((lp != lq) & (lp > 0) & (lq > 0))
+        out.append((rr, cc, rr + dr, cc + dc))
+    return tuple(np.concatenate([o[i] for o in out]).astype(np.int64) for i in range(4))
+
+
+def doors_between(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
+                  params: AnalysisParams, outside_label: int | None = None) -> list[RawDoor]:
+    """Doorways along the boundaries of ``labels`` (see module doc).
+
+    With ``outside_label``, only boundaries between a space and that label are examined, and the
+    doorway's ``b`` is 0 (unknown).
+    """
+    pr, pc, qr, qc = _boundary_pairs(labels)
+    la, lb = labels[pr, pc], labels[qr, qc]
+    if outside_label is not None:
+        sel = (la == outside_label) ^ (lb == outside_label)
+        pr, pc, qr, qc, la, lb = pr[sel], pc[sel], qr[sel], qc[sel], la[sel], lb[sel]
+    if pr.size == 0:
+        return []
+    # Orient each pair from the lower label to the higher one.
+    swap = la > lb
+    pr, qr = np.where(swap, qr, pr), np.where(swap, pr, qr)
+    pc, qc = np.where(swap, qc, pc), np.where(swap, pc, qc)
+    a, b = np.minimum(la, lb), np.maximum(la, lb)
+    val = np.minimum(clearance_m[pr, pc], clearance_m[qr, qc])
+    n = int(labels.max()) + 1
+    key = a.astype(np.int64) * n + b
+    order = np.argsort(key, kind="stable")
+    key, pr, pc, qr, qc, val = key[order], pr[order], pc[order], qr[order], qc[order], val[order]
+    starts = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
+    ends = np.r_[starts[1:], key.size]
+    min_w = params.door_min_width_m - resolution_m
+    max_w = params.door_max_width_m + resolution_m
+    found: list[RawDoor] = []
+    for s0, s1 in zip(starts, ends, strict=True):
+        ka, kb = divmod(int(key[s0]), n)
+        rows = np.r_[pr[s0:s1], qr[s0:s1]]
+        cols = np.r_[pc[s0:s1], qc[s0:s1]]
+        r0, c0 = rows.min(), cols.min()
+        mask = np.zeros((rows.max() - r0 + 1, cols.max() - c0 + 1), dtype=bool)
+        mask[rows - r0, cols - c0] = True
+        comp, ncomp = ndi.label(mask, structure=EIGHT)
+        pair_comp = comp[pr[s0:s1] - r0, pc[s0:s1] - c0]
+        for ci in range(1, ncomp + 1):
+            m = pair_comp == ci
+            if not m.any():
+                continue
+            v = val[s0:s1][m]
+            s = float(v.max())
+            width = 2.0 * s - 0.5 * resolution_m
+            if not (min_w <= width <= max_w):
+                continue
+            top = v >= s - 0.5 * resolution_m
+            cr = (pr[s0:s1][m][top] + qr[s0:s1][m][top]).mean() / 2 + 0.5
+            cc = (pc[s0:s1][m][top] + qc[s0:s1][m][top]).mean() / 2 + 0.5
+            dr = float((qr[s0:s1][m] - pr[s0:s1][m]).sum())
+            dc = float((qc[s0:s1][m] - pc[s0:s1][m]).sum())
+            norm = float(np.hypot(dr, dc)) or 1.0
+            if outside_label is not None and kb == outside_label:
+                found.append(RawDoor(ka, 0, (float(cr), float(cc)), (dr / norm, dc / norm), width))
+            elif outside_label is not None:
+                found.append(RawDoor(kb, 0, (float(cr), float(cc)), (-dr / norm, -dc / norm), width))
+            else:
+                found.append(RawDoor(ka, kb, (float(cr), float(cc)), (dr / norm, dc / norm), width))
+    return found
+
+
+def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
+                        obstacle: BoolArray, clearance_m: FloatArray, resolution_m: float,
+                        params: AnalysisParams) -> list[RawDoor]:
+    """Doorways from a space into unexplored territory (see module doc)."""
+    if not exterior.any() or labels.max() == 0:
+        return []
+    band_cells = OPENING_BAND_M / resolution_m
+    near = ndi.distance_transform_edt(~floor) <= band_cells
+    # Crop to where the floor and its band are, to keep the second flood cheap.
+    rows = np.flatnonzero(near.any(axis=1))
+    cols = np.flatnonzero(near.any(axis=0))
+    sl = (slice(rows[0], rows[-1] + 1), slice(cols[0], cols[-1] + 1))
+    ext = exterior[sl] & near[sl]
+    if not ext.any():
+        return []
+    open_ = (floor[sl] | ext) & ~obstacle[sl]
+    clear2 = ndi.distance_transform_edt(open_, sampling=resolution_m)
+    lab = labels[sl]
+    n = int(labels.max())
+    peak = np.zeros(n + 1)
+    np.maximum.at(peak, lab.ravel(), clearance_m[sl].ravel())
+    markers = np.where(clearance_m[sl] >= CORE_FRACTION * peak[lab], lab, 0).astype(np.int32)
+    markers[lab == 0] = 0
+    outside = n + _OUTSIDE_OFFSET
+    door_clear_max = (params.door_max_width_m + resolution_m) / 2
+    markers[ext & (clear2 > door_clear_max)] = outside
+    if not (markers == outside).any():
+        return []
+    flood = np.asarray(watershed(-clear2, markers, mask=open_), dtype=np.int32)
+    raw = doors_between(flood, clear2, resolution_m, params, outside_label=outside)
+    out: list[RawDoor] = []
+    for d in raw:
+        r, c = d.center_rc
+        out.append(RawDoor(d.a, 0, (r + sl[0].start, c + sl[1].start), d.normal_rc, d.width_m))
+    return out
+
+
+__all__ = ["RawDoor", "doors_between", "openings_to_unknown"]

@@ -1,0 +1,182 @@
+"""Rooms, hallways and doorways of an occupancy grid.
+
+:func:`segment_spaces` splits the free space of a grid into spaces at its doorways (see
+:mod:`langnav.analysis.seg_core` for the method), tells hallways from rooms, and finds the
+doorways between spaces and into unexplored territory (:mod:`langnav.analysis.seg_doors`).
+Every threshold is a named parameter in metres (:class:`AnalysisParams`), so the result does
+not depend on the grid's resolution.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass, field
+from typing import Final
+
+import numpy as np
+import numpy.typing as npt
+from scipy import ndimage as ndi
+from skimage.measure import approximate_polygon, find_contours
+
+from langnav.analysis.elements import Door, ElementKind, Room
+from langnav.analysis.errors import AnalysisError
+from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
+from langnav.analysis.seg_core import EIGHT, Floor, JambJudge, basins, clean_floor, merge_basins
+from langnav.analysis.seg_doors import RawDoor, doors_between, openings_to_unknown
+from langnav.maps.grid import OCCUPIED, OccupancyGrid
+
+log = logging.getLogger(__name__)
+
+#: An enclosed unknown region belongs to a room when at least this share of the cells around it
+#: are that room's floor (an unscanned corner); a region walled in on all sides (a courtyard, a
+#: closed room never entered) does not.
+ENCLOSED_UNKNOWN_MIN_FLOOR_SHARE: Final = 0.25
+#: Id used in ``Door.connects`` for unexplored territory.
+UNKNOWN_ID: Final = "unknown"
+
+
+@dataclass(frozen=True, eq=False)
+class Segmentation:
+    """Spaces and doorways of a grid. ``labels`` is int32 in grid orientation (row 0 = bottom):
+    0 = no space, k = the room or hallway whose ``label`` is k."""
+
+    labels: npt.NDArray[np.int32] = field(repr=False)
+    rooms: tuple[Room, ...]
+    doors: tuple[Door, ...]
+
+    def room_by_label(self, label: int) -> Room | None:
+        for r in self.rooms:
+            if r.label == label:
+                return r
+        return None
+
+
+def segment_spaces(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS) -> Segmentation:
+    """Split the free space of ``grid`` into rooms and hallways joined by doorways."""
+    res = grid.resolution_m
+    fl = clean_floor(grid.cells, res, params)
+    if not fl.floor.any():
+        raise AnalysisError(f"{grid.source}: the map has no free space to segment")
+    raw_labels = basins(fl.clearance_m, fl.floor, params.seg_min_peak_m)
+    judge = JambJudge(fl.floor, res, params)
+    labels = merge_basins(raw_labels, fl.clearance_m, res, params, judge)
+    labels, exterior = _attach_enclosed_unknown(labels, fl, grid)
+    raw_doors = doors_between(labels, fl.clearance_m, res, params)
+    raw_doors += openings_to_unknown(labels, fl.floor, exterior, grid.cells == OCCUPIED,
+                                     fl.clearance_m, res, params)
+    rooms = _rooms(grid, labels, fl, params)
+    ids = {r.label: r.id for r in rooms}
+    doors = _doors(grid, raw_doors, ids)
+    return Segmentation(labels=labels, rooms=tuple(rooms), doors=tuple(doors))
+
+
+def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor,
+                             grid: OccupancyGrid) -> tuple[npt.NDArray[np.int32], npt.NDArray[np.bool_]]:
+    """Give unknown regions enclosed by one room (unscanned corners) to that room.
+
+    Returns the new labels and the unknown that remains unexplored territory.
+    """
+    ext = fl.exterior
+    lab, n = ndi.label(ext, structure=EIGHT)
+    if n == 0:
+        return labels, ext
+    border = np.unique(np.concatenate([lab[0], lab[-1], lab[:, 0], lab[:, -1]]))
+    ring = ndi.binary_dilation(ext, structure=EIGHT) & ~ext
+    rr, cc = np.nonzero(ring)
+    # Which unknown region each ring cell touches (the largest label among its 8 neighbours).
+    near = ndi.maximum_filter(lab, size=3)[rr, cc]
+    ring_room = labels[rr, cc]
+    total = np.bincount(near, minlength=n + 1)
+    out = labels.copy()
+    remaining = ext.copy()
+    keyed = near.astype(np.int64) * (int(labels.max()) + 1) + ring_room
+    counts = np.bincount(keyed[ring_room > 0], minlength=(n + 1) * (int(labels.max()) + 1))
+    counts = counts.reshape(n + 1, int(labels.max()) + 1)
+    best_room = counts.argmax(axis=1)
+    best_share = counts.max(axis=1) / np.maximum(total, 1)
+    take = (best_share >= ENCLOSED_UNKNOWN_MIN_FLOOR_SHARE) & (best_room > 0)
+    take[0] = False
+    take[border] = False
+    if take.any():
+        sel = take[lab]
+        out[sel] = best_room[lab[sel]]
+        remaining &= ~sel
+    return out.astype(np.int32), remaining
+
+
+def _kind_and_size(mask: npt.NDArray[np.bool_], area_m2: float, res: float,
+                   params: AnalysisParams) -> tuple[ElementKind, float, float]:
+    """Hallway or room, with (length, width): width = the widest inscribed circle of the space
+    with free-standing furniture filled in; length = area / width."""
+    filled = ndi.binary_fill_holes(np.pad(mask, 1))
+    width = 2.0 * float(ndi.distance_transform_edt(filled, sampling=res).max())
+    width = max(width, res)
+    length = area_m2 / width
+    hallway = width <= params.hallway_max_width_m and length >= params.hallway_min_elongation * width
+    return (ElementKind.HALLWAY if hallway else ElementKind.ROOM), length, width
+
+
+def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
+           params: AnalysisParams) -> list[Room]:
+    res = grid.resolution_m
+    n = int(labels.max())
+    rooms: list[Room] = []
+    objs = ndi.find_objects(labels)
+    for k in range(1, n + 1):
+        sl = objs[k - 1]
+        if sl is None:
+            continue
+        sub = labels[sl] == k
+        free_sub = sub & fl.free[sl]
+        rr, cc = np.nonzero(free_sub if free_sub.any() else sub)
+        rr = rr + sl[0].start
+        cc = cc + sl[1].start
+        xs, ys = grid.cell_to_world(rr, cc)
+        area = float(sub.sum()) * res * res
+        kind, length, width = _kind_and_size(sub, area, res, params)
+        prefix = "hallway" if kind == ElementKind.HALLWAY else "room"
+        rooms.append(Room(
+            id=f"{prefix}_{k}", label=k, kind=kind, area_m2=area,
+            free_area_m2=float(free_sub.sum()) * res * res,
+            centroid=(float(xs.mean()), float(ys.mean())), length_m=length, width_m=width,
+            cells_xy=np.column_stack([xs, ys]), polygon=_outline(grid, sub, sl)))
+    return rooms
+
+
+def _outline(grid: OccupancyGrid, sub: npt.NDArray[np.bool_], sl: tuple[slice, slice]) -> npt.NDArray[np.float64]:
+    """The outer outline of a space in world metres (for drawing), simplified to about a cell."""
+    contours = find_contours(np.pad(sub, 1).astype(np.uint8), 0.5)
+    if not contours:
+        return np.zeros((0, 2))
+    c = max(contours, key=len)
+    c = approximate_polygon(c, tolerance=1.0)
+    r = c[:, 0] - 1 + sl[0].start + 0.5
+    col = c[:, 1] - 1 + sl[1].start + 0.5
+    xs, ys = grid.grid_to_world(r, col)
+    return np.column_stack([xs, ys])
+
+
+def _doors(grid: OccupancyGrid, raw: list[RawDoor], ids: dict[int, str]) -> list[Door]:
+    doors: list[Door] = []
+    c, s = math.cos(grid.origin_yaw_rad), math.sin(grid.origin_yaw_rad)
+    # Order doors by position (bottom-left first) so that ids are stable.
+    raw = sorted(raw, key=lambda d: (round(d.center_rc[0]), round(d.center_rc[1])))
+    for d in raw:
+        if d.a not in ids or (d.b != 0 and d.b not in ids):
+            continue
+        x, y = grid.grid_to_world(d.center_rc[0], d.center_rc[1])
+        nr, nc = d.normal_rc
+        nx, ny = c * nc - s * nr, s * nc + c * nr
+        tx, ty = -ny, nx
+        h = d.width_m / 2
+        cx, cy = float(x), float(y)
+        other = ids[d.b] if d.b != 0 else UNKNOWN_ID
+        doors.append(Door(
+            id=f"door_{len(doors) + 1}", center=(cx, cy), width_m=d.width_m,
+            jambs=((cx - tx * h, cy - ty * h), (cx + tx * h, cy + ty * h)),
+            normal=(float(nx), float(ny)), connects=(ids[d.a], other)))
+    return doors
+
+
+__all__ = ["UNKNOWN_ID", "Segmentation", "segment_spaces"]

@@ -1,0 +1,139 @@
+"""Room-segmentation and doorway-detection metrics of the IPA / ROSE² benchmarks.
+
+Room segmentation (Bormann et al., ICRA 2016, ``evaluation_segmentation.cpp``; ROSE², RA-L 2022):
+for every ground-truth room, *recall* is its largest overlap with one segment divided by the
+room's area; for every segment, *precision* is its largest overlap with one room divided by the
+segment's area. Both are counted on the annotated floor only (the cells of some ground-truth
+room); rooms and segments of at most ``MIN_REGION_PX`` pixels there are ignored; the figures are
+the means over rooms and over segments ("micro" in the authors' tables).
+
+Doorways (IPA Voronoi-random-field training maps): each ground-truth doorway is a blob of pixel
+value ``IPA_DOORWAY_VALUE``; a detected door matches the nearest unmatched blob within
+``DOOR_MATCH_TOLERANCE_M`` of its centre (one to one, closest pairs first).
+
+All arrays here are in image orientation (row 0 = top), as the benchmark files are.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Final
+
+import numpy as np
+import numpy.typing as npt
+from scipy import ndimage as ndi
+
+#: Rooms and segments of at most this many pixels are ignored (the authors' rule).
+MIN_REGION_PX: Final = 100
+#: IPA ground truth: pixels brighter than this are room floor (``cv::threshold(gt, 250)``).
+IPA_GT_FLOOR_MIN: Final = 250
+#: IPA training maps: doorway pixels have this value (77 room, 115 hallway).
+IPA_DOORWAY_VALUE: Final = 179
+#: Doorway blobs smaller than this many pixels are stray pixels of the painting.
+IPA_DOORWAY_MIN_PX: Final = 20
+#: A detected door counts when its centre is within this distance of a labelled doorway blob:
+#: about half a door width, so a detection cannot be credited to the neighbouring doorway.
+DOOR_MATCH_TOLERANCE_M: Final = 0.5
+
+IntImage = npt.NDArray[np.int32]
+
+
+@dataclass(frozen=True)
+class PrecisionRecall:
+    precision: float
+    recall: float
+    n_predicted: int
+    n_truth: int
+
+    @property
+    def f1(self) -> float:
+        s = self.precision + self.recall
+        return 2 * self.precision * self.recall / s if s > 0 else 0.0
+
+
+def ipa_gt_rooms(gt_image: npt.NDArray[np.uint8]) -> IntImage:
+    """IPA ground truth image -> room labels: 8-connected components of pixels > 250."""
+    lab, _ = ndi.label(gt_image > IPA_GT_FLOOR_MIN, structure=np.ones((3, 3), dtype=bool))
+    return np.asarray(lab, dtype=np.int32)
+
+
+def colour_gt_rooms(gt_rgb: npt.NDArray[np.uint8]) -> IntImage:
+    """ROSE² ground truth (one RGB colour per room, black = not a room) -> room labels."""
+    rgb = gt_rgb[..., :3].astype(np.int64)
+    key = (rgb[..., 0] << 16) | (rgb[..., 1] << 8) | rgb[..., 2]
+    uniq, inv = np.unique(key, return_inverse=True)
+    lab = inv.reshape(key.shape).astype(np.int32)
+    if uniq[0] == 0:  # black is not a room
+        return lab
+    return lab + 1
+
+
+def room_precision_recall(gt_labels: IntImage, seg_labels: IntImage,
+                          min_px: int = MIN_REGION_PX) -> PrecisionRecall:
+    """The IPA / ROSE² room metric (module doc). Arrays must have the same shape."""
+    if gt_labels.shape != seg_labels.shape:
+        raise ValueError(f"ground truth {gt_labels.shape} and segmentation {seg_labels.shape} differ "
+                         f"in shape; crop both to their common size first")
+    on_floor = gt_labels > 0
+    g = gt_labels[on_floor].astype(np.int64)
+    s = seg_labels[on_floor].astype(np.int64)
+    ng, ns = int(g.max(initial=0)) + 1, int(s.max(initial=0)) + 1
+    g_area = np.bincount(g, minlength=ng)
+    s_area = np.bincount(s, minlength=ns)
+    overlap = np.bincount(g * ns + s, minlength=ng * ns).reshape(ng, ns)
+    overlap[:, 0] = 0  # unsegmented floor overlaps no segment
+    rooms = np.flatnonzero(g_area > min_px)
+    rooms = rooms[rooms > 0]
+    segs = np.flatnonzero(s_area > min_px)
+    segs = segs[segs > 0]
+    if rooms.size == 0:
+        raise ValueError("the ground truth has no room larger than the minimum size")
+    recall = float(np.mean(overlap[np.ix_(rooms, segs)].max(axis=1, initial=0) / g_area[rooms]))
+    if segs.size == 0:
+        return PrecisionRecall(0.0, recall, 0, int(rooms.size))
+    precision = float(np.mean(overlap[np.ix_(rooms, segs)].max(axis=0) / s_area[segs]))
+    return PrecisionRecall(precision, recall, int(segs.size), int(rooms.size))
+
+
+def ipa_doorway_blobs(training_image: npt.NDArray[np.uint8]) -> list[npt.NDArray[np.int64]]:
+    """(row, col) pixel arrays of the labelled doorways of an IPA training map."""
+    lab, _n = ndi.label(training_image == IPA_DOORWAY_VALUE, structure=np.ones((3, 3), dtype=bool))
+    blobs = []
+    for i, sl in enumerate(ndi.find_objects(lab), start=1):
+        if sl is None:
+            continue
+        rr, cc = np.nonzero(lab[sl] == i)
+        if rr.size >= IPA_DOORWAY_MIN_PX:
+            blobs.append(np.column_stack([rr + sl[0].start, cc + sl[1].start]))
+    return blobs
+
+
+def door_precision_recall(detected_rc: npt.ArrayLike, blobs: list[npt.NDArray[np.int64]],
+                          resolution_m: float,
+                          tolerance_m: float = DOOR_MATCH_TOLERANCE_M) -> PrecisionRecall:
+    """Match detected door centres ((row, col) pixels, image orientation) to doorway blobs."""
+    det = np.asarray(detected_rc, dtype=float).reshape(-1, 2)
+    if not blobs:
+        raise ValueError("no labelled doorways to score against")
+    tol_px = tolerance_m / resolution_m
+    pairs: list[tuple[float, int, int]] = []
+    for j, blob in enumerate(blobs):
+        if det.size == 0:
+            break
+        d = np.sqrt(((det[:, None, :] - blob[None, :, :].astype(float)) ** 2).sum(axis=2)).min(axis=1)
+        for i in np.flatnonzero(d <= tol_px):
+            pairs.append((float(d[i]), int(i), j))
+    used_d: set[int] = set()
+    used_b: set[int] = set()
+    for _, i, j in sorted(pairs):
+        if i in used_d or j in used_b:
+            continue
+        used_d.add(i)
+        used_b.add(j)
+    tp = len(used_d)
+    precision = tp / len(det) if len(det) else 0.0
+    return PrecisionRecall(precision, tp / len(blobs), len(det), len(blobs))
+
+
+__all__ = ["DOOR_MATCH_TOLERANCE_M", "MIN_REGION_PX", "PrecisionRecall", "colour_gt_rooms",
+           "door_precision_recall", "ipa_doorway_blobs", "ipa_gt_rooms", "room_precision_recall"]
