@@ -129,6 +129,8 @@ _KINDS: Final[dict[Element, ElementKind]] = {
 }
 #: For these, ``side`` picks one of a room's corners / walls ("the left corner"), not a side of the robot.
 _SIDE_IS_WHICH_ONE: Final = (Element.CORNER, Element.WALL)
+_SIDE_WORDS: Final = {Side.LEFT: " on the robot's left", Side.RIGHT: " on the robot's right",
+                      Side.AHEAD: " ahead of the robot", Side.BEHIND: " behind the robot"}
 _WORDS: Final[dict[Element, str]] = {e: e.value.replace("_", " ") for e in Element}
 
 
@@ -188,9 +190,9 @@ def _absent_in_map(ref: ElementRef, analysis: MapAnalysis,
     side_note = ""
     if ref.side is not None and pose is not None and ref.kind not in _SIDE_IS_WHICH_ONE:
         candidates = [e for e in candidates if ref.side in robot_side(pose, reference_point(e))]
-        side_note = f" on the {ref.side.value}" if ref.side in (Side.LEFT, Side.RIGHT) else f" {ref.side.value}"
+        side_note = _SIDE_WORDS[ref.side]
         if not candidates:
-            out.append(f"there is no {_WORDS[ref.kind]}{side_note} of the robot")
+            out.append(f"there is no {_WORDS[ref.kind]}{side_note}")
             return out
     if ref.ordinal is not None and ref.ordinal > len(candidates):
         n = len(candidates)
