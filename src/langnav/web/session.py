@@ -28,8 +28,9 @@ from typing import Any, Final
 from langnav.analysis.elements import MapAnalysis
 from langnav.errors import LangnavError
 from langnav.language.translator import available as translator_names
-from langnav.language.translator import clean_prompt
+from langnav.language.translator import clean_prompt, get_translator
 from langnav.maps.grid import OccupancyGrid
+from langnav.pipeline import Planner, PlanResult
 from langnav.plan.commands import (
     Command,
     GetCurrentPath,
@@ -39,6 +40,7 @@ from langnav.plan.commands import (
     describe,
 )
 from langnav.plan.errors import PlanRejected
+from langnav.plan.validator import CheckedPlan, validate_plan
 from langnav.robot.errors import RobotError
 from langnav.robot.protocol import RobotBackend, create_backend
 from langnav.web.broadcast import Broadcaster
@@ -176,17 +178,9 @@ class RobotSession:
         try:
             out = [self.say("user", "prompt", {"text": text})]
             pose = self.robot.get_robot_pose()
-            source: Any = self._current_analysis() or self.robot.get_map()
-            try:
-                result = self._planner.plan(text, source, (pose.x_m, pose.y_m, math.degrees(pose.yaw_rad)))
-            except PlanRejected as exc:
-                out.append(self.say("robot", "rejected", {"text": "I won't do that, nothing moved.",
-                                                           "reasons": exc.reasons}))
-                return out
-            except LangnavError as exc:
-                out.append(self.say("robot", "rejected", {"text": f"I could not plan that: {exc}",
-                                                           "reasons": []}))
-                return out
+            source: MapAnalysis | OccupancyGrid = self._current_analysis() or self.robot.get_map()
+            # The planner never raises for a user's mistake: the reason comes back as clarification.
+            result = self._planner.plan(text, source, (pose.x_m, pose.y_m, math.degrees(pose.yaw_rad)))
             out.extend(self._show_and_run(result, source="prompt"))
             return out
         finally:
@@ -200,13 +194,13 @@ class RobotSession:
             out = [self.say("user", "prompt", {"text": f"Go to the point I clicked: x {x_m:.2f}, y {y_m:.2f}"})]
             cmd = NavigateThroughPoses(poses=[[x_m, y_m]], note="the point you clicked")
             try:
-                commands = self._validate([cmd])
+                checked = self._validate([cmd])
             except PlanRejected as exc:
                 out.append(self.say("robot", "rejected", {"text": "I can't go there, nothing moved.",
                                                            "reasons": exc.reasons}))
                 return out
-            out.extend(self._start_plan(f"I'll go to x {x_m:.2f}, y {y_m:.2f}.", "map click", [commands], [],
-                                        source="click"))
+            out.extend(self._start_plan(f"I'll go to x {x_m:.2f}, y {y_m:.2f}.", "map click",
+                                        [list(checked.commands)], list(checked.repairs), source="click"))
             return out
         finally:
             self._plan_lock.release()
@@ -249,35 +243,33 @@ class RobotSession:
         return {"ok": True, "translator": name}
 
     # -- planning internals -----------------------------------------------------------------------
-    def _make_planner(self, translator: str) -> Any:
-        from langnav.pipeline import Planner
+    def _make_planner(self, translator: str) -> Planner:
+        return Planner(get_translator(translator))
 
-        return Planner(translator=translator)
-
-    def _validate(self, commands: Sequence[Command]) -> list[Command]:
+    def _validate(self, commands: Sequence[Command]) -> CheckedPlan:
         """Commands made here (a map click) go through the same validator as a prompt's."""
         pose = self.robot.get_robot_pose()
-        source: Any = self._current_analysis() or self.robot.get_map()
-        checked = self._planner.validate(list(commands), source, (pose.x_m, pose.y_m, math.degrees(pose.yaw_rad)))
-        return list(checked)
+        analysis = self._current_analysis()
+        grid = analysis.grid if analysis is not None else self.robot.get_map()
+        return validate_plan(list(commands), grid, (pose.x_m, pose.y_m, math.degrees(pose.yaw_rad)),
+                             params=self._planner.params)
 
-    def _show_and_run(self, result: Any, source: str) -> list[Message]:
-        if getattr(result, "clarification", None):
-            return [self.say("robot", "clarification", {"text": result.clarification,
-                                                         "translator": getattr(result, "translator", "")})]
-        items = list(getattr(result, "items", []) or [])
-        groups = [list(item.commands) for item in items]
+    def _show_and_run(self, result: PlanResult, source: str) -> list[Message]:
+        if result.clarification:
+            payload: dict[str, Any] = {"text": result.clarification, "translator": result.translator}
+            if result.intent is not None and result.intent.steps:
+                payload["intent_text"] = describe_intent(result.intent)
+            return [self.say("robot", "clarification", payload)]
+        groups = [list(item.commands) for item in result.items]
         if not any(groups):
             return [self.say("robot", "clarification", {
                 "text": "I did not find anything to do in that. Try e.g. “go to the nearest door”."})]
-        notes = [str(m) for m in getattr(result, "messages", []) or []]
-        intent = getattr(result, "intent", None)
-        intent_text = describe_intent(intent) if intent is not None else "Here is the plan."
-        return self._start_plan(intent_text, getattr(result, "translator", self.translator), groups, notes,
+        intent_text = describe_intent(result.intent) if result.intent is not None else "Here is the plan."
+        return self._start_plan(intent_text, result.translator, groups, list(result.messages),
                                 source=source, result=result)
 
     def _start_plan(self, intent_text: str, translator: str, groups: list[list[Command]], notes: list[str],
-                    source: str, result: Any = None) -> list[Message]:
+                    source: str, result: PlanResult | None = None) -> list[Message]:
         flat = [c for g in groups for c in g]
         only_queries = all(isinstance(c, QUERY_COMMANDS) for c in flat)
         if only_queries:

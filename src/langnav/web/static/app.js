@@ -136,13 +136,31 @@
       case "error": node = bubble("robot", "error", m.text, m.t); break;
       default: node = bubble("system", "info", m.text, m.t);
     }
+    const hint = $("empty-hint");
+    if (hint) hint.remove();
     list.append(node);
     scrollDown();
   }
 
+  const EXAMPLES = ["where are you?", "go to the nearest door", "go through the door on your left, then turn around",
+    "explore", "go to the nearest unexplored area, then come back to the door"];
+  function emptyHint() {
+    if (list.children.length) return;
+    const li = el("li", "empty-hint", "Tell the robot what to do in your own words. For example:");
+    li.id = "empty-hint";
+    const ul = el("ul");
+    EXAMPLES.forEach((t) => {
+      const item = el("li", "", `“${t}”`);
+      item.addEventListener("click", () => { input.value = t; updateCount(); input.focus(); });
+      ul.append(item);
+    });
+    li.append(ul);
+    list.append(li);
+  }
   async function loadHistory() {
     const data = await api(`/api/history?after=${lastId}`);
     data.messages.forEach(render);
+    emptyHint();
   }
 
   // ---------------------------------------------------------------- prompt form
@@ -375,7 +393,7 @@
     if (shown.unexplored_area) {
       ctx.strokeStyle = color.unexplored_area; ctx.lineWidth = 2 * px; ctx.setLineDash([4 * px, 4 * px]);
       for (const u of elements.unexplored || []) {
-        const r = Math.max(0.25, Math.sqrt(u.area_m2 / Math.PI) * 0.5);
+        const r = Math.min(0.6, Math.max(0.25, Math.sqrt(u.area_m2 / Math.PI) * 0.5));
         ctx.beginPath(); ctx.arc(u.centroid[0], u.centroid[1], r, 0, 2 * Math.PI); ctx.stroke();
       }
       ctx.setLineDash([]);
