@@ -1,0 +1,92 @@
+"""Which element the words mean, on the hand-built two-room world (see conftest.py)."""
+
+from __future__ import annotations
+
+import pytest
+
+from langnav.analysis.elements import MapAnalysis
+from langnav.grounding.errors import GroundingError
+from langnav.grounding.geometry import Pose
+from langnav.grounding.selection import describe_ref, select, select_wall, wall_lines
+from langnav.language.intent import Element, ElementRef, Side, Superlative
+
+AT_A = Pose.from_deg(3.0, 2.0, 0.0)  # in room A, facing east (towards door_1)
+
+
+def ref(**kw: object) -> ElementRef:
+    return ElementRef.model_validate(kw)
+
+
+@pytest.mark.parametrize(("words", "expected"), [
+    ({"kind": "door"}, "door_1"),
+    ({"kind": "door", "side": "ahead"}, "door_1"),
+    ({"kind": "door", "side": "left"}, "door_2"),
+    ({"kind": "door", "ordinal": 2}, "door_2"),
+    ({"kind": "door", "superlative": "farthest"}, "door_2"),
+    ({"kind": "corner", "side": "left"}, "c_a_ne"),
+    ({"kind": "corner", "side": "right"}, "c_a_se"),
+    ({"kind": "corner", "superlative": "farthest"}, "c_a_ne"),
+    ({"kind": "corner"}, "c_a_sw"),
+    ({"kind": "room", "superlative": "biggest"}, "room_a"),
+    ({"kind": "room", "superlative": "smallest"}, "room_b"),
+    ({"kind": "room", "in_current_room": True}, "room_a"),
+    ({"kind": "obstacle", "in_current_room": True}, "obstacle_1"),
+    ({"kind": "unexplored_area", "superlative": "nearest"}, "unexplored_1"),
+])
+def test_select(two_rooms: MapAnalysis, words: dict[str, object], expected: str) -> None:
+    assert select(ref(**words), two_rooms, AT_A).id == expected
+
+
+def test_turning_changes_left_and_right(two_rooms: MapAnalysis) -> None:
+    facing_west = Pose.from_deg(3.0, 2.0, 180.0)
+    assert select(ref(kind="door", side="right"), two_rooms, facing_west).id == "door_2"
+    with pytest.raises(GroundingError, match="no door on your left"):
+        select(ref(kind="door", side="left"), two_rooms, facing_west)
+
+
+def test_ordinal_too_large_says_how_many_there_are(two_rooms: MapAnalysis) -> None:
+    with pytest.raises(GroundingError, match="I see only two doors, so I cannot find the third door"):
+        select(ref(kind="door", ordinal=3), two_rooms, AT_A)
+    with pytest.raises(GroundingError, match="only one door on your left"):
+        select(ref(kind="door", side="left", ordinal=2), two_rooms, AT_A)
+
+
+def test_named_places_the_map_cannot_know(two_rooms: MapAnalysis) -> None:
+    with pytest.raises(GroundingError, match=r"'kitchen'.*no names"):
+        select(ref(kind="room", name="kitchen"), two_rooms, AT_A)
+
+
+def test_missing_kind_is_reported(two_rooms: MapAnalysis) -> None:
+    with pytest.raises(GroundingError, match="no narrow passages"):
+        select(ref(kind="narrow_passage"), two_rooms, AT_A)
+
+
+def test_walls_split_by_doors_are_one_wall(two_rooms: MapAnalysis) -> None:
+    lines = wall_lines([w for w in two_rooms.walls if w.room == "room_a"])
+    east = [ln for ln in lines if set(ln.ids) == {"w_a_e1", "w_a_e2", "w_a_e3"}]
+    assert len(lines) == 4 and len(east) == 1
+    assert east[0].length_m == pytest.approx(6.0)
+
+
+def test_left_and_right_walls(two_rooms: MapAnalysis) -> None:
+    north = Pose.from_deg(3.0, 2.0, 90.0)
+    assert set(select_wall(ref(kind="wall", side="right"), two_rooms, north).ids) == {"w_a_e1", "w_a_e2", "w_a_e3"}
+    assert select_wall(ref(kind="wall", side="left"), two_rooms, north).ids == ("w_a_w",)
+    assert select_wall(ref(kind="wall", side="ahead"), two_rooms, north).ids == ("w_a_n",)
+    assert select_wall(ref(kind="wall"), two_rooms, north).ids == ("w_a_s",)
+
+
+def test_compact_noun_picks_a_compact_obstacle(two_rooms: MapAnalysis) -> None:
+    box = select(ref(kind="obstacle"), two_rooms, AT_A, "go next to the box")
+    assert box.id == "obstacle_1"
+    # a long noun with no long obstacle falls back to every obstacle
+    assert select(ref(kind="obstacle"), two_rooms, AT_A, "go to the shelf").id == "obstacle_1"
+
+
+def test_descriptions() -> None:
+    assert describe_ref(ref(kind="door", ordinal=2, side="left")) == "the second door on your left"
+    assert describe_ref(ref(kind="corner", side="right", in_current_room=True)) == "the right corner in this room"
+    assert describe_ref(ref(kind="room", superlative="biggest")) == "the biggest room"
+    assert describe_ref(ref(kind="room", in_current_room=True)) == "this room"
+    assert describe_ref(ref(kind="wall", side="left", within="hallway")) == "the left wall of the hallway"
+    assert Side.LEFT.value == "left" and Superlative.BIGGEST.value == "biggest" and Element.DOOR.value == "door"
