@@ -1,5 +1,7 @@
 """Robot backends: the embedded simulator (default), rosbridge (roslibpy) and ROS 2 (rclpy)."""
 
+# Importing the simulator registers the default backend, "sim".
+import langnav.robot.sim  # noqa: F401  (registers "sim")
 from langnav.robot.errors import RobotError, RobotTimeout
 from langnav.robot.protocol import (
     LaserScan,

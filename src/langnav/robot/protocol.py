@@ -49,6 +49,8 @@ class TaskFeedback:
     poses_remaining: int | None = None
     recoveries: int = 0
     message: str = ""
+    #: turning still to do (Rotate, and the turns of a sideways Move), when the backend knows it
+    angle_remaining_rad: float | None = None
 
 
 @dataclass(frozen=True)

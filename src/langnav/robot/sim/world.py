@@ -1,0 +1,152 @@
+"""The simulated world: a ground-truth occupancy grid, with obstacles that can be added at run time.
+
+The ground truth is any :class:`~langnav.maps.grid.OccupancyGrid` (a ROS map, a bench world, a
+built map). Cells the ground truth does not know (UNKNOWN) are treated as solid: the simulator has
+nothing else to show there, and a robot that drove into them would leave the world. So both the
+lidar and the collision check see OCCUPIED *and* UNKNOWN cells as matter.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from typing import Final
+
+import numpy as np
+import numpy.typing as npt
+from scipy import ndimage
+
+from langnav.maps.grid import FREE, OCCUPIED, OccupancyGrid
+from langnav.robot.errors import RobotError
+
+#: The robot's radius: an iRobot Create 3 / TurtleBot 4 base is 0.17-0.18 m in radius.
+ROBOT_RADIUS_M: Final = 0.17
+
+BoolArray = npt.NDArray[np.bool_]
+
+
+class World:
+    """Ground truth for the simulator: which cells hold matter, and whether a disc collides."""
+
+    def __init__(self, grid: OccupancyGrid) -> None:
+        self._base = grid
+        self._solid: BoolArray = grid.cells != FREE
+        self.version = 0
+        self._clear: npt.NDArray[np.float64] | None = None
+        self._clear_version = -1
+
+    # -- reading ---------------------------------------------------------------------------------
+    @property
+    def grid(self) -> OccupancyGrid:
+        """The ground truth as a grid (added obstacles OCCUPIED)."""
+        cells = self._base.cells.copy()
+        cells[self._solid & (self._base.cells == FREE)] = OCCUPIED
+        return self._base.with_cells(cells)
+
+    @property
+    def frame(self) -> OccupancyGrid:
+        """The grid whose frame (origin, resolution, shape) the world uses."""
+        return self._base
+
+    @property
+    def solid(self) -> BoolArray:
+        """True where the lidar is stopped and the robot cannot be (read-only view)."""
+        view = self._solid.view()
+        view.flags.writeable = False
+        return view
+
+    def clearance_m(self, x_m: float, y_m: float, radius_m: float = ROBOT_RADIUS_M) -> float:
+        """Distance from (x, y) to the nearest solid cell, searched within ``radius_m`` + a cell."""
+        return disc_clearance_m(self._solid, self._base, x_m, y_m, radius_m)
+
+    def collides(self, x_m: float, y_m: float, radius_m: float = ROBOT_RADIUS_M) -> bool:
+        """Whether a disc of ``radius_m`` at (x, y) overlaps matter."""
+        r, c = self._base.world_to_index(x_m, y_m)
+        # quick accept: centre-to-centre distance minus a cell diagonal is a safe lower bound
+        if self._base.in_bounds(r, c) and (
+                (self._centre_clearance()[int(r), int(c)] - math.sqrt(2.0)) * self._base.resolution_m > radius_m):
+            return False
+        return self.clearance_m(x_m, y_m, radius_m) < radius_m
+
+    def _centre_clearance(self) -> npt.NDArray[np.float64]:
+        if self._clear is None or self._clear_version != self.version:
+            self._clear = ndimage.distance_transform_edt(~self._solid).astype(np.float64)
+            self._clear_version = self.version
+        return self._clear
+
+    # -- changing --------------------------------------------------------------------------------
+    def add_obstacle(self, x_m: float, y_m: float, radius_m: float = 0.2) -> None:
+        """Put a round obstacle (a bin, a person standing) into the world at (x, y)."""
+        self._paint(x_m, y_m, radius_m, True)
+
+    def add_box(self, min_x_m: float, min_y_m: float, max_x_m: float, max_y_m: float) -> None:
+        """Put an axis-aligned box obstacle into the world (world metres)."""
+        if not (max_x_m > min_x_m and max_y_m > min_y_m):
+            raise RobotError(f"a box needs max > min, got ({min_x_m}, {min_y_m})-({max_x_m}, {max_y_m})")
+        g = self._base
+        rr, cc = np.indices(self._solid.shape)
+        x, y = g.cell_to_world(rr, cc)
+        mask = (x >= min_x_m) & (x <= max_x_m) & (y >= min_y_m) & (y <= max_y_m)
+        if not mask.any():
+            raise RobotError(f"the box ({min_x_m}, {min_y_m})-({max_x_m}, {max_y_m}) misses the world "
+                             f"{g.bounds_m}")
+        self._solid |= mask
+        self.version += 1
+
+    def remove_obstacles(self) -> None:
+        """Take every added obstacle away again."""
+        self._solid = self._base.cells != FREE
+        self.version += 1
+
+    def _paint(self, x_m: float, y_m: float, radius_m: float, value: bool) -> None:
+        if not (radius_m > 0 and math.isfinite(radius_m)):
+            raise RobotError(f"an obstacle radius must be a positive number of metres, got {radius_m!r}")
+        g = self._base
+        rc, cc = g.world_to_cell(x_m, y_m)
+        reach = math.ceil(radius_m / g.resolution_m) + 1
+        r0, c0 = math.floor(float(rc)), math.floor(float(cc))
+        rows = np.arange(max(r0 - reach, 0), min(r0 + reach + 1, g.height))
+        cols = np.arange(max(c0 - reach, 0), min(c0 + reach + 1, g.width))
+        if rows.size == 0 or cols.size == 0:
+            raise RobotError(f"the obstacle at ({x_m}, {y_m}) lies outside the world {g.bounds_m}")
+        rr, cc2 = np.meshgrid(rows, cols, indexing="ij")
+        d = np.hypot(rr + 0.5 - float(rc), cc2 + 0.5 - float(cc)) * g.resolution_m
+        inside = d <= radius_m
+        self._solid[rr[inside], cc2[inside]] = value
+        self.version += 1
+
+
+@functools.lru_cache(maxsize=16)
+def _offsets(reach: int) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]:
+    off = np.arange(-reach, reach + 1, dtype=np.intp)
+    dr, dc = np.meshgrid(off, off, indexing="ij")
+    return dr.reshape(1, -1), dc.reshape(1, -1)
+
+
+def disc_clearances_m(solid: BoolArray, frame: OccupancyGrid, xs_m: npt.ArrayLike, ys_m: npt.ArrayLike,
+                      radius_m: float) -> npt.NDArray[np.float64]:
+    """For each point, the exact distance to the nearest True cell's square of ``solid`` (in the
+    frame of ``frame``), searched within ``radius_m`` plus one cell; ``inf`` when none is that
+    near. Cells outside the grid count as solid. Vectorised over the points."""
+    res = frame.resolution_m
+    dr, dc = _offsets(math.ceil(radius_m / res) + 1)
+    r, c = frame.world_to_cell(np.atleast_1d(np.asarray(xs_m, dtype=float)),
+                               np.atleast_1d(np.asarray(ys_m, dtype=float)))
+    r = r[:, None]
+    c = c[:, None]
+    rr = np.floor(r).astype(np.intp) + dr
+    cc = np.floor(c).astype(np.intp) + dc
+    h, w = solid.shape
+    inside = (rr >= 0) & (rr < h) & (cc >= 0) & (cc < w)
+    hit = ~inside
+    hit[inside] = solid[rr[inside], cc[inside]]
+    # distance from the point to each square [r, r+1) x [c, c+1), in cells
+    gr = np.maximum(np.maximum(rr - r, r - (rr + 1)), 0.0)
+    gc = np.maximum(np.maximum(cc - c, c - (cc + 1)), 0.0)
+    d = np.where(hit, np.hypot(gr, gc), np.inf)
+    return d.min(axis=1) * res
+
+
+def disc_clearance_m(solid: BoolArray, frame: OccupancyGrid, x_m: float, y_m: float, radius_m: float) -> float:
+    """:func:`disc_clearances_m` for one point."""
+    return float(disc_clearances_m(solid, frame, x_m, y_m, radius_m)[0])
