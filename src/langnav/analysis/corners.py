@@ -17,6 +17,7 @@ from typing import Final
 
 import numpy as np
 import numpy.typing as npt
+from scipy import ndimage as ndi
 
 from langnav.analysis.elements import Corner, Wall
 from langnav.analysis.params import AnalysisParams
@@ -51,12 +52,11 @@ def _intersect(a: Wall, b: Wall) -> tuple[float, float] | None:
 
 
 def find_corners(grid: OccupancyGrid, params: AnalysisParams, walls: tuple[Wall, ...],
-                 labels: npt.NDArray[np.int32], room_labels: Mapping[str, int],
-                 clearance_m: npt.NDArray[np.float64]) -> tuple[tuple[Corner, ...], tuple[Wall, ...]]:
+                 labels: npt.NDArray[np.int32], room_labels: Mapping[str, int]
+                 ) -> tuple[tuple[Corner, ...], tuple[Wall, ...]]:
     """Corners of every space, and the walls with their ends moved onto the corners.
 
-    ``clearance_m`` is, per cell, the distance from the cell's centre to the nearest occupied or
-    unknown cell's edge (0 on those cells); ``room_labels`` maps a space id to its label.
+    ``room_labels`` maps a space id to its label.
     """
     cos_max = math.sin(math.radians(CORNER_MAX_SKEW_DEG))
     ends: dict[str, list[tuple[float, float]]] = {w.id: [w.start, w.end] for w in walls}
@@ -103,26 +103,35 @@ def find_corners(grid: OccupancyGrid, params: AnalysisParams, walls: tuple[Wall,
     for k, (room, x, a, b) in enumerate(found, start=1):
         label = room_labels.get(room, 0) if room is not None else 0
         corners.append(Corner(id=f"corner_{k}", point=x, room=room, walls=(a.id, b.id),
-                              approach=approach_point(grid, params, x, labels, label, clearance_m)))
+                              approach=approach_point(grid, params, x, labels, label)))
     new_walls = tuple(dataclasses.replace(w, start=ends[w.id][0], end=ends[w.id][1]) for w in walls)
     return tuple(corners), new_walls
 
 
 def approach_point(grid: OccupancyGrid, params: AnalysisParams, point: tuple[float, float],
-                   labels: npt.NDArray[np.int32], label: int,
-                   clearance_m: npt.NDArray[np.float64]) -> tuple[float, float]:
-    """The free cell of space ``label`` nearest ``point`` with the goal clearance (world metres).
+                   labels: npt.NDArray[np.int32], label: int) -> tuple[float, float]:
+    """The free cell of space ``label`` nearest ``point`` with the goal clearance (world metres):
+    its centre is at least ``params.goal_clearance_m`` from every occupied or unknown cell's edge.
 
     Falls back to the clearest cell of the space within reach when none has the full clearance.
     """
     r, c = grid.world_to_index(point[0], point[1])
-    rad = math.ceil(APPROACH_MAX_M / grid.resolution_m)
+    res = grid.resolution_m
+    rad = math.ceil(APPROACH_MAX_M / res)
     r0, r1 = max(0, int(r) - rad), min(grid.height, int(r) + rad + 1)
     c0, c1 = max(0, int(c) - rad), min(grid.width, int(c) + rad + 1)
     if r0 >= r1 or c0 >= c1:
         return point
     win_lab = labels[r0:r1, c0:c1]
-    win_clear = clearance_m[r0:r1, c0:c1]
+    # Clearance in a window grown by the clearance itself: exact up to that distance, which is
+    # all the test needs (cells beyond the grid count as unknown).
+    m = math.ceil(params.goal_clearance_m / res) + 2
+    padded = np.zeros((r1 - r0 + 2 * m, c1 - c0 + 2 * m), dtype=bool)
+    pr0, pc0 = max(0, r0 - m), max(0, c0 - m)
+    pr1, pc1 = min(grid.height, r1 + m), min(grid.width, c1 + m)
+    padded[pr0 - (r0 - m):pr1 - (r0 - m), pc0 - (c0 - m):pc1 - (c0 - m)] = grid.free[pr0:pr1, pc0:pc1]
+    edt = np.asarray(ndi.distance_transform_edt(padded), dtype=np.float64)[m:-m, m:-m]
+    win_clear = np.maximum(edt * res - res / 2, 0.0)
     rr, cc = np.mgrid[r0:r1, c0:c1]
     xs, ys = grid.cell_to_world(rr, cc)
     d = np.hypot(xs - point[0], ys - point[1])

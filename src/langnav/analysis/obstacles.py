@@ -57,19 +57,16 @@ def find_obstacles(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
     # Which space labels each component borders: (space cell, component) pairs -> (comp, label).
     lab_pairs = adjacent_pairs(labels, comp)
     space_of_pair = labels.ravel()[lab_pairs[:, 0]].astype(np.int64)
-    comp_space = np.unique(np.stack([lab_pairs[:, 1], space_of_pair], axis=1), axis=0)
-    n_spaces = np.bincount(comp_space[:, 0], minlength=n + 1)
+    base = int(labels.max()) + 1
+    comp_space = np.unique(lab_pairs[:, 1] * base + space_of_pair) // base
+    n_spaces = np.bincount(comp_space, minlength=n + 1)
     structural[n_spaces >= 2] = True
     # Most-bordered space per component (by the number of neighbouring cells).
-    pair_codes = lab_pairs[:, 1] * (int(labels.max()) + 1) + space_of_pair
-    codes, counts = np.unique(pair_codes, return_counts=True)
+    codes, counts = np.unique(lab_pairs[:, 1] * base + space_of_pair, return_counts=True)
     best_space = np.zeros(n + 1, dtype=np.int64)
-    best_count = np.zeros(n + 1, dtype=np.int64)
-    for code, cnt in zip(codes.tolist(), counts.tolist(), strict=True):
-        c, s = divmod(code, int(labels.max()) + 1)
-        if cnt > best_count[c]:
-            best_count[c] = cnt
-            best_space[c] = s
+    # Sort by count so that, per component, the most frequent space is written last.
+    by_count = np.argsort(counts, kind="stable")
+    best_space[codes[by_count] // base] = codes[by_count] % base
 
     min_cells = params.obstacle_min_area_m2 / grid.cell_area_m2
     candidates = np.flatnonzero(~structural & (sizes >= min_cells))

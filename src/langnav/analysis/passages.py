@@ -63,14 +63,22 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     cols_any = np.flatnonzero(open_.any(axis=0))
     if len(rows_any) == 0:
         return ()
-    r0, r1 = int(rows_any[0]), int(rows_any[-1]) + 1
-    c0, c1 = int(cols_any[0]), int(cols_any[-1]) + 1
+    # Work in the window around the open cells, one blocking cell of margin: distances inside
+    # it are the same as on the whole grid (the margin ring separates it from the rest).
+    r0, r1 = max(0, int(rows_any[0]) - 1), min(open_.shape[0], int(rows_any[-1]) + 2)
+    c0, c1 = max(0, int(cols_any[0]) - 1), min(open_.shape[1], int(cols_any[-1]) + 2)
     sub = open_[r0:r1, c0:c1]
-    dist = (clearance_m(grid, blocking) if dist_m is None else dist_m)[r0:r1, c0:c1]
-    skel = skeletonize(sub)
-    # Width across the skeleton: the centre-to-centre distance to a side, minus half a cell, twice.
-    width = np.where(skel, 2.0 * dist - res, 0.0)
-    narrow = skel & (width > 2.0 * params.robot_radius_m) & (width <= params.passage_max_width_m)
+    if dist_m is None:
+        dist = np.asarray(ndi.distance_transform_edt(sub), dtype=np.float64) * res
+    else:
+        dist = dist_m[r0:r1, c0:c1]
+    # Width across the medial axis: the centre-to-centre distance to a side, minus half a cell, twice.
+    width = 2.0 * dist - res
+    band = sub & (width > 2.0 * params.robot_radius_m) & (width <= params.passage_max_width_m)
+    # The medial axis within the band: ridge cells of the distance map (a local maximum across
+    # some direction), thinned to one cell. Cheaper than skeletonising all free space.
+    skel = skeletonize(band & _ridge(dist))
+    narrow = skel
     chains, n = ndi.label(narrow, structure=EIGHT)
     if n == 0:
         return ()
@@ -85,10 +93,16 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     ref = w_s[starts + (counts * 0.2).astype(int)]
     core = np.zeros_like(narrow)
     core.ravel()[idx] = w <= ref[cid - 1] + CORE_WIDTH_TOL_M
-    cores, _m = ndi.label(core, structure=EIGHT)
+    cores, m = ndi.label(core, structure=EIGHT)
     passages: list[NarrowPassage] = []
+    # Necessary conditions, vectorised, before the per-core work: a chain of n cells spans at
+    # most n * sqrt(2) cells and at most its bounding box's diagonal.
+    n_cells = np.bincount(cores.ravel(), minlength=m + 1)
+    min_cells = params.passage_min_length_m / res - 1.0
     for k, sl in enumerate(ndi.find_objects(cores), start=1):
-        if sl is None:
+        if sl is None or n_cells[k] * math.sqrt(2) < min_cells:
+            continue
+        if math.hypot(sl[0].stop - sl[0].start, sl[1].stop - sl[1].start) < min_cells:
             continue
         rr, cc = np.nonzero(cores[sl] == k)
         rr = rr + sl[0].start
@@ -138,6 +152,18 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                                       length_m=length_m, ends=(ends_w[0], ends_w[1]),
                                       connects=tuple(spaces)))
     return tuple(passages)
+
+
+def _ridge(d: npt.NDArray[np.float64]) -> BoolArray:
+    """Cells whose value is >= both neighbours along at least one of the four directions."""
+    p = np.pad(d, 1, mode="constant", constant_values=0.0)
+    c = p[1:-1, 1:-1]
+    out = np.zeros(d.shape, dtype=bool)
+    for (r_a, c_a), (r_b, c_b) in (((0, 1), (2, 1)), ((1, 0), (1, 2)), ((0, 0), (2, 2)), ((0, 2), (2, 0))):
+        a = p[r_a:r_a + d.shape[0], c_a:c_a + d.shape[1]]
+        b = p[r_b:r_b + d.shape[0], c_b:c_b + d.shape[1]]
+        out |= (c >= a) & (c >= b)
+    return out & (d > 0)
 
 
 def _side_distances(open_: BoolArray, pts: npt.NDArray[np.float64], reach: npt.NDArray[np.float64],

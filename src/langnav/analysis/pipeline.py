@@ -54,11 +54,7 @@ def analyze(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS) -> Map
     obst = find_obstacles(grid, params, labels, room_ids, exterior=unx.exterior)
     walls = find_walls(grid, params, labels, room_ids, wall=grid.occupied & ~obst.mask)
 
-    # Goals keep clear of every occupied or unknown cell (the bench's pose validity rule):
-    # distance from a cell's centre to the nearest such cell's edge.
-    res = grid.resolution_m
-    goal_clear = np.maximum(np.asarray(ndi.distance_transform_edt(grid.free)) * res - res / 2, 0.0)
-    corners, walls = find_corners(grid, params, walls, labels, room_labels, goal_clear)
+    corners, walls = find_corners(grid, params, walls, labels, room_labels)
 
     # Passages: unknown noise specks do not narrow a passage; everything else unknown does.
     blocking = grid.occupied | (grid.unknown & ~unx.specks)

@@ -57,24 +57,33 @@ def exterior_unknown_mask(grid: OccupancyGrid) -> BoolArray:
 def adjacent_pairs(a: npt.NDArray[np.integer], b: npt.NDArray[np.integer]) -> npt.NDArray[np.int64]:
     """Unique (flat index of a cell with a > 0, label b > 0 of one of its 8 neighbours) pairs.
 
-    Returned as an (N, 2) int64 array; vectorised over the whole grid (eight shifted views).
+    Returned as an (N, 2) int64 array sorted by cell; vectorised (eight shifted views of the
+    window holding both masks' overlap).
     """
     h, w = a.shape
-    flat = np.arange(h * w, dtype=np.int64).reshape(h, w)
-    out: list[npt.NDArray[np.int64]] = []
-    for dr, dc in NEIGHBOURS_8:
-        rs_a = slice(max(0, -dr), h - max(0, dr))
-        cs_a = slice(max(0, -dc), w - max(0, dc))
-        rs_b = slice(max(0, dr), h - max(0, -dr))
-        cs_b = slice(max(0, dc), w - max(0, -dc))
-        av = a[rs_a, cs_a]
-        bv = b[rs_b, cs_b]
-        sel = (av > 0) & (bv > 0)
-        if sel.any():
-            out.append(np.stack([flat[rs_a, cs_a][sel], bv[sel].astype(np.int64)], axis=1))
-    if not out:
+    near = ndi.binary_dilation(b > 0, structure=EIGHT) & (a > 0)
+    rows = np.flatnonzero(near.any(axis=1))
+    if len(rows) == 0:
         return np.zeros((0, 2), dtype=np.int64)
-    return np.unique(np.concatenate(out), axis=0)
+    cols = np.flatnonzero(near.any(axis=0))
+    r0, r1 = max(0, int(rows[0]) - 1), min(h, int(rows[-1]) + 2)
+    c0, c1 = max(0, int(cols[0]) - 1), min(w, int(cols[-1]) + 2)
+    sub_near = near[r0:r1, c0:c1]
+    sub_b = b[r0:r1, c0:c1]
+    rr, cc = np.nonzero(sub_near)
+    hh, ww = sub_b.shape
+    base = int(b.max()) + 1
+    codes: list[npt.NDArray[np.int64]] = []
+    flat = (rr + r0).astype(np.int64) * w + (cc + c0)
+    for dr, dc in NEIGHBOURS_8:
+        r2, c2 = rr + dr, cc + dc
+        ok = (r2 >= 0) & (r2 < hh) & (c2 >= 0) & (c2 < ww)
+        lab = np.zeros(len(rr), dtype=np.int64)
+        lab[ok] = sub_b[r2[ok], c2[ok]]
+        sel = lab > 0
+        codes.append(flat[sel] * base + lab[sel])
+    uniq = np.unique(np.concatenate(codes))
+    return np.stack([uniq // base, uniq % base], axis=1)
 
 
 def find_unexplored(grid: OccupancyGrid, params: AnalysisParams) -> UnexploredResult:
@@ -126,7 +135,8 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams) -> UnexploredRe
     fr_cells = pairs[keep, 0]
     fr_area = fr_area[keep]
     # One frontier cell may touch an area through several neighbours: unique (area, cell).
-    fr = np.unique(np.stack([fr_area.astype(np.int64), fr_cells], axis=1), axis=0)
+    fr_codes = np.unique(fr_area.astype(np.int64) * (grid.width * grid.height) + fr_cells)
+    fr = np.stack([fr_codes // (grid.width * grid.height), fr_codes % (grid.width * grid.height)], axis=1)
     fr_r, fr_c = np.divmod(fr[:, 1], grid.width)
     fx, fy = grid.cell_to_world(fr_r, fr_c)
     order = np.argsort(fr[:, 0], kind="stable")

@@ -173,7 +173,7 @@ def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
                 member = remaining & (np.abs(rho - centre) <= max_dev)
                 remaining &= ~member
                 if member.sum() < min_len * 0.5:
-                    continue
+                    break  # the densest line left is too short: so is every other one
                 fit = _refit(x[sel][member], y[sel][member], n_x, n_y)
                 m_nx, m_ny, m_centre = (n_x, n_y, centre) if fit is None else fit
                 s_line = -x[sel][member] * m_ny + y[sel][member] * m_nx
