@@ -361,6 +361,8 @@ class _NavTask(_Task):
         return cmd.linear_mps, cmd.angular_radps
 
     def _succeed(self, sim: SimBackend) -> tuple[float, float]:
+        if sim.linear_mps != 0.0 or sim.angular_radps != 0.0:
+            return 0.0, 0.0  # brake to a stop first: a goal is reached when the robot stands on it
         gx, gy, _ = self.poses[-1]
         self.path_xy = None
         pose = sim.pose
@@ -738,14 +740,19 @@ def default_start(grid: OccupancyGrid) -> Pose2D:
     return Pose2D(float(x), float(y), 0.0)
 
 
-def create_sim(world: OccupancyGrid | World | str | Path, pose: Any = None, *, known_map: bool = False,
-               seed: int = 0, **config: Any) -> SimBackend:
+def create_sim(world: OccupancyGrid | World | str | Path | None = None, pose: Any = None, *,
+               known_map: bool = False, seed: int = 0, **config: Any) -> SimBackend:
     """The registry factory: ``create_backend("sim", world=..., pose=(x, y, yaw_deg), known_map=...)``.
 
-    ``world`` is a grid or a map file (map_server YAML or image); extra keyword arguments set
+    ``world`` is a grid, a map file (map_server YAML or image), or ``None`` / ``"demo"`` for the
+    bundled demo world; ``pose`` defaults to the most open free spot. Extra keyword arguments set
     :class:`SimConfig` fields.
     """
-    if isinstance(world, str | Path):
+    from langnav.maps.demo import DEMO_NAME, build_demo_grid
+
+    if world is None or world == DEMO_NAME:
+        world = build_demo_grid()
+    elif isinstance(world, str | Path):
         world = load_map(world)
     w = world if isinstance(world, World) else World(world)
     try:

@@ -34,6 +34,10 @@ L_FREE: Final = math.log(0.196 / 0.804)
 STEP_CELLS: Final = 0.7
 #: A beam clears cells up to this far (in cells) before its end, so the end cell is not cleared.
 END_MARGIN_CELLS: Final = 0.5
+#: The hit is marked this far (in cells) beyond the measured range: a return lies on the surface,
+#: the boundary of two cells, and the cell to mark is the one behind it (the wall's), not the free
+#: one in front, which would thicken every wall by a cell at random.
+HIT_DEPTH_CELLS: Final = 0.5
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -86,8 +90,9 @@ class LogOddsMap:
             touched[ri[ok] * w + ci[ok]] = True
         ends = np.zeros(flat_size, dtype=bool)
         if hit.any():
-            er = np.floor(r0 + sin_t[hit] * reach_cells[hit]).astype(np.intp)
-            ec = np.floor(c0 + cos_t[hit] * reach_cells[hit]).astype(np.intp)
+            depth = reach_cells[hit] + HIT_DEPTH_CELLS
+            er = np.floor(r0 + sin_t[hit] * depth).astype(np.intp)
+            ec = np.floor(c0 + cos_t[hit] * depth).astype(np.intp)
             ok = (er >= 0) & (er < h) & (ec >= 0) & (ec < w)
             ends[er[ok] * w + ec[ok]] = True
         flat = self._logodds.reshape(-1)
