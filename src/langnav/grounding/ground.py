@@ -295,6 +295,10 @@ def _nav_step(step: Step, pose: Pose, index: int, poses: list[Point], note: str,
 def _navigate(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> GroundedStep:
     ref = step.target
     detail = step.detail or Detail.TO
+    if ref is None and step.movement == Movement.FOLLOW:
+        here = space_of(ctx.analysis, pose.xy)
+        hall = here is not None and here.kind == ElementKind.HALLWAY
+        ref = ElementRef(kind=Kind.HALLWAY if hall else Kind.ROOM, in_current_room=True)
     if ref is None:
         if detail in (Detail.MIDDLE, Detail.OPPOSITE_SIDE_OF):
             ref = ElementRef(kind=Kind.ROOM, in_current_room=True)

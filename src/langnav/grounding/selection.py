@@ -325,7 +325,16 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
     if ref.kind == Kind.WALL:
         raise GroundingError("internal: walls are selected with select_wall")  # pragma: no cover
     if ref.kind == Kind.CORNER:
-        return [_select_corner(ref, analysis, pose)]
+        first = _select_corner(ref, analysis, pose)
+        if count == 1:
+            return [first]
+        space = _space_for_ref(ref, analysis, pose)
+        assert space is not None
+        rest = sorted((c for c in analysis.corners if c is not first and _in_space(c, space, analysis)),
+                      key=lambda c: math.dist(pose.xy, c.point))
+        if len(rest) < count - 1:
+            raise GroundingError(f"I see only {1 + len(rest)} corners here, so I cannot pick {count} of them.")
+        return [first, *rest[:count - 1]]
     if ref.kind in (Kind.ROOM, Kind.HALLWAY) and ref.in_current_room and ref.superlative is None \
             and ref.ordinal is None:
         here = space_of(analysis, pose.xy)
