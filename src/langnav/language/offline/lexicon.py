@@ -1,0 +1,562 @@
+"""The offline translator's vocabulary: every table of words and phrases, as named constants.
+
+Phrases are written lower-case with single spaces; :func:`phrase_regex` turns a table into one
+compiled alternation (longest phrase first, whole words, any run of spaces between words). The
+words follow ``../shared/bench/README.md`` ("Meaning of the words") and issue 3 §1-2.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Mapping
+from typing import Final
+
+from langnav.language.intent import Detail, Direction, Element, Side, Superlative
+
+
+def phrase_regex(phrases: Iterable[str], group: str | None = None) -> str:
+    """One regex alternation matching any of ``phrases`` as whole words, longest first."""
+    ordered = sorted(set(phrases), key=lambda p: (-len(p), p))
+    body = "|".join(r"\s+".join(re.escape(w).replace(r"\-", r"[\s-]") for w in p.split()) for p in ordered)
+    inner = f"(?P<{group}>{body})" if group else f"(?:{body})"
+    return rf"(?<![\w'-]){inner}(?![\w'-])"
+
+
+def compile_phrases(phrases: Iterable[str]) -> re.Pattern[str]:
+    return re.compile(phrase_regex(phrases))
+
+
+def lookup(table: Mapping[str, object], phrase: str) -> object:
+    """The value of ``phrase`` in a phrase table, ignoring runs of spaces."""
+    return table[" ".join(phrase.split())]
+
+
+# ------------------------------------------------------------------------------ elements
+#: Head nouns of each reference element (singular and plural). Longest match wins, so
+#: "narrow corridor" is a narrow passage while "corridor" is a hallway.
+ELEMENT_NOUNS: Final[dict[str, Element]] = {
+    **{w: Element.DOOR for w in (
+        "door", "doors", "doorway", "doorways", "opening", "openings", "entrance", "entrances",
+        "exit", "exits", "doorframe", "doorframes", "door frame", "door frames", "entryway",
+        "entryways", "entry", "archway", "archways", "way out", "gap", "gaps", "door opening")},
+    **{w: Element.WALL for w in ("wall", "walls", "wall segment")},
+    **{w: Element.ROOM for w in ("room", "rooms", "chamber", "chambers")},
+    **{w: Element.HALLWAY for w in (
+        "hallway", "hallways", "corridor", "corridors", "hall", "halls", "passageway",
+        "passageways", "hall way", "aisle", "main corridor", "main hallway")},
+    **{w: Element.NARROW_PASSAGE for w in (
+        "narrow passage", "narrow passages", "narrow gap", "narrow gaps", "tight spot", "tight spots",
+        "constriction", "constrictions", "bottleneck", "bottlenecks", "narrow corridor",
+        "narrow hallway", "narrow hall", "narrow passageway", "narrow opening", "tight gap",
+        "tight passage", "tight space", "narrow space", "narrow spot", "narrow section",
+        "narrow part", "narrowing", "choke point", "chokepoint", "pinch point",
+        "passage", "passages", "narrow way", "tight squeeze", "narrow bit")},
+    **{w: Element.OBSTACLE for w in (
+        "obstacle", "obstacles", "object", "objects", "thing", "things", "box", "boxes", "item",
+        "items", "pillar", "pillars", "column", "columns", "post", "posts", "block", "blocks",
+        "crate", "crates", "barrier", "barriers", "obstruction", "obstructions", "blockage",
+        "furniture", "piece of furniture", "pieces of furniture", "pole", "poles", "clutter",
+        "blob", "blobs", "structure", "cube")},
+    **{w: Element.CORNER for w in ("corner", "corners", "nook")},
+    **{f"{adj} {noun}": Element.UNEXPLORED_AREA
+       for adj in ("unexplored", "unknown", "unmapped", "uncharted", "unseen", "unvisited",
+                   "undiscovered", "unscanned")
+       for noun in ("area", "areas", "region", "regions", "space", "spaces", "territory",
+                    "part", "parts", "zone", "zones", "section", "sections", "spot", "place")},
+    **{w: Element.UNEXPLORED_AREA for w in (
+        "frontier", "frontiers", "the unknown", "unexplored", "unknown space", "unknown",
+        "exploration frontier")},
+}
+
+#: Heads that are plural ("the two obstacles", "between the boxes").
+PLURAL_NOUNS: Final = frozenset(w for w in ELEMENT_NOUNS if w.endswith("s") and not w.endswith(
+    ("ss", "entrance", "space", "place")) and w not in ("gas", "furniture", "the unknown", "unknown"))
+
+#: "passage" alone is probably, not surely, a narrow passage.
+WEAK_NOUNS: Final = frozenset({"passage", "passages", "gap", "gaps", "thing", "things", "unknown",
+                               "unexplored", "hall", "halls", "squeeze", "structure"})
+
+#: Pronouns that point back at the previous step's element.
+PRONOUNS: Final = frozenset({"it", "that", "there", "that one", "this one", "them", "that place",
+                             "the same one", "the same place", "where you were"})
+
+#: Kinds that contain other elements ("the corner of the hallway", "the obstacle in this room").
+CONTAINER_KINDS: Final = frozenset({Element.ROOM, Element.HALLWAY})
+
+# ------------------------------------------------------------------------------ properties
+ORDINALS: Final[dict[str, int]] = {
+    "first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6, "seventh": 7,
+    "eighth": 8, "ninth": 9, "tenth": 10, "eleventh": 11, "twelfth": 12, "thirteenth": 13,
+    "fourteenth": 14, "fifteenth": 15, "1st": 1, "2nd": 2, "3rd": 3, "4th": 4, "5th": 5, "6th": 6,
+    "sixteenth": 16, "seventeenth": 17, "eighteenth": 18, "nineteenth": 19, "twentieth": 20,
+    **{f"{n}{'st' if n % 10 == 1 and n != 11 else 'nd' if n % 10 == 2 and n != 12 else 'rd' if n % 10 == 3 and n != 13 else 'th'}": n
+       for n in range(1, 21)},
+}
+
+SUPERLATIVES: Final[dict[str, Superlative]] = {
+    **{w: Superlative.NEAREST for w in ("nearest", "closest", "next", "near", "nearby", "close",
+                                         "closer", "nearer", "most near")},
+    **{w: Superlative.FARTHEST for w in ("farthest", "furthest", "last", "far", "final",
+                                          "most distant", "remotest", "farther", "further",
+                                          "opposite", "far away", "distant", "far end")},
+    **{w: Superlative.BIGGEST for w in ("biggest", "largest", "big", "large", "huge", "largest size",
+                                         "bigger", "larger", "main")},
+    **{w: Superlative.SMALLEST for w in ("smallest", "small", "tiny", "smaller", "tiniest", "little")},
+    **{w: Superlative.WIDEST for w in ("widest", "wide", "wider", "broadest", "broad")},
+    **{w: Superlative.NARROWEST for w in ("narrowest", "narrow", "narrower", "tightest", "thinnest")},
+}
+
+#: Post-modifier superlatives: "the door closest to you".
+POST_SUPERLATIVES: Final[dict[str, Superlative]] = {
+    **{f"{w} {p} {o}": Superlative.NEAREST
+       for w in ("closest", "nearest") for p in ("to",) for o in ("you", "the robot", "yourself", "me")},
+    **{f"{w} from {o}": Superlative.FARTHEST
+       for w in ("farthest", "furthest", "farthest away", "furthest away") for o in ("you", "the robot", "me")},
+    "farthest away": Superlative.FARTHEST, "furthest away": Superlative.FARTHEST,
+    "nearby": Superlative.NEAREST, "closest by": Superlative.NEAREST,
+}
+
+#: Sides as adjectives before the noun ("the left wall", "the right-hand door").
+SIDE_ADJECTIVES: Final[dict[str, Side]] = {
+    "left": Side.LEFT, "left-hand": Side.LEFT, "left hand": Side.LEFT, "lefthand": Side.LEFT,
+    "right": Side.RIGHT, "right-hand": Side.RIGHT, "right hand": Side.RIGHT, "righthand": Side.RIGHT,
+}
+
+#: Sides only for walls and corners ("the front wall", "the back corner"); "the front door" is a name.
+FRONT_BACK_ADJECTIVES: Final[dict[str, Side]] = {
+    "front": Side.AHEAD, "facing": Side.AHEAD, "back": Side.BEHIND, "rear": Side.BEHIND,
+}
+
+_YOU: Final = ("you", "yourself", "the robot", "me", "us")
+_SIDE_WORDS: Final = {"left": Side.LEFT, "left-hand": Side.LEFT, "left hand": Side.LEFT,
+                      "right": Side.RIGHT, "right-hand": Side.RIGHT, "right hand": Side.RIGHT}
+
+#: Sides as phrases after the noun ("the door on your left", "the door in front of you").
+SIDE_PHRASES: Final[dict[str, Side]] = {
+    **{f"{p} {d} {w}{s}": side
+       for w, side in _SIDE_WORDS.items()
+       for p in ("on", "to", "at", "towards", "toward")
+       for d in ("your", "the", "my", "its")
+       for s in ("", " side", " hand side", " of you", " side of you")},
+    **{f"{w} of {y}": side for w, side in _SIDE_WORDS.items() for y in _YOU},
+    **{f"{w}{s}": side for w, side in _SIDE_WORDS.items() for s in (" side", " hand side")},
+    **{f"on {w}": side for w, side in _SIDE_WORDS.items()},
+    **{f"in front of {y}": Side.AHEAD for y in _YOU},
+    **{f"ahead of {y}": Side.AHEAD for y in _YOU},
+    **{f"straight ahead of {y}": Side.AHEAD for y in _YOU},
+    "in front": Side.AHEAD, "ahead": Side.AHEAD, "straight ahead": Side.AHEAD, "up ahead": Side.AHEAD,
+    "dead ahead": Side.AHEAD, "before you": Side.AHEAD, "facing you": Side.AHEAD,
+    "in your way": Side.AHEAD, "in your path": Side.AHEAD, "right ahead": Side.AHEAD,
+    "straight in front of you": Side.AHEAD, "directly ahead": Side.AHEAD,
+    "directly in front of you": Side.AHEAD, "right in front of you": Side.AHEAD,
+    **{f"behind {y}": Side.BEHIND for y in _YOU},
+    **{f"at {d} back": Side.BEHIND for d in ("your", "the")},
+    "behind": Side.BEHIND, "in back of you": Side.BEHIND, "back there": Side.BEHIND,
+    "to your rear": Side.BEHIND, "at your rear": Side.BEHIND, "to the rear": Side.BEHIND,
+    "directly behind you": Side.BEHIND, "right behind you": Side.BEHIND,
+}
+
+#: Phrases that make the element (or its room) the one holding the robot.
+CURRENT_ROOM_PHRASES: Final = (
+    "this room", "the room you are in", "the room you are currently in", "the current room",
+    "current room", "your room", "your current room", "the same room", "this very room",
+    "the room you are standing in", "the room you are in now", "the room you are in right now",
+    "this space", "here", "in here", "the room we are in", "where you are",
+)
+
+#: After a room noun: "the room you are in" (the noun already read).
+ROOM_YOU_ARE_IN: Final = ("you are in", "you are currently in", "you are standing in", "we are in",
+                          "you are in now", "you are in right now", "you are in at the moment",
+                          "that you are in", "which you are in")
+
+#: Words linking an element to its container: "the corner OF the hallway".
+CONTAINER_LINKS: Final = ("of", "in", "inside", "within", "inside of", "belonging to", "on", "at")
+
+#: Determiners and harmless pre-modifiers inside a noun phrase.
+DETERMINERS: Final = frozenset({"the", "a", "an", "that", "this", "your", "any", "some", "our", "my",
+                                "these", "those", "one", "its"})
+NEUTRAL_ADJECTIVES: Final = frozenset({"open", "nearest-by", "available", "free", "empty", "same",
+                                       "only", "single", "whole", "entire", "actual", "real",
+                                       "visible", "two", "both", "very", "most", "the"})
+
+# ------------------------------------------------------------------------------ details
+#: Words before an element that give the movement detail. Checked on the words between the verb
+#: (or the previous element) and the element, longest first.
+DETAIL_PHRASES: Final[dict[str, Detail]] = {
+    **{f"{pre}{the}{w} {e} of": Detail.OPPOSITE_SIDE_OF
+       for pre in ("", "to ", "over to ", "on ", "onto ", "go to ")
+       for the in ("the ", "")
+       for w in ("other", "opposite", "far", "farther", "further", "farthest", "furthest", "another")
+       for e in ("side", "end", "half", "part")},
+    "opposite": Detail.OPPOSITE_SIDE_OF, "opposite to": Detail.OPPOSITE_SIDE_OF,
+    "across": Detail.OPPOSITE_SIDE_OF, "across to the other side of": Detail.OPPOSITE_SIDE_OF,
+    "to the end of": Detail.OPPOSITE_SIDE_OF, "the end of": Detail.OPPOSITE_SIDE_OF,
+    "to the far end of": Detail.OPPOSITE_SIDE_OF, "behind": Detail.OPPOSITE_SIDE_OF,
+    "around": Detail.OPPOSITE_SIDE_OF, "round": Detail.OPPOSITE_SIDE_OF,
+    "beyond": Detail.OPPOSITE_SIDE_OF,
+    **{f"{pre}{the}{w}{o}": Detail.MIDDLE
+       for pre in ("", "to ", "into ", "in ", "at ")
+       for the in ("the ", "")
+       for w in ("middle", "centre", "center", "midpoint", "central part", "centre point",
+                 "center point", "very middle", "very centre", "very center", "heart")
+       for o in (" of",)},
+    **{f"{r}{w}": Detail.NEXT_TO
+       for r in ("", "right ", "just ", "up ", "close ")
+       for w in ("next to", "beside", "besides", "alongside", "adjacent to", "by the side of",
+                 "close to", "near to", "near", "nearby", "by", "close by", "closer to", "nearer to",
+                 "to the side of", "the side of", "up against", "against", "up next to",
+                 "right up to", "right by", "close up to", "as close as possible to",
+                 "as near as possible to", "near the side of")},
+    **{w: Detail.TO for w in (
+        "to", "into", "in to", "at", "up to", "over to", "onto", "on to", "in front of",
+        "right in front of", "just in front of", "as far as", "until you reach", "till you reach",
+        "until you get to", "till you get to", "until", "till", "until you are at", "back to",
+        "down to", "out to", "inside", "in", "over by", "all the way to", "on over to",
+        "until you arrive at", "to where", "in the", "in front of the", "the front of",
+        "to the front of", "for", "up until")},
+    **{w: Detail.TOWARDS for w in ("towards", "toward", "in the direction of", "to the direction of",
+                                   "in direction of", "direction of", "approaching")},
+    **{w: Detail.THROUGH for w in ("through", "thru", "via", "out through", "in through",
+                                   "straight through", "right through", "all the way through",
+                                   "out of", "out the", "out", "past")},
+    **{w: Detail.ALONG for w in ("along", "the length of", "down", "up", "all along",
+                                 "the entire length of", "the whole length of", "right along",
+                                 "close along", "down the length of", "parallel to",
+                                 "following")},
+    **{w: Detail.BETWEEN for w in ("between", "in between", "halfway between", "midway between",
+                                   "in the middle between", "in the middle of", "betwixt")},
+}
+
+#: "in the middle of A and B" reads as between; "in the middle of the room" as middle. The
+#: entry above is corrected by the parser when there is no second element.
+MIDDLE_PHRASE_BETWEEN: Final = "in the middle of"
+
+#: Details given by a verb ("cross the room", "take the door", "enter the room").
+VERB_DETAILS: Final[dict[str, Detail]] = {
+    **{w: Detail.THROUGH for w in ("pass through", "go through", "cross", "take", "pass", "traverse",
+                                   "exit through", "squeeze through", "get through", "drive through",
+                                   "move through", "navigate through", "head through", "walk through",
+                                   "exit", "leave", "exit from", "get out of", "go out of", "leave through")},
+    **{w: Detail.TO for w in ("reach", "enter", "approach", "visit", "find", "get to", "arrive at",
+                              "return to", "come to", "go into", "park at", "head into")},
+    **{w: Detail.ALONG for w in ("follow", "hug", "trace", "track", "skirt", "shadow", "follow along")},
+    **{w: Detail.STOP_AT for w in ("stop at", "stop by", "stop in front of", "halt at", "stop when you reach",
+                                   "stop once you reach", "stop when you get to", "stop when you are at",
+                                   "stop as soon as you reach", "park", "wait at", "stay at",
+                                   "stop next to", "stop beside", "stop near", "stop in")},
+}
+
+#: Details that only fit some elements, and their reading for the others.
+THROUGH_KINDS: Final = frozenset({Element.DOOR, Element.NARROW_PASSAGE})
+
+# ------------------------------------------------------------------------------ movements
+#: Verbs that move the robot somewhere (navigate with an element, move without one).
+GO_VERBS: Final = (
+    "go", "goes", "going", "head", "heading", "drive", "driving", "navigate", "move", "moving", "get",
+    "reach", "proceed", "travel", "walk", "roll", "come", "return", "advance", "make your way",
+    "take me", "bring me", "get me", "lead me", "take us", "bring us", "guide me", "take yourself",
+    "enter", "exit", "leave", "cross", "pass", "approach", "visit", "find", "park", "position yourself",
+    "get yourself", "continue", "keep going", "carry on", "step", "slide", "shift", "creep", "inch",
+    "scoot", "back up", "reverse", "back off", "go back", "head back", "strafe", "run", "ride",
+    "navigate yourself", "steer", "relocate", "put yourself", "place yourself", "be", "traverse",
+    "squeeze", "wander", "journey", "cruise", "zip", "hop", "nudge", "budge", "position", "get over",
+    "come over", "swing by", "pull up", "pull over", "pull", "arrive", "set off", "follow", "hug",
+    "trace", "track", "skirt", "take", "stay", "keep", "edge", "shuffle", "ease",
+)
+
+ROTATE_VERBS: Final = ("turn", "rotate", "spin", "pivot", "swivel", "face", "look", "twist", "yaw",
+                       "turn yourself", "rotate yourself", "orient", "orient yourself", "swing", "veer",
+                       "turn your body", "point", "do", "make", "perform", "execute", "turn on the spot", "u turn", "uturn", "about face", "about turn", "make a u turn",
+                       "turn in place", "rotate in place", "spin in place", "turn on spot")
+#: "do / make / perform" only rotate with a turn noun ("do a quarter turn", "make a u-turn").
+ROTATE_NOUN_VERBS: Final = frozenset({"do", "make", "perform", "execute"})
+
+STOP_PHRASES: Final = (
+    "stop", "halt", "freeze", "stop moving", "stop now", "stop right there", "stop immediately",
+    "stop here", "stay here", "stay where you are", "stay put", "stand still", "hold still",
+    "hold on", "hold position", "hold your position", "do not move", "cancel", "abort", "pause",
+    "brake", "emergency stop", "wait", "wait here", "stop there", "stop everything",
+    "cease moving", "come to a halt", "come to a stop", "stop the robot", "stop driving",
+    "stop the motion", "cancel that", "cancel the navigation", "cancel navigation", "abort mission",
+    "stay", "whoa", "enough", "stop it", "e-stop", "estop", "stop right now", "stop at once",
+    "break", "hault", "stahp", "stopp", "stop please", "do not go any further", "go no further",
+    "that is far enough", "that is enough", "no further",
+)
+
+#: Questions and their answers.
+QUERY_POSE_PATTERNS: Final = (
+    r"\bwhere\s+(?:are|r)\s+(?:you|u)\b(?!\s+(?:going|heading|headed|driving|off\s+to))", r"\bwhere\s+am\s+i\b", r"\bwhere\s+is\s+the\s+robot\b",
+    r"\b(?:your|the\s+robot'?s?|current|robot)\s+(?:current\s+|exact\s+|present\s+|last\s+)?"
+    r"(?:position|location|pose|coordinates|whereabouts|heading|orientation|place)\b",
+    r"\bwhich\s+(?:way|direction)\s+are\s+you\s+(?:facing|pointing|heading|looking)\b",
+    r"\bwhere\s+(?:is\s+it|are\s+we)\b", r"\bwhere\s+you\s+are\b", r"\blocali[sz]e\s+yourself\b",
+    r"\bwhat\s+is\s+your\s+(?:position|location|pose)\b", r"\bwhere\s+abouts\b",
+    r"\bwhat\s+room\s+are\s+you\s+in\b", r"\bwhere\s+have\s+you\s+got\s+to\b",
+)
+QUERY_PATH_PATTERNS: Final = (
+    r"\b(?:what|which|show|tell|give|send|display|get|report)\b.*\b(?:path|route|plan|trajectory|way)\b",
+    r"\b(?:path|route|trajectory)\b.*\b(?:following|taking|using|on|planned|current)\b",
+    r"\bwhere\s+are\s+you\s+(?:going|heading|headed|driving)\b",
+    r"\b(?:current|planned|your)\s+(?:path|route|trajectory|plan)\b",
+    r"\bhow\s+(?:are|will)\s+you\s+(?:get|going\s+to\s+get)\s+there\b",
+)
+QUERY_MAP_PATTERNS: Final = (
+    r"\b(?:show|give|send|display|get|fetch|let\s+me\s+see|can\s+i\s+see|see|view|open|bring\s+up|"
+    r"pull\s+up|print|draw|download|share|provide)\b(?:\s+\w+){0,4}?\s+(?:map|occupancy\s+grid)\b",
+    r"\bwhat\s+does\s+(?:the|your)\s+map\s+look\s+like\b", r"\b(?:the|your|current)\s+map\s*\?",
+    r"^\s*(?:the\s+)?map\s*$", r"\bwhat\s+(?:have\s+you|did\s+you)\s+mapped\b",
+    r"\bwhat\s+is\s+on\s+(?:the|your)\s+map\b", r"\bwhat\s+(?:you\s+have|have\s+you)\s+(?:mapped|explored|seen)\b",
+)
+
+#: Exploration (frontier exploration until done).
+EXPLORE_PATTERNS: Final = (
+    r"\bexplor(?:e|ing|ation)\b", r"\bmap\s+(?:out\s+)?(?:this|the|our|everything|all|it|the\s+rest|"
+    r"the\s+whole|the\s+entire|this\s+whole|this\s+entire|more|around|the\s+area|the\s+environment|"
+    r"the\s+floor|the\s+building|the\s+place|the\s+room|the\s+surroundings|your\s+surroundings)\b",
+    r"\b(?:build|make|create|complete|finish|extend|update)\s+(?:a|the|your|the\s+whole)?\s*map\b",
+    r"\bscan\s+(?:the|this|your)?\s*(?:area|room|building|floor|surroundings|environment|place|everything)\b",
+    r"\bsurvey\s+(?:the|this)\s+(?:area|room|building|floor|place)\b",
+    r"\bdiscover\s+(?:new|the|unknown|more)\b", r"\bgo\s+mapping\b", r"\bstart\s+mapping\b",
+    r"\bmap\s+(?:this|the|every|each)\s+\w+\b", r"^\s*map\s*$",
+)
+#: Scope words an explore clause may name without changing it.
+EXPLORE_SCOPE_WORDS: Final = frozenset({
+    "area", "areas", "room", "rooms", "floor", "building", "environment", "surroundings", "place",
+    "map", "everything", "rest", "whole", "entire", "all", "this", "the", "it", "world", "house",
+    "office", "apartment", "level", "space", "region", "site", "more", "around", "out", "of",
+    "new", "unknown", "territory", "every", "each", "corner", "on", "own", "your", "until",
+    "done", "finished", "complete", "completely", "fully", "autonomously", "by", "yourself",
+    "mapping", "start", "go", "build", "make", "create", "a", "finish", "extend", "update", "scan",
+    "survey", "discover", "exploring", "exploration", "premises", "lab", "flat", "there",
+    "surrounding", "nearby", "parts", "part", "you", "can", "explore", "explored",
+})
+
+# ------------------------------------------------------------------------------ directions
+MOVE_DIRECTIONS: Final[dict[str, Direction]] = {
+    **{w: Direction.FORWARD for w in (
+        "forward", "forwards", "ahead", "straight", "straight ahead", "straight on", "onward",
+        "onwards", "frontward", "frontwards", "to the front", "in front", "straight forward",
+        "up")},
+    **{w: Direction.BACKWARD for w in (
+        "backward", "backwards", "back", "in reverse", "reverse", "rearward", "rearwards",
+        "to the back", "straight back", "back up", "backup", "back off", "the other way")},
+    **{w: Direction.LEFT for w in (
+        "left", "to the left", "to your left", "leftward", "leftwards", "sideways left",
+        "sideways to the left", "to the left side", "left side", "on the left", "on your left",
+        "toward the left", "towards the left", "toward your left", "towards your left", "port")},
+    **{w: Direction.RIGHT for w in (
+        "right", "to the right", "to your right", "rightward", "rightwards", "sideways right",
+        "sideways to the right", "to the right side", "right side", "on the right", "on your right",
+        "toward the right", "towards the right", "toward your right", "towards your right",
+        "starboard")},
+}
+
+ROTATE_DIRECTIONS: Final[dict[str, Direction]] = {
+    **{w: Direction.LEFT for w in (
+        "left", "to the left", "to your left", "leftward", "leftwards", "counterclockwise",
+        "counter clockwise", "counter-clockwise", "anticlockwise", "anti clockwise",
+        "anti-clockwise", "ccw", "to the left side", "toward the left", "towards the left",
+        "toward your left", "towards your left", "your left", "the left", "port", "left side",
+        "left hand side", "on the left", "on your left", "positive")},
+    **{w: Direction.RIGHT for w in (
+        "right", "to the right", "to your right", "rightward", "rightwards", "clockwise", "cw",
+        "to the right side", "toward the right", "towards the right", "toward your right",
+        "towards your right", "your right", "the right", "starboard", "right side",
+        "right hand side", "on the right", "on your right", "negative")},
+    **{w: Direction.AROUND for w in (
+        "around", "round", "back", "backwards", "backward", "about", "the other way", "the opposite way",
+        "the other direction", "the opposite direction", "behind", "behind you", "to face behind",
+        "u-turn", "u turn", "about-face", "about face", "180", "a 180", "one eighty", "an about-face",
+        "all the way around", "all the way round", "the way you came", "the way we came")},
+}
+
+# ------------------------------------------------------------------------------ amounts
+LITTLE_PHRASES: Final = (
+    "a little", "a little bit", "a bit", "slightly", "a tad", "a touch", "just a bit",
+    "just a little", "a smidge", "a small amount", "a short distance", "a little way",
+    "a small step", "a tiny bit", "a wee bit", "a few centimeters", "a few centimetres",
+    "a few cm", "a few degrees", "a small turn", "a bit more", "a little more", "somewhat",
+    "marginally", "a hair", "a nudge", "a small distance", "a short way", "bit", "little",
+    "little bit", "a fraction", "a tiny amount", "ever so slightly", "a couple of centimeters",
+    "a couple of centimetres", "a couple of degrees", "a smidgen", "gently", "a small bit",
+    "just slightly", "very slightly", "only slightly",
+)
+
+# ------------------------------------------------------------------------------ filler & safety
+#: Politeness and filler, removed before reading (consumed, never "unread").
+FILLER_PATTERNS: Final = (
+    r"\b(?:could|can|would|will|might)\s+(?:you|u)(?:\s+please)?(?:\s+kindly)?\b",
+    r"\b(?:i(?:\s+would|\s+will)?|we(?:\s+would)?)\s+(?:like|love|want|need|wish)\s+(?:you\s+)?(?:to\s+)?",
+    r"\b(?:i|we)\s+(?:want|need)\s+(?:you\s+)?(?:to\s+)?", r"\bplease\b", r"\bpls\b", r"\bplz\b",
+    r"\bkindly\b", r"\bthanks?(?:\s+you)?(?:\s+so\s+much|\s+a\s+lot)?\b", r"\bthank\s+you\b",
+    r"\bcheers\b", r"\b(?:hey|hi|hello|ok(?:ay)?|alright|all\s+right|right\s+then|so|well|now|um+|uh+|er+m?|hmm+)\b",
+    r"\b(?:dear\s+)?robot\b", r"\brobo\b", r"\bbuddy\b", r"\bmate\b", r"\bfirst\s+of\s+all\b",
+    r"\bto\s+begin(?:\s+with)?\b", r"\bstart\s+by\b", r"\bbegin\s+by\b", r"\bjust\b", r"\balso\b",
+    r"\bfor\s+me\b", r"\bif\s+you\s+(?:can|could|would|do\s+not\s+mind|please)\b", r"\bgo\s+ahead\s+and\b",
+    r"\bwhen\s+you\s+(?:are\s+ready|can|get\s+a\s+chance)\b", r"\blet\s+us\b", r"\blets\b",
+    r"\bi\s+(?:think|guess|believe|suppose)\b", r"\bmaybe\b", r"\bperhaps\b", r"\bright\s+(?:now|away)\b",
+    r"\bimmediately\b", r"\bquickly\b", r"\bslowly\b", r"\bcarefully\b", r"\bsafely\b", r"\bgently\b(?=.*\b(?:to|through|towards)\b)",
+    r"\bthen\b", r"\bafter\s+that\b", r"\bafterwards\b", r"\bfinally\b", r"\blastly\b",
+    r"\byourself\b(?!\s+(?:to|in|at|by|next))", r"\bagain\b", r"\bsoon\b", r"\bat\s+once\b", r"\bfor\s+a\s+moment\b",
+    r"\bwhile\s+avoiding\s+(?:the\s+|any\s+)?(?:obstacles?|walls?|objects?|things?|collisions?)\b",
+    r"\bavoiding\s+(?:the\s+|any\s+)?(?:obstacles?|walls?|objects?|things?|collisions?)\b",
+    r"\bwithout\s+(?:hitting|touching|bumping\s+into|crashing\s+into|colliding\s+with|running\s+into)\s+"
+    r"(?:the\s+|any\s+|a\s+)?(?:\w+\s+)?(?:walls?|obstacles?|objects?|things?|boxes?|anything|doors?|doorframes?|furniture)\b",
+    r"\bonce\s+(?:you\s+are\s+|you\s+get\s+|you\s+have\s+got\s+|you\s+have\s+)?(?:there|through|done|finished|arrived)\b",
+    r"\bwhen\s+you\s+(?:get|are)\s+there\b", r"\b(?:to|until|till|up\s+to)\s+(?:the|its)\s+(?:very\s+)?end\b(?!\s+of)", r"\bwhen\s+(?:done|finished)\b", r"\bthere\s+you\s+go\b",
+    r"\b(?:okay|ok)\s+(?:robot|so)\b", r"\bnice\s+and\s+(?:slow|easy)\b", r"\bat\s+a\s+slow\s+pace\b",
+    r"\bover\s+there\b(?=.*\b(?:to|through)\b)", r"\bmy\s+friend\b", r"\bsir\b", r"\bmister\b",
+    r"\bwhat\s+i\s+want\s+is\s+(?:for\s+you\s+)?(?:to\s+)?", r"\bdo\s+me\s+a\s+favou?r\s+and\b",
+    r"\bi\s+(?:would\s+)?appreciate\s+(?:it\s+)?if\s+you\s+(?:would|could)?\b", r"\byou\s+(?:should|must|need\s+to|have\s+to|can|may)\b",
+    r"\bmake\s+sure\s+(?:to|you)\b", r"\btry\s+(?:to|and)\b", r"\bplease\s+do\b", r"\bgo\s+on\b(?=\s+and\b)",
+    r"\bfrom\s+(?:here|there|where\s+you\s+are(?:\s+now)?)\b", r"\bstarting\s+from\s+here\b",
+)
+
+#: Phrases that mention walls or obstacles only to avoid them: removed before the safety check.
+SAFE_AVOIDANCE_PATTERNS: Final = (
+    r"\bwithout\s+(?:hitting|touching|bumping\s+into|crashing\s+into|colliding\s+with|running\s+into)\s+"
+    r"(?:the\s+|any\s+|a\s+)?(?:\w+\s+)?(?:walls?|obstacles?|objects?|things?|boxes?|anything|doors?|doorframes?|furniture)\b",
+    r"\b(?:while\s+)?avoiding\s+(?:the\s+|any\s+)?(?:obstacles?|walls?|objects?|things?|collisions?)\b",
+    r"\b(?:do\s+not|never|don't)\s+(?:hit|bump\s+into|crash\s+into|touch|collide\s+with|run\s+into)\s+"
+    r"(?:the\s+|any\s+|a\s+)?(?:\w+\s+)?(?:walls?|obstacles?|objects?|things?|boxes?|anything|doors?|furniture)\b",
+)
+
+#: Filler read only after the elements and their details ("first" may be an ordinal, "and" may
+#: join the two elements of "between").
+LATE_FILLER_PATTERNS: Final = (r"\bfirst\b", r"\bnext\b", r"\bsecond(?:ly)?\b(?=\s*$)",
+                               r"\bto\s+start\b", r"\bstraight\s+away\b")
+
+#: Requests that must never become motion: they are refused as a whole (prompt injection, crashing).
+UNSAFE_PATTERNS: Final = (
+    r"\bignore\b.{0,40}\b(?:rules?|instructions?|safety|limits?|constraints?|guidelines?|prompt|programming|restrictions?|commands?)\b",
+    r"\b(?:disregard|forget|override|bypass|disable|deactivate|switch\s+off|turn\s+off)\b.{0,30}"
+    r"\b(?:rules?|instructions?|safety|limits?|constraints?|collision|avoidance|sensors?|restrictions?|brakes?|guidelines?|bumpers?|lidar)\b",
+    r"\b(?:full|max(?:imum)?|top|high|highest|maximal|breakneck|ludicrous)\s+speed\b", r"\bas\s+fast\s+as\s+(?:you\s+can|possible)\b",
+    r"\b(?:crash|ram|smash|slam|collide|plow|plough|barrel|bash)\w*\b",
+    r"\b(?:hit|bump|knock|run)\s+(?:into\s+)?(?:the|a|that|this|any|every|some|somebody|someone|people|person)\b",
+    r"\b(?:into|through|against)\s+(?:the\s+|a\s+|that\s+|this\s+)?(?:\w+\s+)?walls?\b(?!\s+(?:of|and))",
+    r"\brun\s+over\b", r"\b(?:hurt|injure|kill|attack|chase|harm)\b", r"\bjailbreak\b", r"\bdeveloper\s+mode\b",
+    r"\bdown\s+the\s+stairs\b", r"\boff\s+(?:the|a)\s+(?:edge|cliff|ledge|balcony)\b",
+    r"\bpretend\s+(?:you|to)\b", r"\byou\s+are\s+now\b", r"\bsystem\s+prompt\b", r"\bno\s+limits\b",
+    r"\bspeed\s+limit\b", r"\bunsafe(?:ly)?\b", r"\breckless(?:ly)?\b", r"\bfloor\s+it\b",
+    r"\binto\s+(?:the|a|that)\s+(?:obstacle|box|pillar|column|object)\b",
+)
+
+#: Verbs of things the robot cannot do (it only drives, turns, stops, explores and reports).
+OUT_OF_SCOPE_PATTERNS: Final = (
+    r"\bpick\s+(?:\w+\s+)?up\b", r"\bgrab\b", r"\bfetch\b", r"\bcarry\b", r"\bbring\s+(?:me|us)\s+(?!to\b|back\b)",
+    r"\bbring\b(?!\s+(?:me|us)\b)", r"\bmake\s+(?:me|us)\b", r"\bcook\b", r"\bclean\b", r"\bvacuum\b",
+    r"\bmop\b", r"\bsweep\b", r"\bopen\b(?!\s+(?:door|doorway|space|area))", r"\bclose\s+(?:the|that|this)\s+door\b",
+    r"\bshut\b", r"\bpush\b", r"\blift\b", r"\bpress\b", r"\bsing\b", r"\bdance\b",
+    r"\btell\s+(?:me|us)\s+a\s+(?:joke|story)\b", r"\bjoke\b", r"\bplay\b", r"\bcall\b", r"\bphone\b",
+    r"\bwater\s+the\b", r"\bwash\b", r"\border\b", r"\bbuy\b", r"\bfeed\b", r"\bthrow\b", r"\bkick\b",
+    r"\bdeliver\b", r"\bhand\s+(?:me|over)\b", r"\bgive\s+(?:me|us)\s+(?:a|the|some|my)\s+(?!map\b|path\b|route\b|position\b|location\b|pose\b)",
+    r"\bturn\s+(?:on|off)\s+(?:the|a)\b", r"\bswitch\s+(?:on|off)\b", r"\bcharge\b", r"\brecharge\b",
+    r"\bdock\b", r"\bphoto\b", r"\bpicture\b", r"\btake\s+a\s+(?:photo|picture|selfie)\b", r"\brecord\b",
+    r"\bsay\b", r"\bspeak\b", r"\bwrite\b", r"\bread\b", r"\bsend\s+(?:an?\s+)?(?:email|message|text)\b",
+    r"\bfly\b", r"\bjump\b", r"\bclimb\b", r"\bswim\b", r"\bwhat\s+time\b", r"\bweather\b",
+    r"\bsandwich\b", r"\bcoffee\b", r"\btea\b", r"\bbeer\b", r"\bdrink\b", r"\bfood\b", r"\beat\b",
+    r"\bknock\s+on\b", r"\bring\s+the\b", r"\bunlock\b", r"\block\b", r"\bmove\s+the\s+\w+\s+(?:to|out|away|aside)\b",
+    r"\bput\s+(?:the|this|that|it|my)\b", r"\bdrop\b", r"\bpour\b", r"\bfold\b", r"\bhelp\s+me\b",
+    r"\bfollow\s+(?:me|him|her|them|the\s+person|that\s+person|the\s+man|the\s+woman)\b", r"\bcome\s+here\b",
+    r"\bcome\s+to\s+me\b", r"\bfind\s+(?:me|my|him|her|them|someone|somebody|the\s+person)\b",
+    r"\bwhat\s+(?:is|are)\s+(?:you|your\s+name|the\s+meaning)\b(?!.*\b(?:position|location|pose|path|route|map|doing)\b)",
+    r"\bwho\s+are\s+you\b", r"\bhow\s+are\s+you\b", r"\bcharging\s+station\b", r"\bdance\b",
+    r"\bwatch\b", r"\bguard\b", r"\bpatrol\b", r"\bsearch\s+for\b", r"\blook\s+for\b", r"\bhide\b",
+)
+
+#: Words that negate a step ("don't go through the door"): the step is not run.
+NEGATIONS: Final = r"\b(?:do\s+not|dont|never|not|no\s+longer|avoid|refrain\s+from|stop\s+going)\b"
+
+#: Words that may be left over without making the reading doubtful.
+STOPWORDS: Final = frozenset({
+    "the", "a", "an", "to", "you", "your", "yourself", "and", "then", "of", "in", "on", "at", "is",
+    "are", "be", "it", "its", "that", "this", "there", "here", "now", "please", "for", "with", "from",
+    "up", "me", "us", "we", "i", "my", "our", "so", "just", "also", "again", "way", "over", "all",
+    "robot", "ok", "okay", "do", "can", "will", "would", "could", "by", "as", "one", "which", "who",
+    "what", "where", "some", "any", "about", "around", "directly", "exactly", "precisely",
+    "approximately", "roughly", "nearly", "almost", "more", "or", "that's", "well", "very", "really", "right", "currently", "going", "get", "got", "have", "has",
+    "let", "lets", "carefully", "slowly", "quickly", "safely", "smoothly", "gently", "straight",
+    "same", "other", "move", "go", "drive", "head", "towards", "toward", "into", "onto", "when",
+    "once", "after", "before", "until", "till", "while", "having", "been", "being", "am",
+    "were", "was", "should", "must", "may", "might", "shall", "continue", "keep", "stay", "remain",
+    "position", "self", "own", "like", "kind", "sort", "spot", "location", "place",
+    "point", "area", "side", "part", "bit", "steps", "step", "distance", "amount", "totally",
+    "fully", "completely", "immediately", "soon", "afterward", "afterwards",
+    "finally", "first", "second", "lastly", "next", "quick", "slow", "thanks", "thank",
+    "hey", "hi", "hello", "sure", "fine", "good", "great", "nice", "cool", "man", "pal", "dude",
+    "they", "their", "them", "those", "these", "if", "than", "how", "far", "long", "whole",
+    "entire", "total", "altogether", "approx", "ca",
+    "circa", "degrees", "meters", "reached", "reach", "arrived", "arrive",
+    "passed", "pass", "gone", "through", "make", "want", "need", "wish", "able",
+})
+
+# ------------------------------------------------------------------------------ typos
+#: Common misspellings of the words the parser relies on (short words that edit distance misses).
+TYPOS: Final[dict[str, str]] = {
+    "foward": "forward", "fowards": "forwards", "forwad": "forward", "forwrad": "forward",
+    "fordward": "forward", "froward": "forward", "foreward": "forward", "fwd": "forward",
+    "rigth": "right", "rihgt": "right", "rite": "right", "riht": "right", "righ": "right",
+    "lfet": "left", "letf": "left", "lef": "left", "elft": "left", "dor": "door", "doorr": "door",
+    "dorr": "door", "odor": "door", "drs": "doors", "wal": "wall", "wll": "wall", "trun": "turn",
+    "tunr": "turn", "tuen": "turn", "trn": "turn", "rotat": "rotate", "roate": "rotate",
+    "rotae": "rotate", "nagivate": "navigate", "navgate": "navigate", "naviagte": "navigate",
+    "navigte": "navigate", "goto": "go to", "gotta": "go to", "hallwya": "hallway",
+    "halway": "hallway", "hallwy": "hallway", "corridoor": "corridor", "coridor": "corridor",
+    "corrdor": "corridor", "corrider": "corridor", "cornr": "corner", "conrer": "corner",
+    "corener": "corner", "obstcle": "obstacle", "obsticle": "obstacle", "obstacel": "obstacle",
+    "obstical": "obstacle", "metre": "metre", "meter": "meter", "mtr": "meter", "mtrs": "meters",
+    "metrs": "meters", "meteres": "meters", "metres": "metres", "meteers": "meters",
+    "degress": "degrees", "degres": "degrees", "degreees": "degrees", "dgrees": "degrees",
+    "dergees": "degrees", "nearst": "nearest", "neares": "nearest", "closet": "closest",
+    "clostest": "closest", "farest": "farthest", "furthes": "furthest", "biggst": "biggest",
+    "bigest": "biggest", "smalest": "smallest", "secnd": "second", "seccond": "second",
+    "thrid": "third", "frist": "first", "fisrt": "first", "throught": "through", "thru": "through",
+    "throuhg": "through", "trough": "through", "towrds": "towards", "twards": "towards",
+    "torwards": "towards", "twoards": "towards", "nxt": "next", "bewteen": "between",
+    "betwen": "between", "betweeen": "between", "middel": "middle", "midle": "middle",
+    "cetner": "center", "centr": "centre", "stp": "stop", "sotp": "stop", "exlpore": "explore",
+    "explor": "explore", "exploer": "explore", "unexplord": "unexplored", "unexplroed": "unexplored",
+    "backwrd": "backward", "bakward": "backward", "backwords": "backwards", "bck": "back",
+    "opposit": "opposite", "oposite": "opposite", "roon": "room", "rom": "room", "romm": "room",
+    "bix": "box", "bos": "box", "mvoe": "move", "mvove": "move", "moev": "move", "mve": "move",
+    "og": "go", "goo": "go", "ur": "your", "yor": "your", "youre": "you are",
+    "youare": "you are", "whats": "what is", "wheres": "where is", "pls": "please", "plz": "please",
+    "dont": "do not", "doesnt": "does not", "alng": "along", "alogn": "along", "folow": "follow",
+    "follw": "follow", "fllow": "follow", "passage": "passage", "pasage": "passage",
+    "passsage": "passage", "narow": "narrow", "narrrow": "narrow", "doorwya": "doorway",
+    "entrence": "entrance", "enterance": "entrance", "grad": "degrees", "quater": "quarter",
+    "qaurter": "quarter", "hafl": "half", "hlaf": "half", "aroud": "around", "arround": "around",
+    "arond": "around", "cm.": "cm", "mm.": "mm", "m.": "m", "infront": "in front",
+    "inbetween": "in between", "nextto": "next to", "alot": "a lot", "abit": "a bit",
+    "alittle": "a little", "wherer": "where", "sohw": "show", "shwo": "show", "mpa": "map",
+}
+
+#: Words that typo repair may aim at (edit distance 1, words of at least five letters).
+TYPO_TARGETS: Final = frozenset({
+    "forward", "forwards", "backward", "backwards", "right", "left", "door", "doors", "doorway",
+    "wall", "walls", "room", "rooms", "hallway", "corridor", "corner", "corners", "obstacle",
+    "obstacles", "passage", "narrow", "unexplored", "unknown", "unmapped", "navigate", "rotate",
+    "turn", "move", "drive", "follow", "along", "towards", "toward", "through", "between", "middle",
+    "centre", "center", "opposite", "nearest", "closest", "farthest", "furthest", "biggest",
+    "largest", "smallest", "widest", "narrowest", "first", "second", "third", "fourth", "fifth",
+    "meter", "meters", "metre", "metres", "degrees", "degree", "centimeters", "centimetres",
+    "millimeters", "millimetres", "explore", "entrance", "opening", "frontier", "region",
+    "around", "stop", "halt", "where", "position", "location", "please", "quarter", "half",
+    "clockwise", "counterclockwise", "anticlockwise", "beside", "behind", "front", "ahead",
+    "slightly", "little", "proceed", "approach", "enter", "pillar",
+    "object", "doorframe", "constriction", "bottleneck", "passageway", "straight", "other", "side", "next", "seventh", "eighth", "ninth", "tenth", "sixth", "twenty", "thirty",
+    "forty", "fifty", "sixty", "seventy", "eighty", "ninety", "hundred", "three", "seven",
+    "eight", "eleven", "twelve", "inches", "feet",
+})
+
+#: Real words one edit away from a vocabulary word: never "repaired" ("among" is not "along").
+NOT_TYPOS: Final = frozenset({
+    "among", "alone", "mother", "seconds", "second", "minutes", "minute", "riddle", "fiddle",
+    "lights", "nights", "rights", "sights", "fights", "others", "cornea", "corned", "rotates",
+    "behold", "frosty", "stoop", "bottles", "toward", "towards", "straighten", "meters", "metres",
+    "centers", "centres", "turned", "turning", "rooms", "doors", "walls", "corners", "throw",
+    "though", "thorough", "thought", "tough", "bought", "father", "farther", "further", "closer",
+    "sixths", "eights", "eighty", "fifth", "fifty", "fourth", "forty", "fourty", "nearer",
+    "navigator", "explorer", "explored", "exploring", "follows", "follower", "middles",
+})

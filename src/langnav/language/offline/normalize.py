@@ -1,0 +1,79 @@
+"""Normalise one instruction before reading it: case, quotes, contractions, symbols, typos."""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+from typing import Final
+
+from langnav.language.offline.lexicon import NOT_TYPOS, TYPO_TARGETS, TYPOS
+
+#: Shortest word that edit-distance repair touches (shorter words have too many neighbours).
+MIN_TYPO_REPAIR_LEN: Final = 6
+
+_CHAR_MAP: Final = str.maketrans({"’": "'", "‘": "'", "`": "'", "´": "'", "“": '"', "”": '"',
+                                  "–": "-", "—": "-", "×": "x", "π": " pi "})
+_SYMBOLS: Final = (
+    (re.compile(r"(\d)\s*½"), r"\1.5"), (re.compile(r"½"), " 0.5 "), (re.compile(r"(\d)\s*¼"), r"\1.25"),
+    (re.compile(r"¼"), " 0.25 "), (re.compile(r"(\d)\s*¾"), r"\1.75"), (re.compile(r"¾"), " 0.75 "),
+    (re.compile(r"\s*[°º]"), " degrees "), (re.compile(r"(?<=\d),(?=\d{1,2}\b)"), "."),
+    (re.compile(r"(?<=\d)(?=[a-z])(?!st\b|nd\b|rd\b|th\b)"), " "),
+)
+_CONTRACTIONS: Final = (
+    (re.compile(r"\b(you|we|they)'re\b"), r"\1 are"), (re.compile(r"\bi'm\b"), "i am"),
+    (re.compile(r"\b(you|we|they|i)'ve\b"), r"\1 have"), (re.compile(r"\b(i|you|we|they)'d\b"), r"\1 would"),
+    (re.compile(r"\b(i|you|we|they)'ll\b"), r"\1 will"), (re.compile(r"\bcan't\b"), "cannot"),
+    (re.compile(r"\bwon't\b"), "will not"), (re.compile(r"\b(\w+)n't\b"), r"\1 not"),
+    (re.compile(r"\blet's\b"), "let us"),
+    (re.compile(r"\b(what|where|that|it|there|here|who|how)'s\b"), r"\1 is"),
+    (re.compile(r"\b(what|where|who|how)'re\b"), r"\1 are"),
+)
+#: Punctuation that carries no meaning inside one instruction (kept: . / - ' " in numbers and units).
+_NOISE: Final = re.compile(r"[^\w\s./'\"°-]|(?<!\d)\.|\.(?!\d)|(?<![\w])-|-(?![\w])|(?<!\d)(?<!pi)/|/(?!\d)")
+
+
+_HYPHEN: Final = re.compile(r"(?<=[a-z])-(?=[a-z])")
+
+
+def normalize(clause: str) -> str:
+    """Lower-case, plain-ASCII-ish, single-spaced text with common typos repaired."""
+    text = clause.lower().translate(_CHAR_MAP)
+    for pattern, repl in _SYMBOLS:
+        text = pattern.sub(repl, text)
+    for pattern, repl in _CONTRACTIONS:
+        text = pattern.sub(repl, text)
+    text = _NOISE.sub(" ", text)
+    text = _HYPHEN.sub(" ", text)
+    words = [_repair(w) for w in text.split()]
+    return " ".join(" ".join(words).split())
+
+
+def _repair(word: str) -> str:
+    if word in TYPOS:
+        return TYPOS[word]
+    if len(word) < MIN_TYPO_REPAIR_LEN or word in TYPO_TARGETS or word in NOT_TYPOS or not word.isalpha():
+        return word
+    return _closest_target(word) or word
+
+
+@lru_cache(maxsize=4096)
+def _closest_target(word: str) -> str | None:
+    """The one vocabulary word at edit distance 1 (with transpositions) from ``word``, if unique."""
+    hits = [t for t in TYPO_TARGETS
+            if len(t) >= MIN_TYPO_REPAIR_LEN and abs(len(t) - len(word)) <= 1 and _within_one_edit(word, t)]
+    return hits[0] if len(hits) == 1 else None
+
+
+def _within_one_edit(a: str, b: str) -> bool:
+    if a == b:
+        return True
+    if len(a) == len(b):
+        diff = [i for i in range(len(a)) if a[i] != b[i]]
+        if len(diff) == 1:
+            return True
+        return len(diff) == 2 and diff[1] == diff[0] + 1 and a[diff[0]] == b[diff[1]] and a[diff[1]] == b[diff[0]]
+    short, long_ = (a, b) if len(a) < len(b) else (b, a)
+    i = 0
+    while i < len(short) and short[i] == long_[i]:
+        i += 1
+    return short[i:] == long_[i + 1:]

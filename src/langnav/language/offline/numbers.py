@@ -1,0 +1,287 @@
+"""Numbers and units in prompts: "1.5 m", "sixty centimetres", "half a meter", "a quarter turn", "90°".
+
+:func:`find_quantities` returns every distance (in metres), angle (in degrees) and bare number in a
+normalised (lower-case) clause, with its character span so the caller can mark the words as read.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from enum import StrEnum
+from typing import Final
+
+from langnav.language.offline.lexicon import phrase_regex
+
+# ------------------------------------------------------------------------------ number words
+ONES: Final[dict[str, int]] = {
+    "zero": 0, "nought": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7,
+    "eight": 8, "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "thirteen": 13, "fourteen": 14,
+    "fifteen": 15, "sixteen": 16, "seventeen": 17, "eighteen": 18, "nineteen": 19,
+}
+TENS: Final[dict[str, int]] = {
+    "twenty": 20, "thirty": 30, "forty": 40, "fourty": 40, "fifty": 50, "sixty": 60, "seventy": 70,
+    "eighty": 80, "ninety": 90,
+}
+#: "and a half", "one half", "a quarter of a": the fraction each word names.
+FRACTIONS: Final[dict[str, float]] = {"half": 0.5, "quarter": 0.25, "third": 1 / 3,
+                                      "three quarters": 0.75, "three quarter": 0.75,
+                                      "two thirds": 2 / 3}
+#: Vague counts: "a couple of metres" is two; "a few metres" about three (flagged approximate).
+VAGUE_COUNTS: Final[dict[str, tuple[float, bool]]] = {
+    "a couple of": (2.0, False), "a couple": (2.0, False), "couple of": (2.0, False),
+    "a pair of": (2.0, False), "a few": (3.0, True), "few": (3.0, True), "several": (3.0, True),
+    "some": (2.0, True),
+}
+
+#: Length units in metres.
+LENGTH_UNITS_M: Final[dict[str, float]] = {
+    **dict.fromkeys(("m", "meter", "meters", "metre", "metres", "mtr", "mtrs", "meter's", "metres's",
+                     "mt", "mts", "ms"), 1.0),
+    **dict.fromkeys(("cm", "cms", "centimeter", "centimeters", "centimetre", "centimetres", "centi meters"),
+                    0.01),
+    **dict.fromkeys(("mm", "millimeter", "millimeters", "millimetre", "millimetres"), 0.001),
+    **dict.fromkeys(("dm", "decimeter", "decimeters", "decimetre", "decimetres"), 0.1),
+    **dict.fromkeys(("ft", "foot", "feet", "'"), 0.3048),
+    **dict.fromkeys(("inch", "inches", '"', "ins"), 0.0254),
+    **dict.fromkeys(("yard", "yards", "yd", "yds"), 0.9144),
+}
+#: Angle units in degrees.
+ANGLE_UNITS_DEG: Final[dict[str, float]] = {
+    **dict.fromkeys(("degree", "degrees", "deg", "degs", "°", "º", "dgr"), 1.0),
+    **dict.fromkeys(("rad", "rads", "radian", "radians"), math.degrees(1.0)),
+}
+#: Nouns of a whole rotation: "a quarter turn", "two full turns".
+TURN_NOUNS: Final = ("turn", "turns", "rotation", "rotations", "revolution", "revolutions", "circle",
+                     "circles", "spin", "spins", "twirl", "pirouette")
+WHOLE_TURN_WORDS: Final = ("full", "complete", "whole", "entire", "360", "360 degree", "360-degree")
+
+_ONE_TO_NINE: Final = "one|two|three|four|five|six|seven|eight|nine"
+_WORD_INT: Final = (rf"(?:(?:{'|'.join(TENS)})(?:[\s-]+(?:{_ONE_TO_NINE}))?"
+                    rf"|{'|'.join(sorted(ONES, key=len, reverse=True))})")
+_HUNDREDS: Final = (rf"(?:(?:a|one|two|three|four|five|six|seven|eight|nine)\s+)?hundred"
+                    rf"(?:\s+(?:and\s+)?{_WORD_INT})?")
+_DIGIT_WORD: Final = "zero|oh|one|two|three|four|five|six|seven|eight|nine"
+_WORD_NUM: Final = rf"(?:{_HUNDREDS}|{_WORD_INT})(?:\s+point(?:\s+(?:{_DIGIT_WORD}))+)?"
+_DIGIT_NUM: Final = r"(?:\d+\s+\d+\s*/\s*\d+|\d+\s*/\s*\d+|\d+(?:\.\d+)?|\.\d+)"
+_AND_FRACTION: Final = r"(?:\s+and\s+(?:a\s+|one\s+)?(?:half|quarter|third|three\s+quarters))"
+#: One number, in digits or words, with an optional "and a half".
+NUMBER: Final = rf"(?:{_DIGIT_NUM}|{_WORD_NUM}){_AND_FRACTION}?"
+_VAGUE: Final = phrase_regex(VAGUE_COUNTS)
+_LEAD_FRACTION: Final = (r"(?:(?:a|one)\s+)?(?:half|quarter|third|three\s+quarters?|two\s+thirds)"
+                         r"(?:\s+of)?(?:\s+(?:a|an|one))?")
+
+
+class QuantityKind(StrEnum):
+    LENGTH = "length"   # value in metres
+    ANGLE = "angle"     # value in degrees
+    BARE = "bare"       # a number with no unit: its meaning depends on the verb
+
+
+@dataclass(frozen=True)
+class Quantity:
+    kind: QuantityKind
+    value: float
+    start: int
+    end: int
+    approximate: bool = False
+
+
+def _unit_regex(units: dict[str, float]) -> str:
+    ordered = sorted(units, key=len, reverse=True)
+    alts = []
+    for u in ordered:
+        esc = r"\s+".join(re.escape(w) for w in u.split())
+        alts.append(esc + (r"(?![\w'])" if u[-1].isalnum() else ""))
+    return "(?:" + "|".join(alts) + ")"
+
+
+_LENGTH_UNIT: Final = _unit_regex(LENGTH_UNITS_M)
+_ANGLE_UNIT: Final = _unit_regex(ANGLE_UNITS_DEG)
+_TURN_NOUN: Final = rf"(?:{'|'.join(TURN_NOUNS)})(?![\w])"
+_B: Final = r"(?<![\w.])"  # a number starts at a word boundary, not inside "1.5" or "x2"
+_E: Final = r"(?![\w.]*\w)"
+
+_UNIT_PATTERNS: Final[tuple[tuple[QuantityKind, re.Pattern[str]], ...]] = (
+    # "a metre and a half", "a meter", "an inch"
+    *((kind, re.compile(rf"{_B}(?P<lead>a|an|one)\s+(?:single\s+)?(?P<unit>{unit})"
+                        rf"(?P<tail>\s+and\s+a\s+(?:half|quarter))?"))
+      for kind, unit in ((QuantityKind.LENGTH, _LENGTH_UNIT), (QuantityKind.ANGLE, _ANGLE_UNIT))),
+    # "half a meter", "a quarter of a metre", "three quarters of a meter"
+    *((kind, re.compile(rf"{_B}(?P<frac>{_LEAD_FRACTION})\s*(?P<unit>{unit})"))
+      for kind, unit in ((QuantityKind.LENGTH, _LENGTH_UNIT), (QuantityKind.ANGLE, _ANGLE_UNIT))),
+    # "2 metres", "1.5m", "sixty centimetres", "two and a half meters", "a couple of meters"
+    *((kind, re.compile(rf"{_B}(?P<num>{NUMBER}|{_VAGUE})\s*-?\s*(?P<unit>{unit})"
+                        rf"(?P<tail>\s+and\s+a\s+(?:half|quarter))?"))
+      for kind, unit in ((QuantityKind.LENGTH, _LENGTH_UNIT), (QuantityKind.ANGLE, _ANGLE_UNIT))),
+)
+#: "pi/2 radians", "pi radians", "half pi"
+_PI_PATTERN: Final = re.compile(
+    r"(?<!\w)(?:(?P<mul>\d+(?:\.\d+)?|half(?:\s+of)?|a\s+half|quarter)\s*(?:\*\s*)?)?(?:pi|π)"
+    r"(?:\s*/\s*(?P<div>\d+(?:\.\d+)?))?(?:\s*(?:rad|rads|radians?))?(?!\w)")
+#: "a quarter turn", "half a turn", "a full turn", "two full turns", "one and a half turns"
+_TURN_PATTERN: Final = re.compile(
+    rf"(?<!\w)(?:(?P<frac>(?:a|one)\s+quarter|quarter|a\s+half|half\s+(?:a|an|of\s+a)|half|"
+    rf"(?:a\s+)?three[\s-]+quarters?(?:\s+of\s+a)?|three[\s-]+quarter)"
+    rf"|(?P<num>{NUMBER})?\s*(?P<whole>(?:{'|'.join(WHOLE_TURN_WORDS)}))"
+    rf"|(?P<count>{NUMBER}))"
+    rf"[\s-]*(?:full\s+|complete\s+|whole\s+)?(?P<noun>{_TURN_NOUN})")
+_BARE_PATTERN: Final = re.compile(rf"{_B}(?P<num>{NUMBER})(?!\s*(?:st|nd|rd|th)\b)(?![\w])")
+
+
+def number_value(text: str) -> float:
+    """The value of a number written in digits or words: '1.5', '3/4', 'twenty-five',
+    'one hundred and eighty', 'two point five', 'one and a half', 'a couple of'.
+
+    Raises ValueError when the text is not a number."""
+    t = " ".join(text.lower().replace("-", " ").split())
+    if not t:
+        raise ValueError("empty number")
+    if t in VAGUE_COUNTS:
+        return VAGUE_COUNTS[t][0]
+    extra = 0.0
+    m = re.fullmatch(r"(?P<head>.+?)\s+and\s+(?:a\s+|one\s+)?(?P<frac>half|quarter|third|three quarters)", t)
+    if m:
+        t = m.group("head")
+        extra = FRACTIONS[m.group("frac")]
+    return _plain_number(t) + extra
+
+
+def _plain_number(t: str) -> float:
+    mixed = re.fullmatch(r"(\d+)\s+(\d+)\s*/\s*(\d+)", t)
+    if mixed:
+        return int(mixed.group(1)) + _ratio(mixed.group(2), mixed.group(3))
+    frac = re.fullmatch(r"(\d+)\s*/\s*(\d+)", t)
+    if frac:
+        return _ratio(frac.group(1), frac.group(2))
+    if re.fullmatch(r"\d+(?:\.\d+)?|\.\d+", t):
+        return float(t)
+    whole, _, decimals = t.partition(" point ")
+    value = float(_word_integer(whole))
+    if decimals:
+        digits = "".join(str(ONES.get(w, 0)) for w in decimals.split())
+        value += float("0." + digits)
+    return value
+
+
+def _ratio(num: str, den: str) -> float:
+    if int(den) == 0:
+        raise ValueError(f"'{num}/{den}' divides by zero")
+    return int(num) / int(den)
+
+
+def _word_integer(t: str) -> int:
+    words = [w for w in t.split() if w != "and"]
+    if not words:
+        raise ValueError(f"{t!r} is not a number")
+    total = 0
+    current = 0
+    for w in words:
+        if w in ("a",):
+            current = max(current, 1)
+        elif w in ONES:
+            current += ONES[w]
+        elif w in TENS:
+            current += TENS[w]
+        elif w == "hundred":
+            current = max(current, 1) * 100
+            total += current
+            current = 0
+        else:
+            raise ValueError(f"{w!r} is not a number word")
+    return total + current
+
+
+def _fraction_value(frac: str) -> float:
+    f = " ".join(frac.split())
+    for words, value in (("three quarter", 0.75), ("two thirds", 2 / 3), ("quarter", 0.25),
+                         ("half", 0.5), ("third", 1 / 3)):
+        if words in f:
+            return value
+    raise ValueError(f"{frac!r} is not a fraction")
+
+
+def _unit_factor(unit: str, kind: QuantityKind) -> float:
+    table = LENGTH_UNITS_M if kind == QuantityKind.LENGTH else ANGLE_UNITS_DEG
+    return table[" ".join(unit.split())]
+
+
+def find_quantities(text: str) -> list[Quantity]:
+    """Every quantity in ``text`` (lower-case), left to right, non-overlapping.
+
+    Distances come in metres, angles in degrees; a number without a unit is ``BARE``."""
+    found: list[Quantity] = []
+    taken = [False] * len(text)
+
+    def free(a: int, b: int) -> bool:
+        return not any(taken[a:b])
+
+    def add(q: Quantity) -> None:
+        found.append(q)
+        for i in range(q.start, q.end):
+            taken[i] = True
+
+    candidates: list[Quantity] = []
+    candidates += [Quantity(QuantityKind.ANGLE, _turn_degrees(m), m.start(), m.end())
+                   for m in _TURN_PATTERN.finditer(text)]
+    candidates += [Quantity(QuantityKind.ANGLE, _pi_degrees(m), m.start(), m.end())
+                   for m in _PI_PATTERN.finditer(text)]
+    for kind, pattern in _UNIT_PATTERNS:
+        for m in pattern.finditer(text):
+            q = _unit_quantity(kind, m)
+            if q is not None:
+                candidates.append(q)
+    # leftmost-longest: "half a meter" beats "a meter", "one and a half m" beats "a half m"
+    for q in sorted(candidates, key=lambda q: (q.start - q.end, q.start)):
+        if free(q.start, q.end):
+            add(q)
+    for m in _BARE_PATTERN.finditer(text):
+        if free(m.start(), m.end()):
+            try:
+                value = number_value(m.group("num"))
+            except ValueError:
+                continue
+            add(Quantity(QuantityKind.BARE, value, m.start(), m.end()))
+    return sorted(found, key=lambda q: q.start)
+
+
+def _unit_quantity(kind: QuantityKind, m: re.Match[str]) -> Quantity | None:
+    groups = m.groupdict()
+    approximate = False
+    if groups.get("lead"):
+        value = 1.0
+    elif groups.get("frac"):
+        value = _fraction_value(groups["frac"])
+    else:
+        num = " ".join(groups["num"].split())
+        if num in VAGUE_COUNTS:
+            value, approximate = VAGUE_COUNTS[num]
+        else:
+            try:
+                value = number_value(num)
+            except ValueError:
+                return None
+    if groups.get("tail"):
+        value += 0.5 if "half" in groups["tail"] else 0.25
+    return Quantity(kind, value * _unit_factor(groups["unit"], kind), m.start(), m.end(), approximate)
+
+
+def _turn_degrees(m: re.Match[str]) -> float:
+    if m.group("frac"):
+        return 360.0 * _fraction_value(m.group("frac"))
+    if m.group("whole"):
+        count = number_value(m.group("num")) if m.group("num") else 1.0
+        return 360.0 * count
+    return 360.0 * number_value(m.group("count"))
+
+
+def _pi_degrees(m: re.Match[str]) -> float:
+    mul_text = m.group("mul")
+    mul = 1.0
+    if mul_text:
+        mul = 0.5 if "half" in mul_text else 0.25 if "quarter" in mul_text else float(mul_text)
+    div = float(m.group("div")) if m.group("div") else 1.0
+    if div == 0:
+        raise ValueError("division by zero in an angle")
+    return 180.0 * mul / div

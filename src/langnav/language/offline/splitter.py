@@ -1,0 +1,97 @@
+"""Split a prompt into its instructions, in order.
+
+Steps are separated by full stops, semicolons, commas, "then", "after that", "finally", and by
+"and" when it joins two instructions ("go to the door and turn left") rather than two things
+("go between the box and the wall"). Decimal points and commas ("1.5 m", "1,5 m") are kept.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Final
+
+from langnav.language.offline.lexicon import GO_VERBS, ROTATE_VERBS, STOP_PHRASES, TYPOS
+
+#: Sentence punctuation, commas and line breaks, except inside a number ("1.5", "1,5").
+_PUNCTUATION_SPLIT: Final = re.compile(r"(?:[.!?;:,]+(?!\d)|(?<!\d)[.!?;:,]+|\n+|\s+-{1,2}\s+|\s+–\s+|\s+—\s+)")
+#: Connectives between steps; the words themselves carry no meaning and are dropped.
+_CONNECTIVE_SPLIT: Final = re.compile(
+    r"\b(?:and\s+)?(?:then|after\s+that|after\s+this|afterwards|afterward|after\s+which|finally|lastly|"
+    r"subsequently|and\s+next|and\s+also|as\s+well\s+as|followed\s+by|once\s+done|when\s+done|"
+    r"once\s+finished|when\s+finished|once\s+you\s+are\s+done|and\s+when\s+you\s+are\s+done|"
+    r"and\s+once\s+there|and\s+when\s+there|and\s+from\s+there)\b",
+    re.IGNORECASE)
+_DECIMAL_COMMA: Final = re.compile(r"(?<=\d),(?=\d{1,2}(?!\d))")
+_AND: Final = re.compile(r"\s+(?:and|&|plus|\+)\s+", re.IGNORECASE)
+#: Words that may stand between "and" and the verb of a new instruction.
+_LEAD_FILLER: Final = frozenset({"please", "also", "then", "now", "just", "immediately", "kindly",
+                                 "finally", "afterwards", "quickly", "slowly", "carefully", "once",
+                                 "there", "when", "you", "get", "are", "through", "done", "arrived",
+                                 "reached", "try", "to", "next", "straight", "again"})
+#: Verbs that start an instruction (the first word of each multi-word verb is enough).
+_STEP_VERBS: Final = frozenset(
+    {v.split()[0] for v in (*GO_VERBS, *ROTATE_VERBS, *STOP_PHRASES)}
+    | {"show", "tell", "report", "give", "send", "display", "explore", "map", "scan", "where",
+       "what", "which", "drive", "spin", "come", "wait", "hug", "follow", "take", "pass", "back",
+       "reverse", "return", "stop", "halt", "freeze", "hold", "pause", "cancel"}
+) - {"be", "do", "make", "keep", "stay", "point", "position", "get", "run", "pull", "edge"}
+#: Verbs that start an instruction only if followed by more words (not "the box and get").
+_WEAK_STEP_VERBS: Final = frozenset({"get", "keep", "make", "do", "stay", "position", "point"})
+
+
+def split_steps(prompt: str) -> list[str]:
+    """The instructions of ``prompt`` (already cleaned), in order, as the user wrote them."""
+    text = _DECIMAL_COMMA.sub(".", prompt)
+    pieces: list[str] = []
+    for sentence in _PUNCTUATION_SPLIT.split(text):
+        for part in _CONNECTIVE_SPLIT.split(sentence):
+            pieces.extend(_split_on_and(part))
+    return [p for p in (_trim(p) for p in pieces) if p]
+
+
+def _trim(piece: str) -> str:
+    return piece.strip(" \t\"'()[]{}*")
+
+
+def _split_on_and(part: str) -> list[str]:
+    """Split at each 'and' followed (after filler) by the verb of a new instruction."""
+    out: list[str] = []
+    start = 0
+    for m in _AND.finditer(part):
+        if _starts_instruction(part[m.end():]):
+            out.append(part[start:m.start()])
+            start = m.end()
+    out.append(part[start:])
+    return out
+
+
+def _starts_instruction(rest: str) -> bool:
+    words = [TYPOS.get(w, w) for w in re.findall(r"[a-z']+", rest.lower())[:6]]
+    words = [w for token in words for w in token.split()]
+    i = 0
+    while i < len(words) and words[i] in _LEAD_FILLER:
+        if words[i] == "get" and i + 1 < len(words) and words[i + 1] not in ("there", "through", "done"):
+            break
+        i += 1
+    if i >= len(words):
+        return _starts_with_amount(rest)
+    word = words[i]
+    if word in _STEP_VERBS:
+        return True
+    if _starts_with_amount(rest):
+        return True
+    return word in _WEAK_STEP_VERBS and i + 1 < len(words) and words[i + 1] in (
+        "to", "into", "out", "a", "an", "yourself", "going", "through", "next", "close", "near", "back")
+
+
+_AMOUNT_START: Final = re.compile(
+    r"^\s*(?:\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twenty|thirty|forty|fifty|"
+    r"sixty|seventy|eighty|ninety|a|an|half)\b[\w\s.-]{0,20}?\b(?:m|cm|mm|meters?|metres?|centimet(?:er|re)s?|"
+    r"feet|foot|ft|inch(?:es)?|degrees?|deg)\b\s+(?:to\s+the\s+)?(?:forwards?|backwards?|back|left|right|"
+    r"clockwise|counter\s*clockwise|anti\s*clockwise)\b",
+    re.IGNORECASE)
+
+
+def _starts_with_amount(rest: str) -> bool:
+    """'... and 2 metres left': a second move given by its amount and direction only."""
+    return _AMOUNT_START.match(rest) is not None

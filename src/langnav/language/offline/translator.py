@@ -1,0 +1,131 @@
+"""The offline translator: split the prompt into steps, read each, and assemble the intent."""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Sequence
+from typing import Final
+
+from langnav.language.intent import Amount, Direction, ElementRef, Intent, Movement, Step
+from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
+from langnav.language.offline.splitter import split_steps
+from langnav.language.translator import Context, clean_prompt
+
+log = logging.getLogger(__name__)
+
+TRANSLATOR_NAME: Final = "offline"
+#: Below this confidence a reading has a doubt (unread words, a guessed default): hand it on.
+CONFIDENT: Final = 0.7
+#: The intent holds at most this many steps (the schema's limit).
+MAX_STEPS: Final = 20
+
+UNSAFE_MESSAGE: Final = (
+    "I won't do that: my safety rules always stay on, and I never drive into walls, obstacles or "
+    "people, or faster than my safe speed. Tell me where to go instead, e.g. 'go to the nearest door'.")
+TOO_MANY_STEPS_MESSAGE: Final = (
+    f"That is more than {MAX_STEPS} steps; give me at most {MAX_STEPS} at a time.")
+
+
+class OfflineTranslator:
+    """Rule-based reading of prompts: no network, no model, a few milliseconds per prompt."""
+
+    name = TRANSLATOR_NAME
+
+    def translate(self, prompt: str, context: Context) -> Intent:
+        return translate_offline(prompt, context.known_names)
+
+
+def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
+    """Read ``prompt`` into an intent. Raises TranslationError for empty, huge or non-text prompts."""
+    text = clean_prompt(prompt)
+    if is_unsafe(text):
+        log.info("refused an unsafe prompt: %.80s", text)
+        return _clarify(UNSAFE_MESSAGE, confidence=1.0, unread=[text[:200]])
+    steps: list[Step] = []
+    unread: list[str] = []
+    problems: list[tuple[Problem, str, Reading]] = []
+    confidence = 1.0
+    previous: Step | None = None
+    previous_target: ElementRef | None = None
+    for clause in split_steps(text):
+        reading = read_clause(clause, previous, known_names, previous_target)
+        if reading.problem == Problem.NAME:
+            return _clarify(_name_message(reading.name or clause), confidence=reading.confidence,
+                            unread=[clause])
+        if reading.problem is not None:
+            problems.append((reading.problem, clause, reading))
+        confidence = min(confidence, reading.confidence)
+        unread.extend(u for u in reading.unread if u)
+        new_steps = list(reading.steps)
+        if reading.amends_previous and steps and new_steps and _amendable(steps[-1], new_steps[0]):
+            steps[-1] = _amend(steps[-1], new_steps.pop(0), clause)
+        steps.extend(new_steps)
+        if steps:
+            previous = steps[-1]
+            targets = [s.target for s in steps if s.target is not None]
+            previous_target = targets[-1] if targets else None
+    if len(steps) > MAX_STEPS:
+        return _clarify(TOO_MANY_STEPS_MESSAGE, confidence=1.0, unread=[])
+    if not steps:
+        if not problems:
+            return _clarify(_unreadable_message(text), confidence=0.2, unread=[text[:200]])
+        problem, clause, reading = problems[0]
+        return _clarify(_problem_message(problem, clause), confidence=min(r.confidence for _, _, r in problems),
+                        unread=unread)
+    return Intent(steps=steps, translator=TRANSLATOR_NAME, confidence=round(confidence, 3), unread=unread)
+
+
+def _clarify(message: str, *, confidence: float, unread: list[str]) -> Intent:
+    return Intent(steps=[], clarification=message[:500], translator=TRANSLATOR_NAME,
+                  confidence=round(confidence, 3), unread=unread)
+
+
+def _amendable(previous: Step, fragment: Step) -> bool:
+    """'turn left, about 45 degrees': a bare number completes the step before it."""
+    if previous.movement == Movement.ROTATE and previous.angle_deg is None:
+        return fragment.movement == Movement.ROTATE or fragment.movement == Movement.MOVE
+    if previous.movement == Movement.MOVE and previous.distance_m is None:
+        return fragment.movement == Movement.MOVE
+    return False
+
+
+def _amend(previous: Step, fragment: Step, clause: str) -> Step:
+    text = f"{previous.text}, {clause}"[:500]
+    if previous.movement == Movement.ROTATE:
+        angle = fragment.angle_deg if fragment.movement == Movement.ROTATE else fragment.distance_m
+        direction = previous.direction
+        if direction == Direction.AROUND and angle is not None and abs(angle - 180.0) > 1e-6:
+            direction = Direction.LEFT
+        return previous.model_copy(update={"angle_deg": angle, "amount": None if angle is not None else Amount.DEFAULT,
+                                           "direction": direction, "text": text})
+    return previous.model_copy(update={"distance_m": fragment.distance_m, "amount": fragment.amount,
+                                       "text": text})
+
+
+def _name_message(name: str) -> str:
+    return (f"I don't know where '{name}' is: my map has no names or labels for places. Tell me what it "
+            "is and where (e.g. 'the second door on your left', 'the biggest room'), or stand there and "
+            "name the place first.")
+
+
+def _problem_message(problem: Problem, clause: str) -> str:
+    quoted = clause if len(clause) <= 120 else clause[:117] + "..."
+    if problem == Problem.OUT_OF_SCOPE:
+        return (f"I can't do \"{quoted}\": I can only drive, turn, stop, explore the map and tell you "
+                "where I am, my path or the map.")
+    if problem == Problem.NEGATED:
+        return (f"I read \"{quoted}\" as something not to do, so I will not move. Tell me what to do "
+                "instead, e.g. 'go to the door on your right'.")
+    if problem == Problem.OUT_OF_RANGE:
+        return (f"\"{quoted}\" asks for more than one move or turn may do (at most 100 m or ten full "
+                "turns). Name a place to go to instead, e.g. 'go to the farthest door'.")
+    if problem == Problem.NO_ANTECEDENT:
+        return (f"In \"{quoted}\" I can't tell what 'it' or 'there' means. Name the place, e.g. "
+                "'the nearest door' or 'the left corner of this room'.")
+    return _unreadable_message(clause)
+
+
+def _unreadable_message(text: str) -> str:
+    quoted = text if len(text) <= 120 else text[:117] + "..."
+    return (f"I didn't understand \"{quoted}\". Try for example 'go through the first door on your left', "
+            "'move forward 1 metre' or 'turn right 90 degrees'.")
