@@ -30,6 +30,9 @@ from langnav.language.llm.base import (
 from langnav.language.llm.context import build_messages, describe_map, element_views, system_prompt
 from langnav.language.translator import Translator, register
 
+#: Elements listed for the local model: every room and the nearest doors still fit.
+LOCAL_MAX_ELEMENTS = 24
+
 
 def gemini_translator() -> LLMTranslator:
     from langnav.language.llm.gemini_backend import GeminiBackend
@@ -46,7 +49,10 @@ def openai_translator() -> LLMTranslator:
 def local_translator() -> LLMTranslator:
     from langnav.language.llm.local_backend import LocalConfig
 
-    return LLMTranslator(_local_backend(LocalConfig.from_env()), timeout_s=timeout_from_env(LOCAL_TIMEOUT_S))
+    # Decoding is constrained to the schema, so it is left out of the prompt, and the element list is
+    # shorter: prompt reading dominates a small model's time on a CPU.
+    return LLMTranslator(_local_backend(LocalConfig.from_env()), timeout_s=timeout_from_env(LOCAL_TIMEOUT_S),
+                         max_elements=LOCAL_MAX_ELEMENTS, schema_in_prompt=False)
 
 
 @lru_cache(maxsize=2)

@@ -32,9 +32,10 @@ from langnav.language.translator import Context, clean_prompt
 log = logging.getLogger(__name__)
 
 #: Seconds one model call may take. Hosted models answer in 1-5 s; a local 1.5B model on a
-#: 2-core CPU needs 10-40 s (first call), so its translator passes its own, longer, default.
+#: 2-core CPU needs 10-40 s, and 2-4 times that for the first call on a busy machine (it loads the
+#: model and reads the whole context), so its translator passes its own, longer, default.
 DEFAULT_TIMEOUT_S: Final = 30.0
-LOCAL_TIMEOUT_S: Final = 120.0
+LOCAL_TIMEOUT_S: Final = 240.0
 ENV_TIMEOUT: Final = "LANGNAV_LLM_TIMEOUT_S"
 #: How many times the model is asked again after an answer that fails validation.
 MAX_REASKS: Final = 1
@@ -227,7 +228,7 @@ class LLMTranslator:
     """A :class:`~langnav.language.translator.Translator` over any :class:`ChatBackend`."""
 
     def __init__(self, backend: ChatBackend, *, timeout_s: float = DEFAULT_TIMEOUT_S,
-                 max_elements: int | None = None) -> None:
+                 max_elements: int | None = None, schema_in_prompt: bool = True) -> None:
         from langnav.language.llm.context import MAX_ELEMENTS
 
         if not (timeout_s > 0):
@@ -236,13 +237,15 @@ class LLMTranslator:
         self.name = backend.name
         self.timeout_s = timeout_s
         self.max_elements = MAX_ELEMENTS if max_elements is None else max_elements
+        self.schema_in_prompt = schema_in_prompt
         self._schema = answer_schema()
 
     def translate(self, prompt: str, context: Context) -> Intent:
         from langnav.language.llm.context import build_messages
 
         text = clean_prompt(prompt)
-        messages = build_messages(text, context, max_elements=self.max_elements, schema=self._schema)
+        messages = build_messages(text, context, max_elements=self.max_elements, schema=self._schema,
+                                  include_schema=self.schema_in_prompt)
         deadline = time.monotonic() + self.timeout_s * (1 + MAX_REASKS)
         error: AnswerError | None = None
         for attempt in range(1 + MAX_REASKS):

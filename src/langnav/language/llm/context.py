@@ -259,7 +259,9 @@ def describe_map(context: Context, max_elements: int = MAX_ELEMENTS) -> str:
 
 
 def system_prompt(context: Context, max_elements: int = MAX_ELEMENTS,
-                  schema: dict[str, Any] | None = None) -> str:
+                  schema: dict[str, Any] | None = None, *, include_schema: bool = True) -> str:
+    """The whole command context. ``include_schema=False`` leaves the JSON schema out (for backends
+    that constrain decoding to it anyway, where it would only cost prompt time)."""
     schema = answer_schema() if schema is None else schema
     names = ", ".join(repr(n) for n in context.known_names) if context.known_names else "none"
     examples = "\n".join(f"User: {p}\nAnswer: {json.dumps(a, separators=(',', ':'))}" for p, a in EXAMPLES)
@@ -271,7 +273,7 @@ def system_prompt(context: Context, max_elements: int = MAX_ELEMENTS,
         COMMANDS,
         VOCABULARY,
         RULES,
-        "JSON schema of your answer:\n" + json.dumps(schema, separators=(",", ":")),
+        *(("JSON schema of your answer:\n" + json.dumps(schema, separators=(",", ":")),) if include_schema else ()),
         "Examples (their maps differ from this one):\n" + examples,
         f"Places the user has named earlier: {names}.",
         describe_map(context, max_elements),
@@ -279,8 +281,9 @@ def system_prompt(context: Context, max_elements: int = MAX_ELEMENTS,
 
 
 def build_messages(prompt: str, context: Context, *, max_elements: int = MAX_ELEMENTS,
-                   schema: dict[str, Any] | None = None) -> Sequence[Message]:
+                   schema: dict[str, Any] | None = None, include_schema: bool = True) -> Sequence[Message]:
     """The chat messages for one prompt: the command context as the system message, the prompt as
     the user message (fenced, so its text stays data)."""
-    return [Message(role="system", content=system_prompt(context, max_elements, schema)),
+    return [Message(role="system", content=system_prompt(context, max_elements, schema,
+                                                         include_schema=include_schema)),
             Message(role="user", content=f"Request:\n<<<\n{prompt}\n>>>")]

@@ -19,6 +19,7 @@ import importlib.util
 import json
 import logging
 import os
+import secrets
 import threading
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -200,6 +201,8 @@ class _XllamacppEngine:
         params.cpuparams_batch.n_threads = threads
         params.sampling.temp = 0.0
         params.warmup = False
+        # xllamacpp also opens an HTTP endpoint on loopback; a random key keeps other local users off it.
+        params.api_keys = [secrets.token_hex(16)]
         self._server = xllamacpp.Server(params)
 
     def chat(self, messages: Sequence[Message], schema: dict[str, Any]) -> str:
@@ -210,6 +213,11 @@ class _XllamacppEngine:
             result = self._server.handle_chat_completions(request)
         except (ValueError, RuntimeError) as exc:
             raise LLMError(f"xllamacpp refused the request: {exc}") from exc
+        timings = result.get("timings") if isinstance(result, dict) else None
+        if isinstance(timings, dict):
+            log.info("local model: read %s prompt tokens (%s cached) in %.1f s, wrote %s tokens in %.1f s",
+                     timings.get("prompt_n"), timings.get("cache_n"), (timings.get("prompt_ms") or 0) / 1000,
+                     timings.get("predicted_n"), (timings.get("predicted_ms") or 0) / 1000)
         return _content_of(result, "xllamacpp")
 
 
