@@ -9,6 +9,7 @@ each backend closes only its own connection, so any number of them can come and 
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import json
 import math
 import threading
@@ -18,6 +19,7 @@ from typing import Any
 
 import pytest
 from websockets.asyncio.server import ServerConnection, serve
+from websockets.exceptions import ConnectionClosed
 from websockets.sync.client import connect
 
 from langnav.maps.draw import MapBuilder
@@ -219,6 +221,10 @@ class _BadRobot:
             await self._stop.wait()
 
     async def _handle(self, ws: ServerConnection) -> None:
+        with contextlib.suppress(ConnectionClosed):
+            await self._serve_one(ws)
+
+    async def _serve_one(self, ws: ServerConnection) -> None:
         async for raw in ws:
             msg = json.loads(raw)
             if msg["op"] == "subscribe" and msg["topic"] == "/map":
