@@ -22,8 +22,9 @@ from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
 #: log-odds added where a beam ends (p = 0.77: one hit makes a cell occupied).
 L_HIT: Final = 1.2
-#: log-odds added where a beam passes (p = 0.3: two passes make an unseen cell free).
-L_MISS: Final = -0.85
+#: log-odds added where a beam passes (p = 0.18: one pass makes an unseen cell free, as the first
+#: scan of slam_toolbox shows free space at once; a cleared cell needs three hits to turn occupied).
+L_MISS: Final = -1.5
 #: Clamps, so a cell can change its mind after a few scans (a moved obstacle).
 L_MIN: Final = -2.5
 L_MAX: Final = 3.5
