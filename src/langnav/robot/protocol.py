@@ -131,6 +131,13 @@ class RobotBackend(Protocol):
 
 BackendFactory = Callable[..., RobotBackend]
 _REGISTRY: dict[str, BackendFactory] = {}
+#: Built-in backends: name -> the module that registers it (imported on first use, so that
+#: roslibpy / rclpy are only loaded when that backend is asked for).
+_BUILTIN: dict[str, str] = {
+    "sim": "langnav.robot.sim",
+    "rosbridge": "langnav.robot.rosbridge_backend",
+    "ros2": "langnav.robot.ros2_backend",
+}
 
 
 def register_backend(name: str, factory: BackendFactory) -> None:
@@ -138,14 +145,19 @@ def register_backend(name: str, factory: BackendFactory) -> None:
 
 
 def backend_names() -> list[str]:
-    return sorted(_REGISTRY)
+    return sorted(set(_REGISTRY) | set(_BUILTIN))
 
 
 def create_backend(name: str, **options: Any) -> RobotBackend:
+    """Build the backend registered under ``name`` (sim, rosbridge, ros2) with its options."""
+    import importlib
+
     from langnav.robot.errors import RobotError
 
+    if name not in _REGISTRY and name in _BUILTIN:
+        importlib.import_module(_BUILTIN[name])
     try:
         factory = _REGISTRY[name]
     except KeyError:
-        raise RobotError(f"unknown robot backend {name!r}; choose one of: {', '.join(sorted(_REGISTRY))}") from None
+        raise RobotError(f"unknown robot backend {name!r}; choose one of: {', '.join(backend_names())}") from None
     return factory(**options)
