@@ -15,6 +15,7 @@ rest unknown), cropped to the common top-left size of map and ground truth.
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import json
 import logging
 import resource
@@ -27,7 +28,9 @@ from pathlib import Path
 import numpy as np
 from PIL import Image
 
-from langnav.analysis.segmentation import Segmentation, segment_spaces
+from langnav.analysis.params import AnalysisParams
+from langnav.analysis.segmentation import Segmentation
+from langnav.analysis.segmentation import segment_spaces as _segment_spaces
 from langnav.eval.segmentation import (
     PrecisionRecall,
     colour_gt_rooms,
@@ -55,6 +58,14 @@ IPA_MAPS = ("lab_ipa", "lab_c_scan", "Freiburg52_scan", "Freiburg79_scan", "lab_
 IPA_DOOR_MAPS = {"Fr101": "Fr101", "Fr52": "Fr52", "NLB": "NLB_furniture", "lab_c_furnitures":
                  "lab_c_furnitures", "lab_d_furnitures": "lab_d_furniture", "lab_intel": "intel",
                  "lab_ipa": "lab_ipa", "office_e": "office_e", "office_h": "office_h"}
+#: Parameters under test (``--set name=value`` overrides a field, for tuning on the whole benchmark).
+PARAMS = AnalysisParams()
+
+
+def segment_spaces(grid: OccupancyGrid) -> Segmentation:
+    return _segment_spaces(grid, PARAMS)
+
+
 #: Published ROSE² figures (precision, recall), in percent.
 ROSE2_PUBLISHED = {"rose2": (89.0, 93.9), "ipa": (93.3, 97.6), "ipa_furnished": (93.5, 91.0)}
 #: A detected door matches an annotated one within this distance (m) of its centre.
@@ -224,16 +235,34 @@ def bench_timing(quick: bool) -> None:
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="a subset of the IPA maps, fewer timing runs")
+    ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                    help="override an AnalysisParams field (tuning on the whole benchmark)")
+    ap.add_argument("--only", choices=["env", "rose2", "ipa", "doors", "timing"], action="append",
+                    help="run only these parts")
     args = ap.parse_args(argv)
+    global PARAMS
+    for item in args.set:
+        name, _, value = item.partition("=")
+        cur = getattr(PARAMS, name)
+        PARAMS = dataclasses.replace(PARAMS, **{name: (value.lower() in ("1", "true")) if isinstance(cur, bool)
+                                                else type(cur)(value)})
+    if args.set:
+        print("parameters:", ", ".join(args.set))
     logging.basicConfig(level=logging.WARNING)
     if not SHARED.is_dir():
         print(f"segmentation benchmark skipped: {SHARED} (the shared maps) is not on this machine")
         return 0
-    bench_env()
-    bench_rose2(args.quick)
-    bench_ipa(args.quick)
-    bench_ipa_doors()
-    bench_timing(args.quick)
+    parts = set(args.only or ["env", "rose2", "ipa", "doors", "timing"])
+    if "env" in parts:
+        bench_env()
+    if "rose2" in parts:
+        bench_rose2(args.quick)
+    if "ipa" in parts:
+        bench_ipa(args.quick)
+    if "doors" in parts:
+        bench_ipa_doors()
+    if "timing" in parts:
+        bench_timing(args.quick)
     return 0
 
 

@@ -43,6 +43,14 @@ class AnalysisParams:
     #: Segmentation: a smaller piece is a wall stub (a door jamb) when thin (<= 2 x door_max_depth_m)
     #: and at least this long (m); otherwise it is furniture, and gaps beside it are not doorways.
     seg_wall_min_length_m: float = 0.5
+    #: Segmentation: wall and furniture pieces closer than this (m) count as one piece when
+    #: telling door jambs from furniture (door frames scan as fragments).
+    seg_jamb_join_m: float = 0.15
+    #: Segmentation: free-standing clutter up to this area (m2: a table with its chairs, a
+    #: cabinet) is segmented as floor, so that furniture does not split rooms.
+    seg_island_max_area_m2: float = 2.0
+    #: Segmentation: keep two spaces apart only where both jambs of the opening are walls.
+    seg_jamb_test: bool = True
     #: Segmentation: clearance (m) below which a free cell cannot start a space (about a robot radius).
     seg_min_peak_m: float = 0.15
     #: Straight wall segments shorter than this are not reported.

@@ -39,6 +39,9 @@ FloatArray = npt.NDArray[np.float64]
 #: A wall stub flanking a doorway runs along the doorway (within about 30 degrees); a bar at an
 #: angle to the gap is furniture (a shelf end, a bench).
 STUB_ALIGNMENT_MIN_COS: Final = 0.85
+#: A thin piece this long (m) is a wall whatever its direction at the jamb (it may turn a
+#: corner there); shorter thin pieces must run along the doorway.
+WALL_MIN_LENGTH_ANY_DIRECTION_M: Final = 3.0
 #: The direction of a wall stub is measured within this distance of the jamb.
 STUB_AXIS_RADIUS_M: Final = 0.5
 #: 3x3 neighbourhood: 8-connectivity for components of cells.
@@ -85,7 +88,44 @@ def clean_floor(cells: npt.NDArray[np.int8], resolution_m: float, params: Analys
     floor = free | holes
     exterior = unknown & ~holes
     clearance = ndi.distance_transform_edt(floor, sampling=resolution_m)
+    islands = _furniture(floor, clearance, resolution_m, params)
+    if islands.any():
+        floor = floor | islands
+        exterior &= ~islands
+        clearance = ndi.distance_transform_edt(floor, sampling=resolution_m)
     return Floor(floor=floor, free=free, exterior=exterior, clearance_m=clearance)
+
+
+def _furniture(floor: BoolArray, clearance_m: FloatArray, resolution_m: float,
+               params: AnalysisParams) -> BoolArray:
+    """Free-standing clutter: small pieces of non-floor apart from the walls (tables with their
+    chairs, cabinets, columns, unscanned wedges between laser rays), but not thin wall stubs.
+
+    Pieces closer than ``seg_jamb_join_m`` are one piece. Rooms are segmented as if these were
+    floor (ROSE² "decluttering"): furniture must not split a room.
+    """
+    cell_area = resolution_m * resolution_m
+    grouped = ~floor | (clearance_m <= params.seg_jamb_join_m)
+    comp, n = ndi.label(grouped, structure=EIGHT)
+    if n == 0:
+        return np.zeros_like(floor)
+    solid = ~floor
+    area = np.bincount(comp[solid], minlength=n + 1) * cell_area
+    small = area <= params.seg_island_max_area_m2
+    small[0] = False
+    border = np.unique(np.concatenate([comp[0], comp[-1], comp[:, 0], comp[:, -1]]))
+    small[border] = False
+    # Thin, long pieces are wall stubs (between two doorways), not furniture.
+    objs = ndi.find_objects(comp)
+    for k in np.flatnonzero(small & (area >= params.seg_wall_min_length_m * resolution_m)):
+        sl = objs[k - 1]
+        if sl is None:
+            continue
+        m = (comp[sl] == k) & solid[sl]
+        thick = 2.0 * float(ndi.distance_transform_edt(np.pad(m, 1), sampling=resolution_m).max())
+        if thick <= 2 * params.door_max_depth_m and area[k] / max(thick, resolution_m) >= params.seg_wall_min_length_m:
+            small[k] = False
+    return small[comp] & solid
 
 
 # -- basins and their adjacency ----------------------------------------------------------------
@@ -142,29 +182,33 @@ class JambJudge:
     islands (a column, a cabinet, a table) are furniture.
     """
 
-    def __init__(self, floor: BoolArray, resolution_m: float, params: AnalysisParams) -> None:
+    def __init__(self, floor: BoolArray, clearance_m: FloatArray, resolution_m: float,
+                 params: AnalysisParams) -> None:
         self.res = resolution_m
         self.params = params
         self.obstacle = ~floor
-        self.comp, _ = ndi.label(self.obstacle, structure=EIGHT)
+        # Pieces closer than seg_jamb_join_m are one piece: a door frame scanned as fragments is
+        # still part of its wall, a chair's legs one chair.
+        self.join_m = params.seg_jamb_join_m
+        self.comp, _ = ndi.label(self.obstacle | (clearance_m <= self.join_m), structure=EIGHT)
         self.sizes = np.bincount(self.comp.ravel()) * resolution_m**2
         self.objs = ndi.find_objects(self.comp)
-        self._cache: dict[int, bool] = {}
+        self._cache: dict[int, tuple[bool, float]] = {}
 
-    def _thin(self, k: int) -> bool:
-        """Is the small piece ``k`` of non-floor thin and long (a wall stub, not a cabinet)?"""
+    def _thin(self, k: int) -> tuple[bool, float]:
+        """(thin, length m) of the small piece ``k`` of non-floor: wall-like or furniture-like."""
         if k in self._cache:
             return self._cache[k]
         p = self.params
-        ok = False
+        out = (False, 0.0)
         sl = self.objs[k - 1]
         if sl is not None:
             m = self.comp[sl] == k
             thick = 2.0 * float(ndi.distance_transform_edt(np.pad(m, 1), sampling=self.res).max())
             length = float(self.sizes[k]) / max(thick, self.res)
-            ok = thick <= 2 * p.door_max_depth_m and length >= p.seg_wall_min_length_m
-        self._cache[k] = ok
-        return ok
+            out = (thick <= 2 * (p.door_max_depth_m + self.join_m), length)
+        self._cache[k] = out
+        return out
 
     def _local_axis(self, k: int, row: int, col: int) -> tuple[float, float]:
         """Principal direction (drow, dcol) of piece ``k`` near the cell (row, col)."""
@@ -185,8 +229,11 @@ class JambJudge:
         k = int(self.comp[jamb])
         if self.sizes[k] >= self.params.seg_wall_network_min_area_m2:
             return True
-        if not self._thin(k):
+        thin, length = self._thin(k)
+        if not thin or length < self.params.seg_wall_min_length_m:
             return False
+        if length >= WALL_MIN_LENGTH_ANY_DIRECTION_M:
+            return True
         ar, ac = self._local_axis(k, *jamb)
         return abs(ar * tangent[0] + ac * tangent[1]) >= STUB_ALIGNMENT_MIN_COS
 
@@ -240,7 +287,8 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
     flat = labels.ravel()
     area = np.bincount(flat, minlength=n).astype(float) * resolution_m**2
     peak = np.zeros(n)
-    np.maximum.at(peak, flat, clearance_m.ravel())
+    on = labels > 0
+    np.maximum.at(peak, labels[on], clearance_m[on])
     a_arr, b_arr, s_arr, loc_arr = adjacent_pairs(labels, clearance_m)
     width = labels.shape[1]
     # A doorway's saddle clearance is about half its width (cell centres: + half a cell).

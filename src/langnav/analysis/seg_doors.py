@@ -12,6 +12,7 @@ by walls, there is a doorway into the unknown.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Final
 
@@ -27,6 +28,9 @@ from langnav.analysis.seg_core import EIGHT, BoolArray, FloatArray, IntArray
 _OUTSIDE_OFFSET: Final = 1
 #: Unknown farther than this from the floor plays no part in finding openings into it.
 OPENING_BAND_M: Final = 2.5
+#: A frontier longer than this is a space fading into unexplored territory, not a doorway (with
+#: the bit of floor a scan sees beyond an open door, an opening's frontier is shorter).
+OPENING_MAX_EXTENT_M: Final = 4.0
 #: A space's core for the second flood: cells with at least this share of its peak clearance.
 CORE_FRACTION: Final = 0.6
 
@@ -117,41 +121,66 @@ def doors_between(labels: IntArray, clearance_m: FloatArray, resolution_m: float
     return found
 
 
-def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
-                        obstacle: BoolArray, clearance_m: FloatArray, resolution_m: float,
-                        params: AnalysisParams) -> list[RawDoor]:
-    """Doorways from a space into unexplored territory (see module doc)."""
-    if not exterior.any() or labels.max() == 0:
-        return []
-    band_cells = OPENING_BAND_M / resolution_m
-    near = ndi.distance_transform_edt(~floor) <= band_cells
-    # Crop to where the floor and its band are, to keep the second flood cheap.
-    rows = np.flatnonzero(near.any(axis=1))
-    cols = np.flatnonzero(near.any(axis=0))
-    sl = (slice(rows[0], rows[-1] + 1), slice(cols[0], cols[-1] + 1))
-    ext = exterior[sl] & near[sl]
-    if not ext.any():
-        return []
-    open_ = (floor[sl] | ext) & ~obstacle[sl]
-    clear2 = ndi.distance_transform_edt(open_, sampling=resolution_m)
-    lab = labels[sl]
-    n = int(labels.max())
-    peak = np.zeros(n + 1)
-    np.maximum.at(peak, lab.ravel(), clearance_m[sl].ravel())
-    markers = np.where(clearance_m[sl] >= CORE_FRACTION * peak[lab], lab, 0).astype(np.int32)
-    markers[lab == 0] = 0
-    outside = n + _OUTSIDE_OFFSET
-    door_clear_max = (params.door_max_width_m + resolution_m) / 2
-    markers[ext & (clear2 > door_clear_max)] = outside
-    if not (markers == outside).any():
-        return []
-    flood = np.asarray(watershed(-clear2, markers, mask=open_), dtype=np.int32)
-    raw = doors_between(flood, clear2, resolution_m, params, outside_label=outside)
-    out: list[RawDoor] = []
-    for d in raw:
-        r, c = d.center_rc
-        out.append(RawDoor(d.a, 0, (r + sl[0].start, c + sl[1].start), d.normal_rc, d.width_m))
+def label_max(labels: IntArray, values: FloatArray) -> FloatArray:
+    """The largest value under each label 0..max (0 where a label is absent; label 0 ignored)."""
+    out = np.zeros(int(labels.max()) + 1)
+    m = labels > 0
+    np.maximum.at(out, labels[m], values[m])
     return out
 
 
-__all__ = ["RawDoor", "doors_between", "openings_to_unknown"]
+def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
+                        obstacle: BoolArray, clearance_m: FloatArray, resolution_m: float,
+                        params: AnalysisParams) -> list[RawDoor]:
+    """Doorways from a space into unexplored territory (see module doc).
+
+    Only windows around the frontier (floor touching unexplored unknown) are flooded again.
+    """
+    if not exterior.any() or labels.max() == 0:
+        return []
+    frontier = floor & (labels > 0) & ndi.maximum_filter(exterior, size=3)
+    if not frontier.any():
+        return []
+    door_clear_max = (params.door_max_width_m + resolution_m) / 2
+    # Frontier cells closer than a door width belong to one opening candidate.
+    join = max(1, int(round(params.door_max_width_m / resolution_m)))
+    groups, _ = ndi.label(ndi.maximum_filter(frontier, size=join), structure=EIGHT)
+    groups[~frontier] = 0
+    margin = int(math.ceil(OPENING_BAND_M / resolution_m))
+    peak = label_max(labels, clearance_m)
+    h, w = labels.shape
+    out: list[RawDoor] = []
+    max_extent = OPENING_MAX_EXTENT_M / resolution_m
+    for sl in ndi.find_objects(groups):
+        if sl is None or max(sl[0].stop - sl[0].start, sl[1].stop - sl[1].start) > max_extent:
+            continue
+        r0, r1 = max(0, sl[0].start - margin), min(h, sl[0].stop + margin)
+        c0, c1 = max(0, sl[1].start - margin), min(w, sl[1].stop + margin)
+        win = (slice(r0, r1), slice(c0, c1))
+        lab = labels[win]
+        ext = exterior[win]
+        open_ = (floor[win] | ext) & ~obstacle[win]
+        clear2 = ndi.distance_transform_edt(open_, sampling=resolution_m)
+        markers = np.where((lab > 0) & (clearance_m[win] >= CORE_FRACTION * peak[lab]), lab, 0)
+        rim = np.zeros(lab.shape, dtype=bool)
+        rim[[0, -1], :] = True
+        rim[:, [0, -1]] = True
+        markers[rim & (lab > 0)] = lab[rim & (lab > 0)]
+        outside = int(labels.max()) + _OUTSIDE_OFFSET
+        markers[ext & ((clear2 > door_clear_max) | rim)] = outside
+        if not (markers == outside).any():
+            continue
+        flood = np.asarray(watershed(-clear2, markers.astype(np.int32), mask=open_), dtype=np.int32)
+        for d in doors_between(flood, clear2, resolution_m, params, outside_label=outside):
+            r, c = d.center_rc[0] + r0, d.center_rc[1] + c0
+            # Keep a door only near this window's own frontier (windows overlap).
+            if not (sl[0].start - join <= r <= sl[0].stop + join and sl[1].start - join <= c <= sl[1].stop + join):
+                continue
+            if any(math.hypot(r - o.center_rc[0], c - o.center_rc[1]) * resolution_m < params.door_min_width_m
+                   for o in out):
+                continue
+            out.append(RawDoor(d.a, 0, (r, c), d.normal_rc, d.width_m))
+    return out
+
+
+__all__ = ["RawDoor", "doors_between", "label_max", "openings_to_unknown"]

@@ -23,7 +23,7 @@ from langnav.analysis.elements import Door, ElementKind, Room
 from langnav.analysis.errors import AnalysisError
 from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
 from langnav.analysis.seg_core import EIGHT, Floor, JambJudge, basins, clean_floor, merge_basins
-from langnav.analysis.seg_doors import RawDoor, doors_between, openings_to_unknown
+from langnav.analysis.seg_doors import RawDoor, doors_between, label_max, openings_to_unknown
 from langnav.maps.grid import OCCUPIED, OccupancyGrid
 
 log = logging.getLogger(__name__)
@@ -32,6 +32,8 @@ log = logging.getLogger(__name__)
 #: are that room's floor (an unscanned corner); a region walled in on all sides (a courtyard, a
 #: closed room never entered) does not.
 ENCLOSED_UNKNOWN_MIN_FLOOR_SHARE: Final = 0.25
+#: Outlines are thinned to about this many points before simplification (they are for drawing).
+OUTLINE_MAX_POINTS: Final = 400
 #: Id used in ``Door.connects`` for unexplored territory.
 UNKNOWN_ID: Final = "unknown"
 
@@ -59,7 +61,7 @@ def segment_spaces(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS)
     if not fl.floor.any():
         raise AnalysisError(f"{grid.source}: the map has no free space to segment")
     raw_labels = basins(fl.clearance_m, fl.floor, params.seg_min_peak_m)
-    judge = JambJudge(fl.floor, res, params)
+    judge = JambJudge(fl.floor, fl.clearance_m, res, params) if params.seg_jamb_test else None
     labels = merge_basins(raw_labels, fl.clearance_m, res, params, judge)
     labels, exterior = _attach_enclosed_unknown(labels, fl, grid)
     raw_doors = doors_between(labels, fl.clearance_m, res, params)
@@ -105,16 +107,22 @@ def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor,
     return out.astype(np.int32), remaining
 
 
-def _kind_and_size(mask: npt.NDArray[np.bool_], area_m2: float, res: float,
+def _kind_and_size(mask: npt.NDArray[np.bool_], area_m2: float, peak_m: float, res: float,
                    params: AnalysisParams) -> tuple[ElementKind, float, float]:
     """Hallway or room, with (length, width): width = the widest inscribed circle of the space
     with free-standing furniture filled in; length = area / width."""
-    filled = ndi.binary_fill_holes(np.pad(mask, 1))
-    width = 2.0 * float(ndi.distance_transform_edt(filled, sampling=res).max())
-    width = max(width, res)
-    length = area_m2 / width
-    hallway = width <= params.hallway_max_width_m and length >= params.hallway_min_elongation * width
-    return (ElementKind.HALLWAY if hallway else ElementKind.ROOM), length, width
+    width = max(2.0 * peak_m, res)
+
+    def hallway(w: float) -> bool:
+        return w <= params.hallway_max_width_m and area_m2 / w >= params.hallway_min_elongation * w
+
+    if hallway(width):
+        # Furniture standing in a room narrows its clearance: measure again with it filled in
+        # (only needed here, as filling can only widen the space).
+        filled = ndi.binary_fill_holes(np.pad(mask, 1))
+        if int(filled.sum()) > int(mask.sum()):
+            width = max(width, 2.0 * float(ndi.distance_transform_edt(filled, sampling=res).max()))
+    return (ElementKind.HALLWAY if hallway(width) else ElementKind.ROOM), area_m2 / width, width
 
 
 def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
@@ -123,6 +131,7 @@ def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
     n = int(labels.max())
     rooms: list[Room] = []
     objs = ndi.find_objects(labels)
+    peaks = label_max(labels, fl.clearance_m)
     for k in range(1, n + 1):
         sl = objs[k - 1]
         if sl is None:
@@ -134,7 +143,7 @@ def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
         cc = cc + sl[1].start
         xs, ys = grid.cell_to_world(rr, cc)
         area = float(sub.sum()) * res * res
-        kind, length, width = _kind_and_size(sub, area, res, params)
+        kind, length, width = _kind_and_size(sub, area, float(peaks[k]), res, params)
         prefix = "hallway" if kind == ElementKind.HALLWAY else "room"
         rooms.append(Room(
             id=f"{prefix}_{k}", label=k, kind=kind, area_m2=area,
@@ -150,7 +159,8 @@ def _outline(grid: OccupancyGrid, sub: npt.NDArray[np.bool_], sl: tuple[slice, s
     if not contours:
         return np.zeros((0, 2))
     c = max(contours, key=len)
-    c = approximate_polygon(c, tolerance=1.0)
+    step = max(1, len(c) // OUTLINE_MAX_POINTS)
+    c = approximate_polygon(np.vstack([c[::step], c[:1]]), tolerance=1.0)
     r = c[:, 0] - 1 + sl[0].start + 0.5
     col = c[:, 1] - 1 + sl[1].start + 0.5
     xs, ys = grid.grid_to_world(r, col)
