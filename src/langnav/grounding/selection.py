@@ -305,6 +305,7 @@ def aspect_ratio(o: Obstacle) -> float:
 
 def shape_filter(pool: list[Element], words: str) -> list[Element]:
     """Obstacles of the shape a noun in ``words`` implies, when there are any; else ``pool``."""
+    keep: list[Element]
     if _COMPACT_RE.search(words):
         keep = [e for e in pool if isinstance(e, Obstacle) and aspect_ratio(e) <= COMPACT_MAX_ASPECT]
     elif _LONG_RE.search(words):
