@@ -64,7 +64,7 @@ ELEMENT_NOUNS: Final[dict[str, Element]] = {
        for noun in ("area", "areas", "region", "regions", "space", "spaces", "territory",
                     "part", "parts", "zone", "zones", "section", "sections", "spot", "place")},
     **{w: Element.UNEXPLORED_AREA for w in (
-        "frontier", "frontiers", "the unknown", "unexplored", "unknown space", "unknown",
+        "frontier", "frontiers", "unexplored", "unknown space", "unknown",
         "exploration frontier")},
 }
 
@@ -73,8 +73,7 @@ PLURAL_NOUNS: Final = frozenset(w for w in ELEMENT_NOUNS if w.endswith("s") and 
     ("ss", "entrance", "space", "place")) and w not in ("gas", "furniture", "the unknown", "unknown"))
 
 #: "passage" alone is probably, not surely, a narrow passage.
-WEAK_NOUNS: Final = frozenset({"passage", "passages", "gap", "gaps", "thing", "things", "unknown",
-                               "unexplored", "hall", "halls", "squeeze", "structure"})
+WEAK_NOUNS: Final = frozenset({"passage", "passages", "gap", "gaps", "thing", "things", "structure"})
 
 #: Pronouns that point back at the previous step's element.
 PRONOUNS: Final = frozenset({"it", "that", "there", "that one", "this one", "them", "that place",
@@ -289,7 +288,7 @@ QUERY_POSE_PATTERNS: Final = (
     r"\b(?:your|the\s+robot'?s?|current|robot)\s+(?:current\s+|exact\s+|present\s+|last\s+)?"
     r"(?:position|location|pose|coordinates|whereabouts|heading|orientation|place)\b",
     r"\bwhich\s+(?:way|direction)\s+are\s+you\s+(?:facing|pointing|heading|looking)\b",
-    r"\bwhere\s+(?:is\s+it|are\s+we)\b", r"\bwhere\s+you\s+are\b", r"\blocali[sz]e\s+yourself\b",
+    r"\bwhere\s+(?:is\s+it|are\s+we)\b", r"\b(?:tell|show|say|know|report)\b.*\bwhere\s+you\s+are\b", r"\blocali[sz]e\s+yourself\b",
     r"\bwhat\s+is\s+your\s+(?:position|location|pose)\b", r"\bwhere\s+abouts\b",
     r"\bwhat\s+room\s+are\s+you\s+in\b", r"\bwhere\s+have\s+you\s+got\s+to\b",
 )
@@ -552,7 +551,7 @@ TYPO_TARGETS: Final = frozenset({
 
 #: Real words one edit away from a vocabulary word: never "repaired" ("among" is not "along").
 NOT_TYPOS: Final = frozenset({
-    "among", "alone", "mother", "seconds", "second", "minutes", "minute", "riddle", "fiddle",
+    "among", "alone", "mother", "halfway", "hallways", "seconds", "second", "minutes", "minute", "riddle", "fiddle",
     "lights", "nights", "rights", "sights", "fights", "others", "cornea", "corned", "rotates",
     "behold", "frosty", "stoop", "bottles", "toward", "towards", "straighten", "meters", "metres",
     "centers", "centres", "turned", "turning", "rooms", "doors", "walls", "corners", "throw",

@@ -527,6 +527,7 @@ class _Clause:
     amends: bool = False       # only a number: it completes the previous step
     had_verb: bool = False     # a movement verb was read
     out_of_range: bool = False  # a number beyond what a step may hold
+    explore_verb: bool = False  # "explore the unknown area on your left" (a trip towards it)
 
     def doubt(self, factor: float) -> None:
         self.factors.append(factor)
@@ -557,6 +558,12 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
     if explore is not None:
         return explore
     verb = _main_verb(c)
+    if verb[0] == _Verb.NONE and c.explore_verb:
+        verb = (_Verb.GO, None)
+    if not phrases and verb[0] in (_Verb.GO, _Verb.STOP):
+        unknown = _unknown_destination(c.s.masked())
+        if unknown is not None:
+            return _named(c, unknown, known_names)  # "drive to the desk on your left"
     _assign_details(c.s, phrases, 0)
     c.s.take_all(_LATE_FILLER_RE)
     if any(p.pronoun and p.ref.kind == Element.NONE and p.ref.name is None for p in phrases):
@@ -621,6 +628,7 @@ def _read_explore(c: _Clause, phrases: list[_Phrase]) -> Reading | None:
         return None
     if any(p.ref.kind == Element.UNEXPLORED_AREA for p in phrases):
         c.s.use(m.start(), m.end())
+        c.explore_verb = True
         return None  # "explore the unknown area on your left": go towards it
     if any(p.ref.kind not in (Element.ROOM, Element.HALLWAY, Element.NONE) for p in phrases):
         return None  # "explore behind the box": read as a trip to the box
@@ -628,6 +636,23 @@ def _read_explore(c: _Clause, phrases: list[_Phrase]) -> Reading | None:
     confidence = max(MIN_CONFIDENCE, UNREAD_WORD_FACTOR ** len(leftovers))
     return Reading(steps=(Step(movement=Movement.EXPLORE, text=c.text),),
                    unread=(" ".join(leftovers),) if leftovers else (), confidence=round(confidence, 3))
+
+
+_DESTINATION_RE: Final = re.compile(
+    r"\b(?:to|towards?|into|next\s+to|beside|near|through|at|by|reach|enter|approach|visit|find)\s+"
+    r"(?:the\s+|a\s+|an\s+|my\s+|our\s+|your\s+)?(?P<name>[a-z][\w']*(?:\s+[a-z][\w']*)?)")
+
+
+def _unknown_destination(masked: str) -> str | None:
+    """The unknown word(s) after 'to the' in a clause with no element: a place name."""
+    for m in _DESTINATION_RE.finditer(masked):
+        words = m.group("name").split()
+        if words[0] in KNOWN_WORDS:
+            continue
+        if len(words) > 1 and words[1] in KNOWN_WORDS:
+            words = words[:1]
+        return " ".join(words)
+    return None
 
 
 def _named(c: _Clause, name: str, known_names: Sequence[str]) -> Reading:
