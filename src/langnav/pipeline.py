@@ -140,8 +140,18 @@ class Planner:
     # -- planning ------------------------------------------------------------------------------
     def plan(self, prompt: str, grid_or_analysis: OccupancyGrid | MapAnalysis,
              pose: Pose | tuple[float, float, float]) -> PlanResult:
-        """Read, ground and validate a prompt. Never raises for a user's mistake: the reason
-        comes back as ``clarification`` (and no commands)."""
+        """Read, ground and validate a prompt. Never raises: the reason for refusing comes back as
+        ``clarification`` (and no commands). A bug is logged with its traceback and refused too."""
+        try:
+            return self._plan(prompt, grid_or_analysis, pose)
+        except Exception as exc:  # the last guard: a robot must never act on a half-made plan
+            log.exception("planning %r failed", prompt)
+            return self._refusal(prompt, None, f"I could not plan that because of an internal error "
+                                 f"({type(exc).__name__}: {exc}); nothing was run.",
+                                 getattr(self.translator, "name", "unknown"))
+
+    def _plan(self, prompt: str, grid_or_analysis: OccupancyGrid | MapAnalysis,
+              pose: Pose | tuple[float, float, float]) -> PlanResult:
         name = getattr(self.translator, "name", "unknown")
         try:
             start = as_pose(pose)

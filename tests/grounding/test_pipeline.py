@@ -162,3 +162,16 @@ def test_eval_cli(tmp_path: Path, world: MapAnalysis, fixed_registered: str,
     assert summary["command_recall"] == 0.5 and summary["command_precision"] == 1.0
     report = (tmp_path / "r.md").read_text()
     assert "### c: far" in report and (tmp_path / "r.png").exists()
+
+
+class Broken:
+    name = "broken"
+
+    def translate(self, prompt: str, context: Context) -> Intent:
+        raise ZeroDivisionError("a bug")
+
+
+def test_a_bug_is_refused_not_raised(world: MapAnalysis, caplog: pytest.LogCaptureFixture) -> None:
+    r = Planner(Broken()).plan("anything", world, AT_A)
+    assert r.commands == () and "internal error (ZeroDivisionError: a bug)" in (r.clarification or "")
+    assert "planning 'anything' failed" in caplog.text
