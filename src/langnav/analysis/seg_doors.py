@@ -143,10 +143,10 @@ def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
         return []
     door_clear_max = (params.door_max_width_m + resolution_m) / 2
     # Frontier cells closer than a door width belong to one opening candidate.
-    join = max(1, int(round(params.door_max_width_m / resolution_m)))
+    join = max(1, round(params.door_max_width_m / resolution_m))
     groups, _ = ndi.label(ndi.maximum_filter(frontier, size=join), structure=EIGHT)
     groups[~frontier] = 0
-    margin = int(math.ceil(OPENING_BAND_M / resolution_m))
+    margin = math.ceil(OPENING_BAND_M / resolution_m)
     peak = label_max(labels, clearance_m)
     h, w = labels.shape
     out: list[RawDoor] = []

@@ -111,7 +111,8 @@ def _kind_and_size(mask: npt.NDArray[np.bool_], area_m2: float, peak_m: float, r
                    params: AnalysisParams) -> tuple[ElementKind, float, float]:
     """Hallway or room, with (length, width): width = the widest inscribed circle of the space
     with free-standing furniture filled in; length = area / width."""
-    width = max(2.0 * peak_m, res)
+    # Clearance is measured between cell centres: an opening of n cells has 2 x peak = (n + 1) cells.
+    width = max(2.0 * peak_m - res, res)
 
     def hallway(w: float) -> bool:
         return w <= params.hallway_max_width_m and area_m2 / w >= params.hallway_min_elongation * w
@@ -121,7 +122,7 @@ def _kind_and_size(mask: npt.NDArray[np.bool_], area_m2: float, peak_m: float, r
         # (only needed here, as filling can only widen the space).
         filled = ndi.binary_fill_holes(np.pad(mask, 1))
         if int(filled.sum()) > int(mask.sum()):
-            width = max(width, 2.0 * float(ndi.distance_transform_edt(filled, sampling=res).max()))
+            width = max(width, 2.0 * float(ndi.distance_transform_edt(filled, sampling=res).max()) - res)
     return (ElementKind.HALLWAY if hallway(width) else ElementKind.ROOM), area_m2 / width, width
 
 

@@ -1,0 +1,227 @@
+"""Room / hallway / doorway segmentation on maps with exactly known spaces and doors."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from langnav.analysis.elements import ElementKind, Room
+from langnav.analysis.segmentation import UNKNOWN_ID, Segmentation, segment_spaces
+from langnav.eval.segmentation import colour_gt_rooms, door_precision_recall, room_precision_recall
+from langnav.maps.draw import MapBuilder
+from langnav.maps.grid import OccupancyGrid
+from langnav.maps.io import load_map
+
+#: Tolerance on positions and widths: two cells at 5 cm plus the half-cell of a door's centre.
+POS_TOL_M = 0.12
+
+
+def two_rooms(res: float = 0.05) -> OccupancyGrid:
+    b = MapBuilder(9.0, 4.0, resolution_m=res)
+    b.room(0.5, 0.5, 4.5, 3.5).room(4.65, 0.5, 8.5, 3.5).door_v(4.575, 2.0, 0.9)
+    return b.build("two rooms")
+
+
+def corridor_with_rooms(res: float = 0.05) -> OccupancyGrid:
+    b = MapBuilder(13.0, 5.7, resolution_m=res)
+    b.room(0.5, 3.65, 12.5, 5.15)  # the corridor, 1.5 m wide
+    b.room(0.5, 0.5, 4.0, 3.5).room(4.15, 0.5, 8.0, 3.5).room(8.15, 0.5, 12.5, 3.5)
+    for x in (2.0, 6.0, 10.5):
+        b.door_h(x, 3.575, 0.9)
+    return b.build("corridor")
+
+
+def room_by_point(seg: Segmentation, grid: OccupancyGrid, x: float, y: float) -> Room:
+    r, c = grid.world_to_index(x, y)
+    room = seg.room_by_label(int(seg.labels[int(r), int(c)]))
+    assert room is not None, f"no space at ({x}, {y})"
+    return room
+
+
+def test_two_rooms_joined_by_a_door() -> None:
+    grid = two_rooms()
+    seg = segment_spaces(grid)
+    assert len(seg.rooms) == 2
+    assert all(r.kind == ElementKind.ROOM for r in seg.rooms)
+    west, east = room_by_point(seg, grid, 2.0, 2.0), room_by_point(seg, grid, 6.5, 2.0)
+    assert west.id != east.id
+    assert west.area_m2 == pytest.approx(12.0, rel=0.03)
+    assert east.area_m2 == pytest.approx(3.85 * 3.0, rel=0.03)
+    assert len(seg.doors) == 1
+    d = seg.doors[0]
+    assert set(d.connects) == {west.id, east.id}
+    assert d.center[0] == pytest.approx(4.575, abs=POS_TOL_M)
+    assert d.center[1] == pytest.approx(2.0, abs=POS_TOL_M)
+    assert d.width_m == pytest.approx(0.9, abs=POS_TOL_M)
+    # The normal points from connects[0] to connects[1].
+    sign = 1.0 if d.connects[0] == west.id else -1.0
+    assert d.normal[0] == pytest.approx(sign, abs=0.05)
+    assert d.normal[1] == pytest.approx(0.0, abs=0.1)
+    # The jambs are the wall ends, 0.9 m apart along the wall.
+    (x1, y1), (x2, y2) = d.jambs
+    assert math.dist((x1, y1), (x2, y2)) == pytest.approx(0.9, abs=POS_TOL_M)
+    assert sorted([y1, y2]) == pytest.approx([1.55, 2.45], abs=POS_TOL_M)
+
+
+def test_an_l_shaped_room_stays_one_room() -> None:
+    b = MapBuilder(9.0, 9.0)
+    b.rect(0.35, 0.35, 8.15, 4.15, 100).rect(0.35, 0.35, 4.15, 8.15, 100)
+    b.free(0.5, 0.5, 8.0, 4.0).free(0.5, 0.5, 4.0, 8.0)
+    seg = segment_spaces(b.build())
+    assert len(seg.rooms) == 1
+    assert seg.rooms[0].kind == ElementKind.ROOM
+    assert seg.rooms[0].area_m2 == pytest.approx(7.5 * 3.5 + 3.5 * 4.0, rel=0.03)
+    assert seg.doors == ()
+
+
+def test_corridor_with_rooms_off_it() -> None:
+    grid = corridor_with_rooms()
+    seg = segment_spaces(grid)
+    kinds = sorted(r.kind.value for r in seg.rooms)
+    assert kinds == ["hallway", "room", "room", "room"]
+    hall = room_by_point(seg, grid, 6.0, 4.4)
+    assert hall.kind == ElementKind.HALLWAY
+    assert hall.id.startswith("hallway_")
+    assert hall.width_m == pytest.approx(1.5, abs=0.2)  # widest circle: a bit more at doors
+    rooms = [room_by_point(seg, grid, x, 2.0) for x in (2.0, 6.0, 10.5)]
+    assert len({r.id for r in rooms}) == 3
+    assert len(seg.doors) == 3
+    for x, room in zip((2.0, 6.0, 10.5), rooms, strict=True):
+        d = min(seg.doors, key=lambda d, x=x: abs(d.center[0] - x))
+        assert set(d.connects) == {room.id, hall.id}
+        assert d.center == pytest.approx((x, 3.575), abs=POS_TOL_M)
+        assert d.width_m == pytest.approx(0.9, abs=POS_TOL_M)
+        # Normal along y, from connects[0] to connects[1].
+        toward_hall = 1.0 if d.connects[0] == room.id else -1.0
+        assert d.normal[1] == pytest.approx(toward_hall, abs=0.05)
+
+
+def test_door_into_unknown_space() -> None:
+    b = MapBuilder(6.0, 4.0)
+    b.room(0.5, 0.5, 4.5, 3.5).door_v(4.575, 2.0, 0.9)  # beyond the wall: never scanned
+    grid = b.build()
+    seg = segment_spaces(grid)
+    assert len(seg.rooms) == 1
+    assert len(seg.doors) == 1
+    d = seg.doors[0]
+    assert d.connects == (seg.rooms[0].id, UNKNOWN_ID)
+    assert d.center == pytest.approx((4.575, 2.0), abs=0.15)
+    assert d.width_m == pytest.approx(0.9, abs=POS_TOL_M)
+    assert d.normal[0] == pytest.approx(1.0, abs=0.05)  # from the room out into the unknown
+
+
+def test_unscanned_corner_counts_in_room_area_and_furniture_does_not_split() -> None:
+    b = MapBuilder(6.0, 5.0)
+    b.room(0.5, 0.5, 5.5, 4.5)
+    b.unknown(0.5, 0.5, 1.5, 1.5)  # an unscanned corner, 1 m2
+    b.box(2.5, 2.0, 3.5, 3.0)  # a table in the middle
+    grid = b.build()
+    seg = segment_spaces(grid)
+    assert len(seg.rooms) == 1
+    room = seg.rooms[0]
+    assert room.free_area_m2 == pytest.approx(20.0 - 1.0 - 1.0, rel=0.03)
+    assert room.area_m2 >= 20.0 - 1.0 - 0.1  # the unscanned corner is part of the room
+    r, c = grid.world_to_index(1.0, 1.0)
+    assert seg.labels[int(r), int(c)] == room.label
+
+
+@pytest.mark.parametrize("build", [two_rooms, corridor_with_rooms])
+def test_resolution_invariance(build) -> None:  # type: ignore[no-untyped-def]
+    coarse, fine = segment_spaces(build(0.05)), segment_spaces(build(0.025))
+    assert sorted(r.kind for r in coarse.rooms) == sorted(r.kind for r in fine.rooms)
+    for rc in coarse.rooms:
+        rf = min(fine.rooms, key=lambda r, rc=rc: math.dist(r.centroid, rc.centroid))
+        assert math.dist(rf.centroid, rc.centroid) < 0.1
+        assert rf.area_m2 == pytest.approx(rc.area_m2, rel=0.05)
+        assert rf.kind == rc.kind
+    assert len(coarse.doors) == len(fine.doors)
+    for dc in coarse.doors:
+        df = min(fine.doors, key=lambda d, dc=dc: math.dist(d.center, dc.center))
+        assert math.dist(df.center, dc.center) < 0.1
+        assert df.width_m == pytest.approx(dc.width_m, abs=0.08)
+
+
+@settings(max_examples=8, deadline=None)
+@given(dx=st.floats(-50, 50), dy=st.floats(-50, 50))
+def test_shifting_the_origin_shifts_every_element(dx: float, dy: float) -> None:
+    grid = corridor_with_rooms()
+    base, moved = segment_spaces(grid), segment_spaces(grid.translated(dx, dy))
+    assert np.array_equal(base.labels, moved.labels)
+    assert [r.id for r in base.rooms] == [r.id for r in moved.rooms]
+    for a, b in zip(base.rooms, moved.rooms, strict=True):
+        assert b.centroid == pytest.approx((a.centroid[0] + dx, a.centroid[1] + dy), abs=1e-6)
+        assert b.area_m2 == pytest.approx(a.area_m2)
+    for a2, b2 in zip(base.doors, moved.doors, strict=True):
+        assert b2.center == pytest.approx((a2.center[0] + dx, a2.center[1] + dy), abs=1e-6)
+        assert b2.connects == a2.connects
+        assert b2.normal == pytest.approx(a2.normal, abs=1e-9)
+
+
+def test_room_metric_matches_hand_computed_values() -> None:
+    gt = np.zeros((30, 30), dtype=np.int32)
+    gt[:, :20] = 1  # 600 px
+    gt[:, 20:] = 2  # 300 px
+    seg = np.zeros_like(gt)
+    seg[:, :15] = 7  # inside room 1
+    seg[:, 15:] = 9  # 150 px of room 1 + 300 px of room 2
+    pr = room_precision_recall(gt, seg)
+    assert pr.recall == pytest.approx((450 / 600 + 300 / 300) / 2)
+    assert pr.precision == pytest.approx((1.0 + 300 / 450) / 2)
+    rgb = np.zeros((2, 2, 3), dtype=np.uint8)
+    rgb[0, 0] = (255, 0, 0)
+    rgb[1, 1] = (0, 0, 255)
+    lab = colour_gt_rooms(rgb)
+    assert lab[0, 1] == 0 and lab[1, 0] == 0 and lab[0, 0] != lab[1, 1] and lab[0, 0] > 0
+
+
+def test_door_metric_one_to_one_matching() -> None:
+    blobs = [np.array([[10, 10], [10, 11]]), np.array([[50, 50]])]
+    pr = door_precision_recall([(10, 12), (11, 11), (80, 80)], blobs, resolution_m=0.05)
+    assert pr.precision == pytest.approx(1 / 3)
+    assert pr.recall == pytest.approx(1 / 2)
+
+
+def _in_rect(p: tuple[float, float], poly: list[list[float]]) -> bool:
+    xs = [q[0] for q in poly]
+    ys = [q[1] for q in poly]
+    return min(xs) <= p[0] <= max(xs) and min(ys) <= p[1] <= max(ys)
+
+
+@pytest.mark.shared
+def test_bench_env2_rooms_hallway_and_doors(shared_dir: Path) -> None:
+    maps = shared_dir / "bench" / "maps"
+    grid = load_map(maps / "env2.yaml")
+    ann = json.loads((maps / "env2.annotations.json").read_text())
+    seg = segment_spaces(grid)
+    assert len(seg.rooms) == len(ann["rooms"]) + len(ann["hallways"])
+    for space, kind in [(s, ElementKind.ROOM) for s in ann["rooms"]] + \
+                       [(s, ElementKind.HALLWAY) for s in ann["hallways"]]:
+        inside = [r for r in seg.rooms if _in_rect(r.centroid, space["polygon"])]
+        assert len(inside) == 1, space["id"]
+        assert inside[0].kind == kind
+        assert inside[0].area_m2 == pytest.approx(space["area_m2"], rel=0.15)
+    assert len(seg.doors) == len(ann["doors"])
+    for gd in ann["doors"]:
+        d = min(seg.doors, key=lambda d, gd=gd: math.dist(d.center, gd["center"]))
+        assert math.dist(d.center, gd["center"]) < 0.3, gd["id"]
+        assert d.width_m == pytest.approx(gd["width"], abs=0.15)
+        assert (UNKNOWN_ID in d.connects) == ("outside" in gd["connects"])
+
+
+@pytest.mark.shared
+def test_bench_env1_one_open_room_two_openings(shared_dir: Path) -> None:
+    grid = load_map(shared_dir / "bench" / "maps" / "env1.yaml")
+    seg = segment_spaces(grid)
+    assert len(seg.rooms) == 1
+    centres = sorted(d.center for d in seg.doors)
+    assert len(centres) == 2
+    # Annotated: door_north (1.45, 5.475), door_east (5.575, 2.45).
+    assert math.dist(centres[0], (1.45, 5.475)) < 0.3
+    assert math.dist(centres[1], (5.575, 2.45)) < 0.3
+    assert all(d.connects == (seg.rooms[0].id, UNKNOWN_ID) for d in seg.doors)
