@@ -5,13 +5,26 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import pytest
-from llm_doubles import GO_TO_LEFT_DOOR, POSE, ScriptedBackend, answer, two_room_analysis
+from llm_doubles import (
+    GO_TO_LEFT_DOOR,
+    POSE,
+    ModelServer,
+    Reply,
+    ScriptedBackend,
+    answer,
+    chat_completion,
+    model_server,
+    no_network,
+    two_room_analysis,
+)
 
 from langnav.language.errors import LLMError
 from langnav.language.intent import Intent, Movement, Step
 from langnav.language.llm.auto import AutoTranslator, configured_backend, make_auto
 from langnav.language.llm.base import LLMTranslator
 from langnav.language.translator import Context, Translator, get_translator
+
+__all__ = ["model_server", "no_network"]  # fixtures used by these tests
 
 CTX = Context(analysis=two_room_analysis(), pose=POSE)
 
@@ -118,3 +131,29 @@ def test_local_with_a_missing_model_file_names_the_variable(monkeypatch: pytest.
     monkeypatch.setenv("LANGNAV_LOCAL_MODEL", "/nonexistent/model.gguf")
     with pytest.raises(LLMError, match=r"LANGNAV_LOCAL_MODEL=/nonexistent/model\.gguf is not a file"):
         get_translator("local")
+
+
+def test_registered_auto_with_the_real_offline_translator(monkeypatch: pytest.MonkeyPatch) -> None:
+    pytest.importorskip("langnav.language.offline")
+    monkeypatch.setenv("LANGNAV_LLM", "none")
+    auto = get_translator("auto")
+    assert isinstance(auto, AutoTranslator) and auto.llm is None
+    intent = auto.translate("wiggle around the squeaky chair please", CTX)
+    assert intent.translator == "offline" and intent.steps == [] and intent.clarification
+
+
+def test_registered_auto_asks_a_chat_completions_server(monkeypatch: pytest.MonkeyPatch,
+                                                        model_server: ModelServer) -> None:
+    pytest.importorskip("langnav.language.offline")
+    for var in ("GEMINI_API_KEY", "GOOGLE_API_KEY", "OPENAI_API_KEY", "OPENAI_BASE_URL", "LANGNAV_LLM"):
+        monkeypatch.delenv(var, raising=False)
+    monkeypatch.setenv("LANGNAV_OPENAI_BASE_URL", model_server.url + "/v1")
+    monkeypatch.setenv("LANGNAV_OPENAI_MODEL", "test-model")
+    model_server.replies.append(Reply(chat_completion(answer(
+        [{"movement": "rotate", "direction": "left", "amount": "little", "text": "wiggle"}]))))
+    auto = get_translator("auto")
+    assert auto.translate("go to the door on your left", CTX).translator == "offline"
+    assert model_server.requests == []
+    intent = auto.translate("wiggle around the squeaky chair please", CTX)
+    assert intent.translator == "offline+openai" and intent.steps[0].movement == Movement.ROTATE
+    assert len(model_server.requests) == 1
