@@ -23,6 +23,7 @@ import math
 import threading
 import time
 from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import Any, Final
 
 from langnav.analysis.elements import MapAnalysis
@@ -40,9 +41,12 @@ from langnav.plan.commands import (
     describe,
 )
 from langnav.plan.errors import PlanRejected
+from langnav.plan.events import EventKind, ExecEvent
+from langnav.plan.executor import PlanExecutor
+from langnav.plan.executor import PlanRun as ExecutorRun
 from langnav.plan.validator import CheckedPlan, validate_plan
 from langnav.robot.errors import RobotError
-from langnav.robot.protocol import RobotBackend, create_backend
+from langnav.robot.protocol import Pose2D, RobotBackend, create_backend
 from langnav.web.broadcast import Broadcaster
 from langnav.web.feedback import FeedbackManager, describe_intent
 from langnav.web.mapframes import elements_frame, grid_digest, map_frame, map_png, state_frame
@@ -63,6 +67,15 @@ CANCEL_WAIT_S: Final = 3.0
 #: Wait this long for the sampler thread to end when closing.
 THREAD_JOIN_S: Final = 3.0
 QUERY_COMMANDS: Final = (GetRobotPoseLast, GetCurrentPath, GetMap)
+QUERY_NAMES: Final = ("GetRobotPoseLast", "GetCurrentPath", "GetMap")
+
+
+@dataclass(frozen=True)
+class ClickItem:
+    """A plan item made from a map click (already validated; nothing to re-ground)."""
+
+    commands: tuple[Command, ...]
+    explore: bool = False
 
 
 class SessionBusy(LangnavError):
@@ -114,7 +127,8 @@ class RobotSession:
         self._map_version: Any = None
         self._grid: OccupancyGrid | None = None
         self._plan_id = self.store.last_plan_id()
-        self._run: PlanRun | None = None
+        self._run: PlanView | None = None
+        self.executor = PlanExecutor(robot)
         self.feedback = FeedbackManager(lambda: self._analysis)
         self._halt = threading.Event()
         self._sampler: threading.Thread | None = None
@@ -132,8 +146,9 @@ class RobotSession:
     def close(self) -> None:
         self._halt.set()
         run = self._run
-        if run is not None:
+        if run is not None and not run.done:
             run.cancel()
+            run.join(CANCEL_WAIT_S)  # let it write its outcome before the store closes
         if self._sampler is not None:
             self._sampler.join(THREAD_JOIN_S)
         try:
@@ -200,7 +215,7 @@ class RobotSession:
                                                            "reasons": exc.reasons}))
                 return out
             out.extend(self._start_plan(f"I'll go to x {x_m:.2f}, y {y_m:.2f}.", "map click",
-                                        [list(checked.commands)], list(checked.repairs), source="click"))
+                                        [ClickItem(checked.commands)], list(checked.repairs), source="click"))
             return out
         finally:
             self._plan_lock.release()
@@ -260,35 +275,36 @@ class RobotSession:
             if result.intent is not None and result.intent.steps:
                 payload["intent_text"] = describe_intent(result.intent)
             return [self.say("robot", "clarification", payload)]
-        groups = [list(item.commands) for item in result.items]
-        if not any(groups):
+        if not any(item.commands or item.explore for item in result.items):
             return [self.say("robot", "clarification", {
                 "text": "I did not find anything to do in that. Try e.g. “go to the nearest door”."})]
         intent_text = describe_intent(result.intent) if result.intent is not None else "Here is the plan."
-        return self._start_plan(intent_text, result.translator, groups, list(result.messages),
-                                source=source, result=result)
+        return self._start_plan(intent_text, result.translator, result.items, list(result.messages), source)
 
-    def _start_plan(self, intent_text: str, translator: str, groups: list[list[Command]], notes: list[str],
-                    source: str, result: PlanResult | None = None) -> list[Message]:
-        flat = [c for g in groups for c in g]
-        only_queries = all(isinstance(c, QUERY_COMMANDS) for c in flat)
-        if only_queries:
-            # Questions are answered at once; a running plan goes on.
+    def _start_plan(self, intent_text: str, translator: str, items: Sequence[Any], notes: list[str],
+                    source: str) -> list[Message]:
+        """Show the plan card and hand the plan to the executor (it cancels a running plan first)."""
+        flat = [c for it in items for c in it.commands]
+        explores = any(getattr(it, "explore", False) for it in items)
+        if flat and not explores and all(isinstance(c, QUERY_COMMANDS) for c in flat):
+            # Questions are answered at once, in plain words; a running plan goes on.
             return [self.say("robot", "answer", {"text": self._answer(c)}) for c in flat]
         with self._state_lock:
             self._plan_id += 1
             plan_id = self._plan_id
-        commands = [{"index": i, "text": describe(c), "command": c.model_dump(exclude={"note"})}
-                    for i, c in enumerate(flat)]
+        rows: list[dict[str, Any]] = []
+        for it in items:
+            if getattr(it, "explore", False):
+                rows.append({"index": len(rows), "text": "Explore until there is nothing left to map",
+                             "command": {"command": "Explore"}})
+                continue
+            rows.extend({"index": len(rows), "text": describe(c), "command": c.model_dump(exclude={"note"})}
+                        for c in it.commands)
         card = self.say("robot", "plan", {"intent_text": intent_text, "translator": translator, "source": source,
-                                          "commands": commands, "notes": notes}, plan_id=plan_id)
-        previous = self._run
-        if previous is not None and not previous.done:
-            previous.cancel()
-            previous.join(CANCEL_WAIT_S)
-        run = PlanRun(self, plan_id, groups, result)
-        self._run = run
-        run.start()
+                                          "commands": rows, "notes": notes}, plan_id=plan_id)
+        view = PlanView(self, plan_id, len(rows))
+        self._run = view
+        view.start(list(items))
         return [card]
 
     def _answer(self, cmd: Command) -> str:
@@ -368,68 +384,82 @@ class RobotSession:
                 self._halt.wait(1.0)
 
 
-class PlanRun:
-    """One plan on the executor, with its events turned into chat messages and progress."""
+class PlanView:
+    """One plan on the executor, with its events turned into chat messages and progress frames."""
 
-    def __init__(self, session: RobotSession, plan_id: int, groups: list[list[Command]], result: Any) -> None:
+    def __init__(self, session: RobotSession, plan_id: int, total: int) -> None:
         self.session = session
         self.plan_id = plan_id
-        self.groups = groups
-        self.result = result
-        self.total = sum(len(g) for g in groups)
+        self.total = total
         self.index: int | None = None
-        self.paused = False
-        self.done = False
-        self._handle: Any = None
+        self._run: ExecutorRun | None = None
         self._finished = threading.Event()
 
-    def start(self) -> None:
-        from langnav.plan.executor import PlanExecutor
+    @property
+    def paused(self) -> bool:
+        return self._run is not None and self._run.paused
 
-        executor = PlanExecutor(self.session.robot)
-        self._handle = executor.start(self.groups, on_event=self._on_event)
+    @property
+    def done(self) -> bool:
+        return self._finished.is_set()
+
+    def start(self, plan: Sequence[Any]) -> None:
+        self._run = self.session.executor.start(plan, on_event=self._on_event)
 
     def cancel(self) -> None:
-        if self._handle is not None:
-            self._handle.cancel()
+        if self._run is not None:
+            self._run.cancel()
 
     def pause(self) -> None:
-        if self._handle is not None:
-            self._handle.pause()
-            self.paused = True
+        if self._run is not None:
+            self._run.pause()
 
     def resume(self) -> None:
-        if self._handle is not None:
-            self._handle.resume()
-            self.paused = False
+        if self._run is not None:
+            self._run.resume()
 
     def join(self, timeout_s: float) -> bool:
         return self._finished.wait(timeout_s)
 
-    def _on_event(self, event: Any) -> None:
+    def _on_event(self, event: ExecEvent) -> None:
+        """Runs on the executor's thread: quick, and never raises into it."""
         s = self.session
-        kind = str(getattr(event, "kind", ""))
-        index = getattr(event, "index", None)
-        if index is not None:
-            self.index = int(index)
-        if kind == "progress":
-            s.broadcaster.publish_event({"type": "progress", "plan_id": self.plan_id, "index": self.index,
-                                         "text": getattr(event, "message", ""),
-                                         "fraction": getattr(event, "fraction", None)})
+        kind = event.kind
+        if event.index is not None:
+            self.index = event.index
+        if kind == EventKind.PROGRESS:
+            s.broadcaster.publish_event({"type": "progress", "plan_id": self.plan_id, "index": event.index,
+                                         "text": event.message, "fraction": event.fraction})
             return
-        if kind in ("started", "succeeded", "failed", "cancelled"):
-            status = "running" if kind == "started" else kind
-            s.say("robot", "step", {"index": self.index, "status": status,
-                                    "text": getattr(event, "message", "")}, plan_id=self.plan_id)
-        if kind == "finished":
-            self.done = True
-            self._finished.set()
+        if kind == EventKind.FINISHED:
+            self._finish(event)
+            return
+        status = {EventKind.STARTED: "running", EventKind.RESUMED: "running"}.get(kind, kind.value)
+        s.say("robot", "step", {"index": event.index, "status": status, "text": event.message,
+                                "command_text": event.text}, plan_id=self.plan_id)
+        if kind == EventKind.SUCCEEDED and event.command and event.command.get("command") in QUERY_NAMES:
+            s.say("robot", "answer", {"text": self._answer(event)}, plan_id=self.plan_id)
+
+    def _answer(self, event: ExecEvent) -> str:
+        name = (event.command or {}).get("command")
+        if name == "GetRobotPoseLast" and event.pose is not None:
+            x, y, yaw_deg = event.pose
+            return self.session.feedback.where_am_i(Pose2D(x, y, math.radians(yaw_deg)))
+        if name == "GetCurrentPath":
+            return self.session.feedback.path([tuple(p) for p in event.data.get("path", [])])
+        return event.message[:1].upper() + event.message[1:] + "."
+
+    def _finish(self, event: ExecEvent) -> None:
+        s = self.session
+        try:
             pose = s.robot.get_robot_pose()
-            status = str(getattr(event, "status", ""))
+            status = event.status.value if event.status is not None else "failed"
             if status == "succeeded":
                 text = s.feedback.arrived(pose)
             elif status == "cancelled":
                 text = s.feedback.stopped(pose)
             else:
-                text = s.feedback.failed(getattr(event, "message", "") or "the plan failed", pose)
+                text = s.feedback.failed(event.message or "the plan failed", pose)
             s.say("robot", "outcome", {"status": status, "text": text}, plan_id=self.plan_id)
+        finally:
+            self._finished.set()

@@ -68,7 +68,7 @@
     li.dataset.planId = m.plan_id;
     const head = el("div", "intent", m.intent_text || "Here is the plan.");
     head.append(el("span", "badge", m.translator || ""));
-    if (m.source) head.append(el("span", "badge", m.source));
+    if (m.source && m.source !== "prompt") head.append(el("span", "badge", m.source));
     li.append(head);
     const ol = el("ol", "cmds");
     const items = [];
@@ -381,9 +381,10 @@
     }
     if (shown.obstacle) {
       ctx.strokeStyle = color.obstacle; ctx.lineWidth = 2 * px;
+      const pad = 0.06;
       for (const o of elements.obstacles || []) {
-        const r = Math.max(o.extent_m[0], o.extent_m[1]) / 2 + 0.08;
-        ctx.beginPath(); ctx.arc(o.centroid[0], o.centroid[1], r, 0, 2 * Math.PI); ctx.stroke();
+        const w = o.extent_m[0] + 2 * pad, h = o.extent_m[1] + 2 * pad;
+        ctx.strokeRect(o.centroid[0] - w / 2, o.centroid[1] - h / 2, w, h);
       }
     }
     if (shown.corner) {
@@ -403,7 +404,7 @@
     lbl(shown.room, (elements.rooms || []).filter((r) => r.kind === "room"), (r) => r.centroid, "#1d4ed8");
     lbl(shown.hallway, (elements.rooms || []).filter((r) => r.kind === "hallway"), (r) => r.centroid, "#047857");
     lbl(shown.door, elements.doors, (d) => d.center, "#c2410c");
-    lbl(shown.obstacle, elements.obstacles, (o) => o.centroid, "#b91c1c");
+    lbl(shown.obstacle, elements.obstacles, (o) => [o.centroid[0], o.centroid[1] - o.extent_m[1] / 2 - 0.06 - 16 / view.scale], "#b91c1c");
     lbl(shown.narrow_passage, elements.narrow_passages, (p) => p.center, "#0f766e");
     lbl(shown.unexplored_area, elements.unexplored, (u) => u.centroid, "#854d0e");
   }
