@@ -13,7 +13,15 @@ import pytest
 from langnav.grounding.errors import GroundingError
 from langnav.maps.draw import MapBuilder
 from langnav.maps.grid import OccupancyGrid
-from langnav.plan.commands import Command, GetMap, GetRobotPoseLast, Move, NavigateThroughPoses, Rotate, Stop
+from langnav.plan.commands import (
+    Command,
+    GetMap,
+    GetRobotPoseLast,
+    Move,
+    NavigateThroughPoses,
+    Rotate,
+    Stop,
+)
 from langnav.plan.events import EventKind, ExecEvent, PlanStatus
 from langnav.plan.executor import ExecutorConfig, PlanExecutor, remainder
 from langnav.robot.protocol import Pose2D
@@ -235,4 +243,5 @@ def test_remainder_after_a_pause(cmd: Command, now: Pose2D, expect: int | None) 
     if expect is None:
         assert rest is None
     else:
-        assert rest is not None and getattr(rest, "repeat") == expect and getattr(rest, "direction") == getattr(cmd, "direction")
+        assert isinstance(rest, Move | Rotate) and isinstance(cmd, Move | Rotate)
+        assert rest.repeat == expect and rest.direction == cmd.direction
