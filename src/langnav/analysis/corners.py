@@ -48,7 +48,8 @@ def _intersect(a: Wall, b: Wall) -> tuple[float, float] | None:
     if abs(den) < 1e-12:
         return None
     t = ((bx - ax) * dby - (by - ay) * dbx) / den
-    return (ax + t * dax, ay + t * day)
+    # Rounded to the nanometre (+ 0.0 turns -0.0 into 0.0): no floating-point dust in outputs.
+    return (round(ax + t * dax, 9) + 0.0, round(ay + t * day, 9) + 0.0)
 
 
 def find_corners(grid: OccupancyGrid, params: AnalysisParams, walls: tuple[Wall, ...],
@@ -89,12 +90,10 @@ def find_corners(grid: OccupancyGrid, params: AnalysisParams, walls: tuple[Wall,
                 vb = (fb[0] - x[0], fb[1] - x[1])
                 concave = (vb[0] * a.inward[0] + vb[1] * a.inward[1] > 0
                            and va[0] * b.inward[0] + va[1] * b.inward[1] > 0)
-                if not concave:
-                    continue
-                if any(_dist(x, p) < CORNER_MERGE_M for p in room_found):
-                    continue
-                room_found.append(x)
-                found.append((room, x, a, b))
+                # Either way the two walls meet there: move their ends onto the meeting point.
+                if concave and not any(_dist(x, p) < CORNER_MERGE_M for p in room_found):
+                    room_found.append(x)
+                    found.append((room, x, a, b))
                 for w in (a, b):
                     e = ends[w.id]
                     j = 0 if _dist(x, e[0]) < _dist(x, e[1]) else 1

@@ -32,6 +32,8 @@ GRADIENT_SIGMA_CELLS: Final = 1.0
 DIRECTION_BIN_DEG: Final = 5.0
 #: A face point joins a wall direction when its own direction is within this (degrees).
 DIRECTION_TOL_DEG: Final = 20.0
+#: Face points within this of the group direction (degrees) define the fitted line.
+REFIT_TOL_DEG: Final = 5.0
 #: At most this many lines are taken out of one direction group (guards noisy real maps).
 MAX_LINES_PER_DIRECTION: Final = 200
 
@@ -58,12 +60,16 @@ class WallLine:
         return (self.rho * nx + s * tx, self.rho * ny + s * ty)
 
 
-def _face_points(labels: npt.NDArray[np.int32], wall: npt.NDArray[np.bool_]
+def _face_points(labels: npt.NDArray[np.int32], wall: npt.NDArray[np.bool_], free: npt.NDArray[np.bool_]
                  ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, npt.NDArray[np.int32]]:
-    """Face points (x, y) in grid cells, their unit normals into the wall, and their space label."""
+    """Face points (x, y) in grid cells, their unit normals into the wall, and their space label.
+
+    Only *free* cells of a space count: a space's unknown cells (an unscanned patch counted in
+    its floor area) do not show where its walls are.
+    """
     cross = ndi.generate_binary_structure(2, 1)
     near_wall = ndi.binary_dilation(wall, structure=cross)
-    boundary = (labels > 0) & near_wall & ~wall
+    boundary = (labels > 0) & free & near_wall & ~wall
     rows, cols = np.nonzero(boundary)
     empty = np.zeros(0)
     if len(rows) == 0:
@@ -131,7 +137,7 @@ def _refit(x: FloatArray, y: FloatArray, n_x: float, n_y: float) -> tuple[float,
 def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArray[np.int32],
                    wall: npt.NDArray[np.bool_]) -> list[WallLine]:
     """Straight wall lines per space label, in grid coordinates (see the module docstring)."""
-    x, y, nx, ny, lab = _face_points(labels, wall)
+    x, y, nx, ny, lab = _face_points(labels, wall, grid.free)
     res = grid.resolution_m
     min_len = params.wall_min_length_m / res
     max_dev = max(params.wall_max_deviation_m / res, 0.5)
@@ -174,7 +180,11 @@ def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
                 remaining &= ~member
                 if member.sum() < min_len * 0.5:
                     break  # the densest line left is too short: so is every other one
-                fit = _refit(x[sel][member], y[sel][member], n_x, n_y)
+                # Fit the line through the points that face squarely onto it (the ends of a run
+                # bend round corners and bumps and would tilt it).
+                square = member & (_ang_diff(th[near], math.degrees(phi)) <= REFIT_TOL_DEG)
+                fit_set = square if square.sum() >= 3 else member
+                fit = _refit(x[sel][fit_set], y[sel][fit_set], n_x, n_y)
                 m_nx, m_ny, m_centre = (n_x, n_y, centre) if fit is None else fit
                 s_line = -x[sel][member] * m_ny + y[sel][member] * m_nx
                 s_m = np.sort(s_line)
@@ -198,7 +208,13 @@ def line_to_world(grid: OccupancyGrid, line: WallLine) -> tuple[tuple[float, flo
     x1, y1 = grid.grid_to_world(p1[1], p1[0])
     c, s = math.cos(grid.origin_yaw_rad), math.sin(grid.origin_yaw_rad)
     inx, iny = -line.normal[0], -line.normal[1]
-    return ((float(x0), float(y0)), (float(x1), float(y1)), (c * inx - s * iny, s * inx + c * iny))
+    return ((_clean(x0), _clean(y0)), (_clean(x1), _clean(y1)),
+            (_clean(c * inx - s * iny), _clean(s * inx + c * iny)))
+
+
+def _clean(v: float | np.floating | npt.NDArray[np.float64]) -> float:
+    """Drop floating-point dust (1e-17, -0.0) from a coordinate: nanometres do not matter."""
+    return round(float(v), 9) + 0.0
 
 
 def find_walls(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArray[np.int32],
