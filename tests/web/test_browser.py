@@ -73,7 +73,9 @@ def browser() -> Iterator[Any]:
 @pytest.fixture
 def page(browser: Any, server: str) -> Iterator[Any]:
     ARTIFACTS.mkdir(exist_ok=True)
-    p = browser.new_page(viewport={"width": 1400, "height": 860})
+    # bypass_csp lets the test's own wait expressions run; the page itself needs no eval (the
+    # policy is checked in test_api.py).
+    p = browser.new_page(viewport={"width": 1400, "height": 860}, bypass_csp=True)
     errors: list[str] = []
     p.on("pageerror", lambda e: errors.append(str(e)))
     p.goto(server)

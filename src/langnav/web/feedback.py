@@ -167,6 +167,9 @@ class FeedbackManager:
         lead = f"Stopped ({why})." if why else "Stopped."
         return f"{lead} {self.where_am_i(pose)}"
 
+    def cancelled(self, pose: Pose2D) -> str:
+        return f"Plan cancelled. {self.where_am_i(pose)}"
+
     def failed(self, reason: str, pose: Pose2D | None) -> str:
         text = f"I could not do that: {reason.rstrip('.')}."
         return f"{text} {self.where_am_i(pose)}" if pose is not None else text

@@ -457,7 +457,7 @@ class PlanView:
             if status == "succeeded":
                 text = s.feedback.arrived(pose)
             elif status == "cancelled":
-                text = s.feedback.stopped(pose)
+                text = s.feedback.cancelled(pose)
             else:
                 text = s.feedback.failed(event.message or "the plan failed", pose)
             s.say("robot", "outcome", {"status": status, "text": text}, plan_id=self.plan_id)
