@@ -244,8 +244,11 @@ class _StepsTask(_Task):
                 drive += abs(ph.remaining(pose)) if k == self.i else abs(ph.drive_m)
             else:
                 turn += abs(ph.remaining(pose)) if k == self.i else abs(ph.turn_rad)
-        return TaskFeedback(pose=pose, distance_remaining_m=drive, elapsed_s=sim.time_s - self.started_s,
-                            angle_remaining_rad=turn, message=self.description)
+        drives = any(ph.drive_m for ph in self.phases)
+        turns = any(ph.turn_rad for ph in self.phases)
+        return TaskFeedback(pose=pose, distance_remaining_m=drive if drives else None,
+                            elapsed_s=sim.time_s - self.started_s, angle_remaining_rad=turn if turns else None,
+                            message=self.description)
 
 
 class _NavTask(_Task):

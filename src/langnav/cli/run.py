@@ -1,0 +1,179 @@
+"""``langnav run``: translate, validate and execute one prompt on a robot, printing every event.
+
+    langnav run --world MAP.yaml --pose X,Y,YAW_DEG [--known-map] [--backend sim|rosbridge]
+                [--json] [--translator NAME] "prompt"
+
+With the simulator (the default) the robot starts at ``--pose`` in the world ``--world`` and knows
+only what its lidar sees, unless ``--known-map`` gives it the world map as its own (a floor
+already mapped). The simulator runs headless, faster than real time. With ``--backend rosbridge``
+the robot, its map and its pose come from a ROS 2 robot (``--rosbridge HOST:PORT``).
+
+The prompt is read against the robot's own map and pose; exploration prompts ("explore", "map
+this floor") run frontier exploration. With ``--json`` every event is one JSON object per line;
+the last is ``{"event": "finished", "status": "succeeded"|"failed"|"cancelled"|"rejected",
+"pose": [x, y, yaw_deg]}``. Exit status: 0 succeeded, 1 failed or cancelled, 2 rejected.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import logging
+import math
+from typing import Any, Final
+
+import yaml
+
+from langnav.errors import LangnavError
+from langnav.plan.events import EventKind, ExecEvent, PlanStatus, pose_tuple
+from langnav.plan.executor import DEFAULT_EXPLORE_TIMEOUT_S, PlanExecutor
+from langnav.robot.errors import RobotError, RobotTimeout
+from langnav.robot.protocol import RobotBackend, create_backend
+
+log = logging.getLogger(__name__)
+
+BACKENDS: Final = ("sim", "rosbridge")
+EXIT_CODES: Final = {PlanStatus.SUCCEEDED: 0, PlanStatus.FAILED: 1, PlanStatus.CANCELLED: 1, PlanStatus.REJECTED: 2}
+#: Time to let a cancelled plan stop the robot on Ctrl-C.
+CANCEL_GRACE_S: Final = 10.0
+
+
+def _pose(text: str) -> tuple[float, float, float]:
+    try:
+        parts = [float(v) for v in text.split(",")]
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"--pose is X,Y,YAW_DEG in metres and degrees, got {text!r}") from None
+    if len(parts) not in (2, 3) or not all(math.isfinite(v) for v in parts):
+        raise argparse.ArgumentTypeError(f"--pose is X,Y[,YAW_DEG] (finite numbers), got {text!r}")
+    return (parts[0], parts[1], parts[2] if len(parts) == 3 else 0.0)
+
+
+def _option(text: str) -> tuple[str, Any]:
+    key, sep, value = text.partition("=")
+    if not sep or not key.strip():
+        raise argparse.ArgumentTypeError(f"--robot-option is KEY=VALUE, got {text!r}")
+    return key.strip(), yaml.safe_load(value)
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("prompt", help="what the robot should do, in plain words")
+    p.add_argument("--world", help="the simulated world: map_server YAML or image, or 'demo' (sim only; default demo)")
+    p.add_argument("--pose", type=_pose, default=None,
+                   help="start pose X,Y,YAW_DEG (sim; default the most open spot; use --pose=-1,2,0 for negatives)")
+    p.add_argument("--known-map", action="store_true", help="start the simulated robot with the world map as its own")
+    p.add_argument("--backend", default="sim", choices=BACKENDS, help="robot backend (default: sim)")
+    p.add_argument("--rosbridge", default=None, metavar="HOST:PORT", help="rosbridge server (rosbridge backend)")
+    p.add_argument("--robot-option", type=_option, action="append", default=[], metavar="KEY=VALUE",
+                   help="extra backend option (repeatable), e.g. cmd_vel_stamped=true")
+    p.add_argument("--translator", default="offline", help="offline (default), gemini, openai, local, auto")
+    p.add_argument("--seed", type=int, default=0, help="random seed of the simulated lidar noise")
+    p.add_argument("--timeout", type=float, default=DEFAULT_EXPLORE_TIMEOUT_S,
+                   help="give up on the whole plan after this many seconds (robot time in the simulator)")
+    p.add_argument("--json", action="store_true", help="one JSON object per line")
+
+
+def _make_robot(args: argparse.Namespace) -> RobotBackend:
+    options: dict[str, Any] = dict(args.robot_option)
+    if args.backend == "sim":
+        options.setdefault("world", args.world if args.world is not None else "demo")
+        options.setdefault("pose", args.pose)
+        options.setdefault("known_map", args.known_map)
+        options.setdefault("seed", args.seed)
+    else:
+        if args.world is not None or args.pose is not None or args.known_map:
+            log.warning("--world, --pose and --known-map are for the simulator; the robot gives its own")
+        if args.rosbridge:
+            host, _, port = args.rosbridge.rpartition(":")
+            if not host or not port.isdigit():
+                raise RobotError(f"--rosbridge is HOST:PORT, got {args.rosbridge!r}")
+            options.setdefault("host", host)
+            options.setdefault("port", int(port))
+    return create_backend(args.backend, **options)
+
+
+class _Printer:
+    def __init__(self, as_json: bool) -> None:
+        self.as_json = as_json
+
+    def line(self, obj: dict[str, Any], text: str) -> None:
+        print(json.dumps(obj, ensure_ascii=False) if self.as_json else text, flush=True)
+
+    def event(self, ev: ExecEvent) -> None:
+        if ev.kind is EventKind.FINISHED:
+            return  # the CLI prints its own last line, with the final pose
+        if self.as_json:
+            self.line(ev.to_json(), "")
+            return
+        n = "" if ev.index is None else f"{ev.index + 1}. "
+        mark = {EventKind.STARTED: "▶", EventKind.PROGRESS: "…", EventKind.SUCCEEDED: "✓", EventKind.FAILED: "✗",
+                EventKind.CANCELLED: "■", EventKind.PAUSED: "‖", EventKind.RESUMED: "▶"}[ev.kind]
+        what = ev.text if ev.kind is EventKind.STARTED else ev.message
+        if ev.kind is EventKind.PROGRESS and ev.fraction is not None:
+            what = f"{ev.fraction:4.0%}  {what}"
+        print(f"[{ev.time_s:7.1f} s] {mark} {n}{what}", flush=True)
+
+
+def run(args: argparse.Namespace) -> int:
+    from langnav.language.translator import get_translator
+    from langnav.pipeline import Planner
+
+    out = _Printer(args.json)
+    robot = _make_robot(args)
+    try:
+        grid = robot.get_map()
+        pose = robot.get_robot_pose()
+        start = pose_tuple(pose)
+        planner = Planner(get_translator(args.translator))
+        result = planner.plan(args.prompt, grid, start)
+        if result.clarification is not None:
+            out.line({"event": "rejected", "message": result.clarification},
+                     f"not run: {result.clarification}")
+            return _finish(out, robot, PlanStatus.REJECTED)
+        out.line({"event": "plan", "commands": result.to_json()["commands"], "messages": list(result.messages),
+                  "pose": list(start)},
+                 "plan from ({:.2f}, {:.2f}, {:.0f}°):\n".format(*start)
+                 + "\n".join(f"  {i + 1}. {c}" for i, c in enumerate(_described(result)))
+                 + "".join(f"\n  note: {m}" for m in result.messages))
+        run_ = PlanExecutor(robot).start(result.items, on_event=out.event)
+        try:
+            status = run_.wait(args.timeout)
+        except RobotTimeout:
+            run_.cancel()
+            run_.wait(CANCEL_GRACE_S)
+            status = PlanStatus.FAILED
+            out.line({"event": "failed", "message": f"the plan took longer than {args.timeout:.0f} s"},
+                     f"gave up: the plan took longer than {args.timeout:.0f} s")
+        except KeyboardInterrupt:
+            run_.cancel()
+            run_.wait(CANCEL_GRACE_S)
+            _finish(out, robot, PlanStatus.CANCELLED)
+            return 130
+        return _finish(out, robot, status)
+    finally:
+        try:
+            robot.close()
+        except LangnavError as exc:
+            log.warning("closing the robot: %s", exc)
+
+
+def _described(result: Any) -> list[str]:
+    from langnav.plan.commands import describe
+
+    items = list(getattr(result, "items", ()))
+    lines: list[str] = []
+    for it in items:
+        if getattr(it, "explore", False):
+            lines.append("Explore until nothing reachable is left to map")
+        lines.extend(describe(c) for c in it.commands)
+    return lines
+
+
+def _finish(out: _Printer, robot: RobotBackend, status: PlanStatus) -> int:
+    x, y, yaw = pose_tuple(robot.get_robot_pose())
+    out.line({"event": "finished", "status": status.value, "pose": [x, y, yaw]},
+             f"finished: {status.value} at ({x:.2f}, {y:.2f}, {yaw:.0f}°)")
+    return EXIT_CODES[status]
+
+
+__all__ = ["add_arguments", "run"]
+
