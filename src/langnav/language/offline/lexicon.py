@@ -238,7 +238,9 @@ VERB_DETAILS: Final[dict[str, Detail]] = {
                                    "exit", "leave", "exit from", "get out of", "go out of", "leave through")},
     **{w: Detail.TO for w in ("reach", "enter", "approach", "visit", "find", "get to", "arrive at",
                               "return to", "come to", "go into", "park at", "head into")},
-    **{w: Detail.ALONG for w in ("follow", "hug", "trace", "track", "skirt", "shadow", "follow along")},
+    **{w: Detail.ALONG for w in ("follow", "hug", "trace", "track", "skirt", "shadow", "follow along",
+                                 "keep to", "stick to", "stay along", "keep along", "stay close to",
+                                 "keep close to", "stick close to", "run along", "keep following")},
     **{w: Detail.STOP_AT for w in ("stop at", "stop by", "stop in front of", "halt at", "stop when you reach",
                                    "stop once you reach", "stop when you get to", "stop when you are at",
                                    "stop as soon as you reach", "park", "wait at", "stay at",
@@ -260,7 +262,8 @@ GO_VERBS: Final = (
     "navigate yourself", "steer", "relocate", "put yourself", "place yourself", "be", "traverse",
     "squeeze", "wander", "journey", "cruise", "zip", "hop", "nudge", "budge", "position", "get over",
     "come over", "swing by", "pull up", "pull over", "pull", "arrive", "set off", "follow", "hug",
-    "trace", "track", "skirt", "take", "stay", "keep", "edge", "shuffle", "ease",
+    "trace", "track", "skirt", "take", "stay", "keep", "edge", "shuffle", "ease", "stand", "go stand",
+    "go and stand", "go and", "sit", "wait",
 )
 
 ROTATE_VERBS: Final = ("turn", "rotate", "spin", "pivot", "swivel", "face", "look", "twist", "yaw",
@@ -284,7 +287,7 @@ STOP_PHRASES: Final = (
 
 #: Questions and their answers.
 QUERY_POSE_PATTERNS: Final = (
-    r"\bwhere\s+(?:are|r)\s+(?:you|u)\b(?!\s+(?:going|heading|headed|driving|off\s+to))", r"\bwhere\s+am\s+i\b", r"\bwhere\s+is\s+the\s+robot\b",
+    r"\bwhere\s+(?:exactly\s+|now\s+|on\s+earth\s+)?(?:are|r)\s+(?:you|u)\b(?!\s+(?:going|heading|headed|driving|off\s+to))", r"\bwhere\s+am\s+i\b", r"\bwhere\s+is\s+the\s+robot\b",
     r"\b(?:your|the\s+robot'?s?|current|robot)\s+(?:current\s+|exact\s+|present\s+|last\s+)?"
     r"(?:position|location|pose|coordinates|whereabouts|heading|orientation|place)\b",
     r"\bwhich\s+(?:way|direction)\s+are\s+you\s+(?:facing|pointing|heading|looking)\b",
@@ -384,6 +387,7 @@ LITTLE_PHRASES: Final = (
 # ------------------------------------------------------------------------------ filler & safety
 #: Politeness and filler, removed before reading (consumed, never "unread").
 FILLER_PATTERNS: Final = (
+    r"\b(?:would|do|will)\s+you\s+(?:please\s+)?mind\b",
     r"\b(?:could|can|would|will|might)\s+(?:you|u)(?:\s+please)?(?:\s+kindly)?\b",
     r"\b(?:i(?:\s+would|\s+will)?|we(?:\s+would)?)\s+(?:like|love|want|need|wish)\s+(?:you\s+)?(?:to\s+)?",
     r"\b(?:i|we)\s+(?:want|need)\s+(?:you\s+)?(?:to\s+)?", r"\bplease\b", r"\bpls\b", r"\bplz\b",

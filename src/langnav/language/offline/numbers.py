@@ -122,9 +122,9 @@ _PI_PATTERN: Final = re.compile(
     r"(?:\s*/\s*(?P<div>\d+(?:\.\d+)?))?(?:\s*(?:rad|rads|radians?))?(?!\w)")
 #: "a quarter turn", "half a turn", "a full turn", "two full turns", "one and a half turns"
 _TURN_PATTERN: Final = re.compile(
-    rf"(?<!\w)(?:(?P<frac>(?:a|one)\s+quarter|quarter|a\s+half|half\s+(?:a|an|of\s+a)|half|"
+    rf"(?<!\w)(?:(?P<ratio>\d+\s*/\s*\d+)(?:\s+of)?(?:\s+an?)?|(?P<frac>(?:a|one)\s+quarter|quarter|a\s+half|half\s+(?:a|an|of\s+a)|half|"
     rf"(?:a\s+)?three[\s-]+quarters?(?:\s+of\s+a)?|three[\s-]+quarter)"
-    rf"|(?P<num>{NUMBER})?\s*(?P<whole>(?:{'|'.join(WHOLE_TURN_WORDS)}))"
+    rf"|(?:(?P<num>{NUMBER})\s+|(?:a|an)\s+)?(?P<whole>(?:{'|'.join(WHOLE_TURN_WORDS)}))"
     rf"|(?P<count>{NUMBER}))"
     rf"[\s-]*(?:full\s+|complete\s+|whole\s+)?(?P<noun>{_TURN_NOUN})")
 _BARE_PATTERN: Final = re.compile(rf"{_B}(?P<num>{NUMBER})(?!\s*(?:st|nd|rd|th)\b)(?![\w])")
@@ -268,6 +268,8 @@ def _unit_quantity(kind: QuantityKind, m: re.Match[str]) -> Quantity | None:
 
 
 def _turn_degrees(m: re.Match[str]) -> float:
+    if m.group("ratio"):
+        return 360.0 * _plain_number(" ".join(m.group("ratio").split()))
     if m.group("frac"):
         return 360.0 * _fraction_value(m.group("frac"))
     if m.group("whole"):

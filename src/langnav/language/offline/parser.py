@@ -638,6 +638,8 @@ def _read_explore(c: _Clause, phrases: list[_Phrase]) -> Reading | None:
                    unread=(" ".join(leftovers),) if leftovers else (), confidence=round(confidence, 3))
 
 
+_NAME_DETAIL_RE: Final = re.compile(lx.phrase_regex(lx.DETAIL_PHRASES, "detail")
+                                     + r"\s+(?:(?:the|a|an|my|our|your)\s+)?$")
 _DESTINATION_RE: Final = re.compile(
     r"\b(?:to|towards?|into|next\s+to|beside|near|through|at|by|reach|enter|approach|visit|find)\s+"
     r"(?:the\s+|a\s+|an\s+|my\s+|our\s+|your\s+)?(?P<name>[a-z][\w']*(?:\s+[a-z][\w']*)?)")
@@ -661,7 +663,7 @@ def _named(c: _Clause, name: str, known_names: Sequence[str]) -> Reading:
     known = {n.lower().strip(): n for n in known_names}
     if clean in known:
         detail = Detail.TO
-        m = _DETAIL_AT_END_RE.search(c.s.text[:c.s.text.find(clean.split()[0])] if clean else "")
+        m = _NAME_DETAIL_RE.search(c.s.text[:c.s.text.find(clean.split()[0])] if clean else "")
         if m is not None:
             detail = _as_detail(lx.lookup(lx.DETAIL_PHRASES, m.group("detail")))
         ref = ElementRef(kind=Element.NONE, name=known[clean][:80])

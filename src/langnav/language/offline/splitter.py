@@ -33,7 +33,10 @@ _STEP_VERBS: Final = frozenset(
     {v.split()[0] for v in (*GO_VERBS, *ROTATE_VERBS, *STOP_PHRASES)}
     | {"show", "tell", "report", "give", "send", "display", "explore", "map", "scan", "where",
        "what", "which", "drive", "spin", "come", "wait", "hug", "follow", "take", "pass", "back",
-       "reverse", "return", "stop", "halt", "freeze", "hold", "pause", "cancel"}
+       "reverse", "return", "stop", "halt", "freeze", "hold", "pause", "cancel",
+       # things the robot cannot do still start a step of their own ("... and pick up the cup")
+       "pick", "grab", "fetch", "bring", "carry", "open", "close", "clean", "push", "lift", "cook",
+       "sing", "dance", "play", "wash", "water", "deliver", "put", "drop", "hand", "charge", "call"}
 ) - {"be", "do", "make", "keep", "stay", "point", "position", "get", "run", "pull", "edge"}
 #: Verbs that start an instruction only if followed by more words (not "the box and get").
 _WEAK_STEP_VERBS: Final = frozenset({"get", "keep", "make", "do", "stay", "position", "point"})
@@ -81,7 +84,8 @@ def _starts_instruction(rest: str) -> bool:
     if _starts_with_amount(rest):
         return True
     return word in _WEAK_STEP_VERBS and i + 1 < len(words) and words[i + 1] in (
-        "to", "into", "out", "a", "an", "yourself", "going", "through", "next", "close", "near", "back")
+        "to", "into", "out", "a", "an", "yourself", "going", "through", "next", "close", "near", "back", "me",
+        "us", "sure")
 
 
 _AMOUNT_START: Final = re.compile(

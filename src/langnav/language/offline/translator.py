@@ -15,7 +15,13 @@ log = logging.getLogger(__name__)
 
 TRANSLATOR_NAME: Final = "offline"
 #: Below this confidence a reading has a doubt (unread words, a guessed default): hand it on.
-CONFIDENT: Final = 0.7
+#: (The same bar as ``langnav.language.llm.auto.AUTO_MIN_CONFIDENCE``.)
+CONFIDENT: Final = 0.8
+#: Refusals the offline reading is sure of: they carry a clarification and nothing unread, so
+#: an ``auto`` translator does not pass them (or an injection attempt) on to a model.
+SURE_REFUSALS: Final = frozenset({Problem.NAME, Problem.OUT_OF_SCOPE, Problem.OUT_OF_RANGE})
+#: A reading that runs some steps and leaves a whole instruction out is unsure at best.
+PARTIAL_CONFIDENCE: Final = 0.5
 #: The intent holds at most this many steps (the schema's limit).
 MAX_STEPS: Final = 20
 
@@ -40,7 +46,7 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     text = clean_prompt(prompt)
     if is_unsafe(text):
         log.info("refused an unsafe prompt: %.80s", text)
-        return _clarify(UNSAFE_MESSAGE, confidence=1.0, unread=[text[:200]])
+        return _clarify(UNSAFE_MESSAGE, confidence=1.0, unread=[])
     steps: list[Step] = []
     unread: list[str] = []
     problems: list[tuple[Problem, str, Reading]] = []
@@ -50,8 +56,7 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     for clause in split_steps(text):
         reading = read_clause(clause, previous, known_names, previous_target)
         if reading.problem == Problem.NAME:
-            return _clarify(_name_message(reading.name or clause), confidence=reading.confidence,
-                            unread=[clause])
+            return _clarify(_name_message(reading.name or clause), confidence=reading.confidence, unread=[])
         if reading.problem is not None:
             problems.append((reading.problem, clause, reading))
         confidence = min(confidence, reading.confidence)
@@ -69,9 +74,12 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     if not steps:
         if not problems:
             return _clarify(_unreadable_message(text), confidence=0.2, unread=[text[:200]])
-        problem, clause, reading = problems[0]
+        problem, clause, _ = problems[0]
+        sure = all(p in SURE_REFUSALS for p, _, _ in problems)
         return _clarify(_problem_message(problem, clause), confidence=min(r.confidence for _, _, r in problems),
-                        unread=unread)
+                        unread=[] if sure else unread)
+    if problems:
+        confidence = min(confidence, PARTIAL_CONFIDENCE)  # part of the prompt will not be done
     return Intent(steps=steps, translator=TRANSLATOR_NAME, confidence=round(confidence, 3), unread=unread)
 
 
