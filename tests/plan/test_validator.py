@@ -78,10 +78,13 @@ def test_dicts_that_are_valid_are_parsed(grid: OccupancyGrid) -> None:
     assert checked.commands == (Rotate(direction="right", repeat=3),)
 
 
-def test_stop_then_move_again_is_refused_but_stop_first_is_fine(grid: OccupancyGrid) -> None:
-    with pytest.raises(PlanRejected, match="stops and then moves again"):
-        validate_plan([Rotate(direction="left", repeat=1), Stop(), Rotate(direction="left", repeat=1)], grid, START)
-    validate_plan([Stop(), Rotate(direction="left", repeat=18)], grid, START)
+def test_a_stop_between_motions_is_dropped_and_a_stop_first_kept(grid: OccupancyGrid) -> None:
+    checked = validate_plan([Rotate(direction="left", repeat=1), Stop(), Rotate(direction="left", repeat=1)],
+                            grid, START)
+    assert checked.commands == (Rotate(direction="left", repeat=1), Rotate(direction="left", repeat=1))
+    assert "command 2: a Stop between motions does nothing" in checked.repairs[0]
+    first = validate_plan([Stop(), Rotate(direction="left", repeat=18)], grid, START)
+    assert first.commands[0] == Stop() and first.repairs == ()
 
 
 def test_robot_pose_in_a_wall_cannot_navigate(grid: OccupancyGrid) -> None:

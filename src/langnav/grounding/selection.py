@@ -337,7 +337,7 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
             raise GroundingError(f"I see only {1 + len(rest)} corners here, so I cannot pick {count} of them.")
         return [first, *rest[:count - 1]]
     if ref.kind in (Kind.ROOM, Kind.HALLWAY) and ref.in_current_room and ref.superlative is None \
-            and ref.ordinal is None:
+            and ref.ordinal is None and count == 1:
         here = space_of(analysis, pose.xy)
         if here is None:
             raise GroundingError("I cannot tell which room I am in: I seem to be outside every room.")

@@ -6,8 +6,8 @@ Checks, following the robot's pose through the sequence:
 * every NavigateThroughPoses pose inside the map, on a free cell, at least the robot's radius from
   occupied and unknown cells, and reachable from where the robot is at that moment;
 * every Move's straight path and end point clear by the robot's radius;
-* sequence logic: no motion after a Stop that ends the plan's intent ("stop" must be alone or last),
-  a bounded number of commands.
+* sequence logic: a Stop between motions is dropped (it would do nothing), a Stop first halts what
+  runs; a bounded number of commands.
 
 Safe repairs are made and reported (a pose snapped to the nearest valid cell within 0.5 m);
 anything else raises :class:`PlanRejected` with sentences a user can read.
@@ -84,12 +84,16 @@ def validate_plan(commands: Sequence[Command | dict[str, Any]], grid: OccupancyG
     repairs: list[str] = []
     if len(cmds) > MAX_COMMANDS:
         raise PlanRejected([f"the plan has {len(cmds)} commands; at most {MAX_COMMANDS} are accepted"])
-    stops = [i for i, c in enumerate(cmds) if isinstance(c, Stop)]
-    motion_after_stop = any(isinstance(c, NavigateThroughPoses | Move | Rotate)
-                            for s in stops[:1] for c in cmds[s + 1:])
-    if stops and motion_after_stop and stops[0] != 0:
-        reasons.append("the plan stops and then moves again; say 'stop' alone, or put it first to halt "
-                       "what is running before the new motion")
+    # a Stop first halts what runs; a Stop between motions does nothing (each command finishes first)
+    kept: list[Command] = []
+    for i, c in enumerate(cmds):
+        later_motion = any(isinstance(d, NavigateThroughPoses | Move | Rotate) for d in cmds[i + 1:])
+        if isinstance(c, Stop) and i > 0 and later_motion:
+            repairs.append(f"command {i + 1}: a Stop between motions does nothing (each command finishes "
+                           "before the next starts), so it was left out")
+            continue
+        kept.append(c)
+    cmds = kept
     out: list[Command] = []
     for i, c in enumerate(cmds, 1):
         if isinstance(c, NavigateThroughPoses):
