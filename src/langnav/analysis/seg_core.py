@@ -36,14 +36,14 @@ BoolArray = npt.NDArray[np.bool_]
 IntArray = npt.NDArray[np.int32]
 FloatArray = npt.NDArray[np.float64]
 
-#: A wall stub flanking a doorway runs along the doorway (within about 30 degrees); a bar at an
-#: angle to the gap is furniture (a shelf end, a bench).
-STUB_ALIGNMENT_MIN_COS: Final = 0.85
-#: A thin piece this long (m) is a wall whatever its direction at the jamb (it may turn a
-#: corner there); shorter thin pieces must run along the doorway.
+#: A doorway runs along its wall; an elongated piece that meets the gap at more than about 60
+#: degrees (a shelf end, a bench standing out into the room) is furniture, not a jamb.
+STUB_ACROSS_MAX_COS: Final = 0.5
+#: A wall piece this long (m) flanks a doorway whatever its overall direction.
 WALL_MIN_LENGTH_ANY_DIRECTION_M: Final = 3.0
-#: The direction of a wall stub is measured within this distance of the jamb.
-STUB_AXIS_RADIUS_M: Final = 0.5
+#: A wall stub is at least this many times longer than thick (a cabinet or a box is not); it
+#: then also has a direction.
+STUB_MIN_ELONGATION: Final = 1.8
 #: 3x3 neighbourhood: 8-connectivity for components of cells.
 EIGHT: Final = np.ones((3, 3), dtype=bool)
 
@@ -96,6 +96,17 @@ def clean_floor(cells: npt.NDArray[np.int8], resolution_m: float, params: Analys
     return Floor(floor=floor, free=free, exterior=exterior, clearance_m=clearance)
 
 
+def wall_stub_length(mask: BoolArray, resolution_m: float, params: AnalysisParams) -> float:
+    """The length (m) of this piece of non-floor if it is a wall stub (thin, elongated, long
+    enough), else 0 (furniture)."""
+    thick = 2.0 * float(ndi.distance_transform_edt(np.pad(mask, 1), sampling=resolution_m).max())
+    thick = max(thick, resolution_m)
+    length = float(mask.sum()) * resolution_m**2 / thick
+    stub = (thick <= 2 * params.door_max_depth_m and length >= params.seg_wall_min_length_m
+            and length >= STUB_MIN_ELONGATION * thick)
+    return length if stub else 0.0
+
+
 def _furniture(floor: BoolArray, clearance_m: FloatArray, resolution_m: float,
                params: AnalysisParams) -> BoolArray:
     """Free-standing clutter: small pieces of non-floor apart from the walls (tables with their
@@ -121,9 +132,7 @@ def _furniture(floor: BoolArray, clearance_m: FloatArray, resolution_m: float,
         sl = objs[k - 1]
         if sl is None:
             continue
-        m = (comp[sl] == k) & solid[sl]
-        thick = 2.0 * float(ndi.distance_transform_edt(np.pad(m, 1), sampling=resolution_m).max())
-        if thick <= 2 * params.door_max_depth_m and area[k] / max(thick, resolution_m) >= params.seg_wall_min_length_m:
+        if wall_stub_length((comp[sl] == k) & solid[sl], resolution_m, params) > 0:
             small[k] = False
     return small[comp] & solid
 
@@ -193,49 +202,46 @@ class JambJudge:
         self.comp, _ = ndi.label(self.obstacle | (clearance_m <= self.join_m), structure=EIGHT)
         self.sizes = np.bincount(self.comp.ravel()) * resolution_m**2
         self.objs = ndi.find_objects(self.comp)
-        self._cache: dict[int, tuple[bool, float]] = {}
+        self._cache: dict[int, float] = {}
+        self._axes: dict[int, tuple[float, float]] = {}
 
-    def _thin(self, k: int) -> tuple[bool, float]:
-        """(thin, length m) of the small piece ``k`` of non-floor: wall-like or furniture-like."""
-        if k in self._cache:
-            return self._cache[k]
-        p = self.params
-        out = (False, 0.0)
+    def _stub(self, k: int) -> float:
+        """The length of the small piece ``k`` if it is a wall stub, else 0."""
+        if k not in self._cache:
+            sl = self.objs[k - 1]
+            self._cache[k] = 0.0 if sl is None else wall_stub_length(
+                (self.comp[sl] == k) & self.obstacle[sl], self.res, self.params)
+        return self._cache[k]
+
+    def _axis(self, k: int) -> tuple[float, float]:
+        """Principal direction (drow, dcol) of the small piece ``k``; (0, 0) for a compact one."""
+        if k in self._axes:
+            return self._axes[k]
+        out = (0.0, 0.0)
         sl = self.objs[k - 1]
         if sl is not None:
-            m = self.comp[sl] == k
-            thick = 2.0 * float(ndi.distance_transform_edt(np.pad(m, 1), sampling=self.res).max())
-            length = float(self.sizes[k]) / max(thick, self.res)
-            out = (thick <= 2 * (p.door_max_depth_m + self.join_m), length)
-        self._cache[k] = out
+            rr, cc = np.nonzero(self.comp[sl] == k)
+            if rr.size >= 3:
+                evals, evecs = np.linalg.eigh(np.cov(np.vstack([rr, cc]).astype(float)))
+                if evals[1] > STUB_MIN_ELONGATION**2 * max(evals[0], 1e-9):
+                    out = (float(evecs[0, 1]), float(evecs[1, 1]))
+        self._axes[k] = out
         return out
-
-    def _local_axis(self, k: int, row: int, col: int) -> tuple[float, float]:
-        """Principal direction (drow, dcol) of piece ``k`` near the cell (row, col)."""
-        rad = max(2, math.ceil(STUB_AXIS_RADIUS_M / self.res))
-        _h, _w = self.comp.shape
-        r0, c0 = max(0, row - rad), max(0, col - rad)
-        rr, cc = np.nonzero(self.comp[r0:row + rad + 1, c0:col + rad + 1] == k)
-        if rr.size < 3:
-            return 0.0, 0.0
-        evals, evecs = np.linalg.eigh(np.cov(np.vstack([rr, cc]).astype(float)))
-        if evals[1] <= 1.5 * evals[0]:
-            return 0.0, 0.0  # a blob: no direction
-        ax = evecs[:, 1]
-        return float(ax[0]), float(ax[1])
 
     def structural(self, jamb: tuple[int, int], tangent: tuple[float, float]) -> bool:
         """Is the non-floor at ``jamb`` a wall that a doorway along ``tangent`` can be cut in?"""
         k = int(self.comp[jamb])
         if self.sizes[k] >= self.params.seg_wall_network_min_area_m2:
             return True
-        thin, length = self._thin(k)
-        if not thin or length < self.params.seg_wall_min_length_m:
+        length = self._stub(k)
+        if length <= 0:
             return False
         if length >= WALL_MIN_LENGTH_ANY_DIRECTION_M:
-            return True
-        ar, ac = self._local_axis(k, *jamb)
-        return abs(ar * tangent[0] + ac * tangent[1]) >= STUB_ALIGNMENT_MIN_COS
+            return True  # a long wall may turn a corner at the jamb
+        ar, ac = self._axis(k)
+        if ar == 0.0 and ac == 0.0:
+            return True  # a compact stub: no direction to contradict the doorway
+        return abs(ar * tangent[0] + ac * tangent[1]) >= STUB_ACROSS_MAX_COS
 
     def jambs(self, row: int, col: int, clearance_m: float) -> tuple[tuple[int, int], tuple[int, int]] | None:
         """The two jamb cells of the crossing at (row, col), or None if there is no opposite one."""

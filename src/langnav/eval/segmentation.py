@@ -121,15 +121,15 @@ def door_precision_recall(detected_rc: npt.ArrayLike, blobs: list[npt.NDArray[np
         if det.size == 0:
             break
         d = np.sqrt(((det[:, None, :] - blob[None, :, :].astype(float)) ** 2).sum(axis=2)).min(axis=1)
-        for i in np.flatnonzero(d <= tol_px):
-            pairs.append((float(d[i]), int(i), j))
+        for idx in np.flatnonzero(d <= tol_px).tolist():
+            pairs.append((float(d[idx]), int(idx), j))
     used_d: set[int] = set()
     used_b: set[int] = set()
-    for _, i, j in sorted(pairs):
-        if i in used_d or j in used_b:
+    for _, di, bj in sorted(pairs):
+        if di in used_d or bj in used_b:
             continue
-        used_d.add(i)
-        used_b.add(j)
+        used_d.add(di)
+        used_b.add(bj)
     tp = len(used_d)
     precision = tp / len(det) if len(det) else 0.0
     return PrecisionRecall(precision, tp / len(blobs), len(det), len(blobs))
