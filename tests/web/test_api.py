@@ -194,11 +194,12 @@ def test_websocket_streams_map_elements_and_state(make_client: AppFactory) -> No
         assert hello["status"]["backend"] == "sim"
         seen: dict[str, Any] = {}
         end = time.monotonic() + 10
-        while time.monotonic() < end and not {"map", "state", "elements"} <= seen.keys():
+        while time.monotonic() < end and not {"map", "state", "elements", "scan", "path"} <= seen.keys():
             m = ws.receive_json()
             seen[m["type"]] = m
         assert seen["map"]["width"] == 320 and seen["map"]["height"] == 220
         assert seen["map"]["png"].startswith("iVBOR")  # base64 of the PNG signature
         assert seen["state"]["pose"][:2] == [1.5, 4.95]
-        assert len(seen["state"]["scan"]) > 100
+        assert len(seen["scan"]["points"]) > 100
+        assert seen["path"] == {"type": "path", "path": [], "goals": []}  # not driving
         assert {d["id"] for d in seen["elements"]["doors"]}

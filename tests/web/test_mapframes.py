@@ -9,7 +9,14 @@ from PIL import Image
 
 from langnav.maps.draw import MapBuilder
 from langnav.robot.protocol import LaserScan, Pose2D, RobotState
-from langnav.web.mapframes import PALETTE, grid_digest, map_frame, scan_points, state_frame
+from langnav.web.mapframes import (
+    PALETTE,
+    grid_digest,
+    map_frame,
+    path_frame,
+    scan_points,
+    state_frame,
+)
 
 
 def _grid():  # type: ignore[no-untyped-def]
@@ -46,10 +53,12 @@ def test_scan_points_in_map_frame_skip_no_return() -> None:
     assert scan_points(RobotState(pose=pose, scan=scan)) == [1.0, 3.0, 1.0, 0.0]
 
 
-def test_state_frame_is_small_and_rounded() -> None:
+def test_state_frame_is_small_and_path_frame_decimated() -> None:
     st = RobotState(pose=Pose2D(1.23456, 2.0, 0.5), path=tuple((i * 0.01, 0.0) for i in range(5000)),
                     goals=((3.333333, 4.0),), busy=True)
     f = state_frame(st, "sim", "I'm here.", {"state": "running"}, 0.17)
     assert f["pose"] == [1.235, 2.0, 0.5]
-    assert len(f["path"]) == 400 and f["path"][0] == [0.0, 0.0] and f["path"][-1] == [49.99, 0.0]
-    assert f["goals"] == [[3.33, 4.0]]
+    assert "path" not in f and "scan" not in f
+    p = path_frame(st)
+    assert len(p["path"]) == 400 and p["path"][0] == [0.0, 0.0] and p["path"][-1] == [49.99, 0.0]
+    assert p["goals"] == [[3.33, 4.0]]

@@ -56,5 +56,8 @@ def run(args: argparse.Namespace) -> int:
     else:
         print(f"langnav: open {url}", flush=True)
     app = create_app(settings)
-    uvicorn.run(app, host=settings.host, port=settings.port, log_level="warning", ws_ping_interval=20.0)
+    uvicorn.run(app, host=settings.host, port=settings.port, log_level="warning", ws_ping_interval=20.0,
+                # Frames are small and mostly numbers; compressing each one for every viewer
+                # costs more CPU than the bytes it saves on a local network.
+                ws_per_message_deflate=False)
     return 0

@@ -6,7 +6,7 @@ once, then handed to each event loop that has subscribers with one ``call_soon_t
 the producer never waits for a client.
 
 Each :class:`Subscriber` keeps
-* one *slot* per frame kind (``state``, ``map``, ``elements``): a newer frame replaces an unsent
+* one *slot* per frame kind (``map``, ``elements``, ``path``, ``scan``, ``state``): a newer frame replaces an unsent
   older one, so a slow client skips frames instead of falling behind (``dropped`` counts them);
 * a bounded queue of *events* (chat messages, progress). Events are also in the SQLite store, so
   a client whose queue overflows is told to reload its history instead of the server growing.
@@ -24,7 +24,7 @@ from typing import Any, Final
 log = logging.getLogger(__name__)
 
 #: Frame kinds sent latest-wins, in the order a client needs them (the map before the pose on it).
-FRAME_KINDS: Final = ("map", "elements", "state")
+FRAME_KINDS: Final = ("map", "elements", "path", "scan", "state")
 #: Events queued per client before it must resync from the store (minutes of chat at human speed).
 MAX_QUEUED_EVENTS: Final = 256
 #: A client that has received nothing for this long gets a keep-alive ping.

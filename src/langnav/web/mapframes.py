@@ -77,13 +77,23 @@ def scan_points(state: RobotState) -> list[float]:
 
 def state_frame(state: RobotState, backend: str, where: str, plan: dict[str, Any],
                 radius_m: float) -> dict[str, Any]:
+    """The small frame sent at up to 10 Hz: pose, velocity, connection, plan state."""
     p = state.pose
     return {"type": "state", "t": round(state.time_s, 3), "backend": backend, "connected": state.connected,
             "busy": state.busy, "pose": [round(p.x_m, 3), round(p.y_m, 3), round(p.yaw_rad, 4)],
             "v": round(state.linear_mps, 3), "w": round(state.angular_radps, 3), "radius_m": radius_m,
-            "scan": scan_points(state), "path": _decimate(state.path, MAX_PATH_POINTS) if state.path else [],
-            "goals": [[round(g[0], DECIMALS), round(g[1], DECIMALS)] for g in state.goals],
             "where": where, "plan": plan}
+
+
+def scan_frame(state: RobotState) -> dict[str, Any]:
+    """The lidar's hits (sent when a new scan arrives, 5-10 Hz)."""
+    return {"type": "scan", "points": scan_points(state)}
+
+
+def path_frame(state: RobotState) -> dict[str, Any]:
+    """The planned path and the goals (sent when they change: on a new goal or a replan)."""
+    return {"type": "path", "path": _decimate(state.path, MAX_PATH_POINTS) if state.path else [],
+            "goals": [[round(g[0], DECIMALS), round(g[1], DECIMALS)] for g in state.goals]}
 
 
 def space_labels(analysis: MapAnalysis) -> dict[str, str]:

@@ -26,11 +26,13 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any, Final
 
+import numpy as np
+
 from langnav.analysis.elements import MapAnalysis
 from langnav.errors import LangnavError
 from langnav.language.translator import available as translator_names
 from langnav.language.translator import clean_prompt, get_translator
-from langnav.maps.grid import OccupancyGrid
+from langnav.maps.grid import FREE, OccupancyGrid
 from langnav.pipeline import Planner, PlanResult
 from langnav.plan.commands import (
     Command,
@@ -49,7 +51,15 @@ from langnav.robot.errors import RobotError
 from langnav.robot.protocol import Pose2D, RobotBackend, create_backend
 from langnav.web.broadcast import Broadcaster
 from langnav.web.feedback import FeedbackManager, describe_intent
-from langnav.web.mapframes import elements_frame, grid_digest, map_frame, map_png, state_frame
+from langnav.web.mapframes import (
+    elements_frame,
+    grid_digest,
+    map_frame,
+    map_png,
+    path_frame,
+    scan_frame,
+    state_frame,
+)
 from langnav.web.settings import WebSettings
 from langnav.web.store import ConversationStore, Message
 
@@ -60,6 +70,10 @@ log = logging.getLogger(__name__)
 MAP_CHECK_PERIOD_S: Final = 0.5
 #: Re-analyse a changing map at most this often (an analysis of a floor takes ~0.1-1 s).
 ANALYSIS_MIN_PERIOD_S: Final = 2.0
+#: Re-analyse only when this much of the map changed (m²): a lidar's noise flickers a few dozen
+#: cells at the edges of walls and unknown space all the time (0.05-0.15 m² at 5 cm cells);
+#: a new doorway or room seen while exploring changes square metres.
+ANALYSIS_MIN_CHANGED_M2: Final = 0.5
 #: The robot's radius for drawing when the backend does not say (TurtleBot 4 / Create 3).
 DEFAULT_RADIUS_M: Final = 0.17
 #: Wait this long for a cancelled plan to wind down before starting the next one.
@@ -316,15 +330,29 @@ class RobotSession:
 
     # -- map, analysis, state frames -------------------------------------------------------------------
     def _current_analysis(self) -> MapAnalysis | None:
-        """The analysis of the robot's map as it is now (analysed here if the cached one is stale)."""
+        """An analysis of the robot's map that is good enough to plan on *now*.
+
+        The cached one (kept fresh by the sampler) unless the map has changed materially since,
+        or the robot stands where that analysis has no free floor; then the map is analysed here.
+        Re-analysing on every prompt would cost most of the time a prompt may take."""
         grid = self.robot.get_map()
-        digest = grid_digest(grid)
-        if self._analysis is not None and digest == self._analysis_digest:
-            return self._analysis
+        cached = self._analysis
+        if cached is not None and self._changed_m2(cached, grid) < ANALYSIS_MIN_CHANGED_M2:
+            pose = self.robot.get_robot_pose()
+            if cached.grid.value_at(pose.x_m, pose.y_m) == FREE:
+                return cached
         analysis = self._analyze(grid)
         if analysis is not None:
-            self._set_analysis(analysis, digest)
+            self._set_analysis(analysis, grid_digest(grid))
         return analysis
+
+    @staticmethod
+    def _changed_m2(analysis: MapAnalysis, grid: OccupancyGrid) -> float:
+        """Area of the cells that differ between an analysed grid and ``grid`` (inf if the frame differs)."""
+        old = analysis.grid
+        if old.cells.shape != grid.cells.shape or old.resolution_m != grid.resolution_m:
+            return math.inf
+        return float(np.count_nonzero(old.cells != grid.cells)) * grid.cell_area_m2
 
     def _analyze(self, grid: OccupancyGrid) -> MapAnalysis | None:
         from langnav.analysis.pipeline import analyze
@@ -360,7 +388,9 @@ class RobotSession:
         self._map_digest, self._grid = digest, grid
         self.broadcaster.publish_frame("map", map_frame(grid, digest))
         now = time.monotonic()
-        if not self._analysis_running and (force or now - self._last_analysis_s >= ANALYSIS_MIN_PERIOD_S):
+        cached = self._analysis
+        material = cached is None or self._changed_m2(cached, grid) >= ANALYSIS_MIN_CHANGED_M2
+        if not self._analysis_running and (force or (material and now - self._last_analysis_s >= ANALYSIS_MIN_PERIOD_S)):
             self._analysis_running = True
             self._last_analysis_s = now
             threading.Thread(target=self._analysis_worker, args=(grid, digest), name="langnav-web-analysis",
@@ -369,11 +399,19 @@ class RobotSession:
     def _sample_loop(self) -> None:
         period = 1.0 / self.settings.state_hz
         next_map = 0.0
+        last_scan: Any = None
+        last_path: Any = None
         while not self._halt.wait(period):
             try:
                 st = self.robot.state()
                 self.broadcaster.publish_frame("state", state_frame(
                     st, self.robot.name, self.feedback.where_am_i(st.pose), self.plan_state(), self.radius_m))
+                if st.scan is not last_scan:
+                    last_scan = st.scan
+                    self.broadcaster.publish_frame("scan", scan_frame(st))
+                if (st.path, st.goals) != last_path:
+                    last_path = (st.path, st.goals)
+                    self.broadcaster.publish_frame("path", path_frame(st))
                 self.frames_published += 1
                 now = time.monotonic()
                 if now >= next_map:

@@ -267,6 +267,8 @@
         case "progress": setCommand(m.plan_id, m.index, "running", m.text, m.fraction); break;
         case "resync": loadHistory().catch(() => {}); break;
         case "state": onState(m); break;
+        case "scan": scan = m.points || []; dirty = true; break;
+        case "path": path = m; dirty = true; break;
         case "map": onMap(m); break;
         case "elements": onElements(m); break;
         default: break;
@@ -278,6 +280,7 @@
   const canvas = $("map"), wrap = $("canvas-wrap"), ctx = canvas.getContext("2d");
   const view = { cx: 0, cy: 0, scale: 40 };  // world centre (m) and pixels per metre
   let mapMeta = null, mapImage = null, state = null, elements = null, fitted = false, dirty = true;
+  let scan = [], path = { path: [], goals: [] };
   const LAYERS = [
     ["room", "Rooms", "#3b82f6"], ["hallway", "Hallways", "#10b981"], ["door", "Doors", "#f97316"],
     ["wall", "Walls", "#8b5cf6"], ["corner", "Corners", "#db2777"], ["obstacle", "Obstacles", "#ef4444"],
@@ -413,19 +416,19 @@
     if (!state) return;
     const px = 1 / view.scale;
     worldTransform();
-    if (shown.scan && state.scan && state.scan.length) {
+    if (shown.scan && scan.length) {
       ctx.fillStyle = "rgba(225,29,72,0.75)";
       const s = Math.max(2 * px, 0.03);
-      for (let i = 0; i < state.scan.length; i += 2) ctx.fillRect(state.scan[i] - s / 2, state.scan[i + 1] - s / 2, s, s);
+      for (let i = 0; i < scan.length; i += 2) ctx.fillRect(scan[i] - s / 2, scan[i + 1] - s / 2, s, s);
     }
-    if (shown.path && state.path && state.path.length > 1) {
+    if (shown.path && path.path.length > 1) {
       ctx.strokeStyle = "rgba(37,99,235,0.85)"; ctx.lineWidth = 3 * px; ctx.lineJoin = "round";
       ctx.beginPath();
-      state.path.forEach(([x, y], i) => (i ? ctx.lineTo(x, y) : ctx.moveTo(x, y)));
+      path.path.forEach(([x, y], i) => (i ? ctx.lineTo(x, y) : ctx.moveTo(x, y)));
       ctx.stroke();
     }
-    if (shown.path && state.goals) {
-      state.goals.forEach(([x, y]) => {
+    if (shown.path && path.goals) {
+      path.goals.forEach(([x, y]) => {
         ctx.fillStyle = "#2563eb"; ctx.strokeStyle = "#fff"; ctx.lineWidth = 2 * px;
         ctx.beginPath(); ctx.arc(x, y, 7 * px, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
       });
@@ -436,7 +439,7 @@
     ctx.strokeStyle = "#fff"; ctx.lineWidth = Math.max(2 * px, r * 0.25); ctx.lineCap = "round";
     ctx.beginPath(); ctx.moveTo(x, y); ctx.lineTo(x + Math.cos(yaw) * r * 1.1, y + Math.sin(yaw) * r * 1.1); ctx.stroke();
     screenTransform();
-    if (shown.path && state.goals) state.goals.forEach(([gx, gy], i) => label(gx, gy + 9 / view.scale, `goal ${i + 1}`, "#1d4ed8"));
+    if (shown.path && path.goals) path.goals.forEach(([gx, gy], i) => label(gx, gy + 9 / view.scale, `goal ${i + 1}`, "#1d4ed8"));
   }
 
   function draw() {
