@@ -67,6 +67,7 @@ def test_angles_in_degrees(n: int, unit: str) -> None:
 @given(st.integers(min_value=1, max_value=9), st.sampled_from(["half", "quarter"]))
 def test_and_a_fraction(n: int, frac: str) -> None:
     kind, value, _ = single(f"move {to_words(n)} and a {frac} metres")
+    assert kind == QuantityKind.LENGTH
     assert value == pytest.approx(n + (0.5 if frac == "half" else 0.25))
 
 

@@ -135,7 +135,7 @@ SIDE_PHRASES: Final[dict[str, Side]] = {
     **{f"{p} {d} {w}{s}": side
        for w, side in _SIDE_WORDS.items()
        for p in ("on", "to", "at", "towards", "toward")
-       for d in ("your", "the", "my", "its")
+       for d in ("your", "the", "my")
        for s in ("", " side", " hand side", " of you", " side of you")},
     **{f"{w} of {y}": side for w, side in _SIDE_WORDS.items() for y in _YOU},
     **{f"{w}{s}": side for w, side in _SIDE_WORDS.items() for s in (" side", " hand side")},
@@ -170,6 +170,8 @@ ROOM_YOU_ARE_IN: Final = ("you are in", "you are currently in", "you are standin
 
 #: Words linking an element to its container: "the corner OF the hallway".
 CONTAINER_LINKS: Final = ("of", "in", "inside", "within", "inside of", "belonging to", "on", "at")
+#: Links that also pick the farthest one: "the door at the end of the hallway".
+FAR_END_LINKS: Final = tuple(f"{p} the {w}end of" for p in ("at", "on", "by", "near") for w in ("", "far ", "other "))
 
 #: Determiners and harmless pre-modifiers inside a noun phrase.
 DETERMINERS: Final = frozenset({"the", "a", "an", "that", "this", "your", "any", "some", "our", "my",
@@ -237,6 +239,7 @@ VERB_DETAILS: Final[dict[str, Detail]] = {
                                    "move through", "navigate through", "head through", "walk through",
                                    "exit", "leave", "exit from", "get out of", "go out of", "leave through")},
     **{w: Detail.TO for w in ("reach", "enter", "approach", "visit", "find", "get to", "arrive at",
+                              "swing by", "drop by", "pop by", "come by", "pop over to", "nip to",
                               "return to", "come to", "go into", "park at", "head into")},
     **{w: Detail.ALONG for w in ("follow", "hug", "trace", "track", "skirt", "shadow", "follow along",
                                  "keep to", "stick to", "stay along", "keep along", "stay close to",
@@ -267,7 +270,7 @@ GO_VERBS: Final = (
 )
 
 ROTATE_VERBS: Final = ("turn", "rotate", "spin", "pivot", "swivel", "face", "look", "twist", "yaw",
-                       "turn yourself", "rotate yourself", "orient", "orient yourself", "swing", "veer",
+                       "turn yourself", "rotate yourself", "orient", "orient yourself", "veer",
                        "turn your body", "point", "do", "make", "perform", "execute", "turn on the spot", "u turn", "uturn", "about face", "about turn", "make a u turn",
                        "turn in place", "rotate in place", "spin in place", "turn on spot")
 #: "do / make / perform" only rotate with a turn noun ("do a quarter turn", "make a u-turn").
@@ -406,7 +409,7 @@ FILLER_PATTERNS: Final = (
     r"\bwithout\s+(?:hitting|touching|bumping\s+into|crashing\s+into|colliding\s+with|running\s+into)\s+"
     r"(?:the\s+|any\s+|a\s+)?(?:\w+\s+)?(?:walls?|obstacles?|objects?|things?|boxes?|anything|doors?|doorframes?|furniture)\b",
     r"\bonce\s+(?:you\s+are\s+|you\s+get\s+|you\s+have\s+got\s+|you\s+have\s+)?(?:there|through|done|finished|arrived)\b",
-    r"\bwhen\s+you\s+(?:get|are)\s+there\b", r"\b(?:to|until|till|up\s+to)\s+(?:the|its)\s+(?:very\s+)?end\b(?!\s+of)", r"\bwhen\s+(?:done|finished)\b", r"\bthere\s+you\s+go\b",
+    r"\bwhen\s+you\s+(?:get|are)\s+there\b", r"\bof\s+the\s+map\b", r"\b(?:to|until|till|up\s+to)\s+(?:the|its)\s+(?:very\s+)?end\b(?!\s+of)", r"\bwhen\s+(?:done|finished)\b", r"\bthere\s+you\s+go\b",
     r"\b(?:okay|ok)\s+(?:robot|so)\b", r"\bnice\s+and\s+(?:slow|easy)\b", r"\bat\s+a\s+slow\s+pace\b",
     r"\bover\s+there\b(?=.*\b(?:to|through)\b)", r"\bmy\s+friend\b", r"\bsir\b", r"\bmister\b",
     r"\bwhat\s+i\s+want\s+is\s+(?:for\s+you\s+)?(?:to\s+)?", r"\bdo\s+me\s+a\s+favou?r\s+and\b",

@@ -28,6 +28,12 @@ _CONTRACTIONS: Final = (
     (re.compile(r"\b(what|where|that|it|there|here|who|how)'s\b"), r"\1 is"),
     (re.compile(r"\b(what|where|who|how)'re\b"), r"\1 are"),
 )
+#: Idioms rewritten to the plain words they mean (the meaning is safe: poses stay clear of walls).
+_IDIOMS: Final = (
+    (re.compile(r"\buntil\s+you\s+(?:hit|bump\s+into|run\s+into|meet)\b"), "until you reach"),
+    (re.compile(r"\bout\s+of\s+here\b"), "out of this room"),
+    (re.compile(r"\bleave\s+here\b"), "leave this room"),
+)
 #: Punctuation that carries no meaning inside one instruction (kept: . / - ' " in numbers and units).
 _NOISE: Final = re.compile(r"[^\w\s./'\"°-]|(?<!\d)\.|\.(?!\d)|(?<![\w])-|-(?![\w])|(?<!\d)(?<!pi)/|/(?!\d)")
 
@@ -45,7 +51,10 @@ def normalize(clause: str) -> str:
     text = _NOISE.sub(" ", text)
     text = _HYPHEN.sub(" ", text)
     words = [_repair(w) for w in text.split()]
-    return " ".join(" ".join(words).split())
+    text = " ".join(" ".join(words).split())
+    for pattern, repl in _IDIOMS:
+        text = pattern.sub(repl, text)
+    return text
 
 
 def _repair(word: str) -> str:

@@ -104,8 +104,8 @@ _B: Final = r"(?<![\w.])"  # a number starts at a word boundary, not inside "1.5
 _E: Final = r"(?![\w.]*\w)"
 
 _UNIT_PATTERNS: Final[tuple[tuple[QuantityKind, re.Pattern[str]], ...]] = (
-    # "a metre and a half", "a meter", "an inch"
-    *((kind, re.compile(rf"{_B}(?P<lead>a|an|one)\s+(?:single\s+)?(?P<unit>{unit})"
+    # "a metre and a half", "a meter", "an inch", "another metre"
+    *((kind, re.compile(rf"{_B}(?P<lead>a|an|one|another)\s+(?:single\s+)?(?P<unit>{unit})"
                         rf"(?P<tail>\s+and\s+a\s+(?:half|quarter))?"))
       for kind, unit in ((QuantityKind.LENGTH, _LENGTH_UNIT), (QuantityKind.ANGLE, _ANGLE_UNIT))),
     # "half a meter", "a quarter of a metre", "three quarters of a meter"
@@ -127,7 +127,12 @@ _TURN_PATTERN: Final = re.compile(
     rf"|(?:(?P<num>{NUMBER})\s+|(?:a|an)\s+)?(?P<whole>(?:{'|'.join(WHOLE_TURN_WORDS)}))"
     rf"|(?P<count>{NUMBER}))"
     rf"[\s-]*(?:full\s+|complete\s+|whole\s+)?(?P<noun>{_TURN_NOUN})")
-_BARE_PATTERN: Final = re.compile(rf"{_B}(?P<num>{NUMBER})(?!\s*(?:st|nd|rd|th)\b)(?![\w])")
+#: Words after a number that make it no distance or angle ("5 seconds", "3 times").
+_NOT_UNITS: Final = r"(?:seconds?|secs?|minutes?|mins?|hours?|times|steps?|percent|%|x|people|persons?|doors?)"
+_BARE_PATTERN: Final = re.compile(rf"{_B}(?P<num>{NUMBER})(?!\s*(?:st|nd|rd|th)\b)(?![\w])(?!\s*{_NOT_UNITS}\b)")
+#: "1 m 50", "2 metres 30": metres and centimetres.
+_METRES_CENTIMETRES: Final = re.compile(
+    r"(?<![\w.])(?P<m>\d+)\s*(?:m|meters?|metres?)\s+(?:and\s+)?(?P<cm>\d{1,2})(?!\s*(?:cm|mm|m|degrees?|deg|\.|\d))(?![\w.])")
 
 
 def number_value(text: str) -> float:
@@ -227,6 +232,8 @@ def find_quantities(text: str) -> list[Quantity]:
                    for m in _TURN_PATTERN.finditer(text)]
     candidates += [Quantity(QuantityKind.ANGLE, _pi_degrees(m), m.start(), m.end())
                    for m in _PI_PATTERN.finditer(text)]
+    candidates += [Quantity(QuantityKind.LENGTH, int(m.group("m")) + int(m.group("cm")) / 100, m.start(), m.end())
+                   for m in _METRES_CENTIMETRES.finditer(text)]
     for kind, pattern in _UNIT_PATTERNS:
         for m in pattern.finditer(text):
             q = _unit_quantity(kind, m)

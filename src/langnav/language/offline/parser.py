@@ -66,6 +66,8 @@ MIN_CONFIDENCE: Final = 0.05
 MAX_MOVE_M: Final = 100.0
 #: Largest single turn (the intent schema's bound: ten full turns).
 MAX_TURN_DEG: Final = 3600.0
+#: "turn left" alone (README): used only to multiply "turn left twice".
+DEFAULT_TURN_DEG: Final = 90.0
 
 
 class Problem(StrEnum):
@@ -77,6 +79,7 @@ class Problem(StrEnum):
     UNREADABLE = "unreadable"      # nothing recognised
     NO_ANTECEDENT = "no_antecedent"  # "go through it" with nothing before
     OUT_OF_RANGE = "out_of_range"    # "move forward 200 metres"
+    QUESTION = "question"            # "how far is the door?" (only pose, path and map are answered)
 
 
 @dataclass(frozen=True)
@@ -121,6 +124,9 @@ _LATE_FILLER_RE: Final = _any(lx.LATE_FILLER_PATTERNS)
 _UNSAFE_RE: Final = _any(lx.UNSAFE_PATTERNS)
 _SAFE_AVOIDANCE_RE: Final = _any(lx.SAFE_AVOIDANCE_PATTERNS)
 _OUT_OF_SCOPE_RE: Final = _any(lx.OUT_OF_SCOPE_PATTERNS)
+#: A question the robot cannot answer (the answerable ones were read as queries before).
+_QUESTION_RE: Final = re.compile(r"^(?:(?:hey|ok|okay|so|robot)\s+)*(?:how|what|why|when|which|who|whose|is|are|"
+                                 r"was|were|does|did|do\s+(?:you|i|we)|can\s+i|could\s+i)\b")
 _NEGATION_RE: Final = re.compile(lx.NEGATIONS)
 _QUERY_RES: Final = ((Query.POSE, _any(lx.QUERY_POSE_PATTERNS)), (Query.MAP, _any(lx.QUERY_MAP_PATTERNS)),
                      (Query.PATH, _any(lx.QUERY_PATH_PATTERNS)))
@@ -143,6 +149,7 @@ _POST_SUPERLATIVE_RE: Final = re.compile(r"\s*(?:(?:that|which)\s+(?:is|are)\s+)
 _ROOM_YOU_ARE_IN_RE: Final = re.compile(r"\s*" + lx.phrase_regex(lx.ROOM_YOU_ARE_IN))
 _NUMBER_POST_RE: Final = re.compile(r"\s*(?:number|no|#)\s*(?P<n>\d{1,2}|one|two|three|four|five|six|seven|"
                                     r"eight|nine|ten)(?!\w)")
+_FAR_END_LINK_RE: Final = re.compile(r"\s*" + lx.phrase_regex(lx.FAR_END_LINKS) + r"\s*")
 _CONTAINER_LINK_RE: Final = re.compile(r"\s*" + lx.phrase_regex(lx.CONTAINER_LINKS) + r"\s*$")
 _CURRENT_ROOM_POST_RE: Final = re.compile(
     r"\s*(?:(?:of|in|inside|within|inside\s+of)\s+)?" + lx.phrase_regex(lx.CURRENT_ROOM_PHRASES, "cur"))
@@ -419,8 +426,11 @@ def _resolve_containers(text: str, phrases: list[_Phrase]) -> list[_Phrase]:
         if out and p.ref.kind in lx.CONTAINER_KINDS and not p.pronoun:
             host = out[-1]
             link = text[host.end:p.start]
-            if host.ref.kind not in lx.CONTAINER_KINDS and _CONTAINER_LINK_RE.fullmatch(link):
+            far_end = _FAR_END_LINK_RE.fullmatch(link) is not None
+            if host.ref.kind not in lx.CONTAINER_KINDS and (far_end or _CONTAINER_LINK_RE.fullmatch(link)):
                 host.ref = _contain(host.ref, p)
+                if far_end and host.ref.superlative is None:
+                    host.ref = host.ref.model_copy(update={"superlative": Superlative.FARTHEST})
                 host.lost.extend(_lost_properties(p))
                 host.end = p.end
                 continue
@@ -546,6 +556,8 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
         return query
     if _is_negated(norm):
         return Reading(unread=(text,), confidence=0.3, problem=Problem.NEGATED)
+    if _QUESTION_RE.match(norm):
+        return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.QUESTION)
     if _OUT_OF_SCOPE_RE.search(norm) and not _EXPLORE_RE.search(norm):
         return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.OUT_OF_SCOPE)
     c.s.take_all(_FILLER_RE)
@@ -855,7 +867,36 @@ def _rotate_steps(c: _Clause, targets: list[_Phrase], vm: re.Match[str] | None) 
     return steps
 
 
+_REPEAT_RE: Final = re.compile(r"\b(?:(?P<word>once|twice|thrice)|(?P<n>\d+|one|two|three|four|five)\s+times)\b")
+_REPEAT_WORDS: Final = {"once": 1, "twice": 2, "thrice": 3, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5}
+
+
+def _repeat_count(c: _Clause) -> int:
+    """'twice', 'three times': how many times the move or turn is done (1 when not said)."""
+    m = c.s.find(_REPEAT_RE)
+    if m is None:
+        return 1
+    c.s.use(m.start(), m.end())
+    word = m.group("word") or m.group("n")
+    return int(word) if word.isdigit() else _REPEAT_WORDS[word]
+
+
 def _rotation(c: _Clause, vm: re.Match[str] | None) -> Step:
+    step = _single_rotation(c, vm)
+    times = _repeat_count(c)
+    if times == 1:
+        return step
+    angle = step.angle_deg if step.angle_deg is not None else (
+        DEFAULT_TURN_DEG if step.amount == Amount.DEFAULT else None)
+    if angle is None:
+        return step  # "a little" twice stays a little
+    total = min(angle * times, MAX_TURN_DEG)
+    # "turn around twice" is a full turn: either way will do, left is the convention
+    direction = Direction.LEFT if step.direction == Direction.AROUND else step.direction
+    return step.model_copy(update={"angle_deg": total, "amount": None, "direction": direction})
+
+
+def _single_rotation(c: _Clause, vm: re.Match[str] | None) -> Step:
     direction: Direction | None = None
     if vm is not None and " ".join(vm.group(0).split()) in _AROUND_VERBS:
         direction = Direction.AROUND
@@ -929,6 +970,8 @@ def _move_steps(c: _Clause, verb: _Verb, vm: re.Match[str] | None) -> list[Step]
         elif q.kind == QuantityKind.BARE and not lengths:
             distance = (distance or 0.0) + q.value
             c.doubt(UNITLESS_NUMBER_FACTOR)
+        else:
+            c.lost.append(c.s.text[q.start:q.end])
     if distance is None and direction is None and not little:
         return []  # "go to the kitchen": no element, no direction, no number -> a name or nothing
     if distance is None:
@@ -943,6 +986,12 @@ def _move_steps(c: _Clause, verb: _Verb, vm: re.Match[str] | None) -> list[Step]
         direction = Direction.FORWARD
         if distance is None and amount == Amount.DEFAULT:
             c.doubt(GUESSED_DIRECTION_FACTOR)
+    if distance is not None and distance > MAX_MOVE_M:
+        c.out_of_range = True
+        return []
+    times = _repeat_count(c)
+    if distance is not None and times > 1:
+        distance *= times
     if distance is not None and distance > MAX_MOVE_M:
         c.out_of_range = True
         return []

@@ -22,6 +22,8 @@ _CONNECTIVE_SPLIT: Final = re.compile(
     r"and\s+once\s+there|and\s+when\s+there|and\s+from\s+there)\b",
     re.IGNORECASE)
 _DECIMAL_COMMA: Final = re.compile(r"(?<=\d),(?=\d{1,2}(?!\d))")
+_LEAD_IN: Final = re.compile(r"^\s*(?:please\s+|now\s+|ok(?:ay)?\s+)*(?:go\s+ahead|go\s+on|come\s+on|try|"
+                             r"be\s+(?:a\s+dear|so\s+kind)|do\s+me\s+a\s+favou?r)\s*$", re.IGNORECASE)
 _AND: Final = re.compile(r"\s+(?:and|&|plus|\+)\s+", re.IGNORECASE)
 #: Words that may stand between "and" and the verb of a new instruction.
 _LEAD_FILLER: Final = frozenset({"please", "also", "then", "now", "just", "immediately", "kindly",
@@ -61,6 +63,8 @@ def _split_on_and(part: str) -> list[str]:
     out: list[str] = []
     start = 0
     for m in _AND.finditer(part):
+        if _LEAD_IN.search(part[start:m.start()]):
+            continue  # "go ahead and turn right" is one instruction
         if _starts_instruction(part[m.end():]):
             out.append(part[start:m.start()])
             start = m.end()

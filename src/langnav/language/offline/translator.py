@@ -19,7 +19,7 @@ TRANSLATOR_NAME: Final = "offline"
 CONFIDENT: Final = 0.8
 #: Refusals the offline reading is sure of: they carry a clarification and nothing unread, so
 #: an ``auto`` translator does not pass them (or an injection attempt) on to a model.
-SURE_REFUSALS: Final = frozenset({Problem.NAME, Problem.OUT_OF_SCOPE, Problem.OUT_OF_RANGE})
+SURE_REFUSALS: Final = frozenset({Problem.NAME, Problem.OUT_OF_SCOPE, Problem.OUT_OF_RANGE, Problem.QUESTION})
 #: A reading that runs some steps and leaves a whole instruction out is unsure at best.
 PARTIAL_CONFIDENCE: Final = 0.5
 #: The intent holds at most this many steps (the schema's limit).
@@ -124,6 +124,9 @@ def _problem_message(problem: Problem, clause: str) -> str:
     if problem == Problem.NEGATED:
         return (f"I read \"{quoted}\" as something not to do, so I will not move. Tell me what to do "
                 "instead, e.g. 'go to the door on your right'.")
+    if problem == Problem.QUESTION:
+        return (f"I can't answer \"{quoted}\": I can tell you where I am, the path I am following, or "
+                "show the map. Ask e.g. 'where are you?' or 'show me the map'.")
     if problem == Problem.OUT_OF_RANGE:
         return (f"\"{quoted}\" asks for more than one move or turn may do (at most 100 m or ten full "
                 "turns). Name a place to go to instead, e.g. 'go to the farthest door'.")
