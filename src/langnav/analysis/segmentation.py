@@ -118,11 +118,10 @@ def _kind_and_size(mask: npt.NDArray[np.bool_], area_m2: float, peak_m: float, r
         return w <= params.hallway_max_width_m and area_m2 / w >= params.hallway_min_elongation * w
 
     if hallway(width):
-        # Furniture standing in a room narrows its clearance: measure again with it filled in
-        # (only needed here, as filling can only widen the space).
+        # Furniture standing in a room and unscanned parts of it narrow its clearance: measure
+        # again on the whole space with holes filled (only needed here: it can only widen).
         filled = ndi.binary_fill_holes(np.pad(mask, 1))
-        if int(filled.sum()) > int(mask.sum()):
-            width = max(width, 2.0 * float(ndi.distance_transform_edt(filled, sampling=res).max()) - res)
+        width = max(width, 2.0 * float(ndi.distance_transform_edt(filled, sampling=res).max()) - res)
     return (ElementKind.HALLWAY if hallway(width) else ElementKind.ROOM), area_m2 / width, width
 
 
