@@ -502,7 +502,7 @@ def _as_detail(value: object) -> Detail:
     return value
 
 
-def _fit_detail(detail: Detail | None, kind: Element, verb: str | None) -> Detail:
+def _fit_detail(detail: Detail | None, kind: Element) -> Detail:
     """Make the detail fit the element (see the module docstring)."""
     d = detail or Detail.TO
     if d == Detail.TO and kind == Element.UNEXPLORED_AREA:
@@ -520,8 +520,6 @@ def _fit_detail(detail: Detail | None, kind: Element, verb: str | None) -> Detai
     if d == Detail.MIDDLE and kind not in (Element.ROOM, Element.HALLWAY, Element.NARROW_PASSAGE,
                                            Element.UNEXPLORED_AREA):
         return Detail.TO
-    if d == Detail.BETWEEN:
-        return d
     return d
 
 
@@ -741,7 +739,7 @@ def _ref_step(c: _Clause, p: _Phrase, movement: Movement = Movement.NAVIGATE,
             and c.previous.movement == Movement.NAVIGATE and c.elliptical:
         detail = c.previous.detail  # "go through the first door, then the second one"
     kind = p.ref.kind
-    fitted = _fit_detail(detail, kind, p.detail_from_verb)
+    fitted = _fit_detail(detail, kind)
     target = p.ref
     leaving = p.detail_from_verb in _LEAVING_VERBS or (
         p.detail_from_verb is None and re.search(r"\bout\s+of\b", c.s.text) is not None)
