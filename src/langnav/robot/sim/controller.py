@@ -17,8 +17,8 @@ MAX_LINEAR_MPS: Final = 0.3
 MAX_ANGULAR_RADPS: Final = 1.0
 MAX_LINEAR_ACCEL_MPS2: Final = 0.5
 MAX_ANGULAR_ACCEL_RADPS2: Final = 2.0
-#: Goal tolerance (Nav2's SimpleGoalChecker xy_goal_tolerance is 0.25 m).
-XY_GOAL_TOLERANCE_M: Final = 0.25
+#: Goal tolerance: Nav2's SimpleGoalChecker default is 0.25 m; 0.15 m keeps a goal in a doorway in the doorway.
+XY_GOAL_TOLERANCE_M: Final = 0.15
 #: Yaw tolerance when the goal gives a heading (SimpleGoalChecker's 0.25 rad).
 YAW_GOAL_TOLERANCE_RAD: Final = 0.25
 #: Pure pursuit lookahead: speed x time, clamped (RPP's lookahead_time 1.5 s, 0.3..0.9 m).

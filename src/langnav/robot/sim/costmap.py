@@ -31,7 +31,7 @@ DEFAULT_INFLATION_RADIUS_M: Final = 0.55
 DEFAULT_COST_SCALING: Final = 3.0
 #: Extra margin on the inscribed radius: distances are measured between cell centres, so a cell's
 #: own half-width (and a smoothed path's drift) can hide about this much of the true gap.
-CELL_MARGIN_CELLS: Final = 1.5
+CELL_MARGIN_CELLS: Final = 1.0
 
 UInt8Array = npt.NDArray[np.uint8]
 
