@@ -80,3 +80,14 @@ def test_quiet_stream_times_out_empty() -> None:
         return await sub.next_batch(timeout_s=0.05)
 
     assert _run(main()) == []
+
+
+def test_closed_subscriber_wakes_and_returns_nothing() -> None:
+    async def main() -> list[str]:
+        sub = Broadcaster().subscribe()
+        waiter = asyncio.create_task(sub.next_batch(timeout_s=10.0))
+        await asyncio.sleep(0.01)
+        sub.close()
+        return await asyncio.wait_for(waiter, 1.0)
+
+    assert _run(main()) == []

@@ -46,6 +46,7 @@ from langnav.errors import LangnavError
 from langnav.language.errors import TranslationError
 from langnav.plan.errors import PlanRejected
 from langnav.robot.errors import RobotError
+from langnav.web.broadcast import Subscriber
 from langnav.web.session import RobotSession, SessionBusy
 from langnav.web.settings import WebSettings
 from langnav.web.store import MAX_HISTORY_ROWS
@@ -318,15 +319,12 @@ def create_app(settings: WebSettings, session_factory: Callable[[WebSettings], R
         sub = session.broadcaster.subscribe()
         try:
             await ws.send_json({"type": "hello", "status": session.status()})
-            receiver = asyncio.create_task(_drain(ws))
+            receiver = asyncio.create_task(_drain(ws, sub))
             try:
-                while True:
-                    getter = asyncio.ensure_future(sub.next_batch())
-                    done, _ = await asyncio.wait({getter, receiver}, return_when=asyncio.FIRST_COMPLETED)
-                    if receiver in done:
-                        getter.cancel()
+                while not sub.closed:
+                    batch = await sub.next_batch()
+                    if sub.closed:
                         break
-                    batch = getter.result()
                     if not batch:
                         await ws.send_text('{"type":"ping"}')
                     for text in batch:
@@ -341,8 +339,11 @@ def create_app(settings: WebSettings, session_factory: Callable[[WebSettings], R
     return app
 
 
-async def _drain(ws: WebSocket) -> None:
+async def _drain(ws: WebSocket, sub: Subscriber) -> None:
     """Read (and ignore) what the client sends, so a closed socket is noticed at once."""
-    with contextlib.suppress(WebSocketDisconnect, RuntimeError):
-        while True:
-            await ws.receive_text()
+    try:
+        with contextlib.suppress(WebSocketDisconnect, RuntimeError):
+            while True:
+                await ws.receive_text()
+    finally:
+        sub.close()

@@ -62,8 +62,15 @@ class Subscriber:
         self._events.append(text)
         self._wake.set()
 
+    def close(self) -> None:
+        """The client has gone: wake the sender so it can end (call on the owning loop)."""
+        self.closed = True
+        self._wake.set()
+
     async def next_batch(self, timeout_s: float = KEEPALIVE_S) -> list[str]:
-        """Everything pending, events first then frames; [] after ``timeout_s`` of quiet."""
+        """Everything pending, events first then frames; [] after ``timeout_s`` of quiet or once closed."""
+        if self.closed:
+            return []
         if not (self._slots or self._events or self.overflowed):
             try:
                 await asyncio.wait_for(self._wake.wait(), timeout_s)
