@@ -217,6 +217,10 @@ class Explorer:
                 if result is not None:
                     if result.status is TaskStatus.SUCCEEDED:
                         self.goals_reached += 1
+                        if self._still_frontier(self.robot.get_map(), goal):
+                            # reached, yet nothing more can be seen from there (an opening to the
+                            # unmapped outside, a lidar shadow): do not come back
+                            self.blacklist.append(goal)
                     elif result.status is TaskStatus.FAILED:
                         log.info("frontier goal (%.2f, %.2f) failed: %s", *goal, result.message)
                         self.blacklist.append(goal)

@@ -88,6 +88,9 @@ PLAN_RETRY_S: Final = 1.0
 PROGRESS_MIN_M: Final = 0.25
 #: ... within this long, or the goal fails.
 PROGRESS_TIMEOUT_S: Final = 20.0
+#: A robot that an obstacle keeps from getting nearer has reached its goal within this distance
+#: (Nav2's default xy_goal_tolerance).
+NEAR_GOAL_M: Final = 0.25
 #: Stopped this long by an obstacle in the way (on the robot's map): replan.
 BLOCKED_REPLAN_S: Final = 1.0
 #: Look this far along the path for new obstacles after each scan.
@@ -332,6 +335,8 @@ class _NavTask(_Task):
         if math.hypot(pose.x_m - self.anchor.x_m, pose.y_m - self.anchor.y_m) >= PROGRESS_MIN_M:
             self.anchor, self.anchor_s = pose, sim.time_s
         elif sim.time_s - self.anchor_s > PROGRESS_TIMEOUT_S:
+            if last and math.hypot(gx - pose.x_m, gy - pose.y_m) < NEAR_GOAL_M:
+                return self._succeed(sim)
             self.finish(sim, TaskStatus.FAILED,
                         f"no progress: the robot moved less than {PROGRESS_MIN_M} m in {PROGRESS_TIMEOUT_S:.0f} s")
             return 0.0, 0.0
@@ -354,6 +359,8 @@ class _NavTask(_Task):
             cmd = pure_pursuit(pose.as_tuple(), self.path_xy, self.path_i, sim.linear_mps, lim,
                                max_lookahead_m=TIGHT_LOOKAHEAD_M)
             if sim.motion_blocked(pose, cmd.linear_mps, cmd.angular_radps, dt):
+                if last and math.hypot(gx - pose.x_m, gy - pose.y_m) < NEAR_GOAL_M:
+                    return self._succeed(sim)  # as near as the obstacles let it: Nav2's tolerance
                 self.blocked_steps += 1
                 if self.blocked_steps * dt >= BLOCKED_REPLAN_S:
                     self.need_plan = True
