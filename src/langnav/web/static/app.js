@@ -404,8 +404,16 @@
     }
     screenTransform();
     const lbl = (on, items, pt, c) => { if (on) for (const e of items || []) label(...pt(e), e.label || nice(e.id), c); };
-    lbl(shown.room, (elements.rooms || []).filter((r) => r.kind === "room"), (r) => r.centroid, "#1d4ed8");
-    lbl(shown.hallway, (elements.rooms || []).filter((r) => r.kind === "hallway"), (r) => r.centroid, "#047857");
+    // Spaces get large, quiet names underneath; the smaller elements' tags go on top.
+    const spaceName = (r, c) => {
+      const [sx, sy] = toScreen(r.centroid[0], r.centroid[1]);
+      ctx.font = "700 14px system-ui, sans-serif"; ctx.textAlign = "center"; ctx.fillStyle = c;
+      ctx.fillText(r.label || nice(r.id), sx, sy + 5);
+    };
+    for (const r of elements.rooms || []) {
+      if (r.kind === "room" && shown.room) spaceName(r, "rgba(29,78,216,0.55)");
+      if (r.kind === "hallway" && shown.hallway) spaceName(r, "rgba(4,120,87,0.6)");
+    }
     lbl(shown.door, elements.doors, (d) => d.center, "#c2410c");
     lbl(shown.obstacle, elements.obstacles, (o) => [o.centroid[0], o.centroid[1] - o.extent_m[1] / 2 - 0.06 - 16 / view.scale], "#b91c1c");
     lbl(shown.narrow_passage, elements.narrow_passages, (p) => p.center, "#0f766e");
