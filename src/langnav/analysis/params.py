@@ -51,6 +51,9 @@ class AnalysisParams:
     seg_island_max_area_m2: float = 2.0
     #: Segmentation: keep two spaces apart only where both jambs of the opening are walls.
     seg_jamb_test: bool = True
+    #: Segmentation: two hallway-narrow spaces stay one corridor when their clearance peaks are
+    #: below this multiple of the opening's (a corridor narrowed by a cabinet, not a door).
+    seg_hallway_saddle_ratio: float = 1.0
     #: Segmentation: clearance (m) below which a free cell cannot start a space (about a robot radius).
     seg_min_peak_m: float = 0.15
     #: Straight wall segments shorter than this are not reported.

@@ -299,6 +299,7 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
     width = labels.shape[1]
     # A doorway's saddle clearance is about half its width (cell centres: + half a cell).
     door_clear_max = (params.door_max_width_m + resolution_m) / 2
+    hallway_peak_max = params.hallway_max_width_m / 2
     uf = _UnionFind(n)
     peak_l = peak.tolist()
     area_l = area.tolist()
@@ -309,8 +310,12 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
         if ra == rb:
             continue
         low = min(peak_l[ra], peak_l[rb])
+        # Two narrow spaces meeting through an opening nearly as wide as they are: one corridor
+        # narrowed by clutter, not two spaces and a door.
+        corridor = max(peak_l[ra], peak_l[rb]) <= hallway_peak_max and \
+            low < s * params.seg_hallway_saddle_ratio
         if s > door_clear_max or low - s < params.seg_persistence_m or \
-                low < s * params.seg_peak_saddle_ratio:
+                low < s * params.seg_peak_saddle_ratio or corridor:
             uf.parent[rb] = ra
             peak_l[ra] = max(peak_l[ra], peak_l[rb])
             area_l[ra] += area_l[rb]

@@ -64,6 +64,8 @@ def segment_spaces(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS)
     judge = JambJudge(fl.floor, fl.clearance_m, res, params) if params.seg_jamb_test else None
     labels = merge_basins(raw_labels, fl.clearance_m, res, params, judge)
     labels, exterior = _attach_enclosed_unknown(labels, fl, grid)
+    labels = _fill_enclosed(labels)
+    exterior &= labels == 0
     raw_doors = doors_between(labels, fl.clearance_m, res, params)
     raw_doors += openings_to_unknown(labels, fl.floor, exterior, grid.cells == OCCUPIED,
                                      fl.clearance_m, res, params)
@@ -105,6 +107,20 @@ def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor,
         out[sel] = best_room[lab[sel]]
         remaining &= ~sel
     return out.astype(np.int32), remaining
+
+
+def _fill_enclosed(labels: npt.NDArray[np.int32]) -> npt.NDArray[np.int32]:
+    """Give each space the unlabelled cells it encloses (clutter, unscanned spots): they are part
+    of its floor area, as a person sees the room."""
+    out = labels.copy()
+    for k, sl in enumerate(ndi.find_objects(labels), start=1):
+        if sl is None:
+            continue
+        sub = labels[sl]
+        inside = ndi.binary_fill_holes(sub == k) & (sub == 0)
+        if inside.any():
+            out[sl][inside] = k
+    return out
 
 
 def _kind_and_size(mask: npt.NDArray[np.bool_], area_m2: float, peak_m: float, res: float,
