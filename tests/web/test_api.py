@@ -203,3 +203,33 @@ def test_websocket_streams_map_elements_and_state(make_client: AppFactory) -> No
         assert len(seen["scan"]["points"]) > 100
         assert seen["path"] == {"type": "path", "path": [], "goals": []}  # not driving
         assert {d["id"] for d in seen["elements"]["doors"]}
+
+
+def test_pause_and_resume(make_client: AppFactory) -> None:
+    with make_client() as client:
+        _prompt(client, "go to the farthest door")
+        time.sleep(1.0)
+        r = client.post("/api/pause")
+        assert r.json()["ok"] is True
+        time.sleep(0.5)
+        st = client.get("/api/status").json()
+        assert st["plan"]["state"] == "paused"
+        time.sleep(0.5)
+        assert client.get("/api/status").json()["pose"] == st["pose"]  # the robot holds still
+        r = client.post("/api/resume", json={})
+        assert r.json()["ok"] is True
+        time.sleep(1.0)
+        moving = client.get("/api/status").json()
+        assert moving["plan"]["state"] == "running"
+        assert moving["pose"] != st["pose"]
+        client.post("/api/stop")
+
+
+def test_translator_choice(make_client: AppFactory) -> None:
+    with make_client() as client:
+        bad = client.post("/api/translator", json={"name": "psychic"})
+        assert bad.status_code == 400
+        assert "choose one of" in bad.json()["error"]["message"] and "offline" in bad.json()["error"]["message"]
+        ok = client.post("/api/translator", json={"name": "offline"})
+        assert ok.json() == {"ok": True, "translator": "offline"}
+        assert client.get("/api/status").json()["translator"] == "offline"

@@ -41,3 +41,19 @@ def test_rate_limiter_memory_is_bounded() -> None:
     for i in range(50):
         rl.check(f"c{i}", now=0.0)
     assert len(rl._buckets) == 5
+
+
+def test_serve_makes_a_token_only_off_loopback(monkeypatch: pytest.MonkeyPatch) -> None:
+    from langnav.cli import build_parser
+    from langnav.cli.serve import settings_from_args
+
+    monkeypatch.delenv("LANGNAV_TOKEN", raising=False)
+    local = settings_from_args(build_parser().parse_args(["serve"]))
+    assert (local.host, local.port, local.token, local.translator, local.backend) == (
+        "127.0.0.1", 8000, None, "offline", "sim")
+    shared = settings_from_args(build_parser().parse_args(
+        ["serve", "--host", "0.0.0.0", "--port", "8080", "--known-map", "--pose", "1,2,90"]))
+    assert shared.requires_token and shared.token is not None and len(shared.token) >= 32
+    assert (shared.known_map, shared.start_pose) == (True, (1.0, 2.0, 90.0))
+    again = settings_from_args(build_parser().parse_args(["serve", "--host", "0.0.0.0"]))
+    assert again.token != shared.token  # made fresh at each start

@@ -37,17 +37,22 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--db", type=Path, default=Path("langnav.db"), help="SQLite file of the conversation")
 
 
-def run(args: argparse.Namespace) -> int:
-    import uvicorn
-
-    from langnav.web.app import create_app
-
+def settings_from_args(args: argparse.Namespace) -> WebSettings:
+    """The options (over LANGNAV_* variables); a token is made when the bind is not loopback."""
     settings = WebSettings.from_env(world=args.world, backend=args.backend, translator=args.translator,
                                     host=args.host, port=args.port, known_map=args.known_map or None,
                                     start_pose=args.pose, db_path=args.db)
     if settings.requires_token and not settings.token:
         settings = settings.model_copy(update={"token": make_token()})
-    settings = settings.checked()
+    return settings.checked()
+
+
+def run(args: argparse.Namespace) -> int:
+    import uvicorn
+
+    from langnav.web.app import create_app
+
+    settings = settings_from_args(args)
     shown_host = f"[{settings.host}]" if ":" in settings.host else settings.host
     url = f"http://{shown_host}:{settings.port}/"
     if settings.requires_token:
