@@ -145,7 +145,14 @@ class Explorer:
         self.goals_reached = 0
         self.distance_m = 0.0
         self._t0 = time.monotonic()
-        self._clock = clock or (lambda: float(self.robot.state().time_s))
+        self._clock = clock or self._default_clock
+        self._robot_t0 = float(robot.state().time_s)
+
+    def _default_clock(self) -> float:
+        """Seconds since the explorer was made: the robot's clock (the simulator's, which may run
+        faster than real time) or the wall clock, whichever has gone further (a backend whose
+        state carries no time still gets its budget enforced)."""
+        return max(float(self.robot.state().time_s) - self._robot_t0, time.monotonic() - self._t0)
 
     def cancel(self) -> None:
         self._cancel.set()
