@@ -233,3 +233,12 @@ def test_translator_choice(make_client: AppFactory) -> None:
         ok = client.post("/api/translator", json={"name": "offline"})
         assert ok.json() == {"ok": True, "translator": "offline"}
         assert client.get("/api/status").json()["translator"] == "offline"
+
+
+def test_user_text_is_escaped_on_the_wire(make_client: AppFactory) -> None:
+    with make_client() as client:
+        r = _prompt(client, "<img src=x onerror=alert(1)> where are you?")
+        assert "<img" not in r.text
+        assert "\\u003cimg src=x onerror=alert(1)\\u003e" in r.text
+        assert r.json()["messages"][0]["text"] == "<img src=x onerror=alert(1)> where are you?"
+        assert "<img" not in client.get("/api/history").text

@@ -46,7 +46,7 @@ from langnav.errors import LangnavError
 from langnav.language.errors import TranslationError
 from langnav.plan.errors import PlanRejected
 from langnav.robot.errors import RobotError
-from langnav.web.broadcast import Subscriber
+from langnav.web.broadcast import Subscriber, encode
 from langnav.web.session import RobotSession, SessionBusy
 from langnav.web.settings import WebSettings
 from langnav.web.store import MAX_HISTORY_ROWS
@@ -59,10 +59,19 @@ MAX_BODY_BYTES: Final = 16 * 1024
 #: Rate-limit buckets remembered at once; the least recently seen clients are forgotten first.
 MAX_RATE_CLIENTS: Final = 10_000
 TOKEN_HEADER: Final = "x-langnav-token"
+#: Live viewers at once: each costs a few kB/s and a little CPU; 200 is far beyond a lab's needs.
+MAX_VIEWERS: Final = 200
 #: Content Security Policy: only our own files; no inline script, no eval, no framing.
 CSP: Final = ("default-src 'self'; script-src 'self'; style-src 'self'; img-src 'self' data: blob:; "
               "connect-src 'self'; font-src 'self'; object-src 'none'; base-uri 'none'; "
               "form-action 'self'; frame-ancestors 'none'")
+
+
+class SafeJSONResponse(JSONResponse):
+    """JSON with ``<``, ``>``, ``&`` escaped (see :func:`langnav.web.broadcast.encode`)."""
+
+    def render(self, content: Any) -> bytes:
+        return encode(content).encode("utf-8")
 
 
 # -- request bodies ------------------------------------------------------------------------------
@@ -132,7 +141,7 @@ def error_response(request: Request, status: int, title: str, message: str,
     payload: dict[str, Any] = {"error": {"status": status, "title": title, "message": message}}
     if reasons:
         payload["error"]["reasons"] = reasons
-    return JSONResponse(payload, status_code=status, headers=headers)
+    return SafeJSONResponse(payload, status_code=status, headers=headers)
 
 
 _TITLES: Final = {400: "Bad request", 401: "Token required", 403: "Forbidden", 404: "Not found",
@@ -203,7 +212,7 @@ def create_app(settings: WebSettings, session_factory: Callable[[WebSettings], R
             await asyncio.to_thread(session.close)
 
     app = FastAPI(title="langnav", version="0.1.0", lifespan=lifespan, docs_url=None, redoc_url=None,
-                  openapi_url="/api/openapi.json")
+                  openapi_url="/api/openapi.json", default_response_class=SafeJSONResponse)
     app.state.settings = settings
     limiter = RateLimiter(settings.rate_burst, settings.rate_refill_s)
     app.state.limiter = limiter
@@ -315,10 +324,13 @@ def create_app(settings: WebSettings, session_factory: Callable[[WebSettings], R
         if origin and urlsplit(origin).netloc != ws.headers.get("host"):
             await ws.close(code=1008, reason="other origins may not watch this robot")
             return
+        if session.broadcaster.subscriber_count >= MAX_VIEWERS:
+            await ws.close(code=1013, reason=f"too many viewers (at most {MAX_VIEWERS}); try again later")
+            return
         await ws.accept()
         sub = session.broadcaster.subscribe()
         try:
-            await ws.send_json({"type": "hello", "status": session.status()})
+            await ws.send_text(encode({"type": "hello", "status": session.status()}))
             receiver = asyncio.create_task(_drain(ws, sub))
             try:
                 while not sub.closed:

@@ -31,8 +31,14 @@ MAX_QUEUED_EVENTS: Final = 256
 KEEPALIVE_S: Final = 15.0
 
 
-def encode(message: dict[str, Any]) -> str:
-    return json.dumps(message, separators=(",", ":"), ensure_ascii=False, allow_nan=False)
+#: ``<``, ``>`` and ``&`` are sent as JSON escapes: whatever text a user or a model wrote, the
+#: bytes on the wire can never be read as HTML, even by a careless consumer.
+_HTML_SAFE: Final = str.maketrans({"<": "\\u003c", ">": "\\u003e", "&": "\\u0026"})
+
+
+def encode(message: Any) -> str:
+    """Compact, HTML-safe JSON (``JSON.parse`` gives back the original text)."""
+    return json.dumps(message, separators=(",", ":"), ensure_ascii=False, allow_nan=False).translate(_HTML_SAFE)
 
 
 class Subscriber:
