@@ -172,3 +172,15 @@ def test_pure_pursuit_turns_in_place_for_a_carrot_behind_and_drives_for_one_ahea
     assert behind.linear_mps == 0.0 and behind.angular_radps != 0.0
     left = pure_pursuit((0.0, -0.3, 0.0), path, 0, 0.2, Limits())
     assert left.angular_radps > 0  # the path is to the robot's left
+
+
+def test_world_unknown_specks_are_floor_and_unknown_regions_are_solid() -> None:
+    b = MapBuilder(6.0, 5.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 4.0, 3.0)
+    b.unknown(1.0, 1.0, 1.1, 1.1)   # a 0.01 m2 speck: unobserved floor
+    b.unknown(2.5, 1.0, 3.5, 2.0)   # a 1 m2 unknown region: matter, as far as the sim knows
+    world = World(b.build("specks"))
+    assert not world.collides(1.05, 1.05)
+    assert world.collides(3.0, 1.5)
+    assert world.grid.value_at(1.05, 1.05) == FREE
+    assert world.grid.value_at(3.0, 1.5) == UNKNOWN

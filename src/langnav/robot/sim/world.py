@@ -1,9 +1,11 @@
 """The simulated world: a ground-truth occupancy grid, with obstacles that can be added at run time.
 
 The ground truth is any :class:`~langnav.maps.grid.OccupancyGrid` (a ROS map, a bench world, a
-built map). Cells the ground truth does not know (UNKNOWN) are treated as solid: the simulator has
-nothing else to show there, and a robot that drove into them would leave the world. So both the
-lidar and the collision check see OCCUPIED *and* UNKNOWN cells as matter.
+built map). Regions the ground truth does not know (UNKNOWN) are treated as solid: the simulator
+has nothing else to show there, and a robot that drove into them would leave the world. So both
+the lidar and the collision check see OCCUPIED cells and unknown *regions* as matter. Unknown
+*specks* (under SPECK_MAX_M2, inside the map: cells a mapping run never saw) are noise, not
+matter: the simulated world has floor there.
 """
 
 from __future__ import annotations
@@ -16,13 +18,31 @@ import numpy as np
 import numpy.typing as npt
 from scipy import ndimage
 
-from langnav.maps.grid import FREE, OCCUPIED, OccupancyGrid
+from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 from langnav.robot.errors import RobotError
 
 #: The robot's radius: an iRobot Create 3 / TurtleBot 4 base is 0.17-0.18 m in radius.
 ROBOT_RADIUS_M: Final = 0.17
 
+#: Unknown patches smaller than this inside a map are unobserved specks, not places (the bench's
+#: "specks under about 0.05 m2 are noise").
+SPECK_MAX_M2: Final = 0.05
+
 BoolArray = npt.NDArray[np.bool_]
+
+
+def solid_mask(grid: OccupancyGrid) -> BoolArray:
+    """Occupied cells, and unknown regions except specks that do not touch the map's edge."""
+    unknown = grid.unknown
+    labels, n = ndimage.label(unknown, structure=np.ones((3, 3), dtype=bool))
+    speck = np.zeros(n + 1, dtype=bool)
+    if n:
+        sizes = np.bincount(labels.ravel(), minlength=n + 1)
+        border = np.unique(np.concatenate([labels[0], labels[-1], labels[:, 0], labels[:, -1]]))
+        speck = sizes * grid.cell_area_m2 < SPECK_MAX_M2
+        speck[border] = False
+        speck[0] = False
+    return grid.occupied | (unknown & ~speck[labels])
 
 
 class World:
@@ -30,7 +50,8 @@ class World:
 
     def __init__(self, grid: OccupancyGrid) -> None:
         self._base = grid
-        self._solid: BoolArray = grid.cells != FREE
+        self._base_solid = solid_mask(grid)
+        self._solid: BoolArray = self._base_solid.copy()
         self.version = 0
         self._clear: npt.NDArray[np.float64] | None = None
         self._clear_version = -1
@@ -40,7 +61,8 @@ class World:
     def grid(self) -> OccupancyGrid:
         """The ground truth as a grid (added obstacles OCCUPIED)."""
         cells = self._base.cells.copy()
-        cells[self._solid & (self._base.cells == FREE)] = OCCUPIED
+        cells[self._solid & ~self._base_solid] = OCCUPIED
+        cells[~self._solid & (cells == UNKNOWN)] = FREE  # the unknown specks the world has floor under
         return self._base.with_cells(cells)
 
     @property
@@ -95,7 +117,7 @@ class World:
 
     def remove_obstacles(self) -> None:
         """Take every added obstacle away again."""
-        self._solid = self._base.cells != FREE
+        self._solid = self._base_solid.copy()
         self.version += 1
 
     def _paint(self, x_m: float, y_m: float, radius_m: float, value: bool) -> None:
