@@ -19,7 +19,8 @@ from scipy import ndimage as ndi
 
 from langnav.analysis.elements import Obstacle
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.unexplored import EIGHT, adjacent_pairs, border_labels, exterior_unknown_mask
+from langnav.analysis.precompute import GridLayers, border_labels
+from langnav.analysis.unexplored import adjacent_pairs
 from langnav.maps.grid import OccupancyGrid
 
 BoolArray = npt.NDArray[np.bool_]
@@ -34,35 +35,36 @@ class ObstacleResult:
 
 
 def find_obstacles(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArray[np.int32],
-                   room_ids: Mapping[int, str], exterior: BoolArray | None = None) -> ObstacleResult:
+                   room_ids: Mapping[int, str], exterior: BoolArray | None = None,
+                   layers: GridLayers | None = None) -> ObstacleResult:
     """Occupied clusters that are not part of the walls, with the space that holds each.
 
     ``labels`` are space labels (grid orientation, 0 = none); ``room_ids`` maps label -> id.
-    ``exterior`` is the outside-world unknown mask (computed when not given).
+    ``exterior`` is the outside-world unknown mask (computed when not given); ``layers`` the
+    grid's shared masks and components (built when not given).
     """
-    occ = grid.occupied
-    comp, n = ndi.label(occ, structure=EIGHT)
-    empty = ObstacleResult((), np.zeros(occ.shape, dtype=bool))
+    layers = layers or GridLayers(grid)
+    occ_comps = layers.occupied_components
+    comp, n, sizes = occ_comps.labels, occ_comps.n, occ_comps.sizes
+    empty = ObstacleResult((), np.zeros(comp.shape, dtype=bool))
     if n == 0:
         return empty
-    sizes = np.bincount(comp.ravel(), minlength=n + 1)
-    sizes[0] = 0
     structural = np.zeros(n + 1, dtype=bool)
     structural[int(np.argmax(sizes))] = True
     structural[border_labels(comp)] = True
     if exterior is None:
-        exterior = exterior_unknown_mask(grid)
-    ext_pairs = adjacent_pairs(exterior.astype(np.int8), comp)
+        exterior = layers.exterior
+    ext_pairs = adjacent_pairs(exterior, comp)
     structural[ext_pairs[:, 1]] = True
     # Which space labels each component borders: (space cell, component) pairs -> (comp, label).
     lab_pairs = adjacent_pairs(labels, comp)
     space_of_pair = labels.ravel()[lab_pairs[:, 0]].astype(np.int64)
     base = int(labels.max()) + 1
-    comp_space = np.unique(lab_pairs[:, 1] * base + space_of_pair) // base
-    n_spaces = np.bincount(comp_space, minlength=n + 1)
-    structural[n_spaces >= 2] = True
-    # Most-bordered space per component (by the number of neighbouring cells).
+    # Most-bordered space per component (by the number of neighbouring cells), and how many
+    # different spaces each borders.
     codes, counts = np.unique(lab_pairs[:, 1] * base + space_of_pair, return_counts=True)
+    n_spaces = np.bincount(codes // base, minlength=n + 1)
+    structural[n_spaces >= 2] = True
     best_space = np.zeros(n + 1, dtype=np.int64)
     # Sort by count so that, per component, the most frequent space is written last.
     by_count = np.argsort(counts, kind="stable")
@@ -73,22 +75,27 @@ def find_obstacles(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
     candidates = candidates[candidates > 0]
     if len(candidates) == 0:
         return empty
-    mask = np.isin(comp, candidates)
-    slices = ndi.find_objects(comp)
+    is_candidate = np.zeros(n + 1, dtype=bool)
+    is_candidate[candidates] = True
+    mask = is_candidate[comp]
+    slices = _candidate_slices(comp, mask, candidates)
+    res = grid.resolution_m
     obstacles: list[Obstacle] = []
     for k, c in enumerate(candidates.tolist(), start=1):
-        sl = slices[c - 1]
-        assert sl is not None
+        sl = slices[c]
         own = comp[sl] == c
-        filled = ndi.binary_fill_holes(own)
+        # A hole needs a ring round it: nothing to fill in a box less than 3 cells across.
+        filled = ndi.binary_fill_holes(own) if min(own.shape) >= 3 else own
         rr, cc = np.nonzero(filled)
         rr = rr + sl[0].start
         cc = cc + sl[1].start
         xs, ys = grid.cell_to_world(rr, cc)
-        orr, occ_c = np.nonzero(own)
-        oxs, oys = grid.cell_to_world(orr + sl[0].start, occ_c + sl[1].start)
+        if filled is own:
+            oxs, oys = xs, ys
+        else:
+            orr, occ_c = np.nonzero(own)
+            oxs, oys = grid.cell_to_world(orr + sl[0].start, occ_c + sl[1].start)
         # Extent: bounding box of the cell squares in the map frame (cells are res wide).
-        res = grid.resolution_m
         extent = ((float(xs.max() - xs.min()) + res), (float(ys.max() - ys.min()) + res))
         space = int(best_space[c])
         obstacles.append(Obstacle(
@@ -100,3 +107,23 @@ def find_obstacles(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
             cells_xy=np.stack([oxs, oys], axis=1),
         ))
     return ObstacleResult(tuple(obstacles), mask)
+
+
+def _candidate_slices(comp: npt.NDArray[np.int32], mask: BoolArray, candidates: npt.NDArray[np.intp]
+                      ) -> dict[int, tuple[slice, slice]]:
+    """The bounding box of each candidate component, from the candidates' cells only (a pass
+    over the few candidate cells instead of ``find_objects`` over the whole label image)."""
+    rr, cc = np.nonzero(mask)
+    ids = comp[rr, cc]
+    n = int(candidates.max()) + 1
+    big = np.iinfo(np.int64).max
+    r0 = np.full(n, big, dtype=np.int64)
+    c0 = np.full(n, big, dtype=np.int64)
+    r1 = np.full(n, -1, dtype=np.int64)
+    c1 = np.full(n, -1, dtype=np.int64)
+    np.minimum.at(r0, ids, rr)
+    np.minimum.at(c0, ids, cc)
+    np.maximum.at(r1, ids, rr)
+    np.maximum.at(c1, ids, cc)
+    return {int(c): (slice(int(r0[c]), int(r1[c]) + 1), slice(int(c0[c]), int(c1[c]) + 1))
+            for c in candidates.tolist()}

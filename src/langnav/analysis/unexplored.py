@@ -13,14 +13,15 @@ from typing import Final
 
 import numpy as np
 import numpy.typing as npt
-from scipy import ndimage as ndi
 
 from langnav.analysis.elements import UnexploredArea
 from langnav.analysis.params import AnalysisParams
+from langnav.analysis.precompute import EIGHT, GridLayers, border_labels, dilate8
 from langnav.maps.grid import OccupancyGrid
 
-#: 8-connectivity: unknown regions joined at a corner are one region (a scan shadow is rarely 4-clean).
-EIGHT: Final = np.ones((3, 3), dtype=bool)
+__all__ = ["EIGHT", "NEIGHBOURS_8", "UnexploredResult", "adjacent_pairs", "border_labels",
+           "exterior_unknown_mask", "find_unexplored"]
+
 #: The eight neighbour offsets (d_row, d_col).
 NEIGHBOURS_8: Final = ((-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1))
 
@@ -42,69 +43,64 @@ class UnexploredResult:
     specks: BoolArray
 
 
-def border_labels(lab: npt.NDArray[np.integer]) -> npt.NDArray[np.int64]:
-    """Labels (> 0) of the components touching the border of a label image."""
-    edge = np.concatenate([lab[0, :], lab[-1, :], lab[:, 0], lab[:, -1]])
-    return np.unique(edge[edge > 0]).astype(np.int64)
-
-
-def exterior_unknown_mask(grid: OccupancyGrid) -> BoolArray:
+def exterior_unknown_mask(grid: OccupancyGrid, layers: GridLayers | None = None) -> BoolArray:
     """Unknown cells connected (8-neighbours) to the grid border: the world outside the map."""
-    lab, _ = ndi.label(grid.unknown, structure=EIGHT)
-    return np.isin(lab, border_labels(lab)) & (lab > 0)
+    return (layers or GridLayers(grid)).exterior
 
 
-def adjacent_pairs(a: npt.NDArray[np.integer], b: npt.NDArray[np.integer]) -> npt.NDArray[np.int64]:
+def adjacent_pairs(a: npt.NDArray[np.integer] | BoolArray, b: npt.NDArray[np.integer]) -> npt.NDArray[np.int64]:
     """Unique (flat index of a cell with a > 0, label b > 0 of one of its 8 neighbours) pairs.
 
-    Returned as an (N, 2) int64 array sorted by cell; vectorised (eight shifted views of the
-    window holding both masks' overlap).
+    Returned as an (N, 2) int64 array sorted by cell, then by label; vectorised: the eight
+    neighbour labels of each candidate cell are gathered from a zero-padded window of ``b`` and
+    deduplicated per cell by sorting the eight.
     """
     h, w = a.shape
-    near = ndi.binary_dilation(b > 0, structure=EIGHT) & (a > 0)
-    rows = np.flatnonzero(near.any(axis=1))
-    if len(rows) == 0:
+    near = dilate8(b > 0)
+    near &= a > 0
+    rr, cc = np.nonzero(near)
+    if len(rr) == 0:
         return np.zeros((0, 2), dtype=np.int64)
-    cols = np.flatnonzero(near.any(axis=0))
-    r0, r1 = max(0, int(rows[0]) - 1), min(h, int(rows[-1]) + 2)
-    c0, c1 = max(0, int(cols[0]) - 1), min(w, int(cols[-1]) + 2)
-    sub_near = near[r0:r1, c0:c1]
-    sub_b = b[r0:r1, c0:c1]
-    rr, cc = np.nonzero(sub_near)
-    hh, ww = sub_b.shape
-    base = int(b.max()) + 1
-    codes: list[npt.NDArray[np.int64]] = []
-    flat = (rr + r0).astype(np.int64) * w + (cc + c0)
-    for dr, dc in NEIGHBOURS_8:
-        r2, c2 = rr + dr, cc + dc
-        ok = (r2 >= 0) & (r2 < hh) & (c2 >= 0) & (c2 < ww)
-        lab = np.zeros(len(rr), dtype=np.int64)
-        lab[ok] = sub_b[r2[ok], c2[ok]]
-        sel = lab > 0
-        codes.append(flat[sel] * base + lab[sel])
-    uniq = np.unique(np.concatenate(codes))
-    return np.stack([uniq // base, uniq % base], axis=1)
+    # The window holding every candidate and its neighbours, padded with one ring of zeros
+    # (neighbours beyond the grid have no label).
+    r_lo, r_hi = int(rr[0]), int(rr[-1])
+    c_lo, c_hi = int(cc.min()), int(cc.max())
+    pw = c_hi - c_lo + 3
+    padded = np.zeros((r_hi - r_lo + 3, pw), dtype=b.dtype)
+    g_r0, g_r1 = max(0, r_lo - 1), min(h, r_hi + 2)
+    g_c0, g_c1 = max(0, c_lo - 1), min(w, c_hi + 2)
+    padded[g_r0 - r_lo + 1:g_r1 - r_lo + 1, g_c0 - c_lo + 1:g_c1 - c_lo + 1] = b[g_r0:g_r1, g_c0:g_c1]
+    flat_p = padded.ravel()
+    at = (rr - r_lo + 1).astype(np.int64) * pw + (cc - c_lo + 1)
+    nb = np.stack([flat_p[at + (dr * pw + dc)] for dr, dc in NEIGHBOURS_8], axis=1)
+    nb.sort(axis=1)
+    keep = nb > 0
+    keep[:, 1:] &= nb[:, 1:] != nb[:, :-1]
+    flat = rr.astype(np.int64) * w + cc
+    cells = np.broadcast_to(flat[:, None], nb.shape)[keep]
+    return np.stack([cells, nb[keep].astype(np.int64)], axis=1)
 
 
-def find_unexplored(grid: OccupancyGrid, params: AnalysisParams) -> UnexploredResult:
-    """Every unknown region bordering free space; the outside world (if reached) is one area."""
-    unknown = grid.unknown
-    free = grid.free
-    lab, n = ndi.label(unknown, structure=EIGHT)
+def find_unexplored(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | None = None
+                     ) -> UnexploredResult:
+    """Every unknown region bordering free space; the outside world (if reached) is one area.
+
+    ``layers`` are the grid's shared masks and components (built when not given).
+    """
+    layers = layers or GridLayers(grid)
+    comps = layers.unknown_components
+    lab, n, sizes = comps.labels, comps.n, comps.sizes
     if n == 0:
         none = np.zeros(grid.cells.shape, dtype=bool)
         return UnexploredResult((), np.zeros(grid.cells.shape, dtype=np.int32), none, none)
-    sizes = np.bincount(lab.ravel(), minlength=n + 1)
-    outside = np.zeros(n + 1, dtype=bool)
-    outside[border_labels(lab)] = True
-    outside[0] = False
-    exterior = outside[lab]
+    outside = layers.unknown_outside
+    exterior = layers.exterior
     min_cells = params.unexplored_min_area_m2 / grid.cell_area_m2
     speck_ids = ~outside & (sizes < min_cells)
     speck_ids[0] = False
     specks = speck_ids[lab]
     # (free cell, unknown label) pairs: which regions border free space, and their frontier cells.
-    pairs = adjacent_pairs(free.astype(np.int8), lab)
+    pairs = adjacent_pairs(layers.free, lab)
     touches = np.zeros(n + 1, dtype=bool)
     touches[pairs[:, 1]] = True
 
@@ -117,17 +113,24 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams) -> UnexploredRe
     if has_outside:
         area_of[outside] = len(interior_ids) + 1
     n_areas = len(interior_ids) + int(has_outside)
-    area_labels = area_of[lab]
-    area_labels[lab == 0] = 0
+    area_labels = area_of[lab]  # area_of[0] == 0: no area off the unknown cells
     if n_areas == 0:
-        return UnexploredResult((), area_labels.astype(np.int32), exterior, specks)
+        return UnexploredResult((), area_labels, exterior, specks)
 
-    # Cell statistics per area, vectorised.
-    rows, cols = np.nonzero(area_labels)
+    # Cell statistics per area: counts and row / column sums, as exact integers. Interior areas
+    # from their own cells; the outside one (most of a real map's unknown margin) from the
+    # exterior mask's row and column counts, without listing its cells.
+    counts_i = np.bincount(area_of, weights=sizes, minlength=n_areas + 1)
+    rows, cols = np.nonzero((area_labels > 0) & ~exterior)
     ids = area_labels[rows, cols]
-    counts = np.bincount(ids, minlength=n_areas + 1).astype(float)
-    mean_r = np.bincount(ids, weights=rows, minlength=n_areas + 1) / np.maximum(counts, 1)
-    mean_c = np.bincount(ids, weights=cols, minlength=n_areas + 1) / np.maximum(counts, 1)
+    sum_r = np.bincount(ids, weights=rows, minlength=n_areas + 1)
+    sum_c = np.bincount(ids, weights=cols, minlength=n_areas + 1)
+    if has_outside:
+        sum_r[n_areas] = float(np.count_nonzero(exterior, axis=1) @ np.arange(grid.height, dtype=np.int64))
+        sum_c[n_areas] = float(np.count_nonzero(exterior, axis=0) @ np.arange(grid.width, dtype=np.int64))
+    counts = counts_i.astype(float)
+    mean_r = sum_r / np.maximum(counts, 1)
+    mean_c = sum_c / np.maximum(counts, 1)
     cx, cy = grid.cell_to_world(mean_r, mean_c)
 
     fr_area = area_of[pairs[:, 1]]
@@ -153,4 +156,4 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams) -> UnexploredRe
             frontier=frontier,
             interior=not (has_outside and k == n_areas),
         ))
-    return UnexploredResult(tuple(areas), area_labels.astype(np.int32), exterior, specks)
+    return UnexploredResult(tuple(areas), area_labels, exterior, specks)
