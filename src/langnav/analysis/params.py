@@ -38,8 +38,9 @@ class AnalysisParams:
     seg_persistence_m: float = 0.15
     #: Segmentation: ... and its clearance peak must be at least this multiple of the doorway's.
     seg_peak_saddle_ratio: float = 1.0
-    #: Segmentation: a connected piece of wall/unknown at least this big (m2) is the wall network.
-    seg_wall_network_min_area_m2: float = 4.0
+    #: Segmentation: a connected piece of wall/unknown at least this big (m2) is the wall network
+    #: (smaller free-standing pieces are furniture, see seg_island_max_area_m2, or wall stubs).
+    seg_wall_network_min_area_m2: float = 2.0
     #: Segmentation: a smaller piece is a wall stub (a door jamb) when thin (<= 2 x door_max_depth_m)
     #: and at least this long (m); otherwise it is furniture, and gaps beside it are not doorways.
     seg_wall_min_length_m: float = 0.5

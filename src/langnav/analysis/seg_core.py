@@ -200,7 +200,8 @@ class JambJudge:
         # still part of its wall, a chair's legs one chair.
         self.join_m = params.seg_jamb_join_m
         self.comp, _ = ndi.label(self.obstacle | (clearance_m <= self.join_m), structure=EIGHT)
-        self.sizes = np.bincount(self.comp.ravel()) * resolution_m**2
+        # Sizes count the non-floor cells themselves, not the joining margin.
+        self.sizes = np.bincount(self.comp[self.obstacle], minlength=int(self.comp.max()) + 1) * resolution_m**2
         self.objs = ndi.find_objects(self.comp)
         self._cache: dict[int, float] = {}
         self._axes: dict[int, tuple[float, float]] = {}
