@@ -81,3 +81,15 @@ def test_one_prompt_through_the_installed_model(request: pytest.FixtureRequest) 
     assert [s.movement for s in intent.steps] == [Movement.ROTATE, Movement.MOVE]
     assert intent.steps[0].direction == Direction.RIGHT and intent.steps[0].angle_deg == 90
     assert intent.steps[1].direction == Direction.FORWARD and intent.steps[1].distance_m == 0.5
+
+
+def test_decoding_schema_is_compact_and_still_the_intent() -> None:
+    from langnav.language.llm.base import answer_schema, parse_answer
+
+    schema = answer_schema()
+    strict = local_backend.decoding_schema(schema)
+    assert strict["x-guidance"] == {"whitespace_flexible": False}
+    assert "text" not in strict["$defs"]["Step"]["properties"]
+    assert "text" in schema["$defs"]["Step"]["properties"]  # the original is untouched
+    intent = parse_answer('{"steps":[{"movement":"rotate","direction":"right","angle_deg":90}]}')
+    assert intent.steps[0].angle_deg == 90
