@@ -250,3 +250,65 @@ def test_confidence_is_the_weakest_step() -> None:
     unsure = translate_offline("move forward")
     both = translate_offline("turn left 90 degrees, then move forward")
     assert both.confidence == min(sure.confidence, unsure.confidence)
+
+
+# ------------------------------------------------------------------------------ never motion from a misreading
+#: Words of the vocabulary with no clause break among them (no "and", "then", commas).
+_CLAUSE_WORDS = ["the", "door", "box", "room", "left", "right", "forward", "please", "to", "next", "of", "on",
+                 "your", "nearest", "second", "hallway", "corner", "wall", "go", "move", "a", "bit", "2", "metres",
+                 "quickly", "over", "there", "now", "robot", "into", "through", "up"]
+_OUT_OF_SCOPE_PHRASES = [
+    "pick up", "grab", "fetch", "carry", "open", "push", "take the stairs", "take the lift", "use the elevator",
+    "jump over", "climb", "go upstairs", "go downstairs", "go to the next floor", "bring", "clean", "lift the",
+    "hop over the box", "close the door", "deliver", "throw", "unlock"]
+
+
+@settings(max_examples=150, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.sampled_from(_CLAUSE_WORDS), max_size=6), st.sampled_from(_OUT_OF_SCOPE_PHRASES),
+       st.lists(st.sampled_from(_CLAUSE_WORDS), max_size=6))
+def test_a_clause_with_an_out_of_scope_verb_never_moves(before: list[str], verb: str, after: list[str]) -> None:
+    intent = translate_offline(" ".join([*before, verb, *after]))
+    assert intent.steps == [], intent
+    assert intent.clarification
+
+
+@settings(max_examples=150, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(["go", "move", "drive", "turn", "head", "take", "roll", "come", "get"]),
+       st.lists(st.from_regex(r"[bcdfghjklmnpqrstvwxz]{5,9}", fullmatch=True), min_size=1, max_size=3),
+       st.sampled_from(["", "forward", "left", "right", "back", "ahead", "up"]),
+       st.booleans())
+def test_words_not_understood_never_become_a_default_move(verb: str, unknown: list[str], direction: str,
+                                                          unknown_first: bool) -> None:
+    words = [verb, *unknown, direction] if unknown_first else [verb, direction, *unknown]
+    intent = translate_offline(" ".join(w for w in words if w))
+    moves = [s for s in intent.steps if s.movement in (Movement.MOVE, Movement.ROTATE)]
+    assert moves == [], intent
+    assert intent.clarification
+
+
+@pytest.mark.parametrize("prompt", [
+    "Take the stairs up to the next floor.", "take the elevator to the second floor", "go upstairs",
+    "use the lift", "head down one floor"])
+def test_other_floors_are_explained(prompt: str) -> None:
+    intent = translate_offline(prompt)
+    assert intent.steps == []
+    assert intent.clarification is not None and "floor" in intent.clarification
+    assert intent.unread == [] and intent.confidence >= CONFIDENT
+
+
+@pytest.mark.parametrize("prompt", ["drive forward for 5 seconds", "turn right for two seconds",
+                                    "back up for a while", "move left for 1.5 s"])
+def test_times_ask_for_a_distance(prompt: str) -> None:
+    intent = translate_offline(prompt)
+    assert intent.steps == []
+    assert intent.clarification is not None and "distance" in intent.clarification
+
+
+@pytest.mark.parametrize(("prompt", "words"), [
+    ("go to the red door", "red door"), ("Drive to the wooden door on your left.", "wooden door"),
+    ("stand next to the white box", "white box")])
+def test_colours_and_materials_are_explained(prompt: str, words: str) -> None:
+    intent = translate_offline(prompt)
+    assert intent.steps == []
+    assert intent.clarification is not None and f"'{words}'" in intent.clarification
+    assert "colours" in intent.clarification

@@ -271,10 +271,11 @@ GO_VERBS: Final = (
 
 ROTATE_VERBS: Final = ("turn", "rotate", "spin", "pivot", "swivel", "face", "look", "twist", "yaw",
                        "turn yourself", "rotate yourself", "orient", "orient yourself", "veer",
-                       "turn your body", "point", "do", "make", "perform", "execute", "turn on the spot", "u turn", "uturn", "about face", "about turn", "make a u turn",
+                       "turn your body", "point", "do", "make", "perform", "execute", "give me", "give us",
+                       "give", "have", "take a", "try", "turn on the spot", "u turn", "uturn", "about face", "about turn", "make a u turn",
                        "turn in place", "rotate in place", "spin in place", "turn on spot")
 #: "do / make / perform" only rotate with a turn noun ("do a quarter turn", "make a u-turn").
-ROTATE_NOUN_VERBS: Final = frozenset({"do", "make", "perform", "execute"})
+ROTATE_NOUN_VERBS: Final = frozenset({"do", "make", "perform", "execute", "give", "have", "take", "try"})
 
 STOP_PHRASES: Final = (
     "stop", "halt", "freeze", "stop moving", "stop now", "stop right there", "stop immediately",
@@ -456,11 +457,14 @@ OUT_OF_SCOPE_PATTERNS: Final = (
     r"\bshut\b", r"\bpush\b", r"\blift\b", r"\bpress\b", r"\bsing\b", r"\bdance\b",
     r"\btell\s+(?:me|us)\s+a\s+(?:joke|story)\b", r"\bjoke\b", r"\bplay\b", r"\bcall\b", r"\bphone\b",
     r"\bwater\s+the\b", r"\bwash\b", r"\border\b", r"\bbuy\b", r"\bfeed\b", r"\bthrow\b", r"\bkick\b",
-    r"\bdeliver\b", r"\bhand\s+(?:me|over)\b", r"\bgive\s+(?:me|us)\s+(?:a|the|some|my)\s+(?!map\b|path\b|route\b|position\b|location\b|pose\b)",
+    r"\bdeliver\b", r"\bhand\s+(?:me|over)\b", r"\bgive\s+(?:me|us)\s+(?:a|the|some|my)\s+(?!map\b|path\b|route\b|position\b|location\b|pose\b)"
+    r"(?!(?:\w+\s+){0,3}(?:turn|spin|rotation|twirl|u\s+turn|pirouette)\b)",
     r"\bturn\s+(?:on|off)\s+(?:the|a)\b", r"\bswitch\s+(?:on|off)\b", r"\bcharge\b", r"\brecharge\b",
     r"\bdock\b", r"\bphoto\b", r"\bpicture\b", r"\btake\s+a\s+(?:photo|picture|selfie)\b", r"\brecord\b",
     r"\bsay\b", r"\bspeak\b", r"\bwrite\b", r"\bread\b", r"\bsend\s+(?:an?\s+)?(?:email|message|text)\b",
-    r"\bfly\b", r"\bjump\b", r"\bclimb\b", r"\bswim\b", r"\bwhat\s+time\b", r"\bweather\b",
+    r"\bfly\b", r"\bjump\b", r"\bclimb\b", r"\bleap\b", r"\bvault\b",
+    r"\b(?:hop|step|go|get|drive|roll|ride)\s+(?:over|onto|on\s+top\s+of|up\s+on|on\s+to)\s+(?:the|a|that|this)\s+"
+    r"(?:\w+\s+)?(?:box|boxes|obstacle|obstacles|object|crate|block|table|chair|sofa|couch|bed|bench|pillar)\b", r"\bswim\b", r"\bwhat\s+time\b", r"\bweather\b",
     r"\bsandwich\b", r"\bcoffee\b", r"\btea\b", r"\bbeer\b", r"\bdrink\b", r"\bfood\b", r"\beat\b",
     r"\bknock\s+on\b", r"\bring\s+the\b", r"\bunlock\b", r"\block\b", r"\bmove\s+the\s+\w+\s+(?:to|out|away|aside)\b",
     r"\bput\s+(?:the|this|that|it|my)\b", r"\bdrop\b", r"\bpour\b", r"\bfold\b", r"\bhelp\s+me\b",
@@ -470,6 +474,26 @@ OUT_OF_SCOPE_PATTERNS: Final = (
     r"\bwho\s+are\s+you\b", r"\bhow\s+are\s+you\b", r"\bcharging\s+station\b", r"\bdance\b",
     r"\bwatch\b", r"\bguard\b", r"\bpatrol\b", r"\bsearch\s+for\b", r"\blook\s+for\b", r"\bhide\b",
 )
+
+#: Other floors: the robot drives on the floor its map shows and cannot climb or ride a lift.
+OTHER_FLOOR_PATTERNS: Final = (
+    r"\bstair(?:s|case|cases|way|ways|well)?\b", r"\b(?:up|down)stairs\b", r"\bescalators?\b",
+    r"\belevators?\b", r"\b(?:the|a|an|by)\s+lifts?\b", r"\blifts?\s+(?:to|up|down)\b", r"\bladders?\b", r"\bbasement\b", r"\battic\b",
+    r"\b(?:next|upper|lower|ground|first|second|third|fourth|fifth|top|bottom|another|other|different|"
+    r"1st|2nd|3rd|4th|5th|above|below)\s+(?:floor|level|storey|story)\b",
+    r"\b(?:floor|level|storey|story)\s+(?:up|down|above|below|\d+|one|two|three|four|five)\b",
+    r"\b(?:up|down)\s+(?:a|one|the|two|\d+)\s+(?:floor|level|storey|story|flights?)s?\b",
+    r"\bflights?\s+of\s+stairs\b",
+)
+
+#: Colours and materials: an occupancy grid holds neither, so "the red door" cannot be told apart.
+UNKNOWABLE_ADJECTIVES: Final = frozenset({
+    "red", "green", "blue", "yellow", "white", "black", "grey", "gray", "brown", "orange", "purple",
+    "pink", "beige", "golden", "silver", "dark", "light", "bright", "colourful", "colorful",
+    "wooden", "wood", "metal", "metallic", "steel", "iron", "glass", "plastic", "concrete", "brick",
+    "stone", "marble", "cardboard", "painted", "shiny", "striped", "tiled", "carpeted", "fabric",
+    "leather", "rusty", "old", "modern", "heavy", "blue-ish", "reddish", "greenish",
+})
 
 #: Words that negate a step ("don't go through the door"): the step is not run.
 NEGATIONS: Final = r"\b(?:do\s+not|dont|never|not|no\s+longer|avoid|refrain\s+from|stop\s+going)\b"

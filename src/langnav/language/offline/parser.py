@@ -80,6 +80,9 @@ class Problem(StrEnum):
     NO_ANTECEDENT = "no_antecedent"  # "go through it" with nothing before
     OUT_OF_RANGE = "out_of_range"    # "move forward 200 metres"
     QUESTION = "question"            # "how far is the door?" (only pose, path and map are answered)
+    OTHER_FLOOR = "other_floor"      # "take the stairs up", "use the lift": the robot stays on its floor
+    UNKNOWABLE = "unknowable"        # "the red door", "the wooden door": no colours or materials in a grid
+    DURATION = "duration"            # "move forward for 5 seconds": moves go by distance, turns by angle
 
 
 @dataclass(frozen=True)
@@ -93,6 +96,10 @@ class Reading:
     name: str | None = None
     #: the clause only adds a number or a direction to the previous step ("turn left, 45 degrees")
     amends_previous: bool = False
+    #: the element a question names ("which is the largest room?"): a later "it" may mean it
+    referent: ElementRef | None = None
+    #: "... and stop just after you pass through it": the previous step goes through its element
+    through_previous: bool = False
 
 
 # ------------------------------------------------------------------------------ compiled tables
@@ -124,6 +131,19 @@ _LATE_FILLER_RE: Final = _any(lx.LATE_FILLER_PATTERNS)
 _UNSAFE_RE: Final = _any(lx.UNSAFE_PATTERNS)
 _SAFE_AVOIDANCE_RE: Final = _any(lx.SAFE_AVOIDANCE_PATTERNS)
 _OUT_OF_SCOPE_RE: Final = _any(lx.OUT_OF_SCOPE_PATTERNS)
+_OTHER_FLOOR_RE: Final = _any(lx.OTHER_FLOOR_PATTERNS)
+#: A time instead of a distance or an angle ("for 5 seconds", "for a while").
+_DURATION_RE: Final = re.compile(
+    r"\b(?:for\s+)?(?:(?:about|around|roughly|approximately|like|another)\s+)?(?:two|three|four|five|six|seven|"
+    r"eight|nine|ten|fifteen|twenty|thirty|a\s+few|a\s+couple\s+of|a\s+couple|few|several)\s+(?:more\s+)?"
+    r"(?:seconds|secs|minutes|mins|hours|hrs|moments)\b"
+    r"|\b\d+(?:\.\d+)?\s*(?:seconds?|secs?|minutes?|mins?|hours?|hrs?|s)\b(?!\s*(?:steps?|times?))"
+    r"|\bfor\s+(?:about\s+|around\s+)?(?:a|an|one|half\s+a|another)\s+(?:second|sec|minute|min|moment|hour|"
+    r"while|little\s+while)\b|\bfor\s+(?:a\s+)?(?:while|some\s+time|bit\s+of\s+time)\b")
+#: A question that names an element ("which is the largest room?", "where is the nearest door?").
+_ELEMENT_QUESTION_RE: Final = re.compile(
+    r"^(?:(?:hey|ok|okay|so|robot)\s+)*(?:which|where|what)\b(?:\s+(?:is|are|one\s+is|one\s+of\s+them\s+is|"
+    r"would\s+be|do\s+you\s+think\s+is))?")
 #: A question the robot cannot answer (the answerable ones were read as queries before).
 _QUESTION_RE: Final = re.compile(r"^(?:(?:hey|ok|okay|so|robot)\s+)*(?:how|what|why|when|which|who|whose|is|are|"
                                  r"was|were|does|did|do\s+(?:you|i|we)|can\s+i|could\s+i)\b")
@@ -552,13 +572,17 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
     query = _read_query(c)
     if query is not None:
         return query
+    if _OTHER_FLOOR_RE.search(norm):
+        return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.OTHER_FLOOR)
     if _is_negated(norm):
         return Reading(unread=(text,), confidence=0.3, problem=Problem.NEGATED)
     if _QUESTION_RE.match(norm):
-        return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.QUESTION)
+        return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.QUESTION,
+                       referent=_question_referent(norm))
     if _OUT_OF_SCOPE_RE.search(norm) and not _EXPLORE_RE.search(norm):
         return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.OUT_OF_SCOPE)
     c.s.take_all(_FILLER_RE)
+    durations = c.s.take_all(_DURATION_RE)
     if previous_target is None:
         previous_target = _previous_target(previous)
     phrases, name = _find_phrases(c.s, previous_target)
@@ -583,6 +607,15 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
         phrases = [p for p in phrases if p.ref.kind != Element.NONE]
     steps = _build_steps(c, phrases, verb)
     leftovers = [w for w in c.s.leftover_words() if w not in lx.STOPWORDS]
+    guessed = [st for st in steps if st.movement in (Movement.MOVE, Movement.ROTATE) and st.amount == Amount.DEFAULT]
+    if durations and guessed:
+        # "drive forward for 5 seconds": a time is no distance; ask rather than guess one
+        return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.DURATION)
+    if guessed and (leftovers or c.lost):
+        # a default move or turn built around words not understood ("take the stairs ...") is a
+        # misreading: never motion, hand the clause on instead
+        return Reading(unread=(text,), confidence=NOTHING_READ_CONFIDENCE, problem=Problem.UNREADABLE)
+    c.lost.extend(c.s.text[m.start():m.end()].strip() for m in durations)
     if not steps:
         if c.out_of_range:
             return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.OUT_OF_RANGE)
@@ -604,6 +637,17 @@ def is_unsafe(prompt: str) -> bool:
     """True when the prompt asks for something unsafe or tries to override the rules."""
     norm = _SAFE_AVOIDANCE_RE.sub(" ", normalize(prompt))  # "without hitting the wall" is safe
     return _UNSAFE_RE.search(norm) is not None
+
+
+def _question_referent(norm: str) -> ElementRef | None:
+    """The one element a 'which / where / what is the X' question names, if it names exactly one."""
+    if _ELEMENT_QUESTION_RE.match(norm) is None:
+        return None
+    phrases, name = _find_phrases(_Scratch(norm), None)
+    keep = [p for p in phrases if not p.contained and not p.pronoun]
+    if name is not None or len(keep) != 1:
+        return None
+    return keep[0].ref
 
 
 def _previous_target(previous: Step | None) -> ElementRef | None:
@@ -678,6 +722,9 @@ def _named(c: _Clause, name: str, known_names: Sequence[str]) -> Reading:
             detail = _as_detail(lx.lookup(lx.DETAIL_PHRASES, m.group("detail")))
         ref = ElementRef(kind=Element.NONE, name=known[clean][:80])
         return Reading(steps=(Step(movement=Movement.NAVIGATE, detail=detail, target=ref, text=c.text[:500]),))
+    if any(w in lx.UNKNOWABLE_ADJECTIVES for w in clean.split()[:-1]):
+        # "the red door": a real element described by what a grid cannot show
+        return Reading(confidence=NAME_CONFIDENCE, problem=Problem.UNKNOWABLE, name=clean[:80], unread=(c.text,))
     return Reading(confidence=NAME_CONFIDENCE, problem=Problem.NAME, name=clean[:80], unread=(c.text,))
 
 
@@ -865,6 +912,8 @@ def _rotate_steps(c: _Clause, targets: list[_Phrase], vm: re.Match[str] | None) 
     return steps
 
 
+#: "turn round to the left": only a bare "round / around" gives way to a side named with it.
+_SPIN_ROUND_RE: Final = re.compile(r"(?<!way\s)\b(?:a)?round\b(?!\s+(?:twice|two|2|three|\d))")
 _REPEAT_RE: Final = re.compile(r"\b(?:(?P<word>once|twice|thrice)|(?P<n>\d+|one|two|three|four|five)\s+times)\b")
 _REPEAT_WORDS: Final = {"once": 1, "twice": 2, "thrice": 3, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5}
 
@@ -911,10 +960,16 @@ def _single_rotation(c: _Clause, vm: re.Match[str] | None) -> Step:
         else:
             c.lost.append(c.text)
     little = c.s.take_all(_LITTLE_RE)
+    sides: list[Direction] = []
     for m in c.s.take_all(_ROTATE_DIR_RE):
         d = lx.lookup(lx.ROTATE_DIRECTIONS, m.group("dir"))
-        if isinstance(d, Direction) and direction is None:
-            direction = d
+        if isinstance(d, Direction):
+            if d in (Direction.LEFT, Direction.RIGHT):
+                sides.append(d)
+            if direction is None:
+                direction = d
+    if direction == Direction.AROUND and sides and _SPIN_ROUND_RE.search(c.s.text):
+        direction = sides[0]  # "spin round to your left": a turn to that side, not a U-turn
     amount: Amount | None = None
     if direction == Direction.AROUND:
         if angle is None or abs(angle - 180.0) < 1e-6:

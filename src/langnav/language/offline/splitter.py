@@ -39,9 +39,9 @@ _STEP_VERBS: Final = frozenset(
        # things the robot cannot do still start a step of their own ("... and pick up the cup")
        "pick", "grab", "fetch", "bring", "carry", "open", "close", "clean", "push", "lift", "cook",
        "sing", "dance", "play", "wash", "water", "deliver", "put", "drop", "hand", "charge", "call"}
-) - {"be", "do", "make", "keep", "stay", "point", "position", "get", "run", "pull", "edge"}
+) - {"be", "do", "make", "keep", "stay", "point", "position", "get", "run", "pull", "edge", "have", "try"}
 #: Verbs that start an instruction only if followed by more words (not "the box and get").
-_WEAK_STEP_VERBS: Final = frozenset({"get", "keep", "make", "do", "stay", "position", "point"})
+_WEAK_STEP_VERBS: Final = frozenset({"get", "keep", "make", "do", "stay", "position", "point", "have"})
 
 
 def split_steps(prompt: str) -> list[str]:

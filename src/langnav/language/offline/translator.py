@@ -19,7 +19,8 @@ TRANSLATOR_NAME: Final = "offline"
 CONFIDENT: Final = 0.8
 #: Refusals the offline reading is sure of: they carry a clarification and nothing unread, so
 #: an ``auto`` translator does not pass them (or an injection attempt) on to a model.
-SURE_REFUSALS: Final = frozenset({Problem.NAME, Problem.OUT_OF_SCOPE, Problem.OUT_OF_RANGE, Problem.QUESTION})
+SURE_REFUSALS: Final = frozenset({Problem.NAME, Problem.OUT_OF_SCOPE, Problem.OUT_OF_RANGE, Problem.QUESTION,
+                                  Problem.OTHER_FLOOR, Problem.DURATION, Problem.UNKNOWABLE})
 #: A reading that runs some steps and leaves a whole instruction out is unsure at best.
 PARTIAL_CONFIDENCE: Final = 0.5
 #: The intent holds at most this many steps (the schema's limit).
@@ -57,6 +58,8 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
         reading = read_clause(clause, previous, known_names, previous_target)
         if reading.problem == Problem.NAME:
             return _clarify(_name_message(reading.name or clause), confidence=reading.confidence, unread=[])
+        if reading.problem == Problem.UNKNOWABLE:
+            return _clarify(_unknowable_message(reading.name or clause), confidence=reading.confidence, unread=[])
         if reading.problem is not None:
             problems.append((reading.problem, clause, reading))
         confidence = min(confidence, reading.confidence)
@@ -116,8 +119,20 @@ def _name_message(name: str) -> str:
             "name the place first.")
 
 
+def _unknowable_message(name: str) -> str:
+    return (f"I can't tell which one is '{name}': my map shows walls, doors and free space, but no colours "
+            "or materials. Tell me which one by where it is or its size, e.g. 'the second door on your left', "
+            "'the nearest door' or 'the widest door'.")
+
+
 def _problem_message(problem: Problem, clause: str) -> str:
     quoted = clause if len(clause) <= 120 else clause[:117] + "..."
+    if problem == Problem.OTHER_FLOOR:
+        return (f"I can't do \"{quoted}\": I drive only on the floor my map shows; I can't use stairs, lifts "
+                "or escalators, or go to another floor.")
+    if problem == Problem.DURATION:
+        return (f"In \"{quoted}\" I'm given a time, but I move by distance and turn by angle. Tell me how far "
+                "or how much, e.g. 'move forward 1 metre' or 'turn left 45 degrees'.")
     if problem == Problem.OUT_OF_SCOPE:
         return (f"I can't do \"{quoted}\": I can only drive, turn, stop, explore the map and tell you "
                 "where I am, my path or the map.")
