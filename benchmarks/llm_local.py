@@ -23,6 +23,8 @@ ROOT = Path(__file__).resolve().parents[1]
 DEFAULT_CASES = ROOT.parent / "shared" / "bench" / "prompts_dev.jsonl"
 #: The whole run may take this long (34 prompts at up to ~60 s each on a busy 2-core machine).
 RUN_TIMEOUT_S = 3600
+#: Words of the LLMError messages (langnav/language/llm) that end up as a case's clarification.
+LLM_FAILURES = ("did not answer within", "answered twice", "refused the request", "cannot reach")
 
 
 def main() -> int:
@@ -71,8 +73,9 @@ def main() -> int:
         produced = [json.loads(line) for line in out.read_text().splitlines() if line.strip()]
         print(f"translator {args.translator}: {len(produced)} of {len(lines)} cases in {elapsed:.1f} s "
               f"= {elapsed / max(1, len(lines)):.1f} s/prompt (including the model load)")
-        errors = sum(1 for p in produced if not p.get("commands") and "LLM" in str(p.get("clarification")))
-        print(f"answers with an LLM failure: {errors}")
+        errors = sum(1 for p in produced if not p.get("commands")
+                     and any(m in str(p.get("clarification")) for m in LLM_FAILURES))
+        print(f"prompts where the model failed (timeout or two off-schema answers): {errors}")
         score = ROOT.parent / "shared" / "bench" / "score.py"
         result = subprocess.run([sys.executable, str(score), str(cases), str(out)], capture_output=True, text=True,
                                 timeout=120, check=False)
