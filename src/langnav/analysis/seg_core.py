@@ -87,12 +87,10 @@ def clean_floor(cells: npt.NDArray[np.int8], resolution_m: float, params: Analys
     holes = _small_components(unknown, params.seg_hole_max_area_m2 / cell_area, exclude_border=True)
     floor = free | holes
     exterior = unknown & ~holes
+    islands = _furniture(floor, resolution_m, params)
+    floor = floor | islands
+    exterior &= ~islands
     clearance = ndi.distance_transform_edt(floor, sampling=resolution_m)
-    islands = _furniture(floor, clearance, resolution_m, params)
-    if islands.any():
-        floor = floor | islands
-        exterior &= ~islands
-        clearance = ndi.distance_transform_edt(floor, sampling=resolution_m)
     return Floor(floor=floor, free=free, exterior=exterior, clearance_m=clearance)
 
 
@@ -107,8 +105,7 @@ def wall_stub_length(mask: BoolArray, resolution_m: float, params: AnalysisParam
     return length if stub else 0.0
 
 
-def _furniture(floor: BoolArray, clearance_m: FloatArray, resolution_m: float,
-               params: AnalysisParams) -> BoolArray:
+def _furniture(floor: BoolArray, resolution_m: float, params: AnalysisParams) -> BoolArray:
     """Free-standing clutter: small pieces of non-floor apart from the walls (tables with their
     chairs, cabinets, columns, unscanned wedges between laser rays), but not thin wall stubs.
 
@@ -116,7 +113,9 @@ def _furniture(floor: BoolArray, clearance_m: FloatArray, resolution_m: float,
     floor (ROSE² "decluttering"): furniture must not split a room.
     """
     cell_area = resolution_m * resolution_m
-    grouped = ~floor | (clearance_m <= params.seg_jamb_join_m)
+    # Chessboard distance: a square neighbourhood is as good as a disc for grouping, and cheap.
+    join_cells = int(round(params.seg_jamb_join_m / resolution_m))
+    grouped = ndi.distance_transform_cdt(floor, metric="chessboard") <= join_cells
     comp, n = ndi.label(grouped, structure=EIGHT)
     if n == 0:
         return np.zeros_like(floor)
@@ -128,9 +127,11 @@ def _furniture(floor: BoolArray, clearance_m: FloatArray, resolution_m: float,
     small[border] = False
     # Thin, long pieces are wall stubs (between two doorways), not furniture.
     objs = ndi.find_objects(comp)
+    min_cells = params.seg_wall_min_length_m / resolution_m
     for k in np.flatnonzero(small & (area >= params.seg_wall_min_length_m * resolution_m)):
         sl = objs[k - 1]
-        if sl is None:
+        # A stub at least seg_wall_min_length_m long spans that much of its bounding box.
+        if sl is None or max(sl[0].stop - sl[0].start, sl[1].stop - sl[1].start) < min_cells:
             continue
         if wall_stub_length((comp[sl] == k) & solid[sl], resolution_m, params) > 0:
             small[k] = False

@@ -32,8 +32,16 @@ log = logging.getLogger(__name__)
 #: are that room's floor (an unscanned corner); a region walled in on all sides (a courtyard, a
 #: closed room never entered) does not.
 ENCLOSED_UNKNOWN_MIN_FLOOR_SHARE: Final = 0.25
+#: Outlines of larger bounding boxes (cells) are traced on a subsampled mask.
+OUTLINE_MAX_CELLS: Final = 250_000
+#: A hallway candidate whose labelled cells exceed its floor by this share (unscanned parts,
+#: clutter) has its width measured on all its cells.
+UNFLOORED_SHARE_FOR_WIDTH: Final = 0.1
 #: Outlines are thinned to about this many points before simplification (they are for drawing).
 OUTLINE_MAX_POINTS: Final = 400
+#: The grid is cropped to the free space plus this margin (m) before segmenting: enough for the
+#: walls and the unknown that openings lead into.
+CROP_MARGIN_M: Final = 3.0
 #: Id used in ``Door.connects`` for unexplored territory.
 UNKNOWN_ID: Final = "unknown"
 
@@ -56,10 +64,29 @@ class Segmentation:
 
 def segment_spaces(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS) -> Segmentation:
     """Split the free space of ``grid`` into rooms and hallways joined by doorways."""
+    free = grid.free
+    if not free.any():
+        raise AnalysisError(f"{grid.source}: the map has no free space to segment")
+    # Work on the part of the grid around the free space (maps often have wide margins).
+    margin = int(math.ceil(CROP_MARGIN_M / grid.resolution_m))
+    rows = np.flatnonzero(free.any(axis=1))
+    cols = np.flatnonzero(free.any(axis=0))
+    r0, r1 = max(0, rows[0] - margin), min(grid.height, rows[-1] + margin + 1)
+    c0, c1 = max(0, cols[0] - margin), min(grid.width, cols[-1] + margin + 1)
+    if (r0, r1, c0, c1) == (0, grid.height, 0, grid.width):
+        return _segment(grid, params)
+    ox, oy = grid.grid_to_world(r0, c0)
+    sub = OccupancyGrid(grid.cells[r0:r1, c0:c1], grid.resolution_m, float(ox), float(oy),
+                        grid.origin_yaw_rad, grid.source)
+    seg = _segment(sub, params)
+    labels = np.zeros(grid.cells.shape, dtype=np.int32)
+    labels[r0:r1, c0:c1] = seg.labels
+    return Segmentation(labels=labels, rooms=seg.rooms, doors=seg.doors)
+
+
+def _segment(grid: OccupancyGrid, params: AnalysisParams) -> Segmentation:
     res = grid.resolution_m
     fl = clean_floor(grid.cells, res, params)
-    if not fl.floor.any():
-        raise AnalysisError(f"{grid.source}: the map has no free space to segment")
     raw_labels = basins(fl.clearance_m, fl.floor, params.seg_min_peak_m)
     judge = JambJudge(fl.floor, fl.clearance_m, res, params) if params.seg_jamb_test else None
     labels = merge_basins(raw_labels, fl.clearance_m, res, params, judge)
@@ -123,21 +150,19 @@ def _fill_enclosed(labels: npt.NDArray[np.int32]) -> npt.NDArray[np.int32]:
     return out
 
 
-def _kind_and_size(mask: npt.NDArray[np.bool_], area_m2: float, peak_m: float, res: float,
-                   params: AnalysisParams) -> tuple[ElementKind, float, float]:
+def _kind_and_size(mask: npt.NDArray[np.bool_], floor_cells: int, area_m2: float, peak_m: float,
+                   res: float, params: AnalysisParams) -> tuple[ElementKind, float, float]:
     """Hallway or room, with (length, width): width = the widest inscribed circle of the space
-    with free-standing furniture filled in; length = area / width."""
+    (furniture was taken out of the floor's clearance already); length = area / width."""
     # Clearance is measured between cell centres: an opening of n cells has 2 x peak = (n + 1) cells.
     width = max(2.0 * peak_m - res, res)
 
     def hallway(w: float) -> bool:
         return w <= params.hallway_max_width_m and area_m2 / w >= params.hallway_min_elongation * w
 
-    if hallway(width):
-        # Furniture standing in a room and unscanned parts of it narrow its clearance: measure
-        # again on the whole space with holes filled (only needed here: it can only widen).
-        filled = ndi.binary_fill_holes(np.pad(mask, 1))
-        width = max(width, 2.0 * float(ndi.distance_transform_edt(filled, sampling=res).max()) - res)
+    if hallway(width) and int(mask.sum()) > floor_cells * (1 + UNFLOORED_SHARE_FOR_WIDTH):
+        # Much of the space is unscanned or cluttered: measure on the whole space instead.
+        width = max(width, 2.0 * float(ndi.distance_transform_edt(np.pad(mask, 1), sampling=res).max()) - res)
     return (ElementKind.HALLWAY if hallway(width) else ElementKind.ROOM), area_m2 / width, width
 
 
@@ -159,7 +184,8 @@ def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
         cc = cc + sl[1].start
         xs, ys = grid.cell_to_world(rr, cc)
         area = float(sub.sum()) * res * res
-        kind, length, width = _kind_and_size(sub, area, float(peaks[k]), res, params)
+        kind, length, width = _kind_and_size(sub, int((sub & fl.floor[sl]).sum()), area,
+                                             float(peaks[k]), res, params)
         prefix = "hallway" if kind == ElementKind.HALLWAY else "room"
         rooms.append(Room(
             id=f"{prefix}_{k}", label=k, kind=kind, area_m2=area,
@@ -171,10 +197,13 @@ def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
 
 def _outline(grid: OccupancyGrid, sub: npt.NDArray[np.bool_], sl: tuple[slice, slice]) -> npt.NDArray[np.float64]:
     """The outer outline of a space in world metres (for drawing), simplified to about a cell."""
-    contours = find_contours(np.pad(sub, 1).astype(np.uint8), 0.5)
+    # Large spaces are outlined on a coarser copy: the outline is for drawing.
+    k = max(1, math.ceil(math.sqrt(sub.size / OUTLINE_MAX_CELLS)))
+    contours = find_contours(np.pad(sub[::k, ::k], 1).astype(np.uint8), 0.5)
     if not contours:
         return np.zeros((0, 2))
     c = max(contours, key=len)
+    c = (c - 1) * k + 1
     step = max(1, len(c) // OUTLINE_MAX_POINTS)
     c = approximate_polygon(np.vstack([c[::step], c[:1]]), tolerance=1.0)
     r = c[:, 0] - 1 + sl[0].start + 0.5
