@@ -19,7 +19,7 @@ from scipy import ndimage as ndi
 
 from langnav.analysis.elements import Obstacle
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import GridLayers, border_labels
+from langnav.analysis.precompute import GridLayers, border_labels, component_boxes
 from langnav.analysis.unexplored import adjacent_pairs
 from langnav.maps.grid import OccupancyGrid
 
@@ -78,7 +78,8 @@ def find_obstacles(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
     is_candidate = np.zeros(n + 1, dtype=bool)
     is_candidate[candidates] = True
     mask = is_candidate[comp]
-    slices = _candidate_slices(comp, mask, candidates)
+    rr_c, cc_c = np.nonzero(mask)
+    slices = component_boxes(comp[rr_c, cc_c], rr_c, cc_c, candidates)
     res = grid.resolution_m
     obstacles: list[Obstacle] = []
     for k, c in enumerate(candidates.tolist(), start=1):
@@ -108,22 +109,3 @@ def find_obstacles(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
         ))
     return ObstacleResult(tuple(obstacles), mask)
 
-
-def _candidate_slices(comp: npt.NDArray[np.int32], mask: BoolArray, candidates: npt.NDArray[np.intp]
-                      ) -> dict[int, tuple[slice, slice]]:
-    """The bounding box of each candidate component, from the candidates' cells only (a pass
-    over the few candidate cells instead of ``find_objects`` over the whole label image)."""
-    rr, cc = np.nonzero(mask)
-    ids = comp[rr, cc]
-    n = int(candidates.max()) + 1
-    big = np.iinfo(np.int64).max
-    r0 = np.full(n, big, dtype=np.int64)
-    c0 = np.full(n, big, dtype=np.int64)
-    r1 = np.full(n, -1, dtype=np.int64)
-    c1 = np.full(n, -1, dtype=np.int64)
-    np.minimum.at(r0, ids, rr)
-    np.minimum.at(c0, ids, cc)
-    np.maximum.at(r1, ids, rr)
-    np.maximum.at(c1, ids, cc)
-    return {int(c): (slice(int(r0[c]), int(r1[c]) + 1), slice(int(c0[c]), int(c1[c]) + 1))
-            for c in candidates.tolist()}

@@ -22,7 +22,7 @@ from skimage.morphology import skeletonize
 
 from langnav.analysis.elements import Door, NarrowPassage
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.unexplored import EIGHT
+from langnav.analysis.precompute import EIGHT, component_boxes, truncated_sq_edt
 from langnav.maps.grid import OccupancyGrid
 
 #: A passage is at least this many times longer than wide: a corridor, not a gap beside an
@@ -68,23 +68,29 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     r0, r1 = max(0, int(rows_any[0]) - 1), min(open_.shape[0], int(rows_any[-1]) + 2)
     c0, c1 = max(0, int(cols_any[0]) - 1), min(open_.shape[1], int(cols_any[-1]) + 2)
     sub = open_[r0:r1, c0:c1]
+    # Only short clearances matter (up to a narrow passage's half width): squared distances in
+    # cells, exact up to that, from a truncated transform; tables give each one's distance and width.
+    reach = math.floor((params.passage_max_width_m + res) / (2.0 * res)) + 1
     if dist_m is None:
-        dist = np.asarray(ndi.distance_transform_edt(sub), dtype=np.float64) * res
+        d2 = truncated_sq_edt(sub, reach)
     else:
-        dist = dist_m[r0:r1, c0:c1]
+        d_cells = np.minimum(dist_m[r0:r1, c0:c1] / res, reach + 1)
+        d2 = np.rint(d_cells * d_cells).astype(np.int32)
+    dist_of = np.sqrt(np.arange(int(d2.max()) + 1, dtype=np.float64)) * res
     # Width across the medial axis: the centre-to-centre distance to a side, minus half a cell, twice.
-    width = 2.0 * dist - res
-    band = sub & (width > 2.0 * params.robot_radius_m) & (width <= params.passage_max_width_m)
+    width_of = 2.0 * dist_of - res
+    band_of = (width_of > 2.0 * params.robot_radius_m) & (width_of <= params.passage_max_width_m)
+    band = sub & band_of[d2]
     # The medial axis within the band: ridge cells of the distance map (a local maximum across
     # some direction), thinned to one cell. Cheaper than skeletonising all free space.
-    skel = skeletonize(band & _ridge(dist))
+    skel = skeletonize(band & _ridge(d2))
     narrow = skel
     chains, n = ndi.label(narrow, structure=EIGHT)
     if n == 0:
         return ()
     idx = np.flatnonzero(chains.ravel())
     cid = chains.ravel()[idx]
-    w = width.ravel()[idx]
+    w = width_of[d2.ravel()[idx]]
     # Per chain: the 20th-percentile width (sort by (chain, width), pick the rank).
     order = np.lexsort((w, cid))
     cid_s, w_s = cid[order], w[order]
@@ -97,11 +103,16 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     passages: list[NarrowPassage] = []
     # Necessary conditions, vectorised, before the per-core work: a chain of n cells spans at
     # most n * sqrt(2) cells and at most its bounding box's diagonal.
-    n_cells = np.bincount(cores.ravel(), minlength=m + 1)
+    core_idx = idx[cores.ravel()[idx] > 0]
+    core_id = cores.ravel()[core_idx]
+    n_cells = np.bincount(core_id, minlength=m + 1)
     min_cells = params.passage_min_length_m / res - 1.0
-    for k, sl in enumerate(ndi.find_objects(cores), start=1):
-        if sl is None or n_cells[k] * math.sqrt(2) < min_cells:
-            continue
+    long_enough = np.flatnonzero(n_cells * math.sqrt(2) >= min_cells)
+    long_enough = long_enough[long_enough > 0]
+    core_r, core_c = np.divmod(core_idx, sub.shape[1])
+    boxes = component_boxes(core_id, core_r, core_c, long_enough)
+    for k in long_enough.tolist():
+        sl = boxes[k]
         if math.hypot(sl[0].stop - sl[0].start, sl[1].stop - sl[1].start) < min_cells:
             continue
         rr, cc = np.nonzero(cores[sl] == k)
@@ -122,10 +133,10 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
         proj = (pts - mean) @ axis
         length_m = (float(proj.max() - proj.min()) + 1.0) * res
         # Cheap test first, with the skeleton's width (at most a cell narrower than the true one).
-        rough_w = float(np.median(width[rr, cc]))
+        rough_w = float(np.median(width_of[d2[rr, cc]]))
         if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * rough_w:
             continue
-        sides = _side_distances(sub, pts, dist[rr, cc] / res, np.array([-axis[1], axis[0]]),
+        sides = _side_distances(sub, pts, dist_of[d2[rr, cc]] / res, np.array([-axis[1], axis[0]]),
                                 SIDE_TOL_M / res)
         bounded = np.isfinite(sides).all(axis=1)
         if bounded.mean() < MIN_BOUNDED_FRACTION:
@@ -154,9 +165,10 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     return tuple(passages)
 
 
-def _ridge(d: npt.NDArray[np.float64]) -> BoolArray:
-    """Cells whose value is >= both neighbours along at least one of the four directions."""
-    p = np.pad(d, 1, mode="constant", constant_values=0.0)
+def _ridge(d: npt.NDArray[np.integer] | npt.NDArray[np.floating]) -> BoolArray:
+    """Cells whose value is >= both neighbours along at least one of the four directions (the
+    same cells for a distance map and for its square)."""
+    p = np.pad(d, 1, mode="constant", constant_values=0)
     c = p[1:-1, 1:-1]
     out = np.zeros(d.shape, dtype=bool)
     for (r_a, c_a), (r_b, c_b) in (((0, 1), (2, 1)), ((1, 0), (1, 2)), ((0, 0), (2, 2)), ((0, 2), (2, 0))):
@@ -175,18 +187,23 @@ def _side_distances(open_: BoolArray, pts: npt.NDArray[np.float64], reach: npt.N
     the side's edge: the two sides summed, minus half a cell, is the width.
     """
     steps = np.arange(0.0, float(reach.max()) + tol_cells + 0.5, 0.5)
+    limit = reach + tol_cells
     out = np.full((len(pts), 2), np.inf)
+    h, w = open_.shape
     for j, sign in enumerate((-1.0, 1.0)):
-        for t in steps.tolist():
-            x = pts[:, 0] + sign * t * normal[0]
-            y = pts[:, 1] + sign * t * normal[1]
-            r = np.floor(y).astype(int)
-            c = np.floor(x).astype(int)
-            inside = (r >= 0) & (r < open_.shape[0]) & (c >= 0) & (c < open_.shape[1])
-            blocked = ~inside
-            blocked[inside] = ~open_[r[inside], c[inside]]
-            new = blocked & (t <= reach + tol_cells) & np.isinf(out[:, j])
-            out[new, j] = t
+        # All samples of all points at once: (N, steps), the same arithmetic as one by one.
+        t = sign * steps
+        x = pts[:, 0:1] + (t * normal[0])[None, :]
+        y = pts[:, 1:2] + (t * normal[1])[None, :]
+        r = np.floor(y).astype(int)
+        c = np.floor(x).astype(int)
+        inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
+        blocked = ~inside
+        blocked[inside] = ~open_[r[inside], c[inside]]
+        hit = blocked & (steps[None, :] <= limit[:, None])
+        first = np.argmax(hit, axis=1)
+        found = hit[np.arange(len(pts)), first]
+        out[found, j] = steps[first[found]]
     return out
 
 

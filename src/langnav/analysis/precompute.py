@@ -130,3 +130,65 @@ class GridLayers:
     def exterior(self) -> BoolArray:
         """Unknown cells connected (8-neighbours) to the grid border: the world outside the map."""
         return _frozen(self.unknown_outside[self.unknown_components.labels])
+
+
+def truncated_sq_edt(mask: BoolArray, max_cells: int) -> npt.NDArray[np.int32] | npt.NDArray[np.int16]:
+    """Squared Euclidean distance (in cells², integers) from each cell of ``mask`` to the nearest
+    cell outside it, exact wherever it is at most ``max_cells ** 2``; elsewhere some value above
+    ``max_cells ** 2``; 0 off the mask. As in ``ndi.distance_transform_edt(mask)``, cells beyond
+    the array's edge do not count as outside.
+
+    For steps that only need short distances (how wide a narrow passage is): a column pass
+    (distance to the nearest outside cell in the same column, capped) and a min-plus pass over
+    the ``2 * max_cells + 1`` nearest columns, in small integers. ``np.sqrt`` of the result
+    (as float64) is bit for bit what ``distance_transform_edt`` returns where it is exact.
+    """
+    m = np.asarray(mask, dtype=bool)
+    h, w = m.shape
+    cap = int(max_cells) + 1
+    dtype = np.int16 if cap * cap + max_cells * max_cells < np.iinfo(np.int16).max else np.int32
+    idx = np.arange(h, dtype=np.int32)[:, None]
+    far = np.int32(h + cap + 1)
+    # Column pass: rows to the nearest outside cell above / below (or "far" when there is none).
+    above = np.where(m, -far, idx)
+    np.maximum.accumulate(above, axis=0, out=above)
+    below = np.where(m, far + h, idx)[::-1]
+    np.minimum.accumulate(below, axis=0, out=below)
+    col = np.minimum(idx - above, below[::-1] - idx)
+    np.minimum(col, cap, out=col)
+    g2 = col.astype(dtype)
+    g2 *= g2
+    out = g2.copy()
+    tmp = np.empty_like(g2)
+    # Row pass: the nearest outside cell dc columns away is at least dc away; past max_cells
+    # it cannot make a distance within the bound.
+    for dc in range(1, min(int(max_cells), w - 1) + 1):
+        k = dtype(dc * dc)
+        t = tmp[:, dc:]
+        np.add(g2[:, :-dc], k, out=t)
+        np.minimum(out[:, dc:], t, out=out[:, dc:])
+        t = tmp[:, :-dc]
+        np.add(g2[:, dc:], k, out=t)
+        np.minimum(out[:, :-dc], t, out=out[:, :-dc])
+    return out
+
+
+def component_boxes(ids: npt.NDArray[np.integer], rows: npt.NDArray[np.integer], cols: npt.NDArray[np.integer],
+                    wanted: npt.NDArray[np.integer]) -> dict[int, tuple[slice, slice]]:
+    """Bounding boxes (as ``ndi.find_objects`` gives them) of the components ``wanted``, from
+    their cells (``ids[i]`` is the label of the cell at ``rows[i], cols[i]``): a pass over those
+    cells only, instead of over the whole label image."""
+    if len(wanted) == 0:
+        return {}
+    n = int(max(int(np.max(wanted)), int(np.max(ids)) if len(ids) else 0)) + 1
+    big = np.iinfo(np.int64).max
+    r0 = np.full(n, big, dtype=np.int64)
+    c0 = np.full(n, big, dtype=np.int64)
+    r1 = np.full(n, -1, dtype=np.int64)
+    c1 = np.full(n, -1, dtype=np.int64)
+    np.minimum.at(r0, ids, rows)
+    np.minimum.at(c0, ids, cols)
+    np.maximum.at(r1, ids, rows)
+    np.maximum.at(c1, ids, cols)
+    return {int(k): (slice(int(r0[k]), int(r1[k]) + 1), slice(int(c0[k]), int(c1[k]) + 1))
+            for k in np.asarray(wanted).tolist()}
