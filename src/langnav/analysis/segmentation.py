@@ -34,9 +34,6 @@ log = logging.getLogger(__name__)
 ENCLOSED_UNKNOWN_MIN_FLOOR_SHARE: Final = 0.25
 #: Outlines of larger bounding boxes (cells) are traced on a subsampled mask.
 OUTLINE_MAX_CELLS: Final = 250_000
-#: A hallway candidate whose labelled cells exceed its floor by this share (unscanned parts,
-#: clutter) has its width measured on all its cells.
-UNFLOORED_SHARE_FOR_WIDTH: Final = 0.1
 #: Outlines are thinned to about this many points before simplification (they are for drawing).
 OUTLINE_MAX_POINTS: Final = 400
 #: The grid is cropped to the free space plus this margin (m) before segmenting: enough for the
@@ -160,9 +157,12 @@ def _kind_and_size(mask: npt.NDArray[np.bool_], floor_cells: int, area_m2: float
     def hallway(w: float) -> bool:
         return w <= params.hallway_max_width_m and area_m2 / w >= params.hallway_min_elongation * w
 
-    if hallway(width) and int(mask.sum()) > floor_cells * (1 + UNFLOORED_SHARE_FOR_WIDTH):
-        # Much of the space is unscanned or cluttered: measure on the whole space instead.
-        width = max(width, 2.0 * float(ndi.distance_transform_edt(np.pad(mask, 1), sampling=res).max()) - res)
+    if hallway(width) and int(mask.sum()) > floor_cells:
+        # Part of the space is unscanned or cluttered (shelves): measure on the whole space, on a
+        # coarser copy when it is large (a corridor network spans the map).
+        k = max(1, math.ceil(math.sqrt(mask.size / OUTLINE_MAX_CELLS)))
+        whole = np.pad(mask[::k, ::k], 1)
+        width = max(width, 2.0 * float(ndi.distance_transform_edt(whole, sampling=res * k).max()) - res * k)
     return (ElementKind.HALLWAY if hallway(width) else ElementKind.ROOM), area_m2 / width, width
 
 
