@@ -21,6 +21,7 @@ from scipy import ndimage as ndi
 
 from langnav.analysis.elements import Corner, Wall
 from langnav.analysis.params import AnalysisParams
+from langnav.analysis.precompute import GridLayers
 from langnav.maps.grid import OccupancyGrid
 
 #: Walls meet in a corner when the angle between them is within this of 90 degrees.
@@ -53,12 +54,14 @@ def _intersect(a: Wall, b: Wall) -> tuple[float, float] | None:
 
 
 def find_corners(grid: OccupancyGrid, params: AnalysisParams, walls: tuple[Wall, ...],
-                 labels: npt.NDArray[np.int32], room_labels: Mapping[str, int]
-                 ) -> tuple[tuple[Corner, ...], tuple[Wall, ...]]:
+                 labels: npt.NDArray[np.int32], room_labels: Mapping[str, int],
+                 layers: GridLayers | None = None) -> tuple[tuple[Corner, ...], tuple[Wall, ...]]:
     """Corners of every space, and the walls with their ends moved onto the corners.
 
-    ``room_labels`` maps a space id to its label.
+    ``room_labels`` maps a space id to its label; ``layers`` are the grid's shared masks (built
+    when not given).
     """
+    layers = layers or GridLayers(grid)
     cos_max = math.sin(math.radians(CORNER_MAX_SKEW_DEG))
     ends: dict[str, list[tuple[float, float]]] = {w.id: [w.start, w.end] for w in walls}
     by_room: dict[str | None, list[Wall]] = {}
@@ -102,15 +105,17 @@ def find_corners(grid: OccupancyGrid, params: AnalysisParams, walls: tuple[Wall,
     for k, (room, x, a, b) in enumerate(found, start=1):
         label = room_labels.get(room, 0) if room is not None else 0
         corners.append(Corner(id=f"corner_{k}", point=x, room=room, walls=(a.id, b.id),
-                              approach=approach_point(grid, params, x, labels, label)))
+                              approach=approach_point(grid, params, x, labels, label, free=layers.free)))
     new_walls = tuple(dataclasses.replace(w, start=ends[w.id][0], end=ends[w.id][1]) for w in walls)
     return tuple(corners), new_walls
 
 
 def approach_point(grid: OccupancyGrid, params: AnalysisParams, point: tuple[float, float],
-                   labels: npt.NDArray[np.int32], label: int) -> tuple[float, float]:
+                   labels: npt.NDArray[np.int32], label: int,
+                   free: npt.NDArray[np.bool_] | None = None) -> tuple[float, float]:
     """The free cell of space ``label`` nearest ``point`` with the goal clearance (world metres):
     its centre is at least ``params.goal_clearance_m`` from every occupied or unknown cell's edge.
+    ``free`` is ``grid.free`` when the caller has it.
 
     Falls back to the clearest cell of the space within reach when none has the full clearance.
     """
@@ -128,7 +133,7 @@ def approach_point(grid: OccupancyGrid, params: AnalysisParams, point: tuple[flo
     padded = np.zeros((r1 - r0 + 2 * m, c1 - c0 + 2 * m), dtype=bool)
     pr0, pc0 = max(0, r0 - m), max(0, c0 - m)
     pr1, pc1 = min(grid.height, r1 + m), min(grid.width, c1 + m)
-    padded[pr0 - (r0 - m):pr1 - (r0 - m), pc0 - (c0 - m):pc1 - (c0 - m)] = grid.free[pr0:pr1, pc0:pc1]
+    padded[pr0 - (r0 - m):pr1 - (r0 - m), pc0 - (c0 - m):pc1 - (c0 - m)] = (grid.free if free is None else free)[pr0:pr1, pc0:pc1]
     edt = np.asarray(ndi.distance_transform_edt(padded), dtype=np.float64)[m:-m, m:-m]
     win_clear = np.maximum(edt * res - res / 2, 0.0)
     rr, cc = np.mgrid[r0:r1, c0:c1]

@@ -22,7 +22,7 @@ from skimage.morphology import skeletonize
 
 from langnav.analysis.elements import Door, NarrowPassage
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import EIGHT, component_boxes, truncated_sq_edt
+from langnav.analysis.precompute import EIGHT, GridLayers, component_boxes, truncated_sq_edt
 from langnav.maps.grid import OccupancyGrid
 
 #: A passage is at least this many times longer than wide: a corridor, not a gap beside an
@@ -52,13 +52,16 @@ def clearance_m(grid: OccupancyGrid, blocking: BoolArray) -> npt.NDArray[np.floa
 
 def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArray[np.int32],
                   room_ids: Mapping[int, str], doors: Sequence[Door], blocking: BoolArray,
-                  dist_m: npt.NDArray[np.float64] | None = None) -> tuple[NarrowPassage, ...]:
+                  dist_m: npt.NDArray[np.float64] | None = None,
+                  layers: GridLayers | None = None) -> tuple[NarrowPassage, ...]:
     """Narrow passages of the navigable space ``~blocking`` (see the module docstring).
 
-    ``dist_m`` is :func:`clearance_m` of ``blocking`` when the caller already has it.
+    ``dist_m`` is :func:`clearance_m` of ``blocking`` when the caller already has it; ``layers``
+    the grid's shared masks (built when not given).
     """
     res = grid.resolution_m
-    open_ = ~blocking & ~grid.occupied
+    occupied = grid.occupied if layers is None else layers.occupied
+    open_ = ~blocking & ~occupied
     rows_any = np.flatnonzero(open_.any(axis=1))
     cols_any = np.flatnonzero(open_.any(axis=0))
     if len(rows_any) == 0:

@@ -26,6 +26,7 @@ from langnav.analysis.elements import Door, MapAnalysis, UnexploredArea
 from langnav.analysis.obstacles import find_obstacles
 from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
 from langnav.analysis.passages import find_passages
+from langnav.analysis.precompute import GridLayers
 from langnav.analysis.segmentation import segment_spaces
 from langnav.analysis.unexplored import UnexploredResult, find_unexplored
 from langnav.analysis.walls import find_walls
@@ -50,15 +51,17 @@ def analyze(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS) -> Map
     room_ids = {r.label: r.id for r in rooms}
     room_labels = {r.id: r.label for r in rooms}
 
-    unx = find_unexplored(grid, params)
-    obst = find_obstacles(grid, params, labels, room_ids, exterior=unx.exterior)
-    walls = find_walls(grid, params, labels, room_ids, wall=grid.occupied & ~obst.mask)
+    # Masks and components every detector needs, computed once.
+    layers = GridLayers(grid)
+    unx = find_unexplored(grid, params, layers)
+    obst = find_obstacles(grid, params, labels, room_ids, exterior=unx.exterior, layers=layers)
+    walls = find_walls(grid, params, labels, room_ids, wall=layers.occupied & ~obst.mask, layers=layers)
 
-    corners, walls = find_corners(grid, params, walls, labels, room_labels)
+    corners, walls = find_corners(grid, params, walls, labels, room_labels, layers=layers)
 
     # Passages: unknown noise specks do not narrow a passage; everything else unknown does.
-    blocking = grid.occupied | (grid.unknown & ~unx.specks)
-    passages = find_passages(grid, params, labels, room_ids, seg.doors, blocking)
+    blocking = layers.occupied | (layers.unknown & ~unx.specks)
+    passages = find_passages(grid, params, labels, room_ids, seg.doors, blocking, layers=layers)
     doors = tuple(_resolve_door(d, grid, unx) for d in seg.doors)
     return MapAnalysis(grid=grid, params=params, rooms=rooms, doors=doors, walls=walls,
                        corners=corners, obstacles=obst.obstacles, narrow_passages=passages,

@@ -132,7 +132,7 @@ class GridLayers:
         return _frozen(self.unknown_outside[self.unknown_components.labels])
 
 
-def truncated_sq_edt(mask: BoolArray, max_cells: int) -> npt.NDArray[np.int32] | npt.NDArray[np.int16]:
+def truncated_sq_edt(mask: BoolArray, max_cells: int) -> npt.NDArray[np.signedinteger[Any]]:
     """Squared Euclidean distance (in cells², integers) from each cell of ``mask`` to the nearest
     cell outside it, exact wherever it is at most ``max_cells ** 2``; elsewhere some value above
     ``max_cells ** 2``; 0 off the mask. As in ``ndi.distance_transform_edt(mask)``, cells beyond
@@ -146,18 +146,23 @@ def truncated_sq_edt(mask: BoolArray, max_cells: int) -> npt.NDArray[np.int32] |
     m = np.asarray(mask, dtype=bool)
     h, w = m.shape
     cap = int(max_cells) + 1
-    dtype = np.int16 if cap * cap + max_cells * max_cells < np.iinfo(np.int16).max else np.int32
-    idx = np.arange(h, dtype=np.int32)[:, None]
-    far = np.int32(h + cap + 1)
-    # Column pass: rows to the nearest outside cell above / below (or "far" when there is none).
-    above = np.where(m, -far, idx)
-    np.maximum.accumulate(above, axis=0, out=above)
-    below = np.where(m, far + h, idx)[::-1]
-    np.minimum.accumulate(below, axis=0, out=below)
-    col = np.minimum(idx - above, below[::-1] - idx)
-    np.minimum(col, cap, out=col)
-    g2 = col.astype(dtype)
-    g2 *= g2
+    dtype: type[np.signedinteger[Any]] = np.int16 if cap * cap + max_cells * max_cells < np.iinfo(np.int16).max else np.int32
+    # Column pass: rows to the nearest outside cell above / below ("far" when there is none),
+    # in place, in the smallest integer type that holds the row numbers.
+    far = h + cap + 1
+    it: type[np.signedinteger[Any]] = np.int16 if 2 * h + cap + 2 < np.iinfo(np.int16).max else np.int32
+    idx = np.arange(h, dtype=it)[:, None]
+    up = np.where(m, it(-far), idx)
+    np.maximum.accumulate(up, axis=0, out=up)
+    np.subtract(idx, up, out=up)
+    down = np.where(m, it(far + h), idx)
+    np.minimum.accumulate(down[::-1], axis=0, out=down[::-1])
+    np.subtract(down, idx, out=down)
+    np.minimum(up, down, out=up)
+    np.minimum(up, cap, out=up)
+    col = up
+    g2: npt.NDArray[np.signedinteger[Any]] = col.astype(dtype)
+    np.multiply(g2, g2, out=g2)
     out = g2.copy()
     tmp = np.empty_like(g2)
     # Row pass: the nearest outside cell dc columns away is at least dc away; past max_cells

@@ -23,7 +23,7 @@ from scipy import ndimage as ndi
 
 from langnav.analysis.elements import Wall
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import dilate4
+from langnav.analysis.precompute import GridLayers, dilate4
 from langnav.maps.grid import OccupancyGrid
 
 #: Smoothing of the wall mask before taking its gradient, in cells: enough to turn a pixel
@@ -183,9 +183,10 @@ def _refit(x: FloatArray, y: FloatArray, n_x: float, n_y: float) -> tuple[float,
 
 
 def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArray[np.int32],
-                   wall: npt.NDArray[np.bool_]) -> list[WallLine]:
+                   wall: npt.NDArray[np.bool_], layers: GridLayers | None = None) -> list[WallLine]:
     """Straight wall lines per space label, in grid coordinates (see the module docstring)."""
-    x, y, nx, ny, lab = _face_points(labels, wall, grid.free)
+    free = grid.free if layers is None else layers.free
+    x, y, nx, ny, lab = _face_points(labels, wall, free)
     res = grid.resolution_m
     min_len = params.wall_min_length_m / res
     max_dev = max(params.wall_max_deviation_m / res, 0.5)
@@ -268,12 +269,15 @@ def _clean(v: float | np.floating | npt.NDArray[np.float64]) -> float:
 
 
 def find_walls(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArray[np.int32],
-               room_ids: Mapping[int, str], wall: npt.NDArray[np.bool_] | None = None) -> tuple[Wall, ...]:
+               room_ids: Mapping[int, str], wall: npt.NDArray[np.bool_] | None = None,
+               layers: GridLayers | None = None) -> tuple[Wall, ...]:
     """Wall segments bounding each space. ``wall`` is the mask of wall cells (default: occupied;
-    the pipeline removes obstacles from it so furniture sides are not walls)."""
-    mask = grid.occupied if wall is None else wall
+    the pipeline removes obstacles from it so furniture sides are not walls); ``layers`` the
+    grid's shared masks (built when not given)."""
+    layers = layers or GridLayers(grid)
+    mask = layers.occupied if wall is None else wall
     walls: list[Wall] = []
-    for k, line in enumerate(fit_wall_lines(grid, params, labels, mask), start=1):
+    for k, line in enumerate(fit_wall_lines(grid, params, labels, mask, layers), start=1):
         start, end, inward = line_to_world(grid, line)
         walls.append(Wall(id=f"wall_{k}", start=start, end=end, room=room_ids.get(line.label), inward=inward))
     return tuple(walls)
