@@ -55,6 +55,9 @@ class AnalysisParams:
     #: Segmentation: two hallway-narrow spaces stay one corridor when their clearance peaks are
     #: below this multiple of the opening's (a corridor narrowed by a cabinet, not a door).
     seg_hallway_saddle_ratio: float = 1.0
+    #: Segmentation: an unknown region enclosed by a room counts in its area up to this size (m2;
+    #: an unscanned corner or half of a room), never a courtyard inside a corridor loop.
+    seg_enclosed_unknown_max_area_m2: float = 30.0
     #: Segmentation: clearance (m) below which a free cell cannot start a space (about a robot radius).
     seg_min_peak_m: float = 0.15
     #: Straight wall segments shorter than this are not reported.

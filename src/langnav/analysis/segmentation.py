@@ -87,8 +87,8 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams) -> Segmentation:
     raw_labels = basins(fl.clearance_m, fl.floor, params.seg_min_peak_m)
     judge = JambJudge(fl.floor, fl.clearance_m, res, params) if params.seg_jamb_test else None
     labels = merge_basins(raw_labels, fl.clearance_m, res, params, judge)
-    labels, exterior = _attach_enclosed_unknown(labels, fl, grid)
-    labels = _fill_enclosed(labels)
+    labels, exterior = _attach_enclosed_unknown(labels, fl, grid, params)
+    labels = _fill_enclosed(labels, params.seg_island_max_area_m2 / (res * res))
     exterior &= labels == 0
     raw_doors = doors_between(labels, fl.clearance_m, res, params)
     raw_doors += openings_to_unknown(labels, fl.floor, exterior, grid.cells == OCCUPIED,
@@ -99,8 +99,8 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams) -> Segmentation:
     return Segmentation(labels=labels, rooms=tuple(rooms), doors=tuple(doors))
 
 
-def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor,
-                             grid: OccupancyGrid) -> tuple[npt.NDArray[np.int32], npt.NDArray[np.bool_]]:
+def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor, grid: OccupancyGrid,
+                             params: AnalysisParams) -> tuple[npt.NDArray[np.int32], npt.NDArray[np.bool_]]:
     """Give unknown regions enclosed by one room (unscanned corners) to that room.
 
     Returns the new labels and the unknown that remains unexplored territory.
@@ -123,7 +123,14 @@ def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor,
     counts = counts.reshape(n + 1, int(labels.max()) + 1)
     best_room = counts.argmax(axis=1)
     best_share = counts.max(axis=1) / np.maximum(total, 1)
-    take = (best_share >= ENCLOSED_UNKNOWN_MIN_FLOOR_SHARE) & (best_room > 0)
+    # Not larger than an unscanned part of a room can be: a bounded area, and less than the
+    # scanned part of the room itself (a courtyard inside a corridor loop is neither).
+    cell_area = grid.resolution_m**2
+    unknown_area = np.bincount(lab.ravel(), minlength=n + 1) * cell_area
+    room_area = np.bincount(labels.ravel(), minlength=int(labels.max()) + 1) * cell_area
+    take = (best_share >= ENCLOSED_UNKNOWN_MIN_FLOOR_SHARE) & (best_room > 0) \
+        & (unknown_area <= params.seg_enclosed_unknown_max_area_m2) \
+        & (unknown_area <= room_area[best_room])
     take[0] = False
     take[border] = False
     if take.any():
@@ -133,17 +140,23 @@ def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor,
     return out.astype(np.int32), remaining
 
 
-def _fill_enclosed(labels: npt.NDArray[np.int32]) -> npt.NDArray[np.int32]:
-    """Give each space the unlabelled cells it encloses (clutter, unscanned spots): they are part
-    of its floor area, as a person sees the room."""
+def _fill_enclosed(labels: npt.NDArray[np.int32], max_cells: float) -> npt.NDArray[np.int32]:
+    """Give each space the small unlabelled pockets it encloses (clutter, unscanned spots up to
+    ``max_cells``): they are part of its floor area, as a person sees the room. A large enclosed
+    region (a courtyard inside a corridor loop) stays out."""
     out = labels.copy()
     for k, sl in enumerate(ndi.find_objects(labels), start=1):
         if sl is None:
             continue
         sub = labels[sl]
         inside = ndi.binary_fill_holes(sub == k) & (sub == 0)
-        if inside.any():
-            out[sl][inside] = k
+        if not inside.any():
+            continue
+        pockets, n = ndi.label(inside, structure=EIGHT)
+        sizes = np.bincount(pockets.ravel(), minlength=n + 1)
+        take = sizes <= max_cells
+        take[0] = False
+        out[sl][take[pockets]] = k
     return out
 
 
