@@ -29,7 +29,7 @@ def test_a_correct_answer_becomes_the_intent() -> None:
     assert intent.steps[0].target is not None and intent.steps[0].target.kind == Element.DOOR
     assert intent.steps[0].target.side == Side.LEFT and intent.steps[1].angle_deg == 90
     assert len(backend.calls) == 1
-    assert backend.calls[0][1]["content"].endswith("Go to the door on your left, then turn left\n>>>")
+    assert backend.calls[0][-1]["content"].endswith("Go to the door on your left, then turn left\n>>>")
 
 
 def test_fenced_json_is_accepted() -> None:
@@ -41,10 +41,10 @@ def test_malformed_json_is_asked_again_with_the_error() -> None:
     tr, backend = _translator('{"steps": [{"movement": "navigate", ', answer([GO_TO_LEFT_DOOR]))
     intent = tr.translate("go to the door on your left", CTX)
     assert intent.steps[0].target is not None and intent.steps[0].target.side == Side.LEFT
-    reask = backend.calls[1]
-    assert [m["role"] for m in reask] == ["system", "user", "assistant", "user"]
-    assert reask[2]["content"] == '{"steps": [{"movement": "navigate", '
-    assert "not valid JSON" in reask[3]["content"]
+    first, reask = backend.calls
+    assert reask[: len(first)] == first and [m["role"] for m in reask[len(first):]] == ["assistant", "user"]
+    assert reask[-2]["content"] == '{"steps": [{"movement": "navigate", '
+    assert "not valid JSON" in reask[-1]["content"]
 
 
 def test_wrong_types_twice_raise_llm_error() -> None:
@@ -54,7 +54,7 @@ def test_wrong_types_twice_raise_llm_error() -> None:
         tr.translate("drive far", CTX)
     assert "nothing will run" in str(info.value)
     assert len(backend.calls) == 2
-    assert "steps.0.distance_m" in backend.calls[1][3]["content"]
+    assert "steps.0.distance_m" in backend.calls[1][-1]["content"]
 
 
 @pytest.mark.parametrize("bad", [
@@ -120,7 +120,7 @@ def test_prompt_injection_is_data() -> None:
     tr, backend = _translator(refusal)
     intent = tr.translate(hostile, CTX)
     assert intent.steps == [] and intent.clarification == "I won't drive into a wall; I can drive next to it."
-    assert hostile not in backend.calls[0][0]["content"]
+    assert all(hostile not in m["content"] for m in backend.calls[0][:-1])
     # an answer that tries to smuggle a command or a coordinate in is refused by the schema
     smuggled = json.dumps({"steps": [{"movement": "move", "direction": "forward", "distance_m": 100,
                                       "speed": "max"}]})

@@ -48,8 +48,8 @@ def test_correct_answer_with_structured_output(model_server: ModelServer) -> Non
     assert body["model"] == "qwen-test" and body["temperature"] == 0.0
     assert body["response_format"]["type"] == "json_schema"
     assert set(body["response_format"]["json_schema"]["schema"]["properties"]) == {"steps", "clarification"}
-    assert [m["role"] for m in body["messages"]] == ["system", "user"]
-    assert "door_1" in body["messages"][0]["content"]
+    assert body["messages"][0]["role"] == "system" and body["messages"][-1]["role"] == "user"
+    assert "door_1" in body["messages"][-1]["content"]
 
 
 def test_server_without_json_schema_gets_json_object(model_server: ModelServer) -> None:
@@ -71,9 +71,10 @@ def test_malformed_json_then_a_good_reask(model_server: ModelServer) -> None:
                              Reply(chat_completion(answer([GO_TO_LEFT_DOOR])))]
     intent = _translator(model_server).translate("go to the door on your left", CTX)
     assert len(intent.steps) == 1 and len(model_server.requests) == 2
-    second = model_server.requests[1].body["messages"]
-    assert second[2] == {"role": "assistant", "content": 'Sure! Here is the JSON: {"steps": ['}
-    assert "not valid JSON" in second[3]["content"]
+    first, second = (r.body["messages"] for r in model_server.requests)
+    assert second[: len(first)] == first
+    assert second[-2] == {"role": "assistant", "content": 'Sure! Here is the JSON: {"steps": ['}
+    assert "not valid JSON" in second[-1]["content"]
 
 
 def test_wrong_types_twice_raise(model_server: ModelServer) -> None:
@@ -97,7 +98,7 @@ def test_prompt_injection(model_server: ModelServer) -> None:
     intent = _translator(model_server).translate(hostile, CTX)
     assert intent.steps == [] and "wall" in (intent.clarification or "")
     messages = model_server.requests[0].body["messages"]
-    assert hostile not in messages[0]["content"] and hostile in messages[1]["content"]
+    assert all(hostile not in m["content"] for m in messages[:-1]) and hostile in messages[-1]["content"]
 
 
 def test_timeout_is_fast_and_clear(model_server: ModelServer) -> None:

@@ -27,7 +27,14 @@ from langnav.language.llm.base import (
     parse_answer,
     timeout_from_env,
 )
-from langnav.language.llm.context import build_messages, describe_map, element_views, system_prompt
+from langnav.language.llm.context import (
+    build_messages,
+    describe_map,
+    element_views,
+    example_messages,
+    request_text,
+    system_prompt,
+)
 from langnav.language.translator import Translator, register
 
 #: Elements listed for the local model: every room and the nearest doors still fit.
@@ -77,4 +84,4 @@ register("auto", auto_translator)
 
 __all__ = ["DEFAULT_TIMEOUT_S", "LOCAL_TIMEOUT_S", "AutoTranslator", "ChatBackend", "LLMTranslator", "Message",
            "answer_schema", "build_messages", "configured_backend", "describe_map", "element_views",
-           "missing_references", "parse_answer", "system_prompt"]
+           "example_messages", "missing_references", "parse_answer", "request_text", "system_prompt"]
