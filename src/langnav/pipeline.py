@@ -65,11 +65,13 @@ class PlanItem:
     note: str
     explore: bool
     _planner: Planner = field(repr=False, compare=False)
+    #: the pose the whole prompt started from ("go back to where you started" goes there)
+    origin: Pose | None = None
 
     def reground(self, pose: Pose | tuple[float, float, float], grid: OccupancyGrid | MapAnalysis) -> list[Command]:
         """This step's commands from the robot's pose ((x, y, yaw_deg) or Pose) and map of now.
         Raises GroundingError or PlanRejected with a readable reason."""
-        return self._planner.reground_step(self.step, pose, grid, self.index)
+        return self._planner.reground_step(self.step, pose, grid, self.index, origin=self.origin)
 
 
 @dataclass(frozen=True)
@@ -187,7 +189,8 @@ class Planner:
         k = 0
         for s in grounded.steps:
             n = len(s.commands)
-            items.append(PlanItem(s.index, s.step, tuple(commands[k:k + n]), s.note, s.explore, self))
+            items.append(PlanItem(s.index, s.step, tuple(commands[k:k + n]), s.note, s.explore, self,
+                                  grounded.start_pose))
             k += n
         return tuple(items)
 
@@ -196,12 +199,14 @@ class Planner:
         return PlanResult(prompt, intent, (), (), (), reason, name)
 
     def reground_step(self, step: Step, pose: Pose | tuple[float, float, float],
-                      grid_or_analysis: OccupancyGrid | MapAnalysis, index: int = 0) -> list[Command]:
-        """One step's commands from ``pose`` on the map of now, validated. Raises GroundingError /
-        PlanRejected with a readable reason."""
+                      grid_or_analysis: OccupancyGrid | MapAnalysis, index: int = 0, *,
+                      origin: Pose | None = None) -> list[Command]:
+        """One step's commands from ``pose`` on the map of now, validated. ``origin`` is the pose the
+        prompt started from (for "go back"). Raises GroundingError / PlanRejected with a readable reason."""
         analysis = self.analysis_for(grid_or_analysis)
         start = as_pose(pose)
-        ctx = GroundingContext(analysis, free_space_for(analysis.grid, self.params), self.params, dict(self.named_places))
+        ctx = GroundingContext(analysis, free_space_for(analysis.grid, self.params), self.params,
+                               dict(self.named_places), origin=origin)
         gs: GroundedStep = ground_step(step, ctx, start, index)
         checked = validate_plan(list(gs.commands), analysis.grid, start, params=self.params, space=ctx.space)
         return list(checked.commands)

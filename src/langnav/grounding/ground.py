@@ -57,6 +57,7 @@ from langnav.language.intent import (
     ElementRef,
     Intent,
     Movement,
+    Place,
     Query,
     Step,
 )
@@ -159,6 +160,7 @@ def ground(intent: Intent, analysis: MapAnalysis, pose: Pose | Sequence[float], 
            params: AnalysisParams | None = None,
            named_places: Mapping[str, Point] | None = None) -> GroundedPlan:
     """Every step of ``intent`` as commands, each read from where the previous ones leave the robot.
+    ``pose`` is also the prompt's start ("go back to where you started").
 
     Raises GroundingError with a sentence for the user when a step names something the map
     does not have, or asks for something unsafe (a move into a wall).
@@ -170,7 +172,7 @@ def ground(intent: Intent, analysis: MapAnalysis, pose: Pose | Sequence[float], 
                              "'go to the nearest door'.")
     p = params or analysis.params
     start = as_pose(pose)
-    ctx = GroundingContext(analysis, free_space_for(analysis.grid, p), p, dict(named_places or {}))
+    ctx = GroundingContext(analysis, free_space_for(analysis.grid, p), p, dict(named_places or {}), origin=start)
     steps: list[GroundedStep] = []
     cur = start
     for i, step in enumerate(intent.steps):
@@ -188,6 +190,8 @@ class GroundingContext:
     space: FreeSpace
     params: AnalysisParams
     named: dict[str, Point]
+    #: where the robot stood when the prompt began (``Place.START``); None when not known
+    origin: Pose | None = None
 
 
 def ground_step(step: Step, ctx: GroundingContext, pose: Pose, index: int = 0) -> GroundedStep:
@@ -304,6 +308,8 @@ def _navigate(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> Grou
             ref = ElementRef(kind=Kind.ROOM, in_current_room=True)
         else:
             raise GroundingError("Where should I go? Name a place on the map, e.g. 'the door on your left'.")
+    if ref.place == Place.START:
+        return _to_start(step, ctx, pose, index)
     if ref.name and ref.name.lower() in {k.lower() for k in ctx.named}:
         xy = next(v for k, v in ctx.named.items() if k.lower() == ref.name.lower())
         comp = _component(ctx, pose)
@@ -340,6 +346,19 @@ def _navigate(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> Grou
     goal = _goal_at(e, detail, ctx, pose, comp, desc)
     verb = {Detail.NEXT_TO: "next to", Detail.TOWARDS: "towards"}.get(detail, "to")
     return _nav_step(step, pose, index, [goal], f"{verb} {desc}", (e.id,))
+
+
+def _to_start(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> GroundedStep:
+    """'Go back', 'return to where you started': the pose at which the prompt began."""
+    if ctx.origin is None:
+        raise GroundingError("I don't know where this instruction started, so I can't go back there; "
+                             "name the place instead, e.g. 'go back to the door'.")
+    comp = _component(ctx, pose)
+    goal = ctx.space.safe_point_near(ctx.origin.xy, comp, NAMED_PLACE_MAX_M)
+    if goal is None:
+        raise GroundingError(f"I cannot get back to where I started ({ctx.origin.x_m:.1f}, {ctx.origin.y_m:.1f}): "
+                             "no free space I can reach is near it.")
+    return _nav_step(step, pose, index, [goal], "back to where I started")
 
 
 def _goal_at(e: Element, detail: Detail, ctx: GroundingContext, pose: Pose, comp: int, desc: str) -> Point:

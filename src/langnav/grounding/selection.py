@@ -23,6 +23,7 @@ from dataclasses import dataclass
 from typing import Final
 
 import numpy as np
+from scipy.spatial import cKDTree
 
 from langnav.analysis.elements import (
     Corner,
@@ -53,7 +54,7 @@ from langnav.grounding.geometry import (
     to_robot_frame,
 )
 from langnav.language.intent import Element as Kind
-from langnav.language.intent import ElementRef, Side, Superlative
+from langnav.language.intent import ElementRef, Landmark, Place, Side, Superlative
 
 #: A robot standing in a doorway belongs to the nearest space within this distance.
 SPACE_SNAP_M: Final = 0.6
@@ -68,6 +69,9 @@ WALL_MIN_CHAIN_M: Final = 1.0
 CORNER_SIDE_TIE_M: Final = 0.3
 #: An element counts as inside a space when its point is within this distance of the space's cells.
 IN_SPACE_M: Final = 0.5
+#: "the door next to the box": the element's reference point lies within this distance of the
+#: landmark (its cells for rooms and obstacles); a door beside a box is a metre or two from it.
+NEAR_MAX_M: Final = 2.5
 
 #: Nouns for obstacles of a compact footprint ("the box") and of a long one ("the shelf"). When the
 #: words use one, obstacles of that shape are chosen before the others.
@@ -121,6 +125,8 @@ def describe_ref(ref: ElementRef) -> str:
     """"the second door on your left", "the biggest room", "the left corner of this room"."""
     if ref.name:
         return f"'{ref.name}'"
+    if ref.place == Place.START:
+        return "where I started"
     noun = KIND_NOUN[ref.kind][0]
     plain = ref.ordinal is None and ref.superlative is None and ref.side is None and ref.within is None
     if ref.kind in (Kind.ROOM, Kind.HALLWAY) and ref.in_current_room and plain:
@@ -137,11 +143,20 @@ def describe_ref(ref: ElementRef) -> str:
         words.append(noun)
         if ref.side is not None:
             words.append(SIDE_WORDS[ref.side])
-    if ref.within is not None:
+    if ref.near is not None and ref.near.kind in (Kind.ROOM, Kind.HALLWAY):
+        words.append(f"of {describe_ref(landmark_ref(ref.near))}")
+    elif ref.within is not None:
         words.append(f"of the {KIND_NOUN[ref.within][0]}")
     elif ref.in_current_room:
         words.append("in this room")
+    if ref.near is not None and ref.near.kind not in (Kind.ROOM, Kind.HALLWAY):
+        words.append(f"near {describe_ref(landmark_ref(ref.near))}")
     return " ".join(words)
+
+
+def landmark_ref(landmark: Landmark) -> ElementRef:
+    """A landmark as an element reference of its own."""
+    return ElementRef(**landmark.model_dump())
 
 
 def _count_phrase(n: int, ref: ElementRef) -> str:
@@ -174,7 +189,11 @@ def space_of(analysis: MapAnalysis, xy: Point) -> Room | None:
 
 
 def _space_for_ref(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room | None:
-    """The space the words restrict to: 'of the hallway', 'in this room', or None."""
+    """The space the words restrict to: 'of the biggest room', 'of the hallway', 'in this room', or None."""
+    if ref.near is not None and ref.near.kind in (Kind.ROOM, Kind.HALLWAY) and ref.kind not in (Kind.ROOM, Kind.HALLWAY):
+        space = select(landmark_ref(ref.near), analysis, pose)
+        assert isinstance(space, Room)
+        return space
     here = space_of(analysis, pose.xy)
     if ref.within is not None and ref.within in (Kind.ROOM, Kind.HALLWAY):
         want = ElementKind.HALLWAY if ref.within == Kind.HALLWAY else ElementKind.ROOM
@@ -354,6 +373,9 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         pool = [e for e in pool if matches_side(e, pose, ref.side)]
     if ref.kind == Kind.OBSTACLE and words:
         pool = shape_filter(pool, words)
+    by_landmark: dict[int, float] | None = None
+    if ref.near is not None and not (ref.near.kind in (Kind.ROOM, Kind.HALLWAY) and space is not None):
+        pool, by_landmark = _near_landmark(ref, pool, analysis, pose)
 
     here = space_of(analysis, pose.xy)
 
@@ -369,6 +391,8 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         ordered = sorted(pool, key=width_of, reverse=sup == Superlative.WIDEST)
     elif sup == Superlative.FARTHEST:
         ordered = sorted(pool, key=lambda e: (local_first(e), -distance_to(e, pose.xy)))
+    elif by_landmark is not None and sup is None and ref.ordinal is None:
+        ordered = sorted(pool, key=lambda e: by_landmark[id(e)])  # "the door next to the box": nearest to it
     else:
         ordered = sorted(pool, key=lambda e: (local_first(e), distance_to(e, pose.xy)))
 
@@ -380,6 +404,51 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         raise GroundingError(f"I see only {_count_phrase(len(ordered), ref)}, so I cannot find "
                              f"{describe_ref(ref) if count == 1 else f'{count} of them'}.")
     return ordered[k:k + count]
+
+
+def _near_landmark(ref: ElementRef, pool: list[Element], analysis: MapAnalysis,
+                   pose: Pose) -> tuple[list[Element], dict[int, float]]:
+    """The elements of ``pool`` next to (or, for spaces, opening onto) the landmark, with their
+    distances to it."""
+    assert ref.near is not None
+    mark = select(landmark_ref(ref.near), analysis, pose)
+    dist: dict[int, float] = {}
+    keep: list[Element] = []
+    for e in pool:
+        if e is mark:
+            continue
+        if isinstance(mark, Room) and isinstance(e, Room):
+            # "the room at the end of the hallway": a room a door joins to it
+            openings: list[Door | NarrowPassage] = [*analysis.doors, *analysis.narrow_passages]
+            joined = any({mark.id, e.id} <= set(d.connects) for d in openings)
+            d = 0.0 if joined else _gap(e, mark)
+        elif isinstance(mark, Room):
+            d = 0.0 if _in_space(e, mark, analysis) else _gap(e, mark)
+        else:
+            d = _gap(e, mark)
+        if d <= NEAR_MAX_M:
+            keep.append(e)
+            dist[id(e)] = d
+    if not keep:
+        raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]} near {describe_ref(landmark_ref(ref.near))}.")
+    return keep, dist
+
+
+def _cells(e: Element) -> np.ndarray:
+    if isinstance(e, Room | Obstacle) and len(e.cells_xy):
+        return np.asarray(e.cells_xy, dtype=float).reshape(-1, 2)
+    if isinstance(e, UnexploredArea) and len(e.frontier):
+        return np.asarray(e.frontier, dtype=float).reshape(-1, 2)
+    return np.asarray([reference_point(e)], dtype=float)
+
+
+def _gap(a: Element, b: Element) -> float:
+    """Distance between two elements: their nearest cells (reference points for doors, corners)."""
+    pa, pb = _cells(a), _cells(b)
+    if len(pa) > len(pb):
+        pa, pb = pb, pa
+    d, _ = cKDTree(pb).query(pa, k=1)
+    return float(np.min(d))
 
 
 def _where(ref: ElementRef) -> str:
@@ -400,6 +469,11 @@ def _select_corner(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Corner
     room_word = "hallway" if space.kind == ElementKind.HALLWAY else "room"
     if not corners:
         raise GroundingError(f"I found no corners in this {room_word}.")
+    by_landmark: dict[int, float] | None = None
+    if ref.near is not None and ref.near.kind not in (Kind.ROOM, Kind.HALLWAY):
+        pool: list[Element] = list(corners)
+        _, by_landmark = _near_landmark(ref, pool, analysis, pose)
+        corners = [c for c in corners if id(c) in by_landmark]
     side = ref.side
     if side in (Side.LEFT, Side.RIGHT):
         ahead = [c for c in corners if is_ahead(pose, c.point)]
@@ -420,6 +494,8 @@ def _select_corner(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Corner
     if not corners:
         raise GroundingError(f"I see no corner of this {room_word} {SIDE_WORDS[side] if side else ''}.".strip())
     far = ref.superlative == Superlative.FARTHEST
+    if by_landmark is not None and ref.superlative is None and ref.ordinal is None:
+        return min(corners, key=lambda c: by_landmark[id(c)])  # "the corner next to the door"
     ordered = sorted(corners, key=lambda c: math.dist(pose.xy, c.point), reverse=far)
     k = (ref.ordinal or 1) - 1
     if k >= len(ordered):

@@ -87,8 +87,26 @@ class Amount(StrEnum):
     DEFAULT = "default"  # "turn left" alone: 90 degrees
 
 
+class Place(StrEnum):
+    """A place that is no element of the map (``ElementRef.kind`` is ``none``)."""
+
+    START = "start"  # where the robot stood when this prompt began ("go back", "return to where you started")
+
+
 class _Model(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True, use_enum_values=False)
+
+
+class Landmark(_Model):
+    """Another element that tells which one is meant ("the door next to THE BOX", "the corner of THE
+    BIGGEST ROOM"): the same properties as :class:`ElementRef`, one level deep."""
+
+    kind: Element
+    ordinal: Annotated[int, Field(ge=1, le=20)] | None = None
+    superlative: Superlative | None = None
+    side: Side | None = None
+    in_current_room: bool = False
+    within: Element | None = None
 
 
 class ElementRef(_Model):
@@ -104,6 +122,14 @@ class ElementRef(_Model):
         default=None, description="the space that contains it: 'the corner of the hallway' -> hallway")
     name: Annotated[str, Field(max_length=80)] | None = Field(
         default=None, description="a proper name the map cannot know ('kitchen', 'the desk')")
+    near: Landmark | None = Field(
+        default=None, description="the element it lies in or next to, when the words name one with its own "
+        "properties: 'the door next to the box' -> {kind: obstacle}; 'the corner of the biggest room' -> "
+        "{kind: room, superlative: biggest}; 'the room at the end of the hallway' -> {kind: hallway}. Without "
+        "an ordinal or superlative of its own, the element nearest to it is meant")
+    place: Place | None = Field(
+        default=None, description="with kind 'none': a place that is no map element; 'start' = where the "
+        "robot was when this prompt began ('go back', 'come back', 'return to where you started')")
 
 
 class Step(_Model):

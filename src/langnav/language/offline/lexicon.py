@@ -238,7 +238,8 @@ VERB_DETAILS: Final[dict[str, Detail]] = {
                                    "exit through", "squeeze through", "get through", "drive through",
                                    "move through", "navigate through", "head through", "walk through",
                                    "exit", "leave", "exit from", "get out of", "go out of", "leave through")},
-    **{w: Detail.TO for w in ("reach", "enter", "approach", "visit", "find", "get to", "arrive at",
+    **{w: Detail.TO for w in ("reach", "enter", "approach", "visit", "find", "get to", "arrive at", "take me",
+                              "take us", "bring me", "bring us",
                               "swing by", "drop by", "pop by", "come by", "pop over to", "nip to",
                               "return to", "come to", "go into", "park at", "head into")},
     **{w: Detail.ALONG for w in ("follow", "hug", "trace", "track", "skirt", "shadow", "follow along",
@@ -410,7 +411,8 @@ FILLER_PATTERNS: Final = (
     r"\bwithout\s+(?:hitting|touching|bumping\s+into|crashing\s+into|colliding\s+with|running\s+into)\s+"
     r"(?:the\s+|any\s+|a\s+)?(?:\w+\s+)?(?:walls?|obstacles?|objects?|things?|boxes?|anything|doors?|doorframes?|furniture)\b",
     r"\bonce\s+(?:you\s+are\s+|you\s+get\s+|you\s+have\s+got\s+|you\s+have\s+)?(?:there|through|done|finished|arrived)\b",
-    r"\bwhen\s+you\s+(?:get|are)\s+there\b", r"\bof\s+the\s+map\b", r"\b(?:to|until|till|up\s+to)\s+(?:the|its)\s+(?:very\s+)?end\b(?!\s+of)", r"\bwhen\s+(?:done|finished)\b", r"\bthere\s+you\s+go\b",
+    r"\bwhen\s+you\s+(?:get|are)\s+there\b", r"\bof\s+the\s+map\b", r"\b(?:to|until|till|up\s+to)\s+(?:the|its)\s+(?:very\s+)?end\b(?!\s+of)", r"\b(?:until|till|til|up\s+to\s+where)\s+(?:it|the\s+wall|the\s+hallway|the\s+corridor|the\s+hall|that|"
+    r"this)\s+(?:ends|stops|finishes|runs\s+out|is\s+over|comes\s+to\s+an\s+end)\b", r"\bto\s+the\s+end\s+of\s+it\b", r"\bwhen\s+(?:done|finished)\b", r"\bthere\s+you\s+go\b",
     r"\b(?:okay|ok)\s+(?:robot|so)\b", r"\bnice\s+and\s+(?:slow|easy)\b", r"\bat\s+a\s+slow\s+pace\b",
     r"\bover\s+there\b(?=.*\b(?:to|through)\b)", r"\bmy\s+friend\b", r"\bsir\b", r"\bmister\b",
     r"\bwhat\s+i\s+want\s+is\s+(?:for\s+you\s+)?(?:to\s+)?", r"\bdo\s+me\s+a\s+favou?r\s+and\b",

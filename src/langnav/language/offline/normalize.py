@@ -6,7 +6,15 @@ import re
 from functools import lru_cache
 from typing import Final
 
-from langnav.language.offline.lexicon import NOT_TYPOS, TYPO_TARGETS, TYPOS
+from langnav.language.offline.lexicon import (
+    ELEMENT_NOUNS,
+    NOT_TYPOS,
+    ORDINALS,
+    SIDE_ADJECTIVES,
+    SUPERLATIVES,
+    TYPO_TARGETS,
+    TYPOS,
+)
 
 #: Shortest word that edit-distance repair touches (shorter words have too many neighbours).
 MIN_TYPO_REPAIR_LEN: Final = 6
@@ -33,12 +41,37 @@ _IDIOMS: Final = (
     (re.compile(r"\buntil\s+you\s+(?:hit|bump\s+into|run\s+into|meet)\b"), "until you reach"),
     (re.compile(r"\bout\s+of\s+here\b"), "out of this room"),
     (re.compile(r"\bleave\s+here\b"), "leave this room"),
+    # "the left side of the room" is the part of the room along its left wall
+    (re.compile(r"\b(?:(?:over\s+)?to\s+|towards?\s+|into\s+|at\s+)?the\s+(left|right)(?:\s+hand)?\s+(?:side|half|part|edge)"
+                r"\s+of\s+"), r"next to the \1 wall of "),
+    (re.compile(r"\boutside\s+(?:of\s+)?(?=(?:the|this|that|your)\s+(?:room|hallway|corridor|hall)\b)"), "out of "),
 )
 #: Punctuation that carries no meaning inside one instruction (kept: . / - ' " in numbers and units).
 _NOISE: Final = re.compile(r"[^\w\s./'\"°-]|(?<!\d)\.|\.(?!\d)|(?<![\w])-|-(?![\w])|(?<!\d)(?<!pi)/|/(?!\d)")
 
 
 _HYPHEN: Final = re.compile(r"(?<=[a-z])-(?=[a-z])")
+
+
+def _alternation(words: set[str] | list[str]) -> str:
+    return "|".join(r"\s+".join(re.escape(w) for w in p.split()) for p in sorted(words, key=lambda p: (-len(p), p)))
+
+
+#: Words that may stand before the owner's noun or the owned noun of a possessive.
+_POSSESSIVE_MODIFIERS: Final = _alternation(
+    {w for w in (*ORDINALS, *SUPERLATIVES, *SIDE_ADJECTIVES) if " " not in w and "-" not in w}
+    | {"current", "far", "other", "opposite", "very", "whole", "front", "back", "rear", "near"})
+_OWNED_NOUNS: Final = _alternation({*ELEMENT_NOUNS, "end", "side", "middle", "centre", "center", "half", "part"})
+#: "this room's doorway" -> "the doorway of this room"; "the hallway's far end" -> "the far end of the hallway".
+_POSSESSIVE: Final = re.compile(
+    rf"(?<![\w'-])(?P<det>(?:the|this|that|your|our|my|a)\s+)?(?P<owner>(?:(?:{_POSSESSIVE_MODIFIERS})\s+){{0,2}}"
+    rf"(?:{_alternation(set(ELEMENT_NOUNS))}))'s?\s+(?P<owned>(?:(?:{_POSSESSIVE_MODIFIERS})\s+){{0,2}}"
+    rf"(?:{_OWNED_NOUNS}))(?![\w'-])")
+
+
+def _unpossess(m: re.Match[str]) -> str:
+    det = (m.group("det") or "the ").strip()
+    return f"the {m.group('owned')} of {det} {m.group('owner')}"
 
 
 def normalize(clause: str) -> str:
@@ -54,6 +87,8 @@ def normalize(clause: str) -> str:
     text = " ".join(" ".join(words).split())
     for pattern, repl in _IDIOMS:
         text = pattern.sub(repl, text)
+    if "'" in text:
+        text = _POSSESSIVE.sub(_unpossess, text)
     return text
 
 

@@ -39,7 +39,9 @@ from langnav.language.intent import (
     Direction,
     Element,
     ElementRef,
+    Landmark,
     Movement,
+    Place,
     Query,
     Side,
     Step,
@@ -140,12 +142,24 @@ _DURATION_RE: Final = re.compile(
     r"|\b\d+(?:\.\d+)?\s*(?:seconds?|secs?|minutes?|mins?|hours?|hrs?|s)\b(?!\s*(?:steps?|times?))"
     r"|\bfor\s+(?:about\s+|around\s+)?(?:a|an|one|half\s+a|another)\s+(?:second|sec|minute|min|moment|hour|"
     r"while|little\s+while)\b|\bfor\s+(?:a\s+)?(?:while|some\s+time|bit\s+of\s+time)\b")
+#: Where the prompt started: "to where you started", "to your starting point", "back to the start".
+_START_PLACE_RE: Final = re.compile(
+    r"\b(?:(?:back\s+)?(?:to|towards?)\s+)?(?:where\s+(?:you|we|i)\s+(?:started(?:\s+from)?|began|set\s+off|came\s+from|"
+    r"were(?:\s+before|\s+at\s+the\s+start|\s+at\s+first|\s+originally)?)|(?:the|your|our|my)\s+(?:very\s+)?"
+    r"(?:start(?:ing)?(?:\s+(?:point|position|place|spot|pose|location))?|original\s+(?:position|spot|place|location|pose)|"
+    r"initial\s+(?:position|pose|spot|place|location)|beginning|point\s+of\s+departure))\b")
+#: A whole clause that only says to go back ("come back", "return", "head back again").
+_BARE_RETURN_RE: Final = re.compile(
+    r"^(?:(?P<go>go|head|drive|move|walk|roll|navigate)|come|get|make\s+your\s+way|find\s+your\s+way|"
+    r"(?P<ret>return))(?:\s+(?:all\s+the\s+way\s+)?back)?(?:\s+(?:home|again|now|there|where\s+you\s+came\s+from))?\s*$")
+START_REF: Final = ElementRef(kind=Element.NONE, place=Place.START)
 #: A question that names an element ("which is the largest room?", "where is the nearest door?").
 _ELEMENT_QUESTION_RE: Final = re.compile(
     r"^(?:(?:hey|ok|okay|so|robot)\s+)*(?:which|where|what)\b(?:\s+(?:is|are|one\s+is|one\s+of\s+them\s+is|"
     r"would\s+be|do\s+you\s+think\s+is))?")
 #: A question the robot cannot answer (the answerable ones were read as queries before).
 _QUESTION_RE: Final = re.compile(r"^(?:(?:hey|ok|okay|so|robot)\s+)*(?:how|what|why|when|which|who|whose|is|are|"
+                                 r"where\s+(?:is|are)\s+(?:the|a|an|any|your)\b|"
                                  r"was|were|does|did|do\s+(?:you|i|we)|can\s+i|could\s+i)\b")
 _NEGATION_RE: Final = re.compile(lx.NEGATIONS)
 _QUERY_RES: Final = ((Query.POSE, _any(lx.QUERY_POSE_PATTERNS)), (Query.MAP, _any(lx.QUERY_MAP_PATTERNS)),
@@ -173,6 +187,8 @@ _FAR_END_LINK_RE: Final = re.compile(r"\s*" + lx.phrase_regex(lx.FAR_END_LINKS) 
 _CONTAINER_LINK_RE: Final = re.compile(r"\s*" + lx.phrase_regex(lx.CONTAINER_LINKS) + r"\s*$")
 _CURRENT_ROOM_POST_RE: Final = re.compile(
     r"\s*(?:(?:of|in|inside|within|inside\s+of)\s+)?" + lx.phrase_regex(lx.CURRENT_ROOM_PHRASES, "cur"))
+_ACROSS_LINK_RE: Final = re.compile(r"\s*(?:(?:right|directly|just)\s+)?(?:across|across\s+from\s+you\s+(?:in|on)|"
+                                    r"on\s+the\s+(?:other|opposite|far)\s+side\s+of)\s*")
 _BETWEEN_AND_RE: Final = re.compile(r"^\s*(?:and|&|,)\s*$")
 _TURN_A_SIDE_RE: Final = re.compile(r"\b(?:take|make|hang|do|go)\s+a\s+(?P<dir>left|right)\b(?:\s+turn\b)?")
 _TURN_NOUN_RE: Final = re.compile(r"\b(?:turn|rotation|spin|u\s+turn|180|about\s+face|circle|revolution|pirouette)\b")
@@ -440,7 +456,9 @@ def _find_pronouns(s: _Scratch, text: str, phrases: list[_Phrase], previous: Ele
 
 
 def _resolve_containers(text: str, phrases: list[_Phrase]) -> list[_Phrase]:
-    """'the corner of the hallway' -> corner within hallway; 'in this room' -> in_current_room."""
+    """'the corner of the hallway' -> corner within hallway; 'in this room' -> in_current_room;
+    'the corner of the biggest room' -> near the biggest room; 'the room at the end of the hallway'
+    -> the farthest room off the hallway; 'the door across the hallway' -> the hallway's door ahead."""
     out: list[_Phrase] = []
     for p in phrases:
         if out and p.ref.kind in lx.CONTAINER_KINDS and not p.pronoun:
@@ -451,31 +469,38 @@ def _resolve_containers(text: str, phrases: list[_Phrase]) -> list[_Phrase]:
                 host.ref = _contain(host.ref, p)
                 if far_end and host.ref.superlative is None:
                     host.ref = host.ref.model_copy(update={"superlative": Superlative.FARTHEST})
-                host.lost.extend(_lost_properties(p))
+                host.end = p.end
+                continue
+            if host.ref.kind not in lx.CONTAINER_KINDS and _ACROSS_LINK_RE.fullmatch(link):
+                host.ref = _contain(host.ref, p)
+                if host.ref.side is None:
+                    host.ref = host.ref.model_copy(update={"side": Side.AHEAD})
+                host.end = p.end
+                continue
+            if host.ref.kind == Element.ROOM and p.ref.kind == Element.HALLWAY and far_end \
+                    and host.ref.near is None:
+                host.ref = host.ref.model_copy(update={
+                    "near": as_landmark(p.ref), "superlative": host.ref.superlative or Superlative.FARTHEST})
                 host.end = p.end
                 continue
         out.append(p)
     return out
 
 
+def as_landmark(ref: ElementRef) -> Landmark:
+    """The properties of an element reference that a landmark holds."""
+    return Landmark(kind=ref.kind, ordinal=ref.ordinal, superlative=ref.superlative, side=ref.side,
+                    in_current_room=ref.in_current_room, within=ref.within)
+
+
 def _contain(ref: ElementRef, container: _Phrase) -> ElementRef:
     c = container.ref
     if c.in_current_room:
         return ref.model_copy(update={"in_current_room": True})
+    if c.ordinal is not None or c.superlative is not None or c.side is not None:
+        # "the corner of the biggest room": which room the words say too
+        return ref.model_copy(update={"within": c.kind, "near": as_landmark(c)})
     return ref.model_copy(update={"within": c.kind})
-
-
-def _lost_properties(container: _Phrase) -> list[str]:
-    """Properties of a container the schema cannot carry ('the corner of the biggest room')."""
-    c = container.ref
-    lost = []
-    if c.superlative is not None:
-        lost.append(c.superlative.value)
-    if c.ordinal is not None:
-        lost.append(f"ordinal {c.ordinal}")
-    if c.side is not None:
-        lost.append(c.side.value)
-    return lost
 
 
 def _resolve_between(text: str, phrases: list[_Phrase]) -> list[_Phrase]:
@@ -556,6 +581,7 @@ class _Clause:
     had_verb: bool = False     # a movement verb was read
     out_of_range: bool = False  # a number beyond what a step may hold
     explore_verb: bool = False  # "explore the unknown area on your left" (a trip towards it)
+    through_previous: bool = False  # "stop after you pass through it": the previous step goes through
 
     def doubt(self, factor: float) -> None:
         self.factors.append(factor)
@@ -583,11 +609,21 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
         return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.OUT_OF_SCOPE)
     c.s.take_all(_FILLER_RE)
     durations = c.s.take_all(_DURATION_RE)
+    back = _read_return(c)
+    if back is not None:
+        return back
+    start_place = c.s.find(_START_PLACE_RE)
+    if start_place is not None:
+        c.s.use(start_place.start(), start_place.end())
     if previous_target is None:
         previous_target = _previous_target(previous)
     phrases, name = _find_phrases(c.s, previous_target)
     if name is not None:
         return _named(c, name, known_names)
+    if start_place is not None:
+        phrases.append(_Phrase(ref=START_REF, start=start_place.start(), end=start_place.end(),
+                               head_start=start_place.start(), detail=Detail.TO))
+        phrases.sort(key=lambda p: p.start)
     explore = _read_explore(c, phrases)
     if explore is not None:
         return explore
@@ -611,7 +647,9 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
     if durations and guessed:
         # "drive forward for 5 seconds": a time is no distance; ask rather than guess one
         return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.DURATION)
-    if guessed and (leftovers or c.lost):
+    unnumbered = [st for st in steps if st.movement in (Movement.MOVE, Movement.ROTATE)
+                  and st.target is None] if not find_quantities(norm) else []
+    if (guessed or unnumbered) and (leftovers or c.lost):
         # a default move or turn built around words not understood ("take the stairs ...") is a
         # misreading: never motion, hand the clause on instead
         return Reading(unread=(text,), confidence=NOTHING_READ_CONFIDENCE, problem=Problem.UNREADABLE)
@@ -630,7 +668,8 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
     unread = [*leftovers, *c.lost]
     confidence *= UNREAD_WORD_FACTOR ** len(unread)
     return Reading(steps=tuple(steps), unread=(" ".join(unread),) if unread else (),
-                   confidence=max(MIN_CONFIDENCE, round(confidence, 3)), amends_previous=c.amends)
+                   confidence=max(MIN_CONFIDENCE, round(confidence, 3)), amends_previous=c.amends,
+                   through_previous=c.through_previous)
 
 
 def is_unsafe(prompt: str) -> bool:
@@ -639,10 +678,28 @@ def is_unsafe(prompt: str) -> bool:
     return _UNSAFE_RE.search(norm) is not None
 
 
+def _read_return(c: _Clause) -> Reading | None:
+    """'come back', 'return', 'go back' after a trip: back to where the prompt started. ('go back'
+    as the first instruction is a move backward.)"""
+    m = _BARE_RETURN_RE.match(" ".join(c.s.masked().split()))
+    if m is None:
+        return None
+    moved = c.previous is not None and c.previous.movement in (Movement.NAVIGATE, Movement.MOVE, Movement.FOLLOW,
+                                                                 Movement.EXPLORE)
+    if m.group("go") and "back" in c.s.masked() and not moved:
+        return None  # "go back" with no trip before it: a move backward
+    if m.group("go") and "back" not in c.s.masked():
+        return None
+    return Reading(steps=(Step(movement=Movement.NAVIGATE, detail=Detail.TO, target=START_REF, text=c.text[:500]),))
+
+
 def _question_referent(norm: str) -> ElementRef | None:
     """The one element a 'which / where / what is the X' question names, if it names exactly one."""
     if _ELEMENT_QUESTION_RE.match(norm) is None:
         return None
+    # "which room is the smallest" -> "which is the smallest room"
+    norm = re.sub(r"^(which|what)\s+([a-z]+(?:\s+[a-z]+)?)\s+(?:is|are)\s+(?:the\s+)?([a-z]+)(\s+(?:one|of\s+them))?\s*$",
+                  r"\1 is the \3 \2", norm)
     phrases, name = _find_phrases(_Scratch(norm), None)
     keep = [p for p in phrases if not p.contained and not p.pronoun]
     if name is not None or len(keep) != 1:
@@ -834,9 +891,17 @@ def _destinations(targets: list[_Phrase]) -> list[_Phrase]:
             continue
         if p.detail == Detail.THROUGH and p.ref.kind == Element.HALLWAY and later:
             continue
+        if p.bare_prep and p.detail == Detail.NEXT_TO and kept and kept[-1].ref.near is None \
+                and not p.pronoun and p.ref.kind != Element.NONE and p.ref.kind != kept[-1].ref.kind:
+            kept[-1].ref = kept[-1].ref.model_copy(update={"near": as_landmark(p.ref)})
+            continue  # "the door next to the box": the box only tells which door
         if p.bare_prep and p.detail in (Detail.NEXT_TO, Detail.BETWEEN) and kept:
             kept[-1].lost.append(f"{p.detail.value.replace('_', ' ')} the {p.ref.kind.value.replace('_', ' ')}")
-            continue  # "the door next to the box": the box only tells which door
+            continue
+        if p.detail == Detail.OPPOSITE_SIDE_OF and any(
+                q.detail == Detail.ALONG and q.ref.kind == p.ref.kind for q in kept) and p.ref.ordinal is None \
+                and p.ref.superlative is None and p.ref.side is None:
+            continue  # "follow the wall until you reach the end of the wall": the end of the same run
         if p.detail is None and p.pronoun is False and kept and kept[-1].detail is not None \
                 and kept[-1].detail not in (Detail.BETWEEN,):
             p.detail = kept[-1].detail  # "go to the door and the box" (two places)
@@ -874,13 +939,24 @@ def _stop_steps(c: _Clause, targets: list[_Phrase]) -> list[Step]:
     if not explicit:
         for p in targets:
             c.s.use(p.start, p.end)
-        c.s.take_all(re.compile(r"\b(?:after|once|when|as\s+soon\s+as|you|pass|passed|are|have|get|got|"
+        pronoun = next((p for p in targets if p.pronoun and p.ref.kind in lx.THROUGH_KINDS), None)
+        if passed and pronoun is not None:
+            # "... and stop just after you pass through it": through that door, then stop
+            prev = c.previous
+            if prev is not None and prev.movement == Movement.NAVIGATE and prev.target == pronoun.ref:
+                c.through_previous = True
+            else:
+                pronoun.detail = Detail.THROUGH
+                c.s.take_all(re.compile(r"\b(?:after|once|when|as\s+soon\s+as|you|pass|passed|passing|going|driving|getting|are|have|get|got|"
+                                        r"through|past|beyond|cleared|crossed|just|right|immediately|exit|exited)\b"))
+                return [_ref_step(c, pronoun), stop]
+        c.s.take_all(re.compile(r"\b(?:after|once|when|as\s+soon\s+as|you|pass|passed|passing|going|driving|getting|are|have|get|got|"
                                 r"through|past|beyond|cleared|crossed|reach|reached|arrive|arrived|"
                                 r"right|immediately|just|behind|exit|exited)\b"))
         return [stop]
     p = explicit[0]
     if passed:
-        c.s.take_all(re.compile(r"\b(?:after|once|when|as\s+soon\s+as|you|pass|passed|are|have|get|got|"
+        c.s.take_all(re.compile(r"\b(?:after|once|when|as\s+soon\s+as|you|pass|passed|passing|going|driving|getting|are|have|get|got|"
                                 r"through|past|beyond|cleared|crossed|just|right|immediately|exit|exited)\b"))
         p.detail = Detail.THROUGH
         return [_ref_step(c, p), stop]

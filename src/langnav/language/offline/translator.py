@@ -6,7 +6,7 @@ import logging
 from collections.abc import Sequence
 from typing import Final
 
-from langnav.language.intent import Amount, Direction, ElementRef, Intent, Movement, Step
+from langnav.language.intent import Amount, Detail, Direction, ElementRef, Intent, Movement, Step
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.splitter import split_steps
 from langnav.language.translator import Context, clean_prompt
@@ -54,8 +54,21 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     confidence = 1.0
     previous: Step | None = None
     previous_target: ElementRef | None = None
+    asked: tuple[Problem, str, Reading] | None = None  # "which is the largest room?" before "drive into it"
     for clause in split_steps(text):
         reading = read_clause(clause, previous, known_names, previous_target)
+        if reading.problem == Problem.QUESTION and reading.referent is not None:
+            asked = (reading.problem, clause, reading)
+            previous_target = reading.referent
+            continue
+        if asked is not None:
+            if any(s.target == asked[2].referent for s in reading.steps):
+                asked = None  # the question only named the place the next instruction goes to
+            else:
+                problems.append(asked)
+                confidence = min(confidence, asked[2].confidence)
+                unread.extend(asked[2].unread)
+                asked = None
         if reading.problem == Problem.NAME:
             return _clarify(_name_message(reading.name or clause), confidence=reading.confidence, unread=[])
         if reading.problem == Problem.UNKNOWABLE:
@@ -65,6 +78,9 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
         confidence = min(confidence, reading.confidence)
         unread.extend(u for u in reading.unread if u)
         new_steps = list(reading.steps)
+        if reading.through_previous and steps and steps[-1].movement == Movement.NAVIGATE:
+            steps[-1] = steps[-1].model_copy(update={"detail": Detail.THROUGH,
+                                                     "text": f"{steps[-1].text}, {clause}"[:500]})
         if reading.amends_previous and steps and new_steps and _amendable(steps[-1], new_steps[0]):
             steps[-1] = _amend(steps[-1], new_steps.pop(0), clause)
         steps.extend(new_steps)
@@ -72,6 +88,10 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
             previous = steps[-1]
             targets = [s.target for s in steps if s.target is not None]
             previous_target = targets[-1] if targets else None
+    if asked is not None:
+        problems.append(asked)
+        confidence = min(confidence, asked[2].confidence)
+        unread.extend(asked[2].unread)
     if len(steps) > MAX_STEPS:
         return _clarify(TOO_MANY_STEPS_MESSAGE, confidence=1.0, unread=[])
     if not steps:
