@@ -225,3 +225,20 @@ def test_bench_env1_one_open_room_two_openings(shared_dir: Path) -> None:
     assert math.dist(centres[0], (1.45, 5.475)) < 0.3
     assert math.dist(centres[1], (5.575, 2.45)) < 0.3
     assert all(d.connects == (seg.rooms[0].id, UNKNOWN_ID) for d in seg.doors)
+
+
+@pytest.mark.shared
+@pytest.mark.parametrize("env", ["env1", "env2"])
+def test_bench_maps_at_half_the_cell_size_give_the_same_spaces_and_doors(shared_dir: Path, env: str) -> None:
+    grid = load_map(shared_dir / "bench" / "maps" / f"{env}.yaml")
+    fine = OccupancyGrid(np.repeat(np.repeat(grid.cells, 2, axis=0), 2, axis=1), grid.resolution_m / 2,
+                         grid.origin_x_m, grid.origin_y_m)
+    a, b = segment_spaces(grid), segment_spaces(fine)
+    assert sorted(r.kind for r in a.rooms) == sorted(r.kind for r in b.rooms)
+    assert sorted(r.area_m2 for r in a.rooms) == pytest.approx(sorted(r.area_m2 for r in b.rooms), rel=0.02)
+    assert len(a.doors) == len(b.doors)
+    for d in a.doors:
+        e = min(b.doors, key=lambda o, d=d: math.dist(o.center, d.center))
+        assert math.dist(e.center, d.center) < 0.1
+        assert e.width_m == pytest.approx(d.width_m, abs=0.05)
+        assert (UNKNOWN_ID in e.connects) == (UNKNOWN_ID in d.connects)

@@ -46,7 +46,7 @@ class AnalysisParams:
     seg_wall_min_length_m: float = 0.5
     #: Segmentation: wall and furniture pieces closer than this (m) count as one piece when
     #: telling door jambs from furniture (door frames scan as fragments).
-    seg_jamb_join_m: float = 0.15
+    seg_jamb_join_m: float = 0.1
     #: Segmentation: free-standing clutter up to this area (m2: a table with its chairs, a
     #: cabinet) is segmented as floor, so that furniture does not split rooms.
     seg_island_max_area_m2: float = 2.0

@@ -114,7 +114,8 @@ def _furniture(floor: BoolArray, resolution_m: float, params: AnalysisParams) ->
     """
     cell_area = resolution_m * resolution_m
     # Chessboard distance: a square neighbourhood is as good as a disc for grouping, and cheap.
-    join_cells = int(round(params.seg_jamb_join_m / resolution_m))
+    # Floor cells within half the join distance of two pieces bridge a gap up to the join distance.
+    join_cells = int(params.seg_jamb_join_m / 2 / resolution_m + 1e-9)
     grouped = ndi.distance_transform_cdt(floor, metric="chessboard") <= join_cells
     comp, n = ndi.label(grouped, structure=EIGHT)
     if n == 0:
@@ -200,7 +201,8 @@ class JambJudge:
         # Pieces closer than seg_jamb_join_m are one piece: a door frame scanned as fragments is
         # still part of its wall, a chair's legs one chair.
         self.join_m = params.seg_jamb_join_m
-        self.comp, _ = ndi.label(self.obstacle | (clearance_m <= self.join_m), structure=EIGHT)
+        bridge = clearance_m <= self.join_m / 2 + 1e-9  # bridges gaps up to join_m
+        self.comp, _ = ndi.label(self.obstacle | bridge, structure=EIGHT)
         # Sizes count the non-floor cells themselves, not the joining margin.
         self.sizes = np.bincount(self.comp[self.obstacle], minlength=int(self.comp.max()) + 1) * resolution_m**2
         self.objs = ndi.find_objects(self.comp)
