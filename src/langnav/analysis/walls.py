@@ -127,10 +127,29 @@ def _wall_gradient(wall: npt.NDArray[np.bool_], rows: npt.NDArray[np.intp], cols
 
 def _gradient_window(wall: npt.NDArray[np.bool_], rows: npt.NDArray[np.intp], cols: npt.NDArray[np.intp],
                      win: tuple[int, int, int, int]) -> tuple[FloatArray, FloatArray]:
+    """``ndi.sobel`` along rows and along columns of the smoothed window, at the given cells only.
+
+    Spelt out as ``ndi.sobel`` computes it (each pass in double, stored as float32, reflected at
+    the edges), so the values are bit for bit the same without filtering the whole window.
+    """
     r0, r1, c0, c1 = win
     sm = ndi.gaussian_filter(wall[r0:r1, c0:c1].astype(np.float32), GRADIENT_SIGMA_CELLS)
-    gy = ndi.sobel(sm, axis=0)[rows - r0, cols - c0].astype(float)
-    gx = ndi.sobel(sm, axis=1)[rows - r0, cols - c0].astype(float)
+    padded = np.pad(sm, 1, mode="symmetric")  # numpy's "symmetric" is ndimage's "reflect"
+    rr = rows - r0 + 1
+    cc = cols - c0 + 1
+
+    def at(dr: int, dc: int) -> FloatArray:
+        return padded[rr + dr, cc + dc].astype(np.float64)
+
+    def stored(v: FloatArray) -> FloatArray:  # a pass's output, kept as float32
+        return v.astype(np.float32).astype(np.float64)
+
+    # First pass: the [-1, 0, 1] derivative (centre weight 0: 0.0 + (next - previous)); second:
+    # the [1, 2, 1] smoothing across it (2 * centre + (next + previous)).
+    d_row = [stored((at(1, dc) - at(-1, dc)) + 0.0) for dc in (-1, 0, 1)]
+    gy = stored(d_row[1] * 2.0 + (d_row[2] + d_row[0]) * 1.0)
+    d_col = [stored((at(dr, 1) - at(dr, -1)) + 0.0) for dr in (-1, 0, 1)]
+    gx = stored(d_col[1] * 2.0 + (d_col[2] + d_col[0]) * 1.0)
     return gy, gx
 
 
@@ -154,6 +173,16 @@ def _direction_peaks(theta_deg: FloatArray, min_points: float) -> list[float]:
             taken[(b + d) % nbins] = True
         peaks.append((b + 0.5) * DIRECTION_BIN_DEG)
     return peaks
+
+
+def _median(v: FloatArray) -> float:
+    """``np.median`` of a non-empty 1-D array, the same value (partition, then the middle one or
+    the mean of the middle two) without its generic overhead."""
+    h = len(v) // 2
+    if len(v) % 2:
+        return float(np.partition(v, h)[h])
+    p = np.partition(v, (h - 1, h))
+    return float((p[h - 1] + p[h]) / 2)
 
 
 def _ang_diff(a: FloatArray, b: float) -> FloatArray:
@@ -226,7 +255,7 @@ def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
                 member = remaining & (np.abs(rho - centre) <= max_dev)
                 if member.sum() == 0:
                     break
-                centre = float(np.median(rho[member]))
+                centre = _median(rho[member])
                 member = remaining & (np.abs(rho - centre) <= max_dev)
                 remaining &= ~member
                 if member.sum() < min_len * 0.5:
