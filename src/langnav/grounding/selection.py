@@ -70,8 +70,9 @@ CORNER_SIDE_TIE_M: Final = 0.3
 #: An element counts as inside a space when its point is within this distance of the space's cells.
 IN_SPACE_M: Final = 0.5
 #: "the door next to the box": the element's reference point lies within this distance of the
-#: landmark (its cells for rooms and obstacles); a door beside a box is a metre or two from it.
-NEAR_MAX_M: Final = 2.5
+#: landmark (its cells for rooms and obstacles): about the width of a room, so "the door next to
+#: the box" finds a door across a small room from the box but not one in another part of the floor.
+NEAR_MAX_M: Final = 4.0
 
 #: Nouns for obstacles of a compact footprint ("the box") and of a long one ("the shelf"). When the
 #: words use one, obstacles of that shape are chosen before the others.
