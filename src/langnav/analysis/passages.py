@@ -22,7 +22,14 @@ from skimage.morphology import skeletonize
 
 from langnav.analysis.elements import Door, NarrowPassage
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import EIGHT, GridLayers, component_boxes, truncated_sq_edt
+from langnav.analysis.precompute import (
+    EIGHT,
+    GridLayers,
+    component_boxes,
+    cov2,
+    median,
+    truncated_sq_edt,
+)
 from langnav.maps.grid import OccupancyGrid
 
 #: A passage is at least this many times longer than wide: a corridor, not a gap beside an
@@ -125,7 +132,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             continue
         pts = np.stack([cc + 0.5, rr + 0.5], axis=1).astype(float)
         mean = pts.mean(axis=0)
-        cov = np.cov((pts - mean).T)
+        cov = cov2((pts - mean).T)
         evals, evecs = np.linalg.eigh(cov)
         axis = evecs[:, int(np.argmax(evals))]
         # Snap a nearly axis-aligned passage onto the grid axis (cleaner width sampling).
@@ -136,7 +143,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
         proj = (pts - mean) @ axis
         length_m = (float(proj.max() - proj.min()) + 1.0) * res
         # Cheap test first, with the skeleton's width (at most a cell narrower than the true one).
-        rough_w = float(np.median(width_of[d2[rr, cc]]))
+        rough_w = median(width_of[d2[rr, cc]])
         if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * rough_w:
             continue
         sides = _side_distances(sub, pts, dist_of[d2[rr, cc]] / res, np.array([-axis[1], axis[0]]),
@@ -145,7 +152,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
         if bounded.mean() < MIN_BOUNDED_FRACTION:
             continue
         # Width: across the passage between its two sides (exact for axis-aligned sides).
-        width_m = (float(np.median(sides[bounded].sum(axis=1))) - 0.5) * res
+        width_m = (median(sides[bounded].sum(axis=1)) - 0.5) * res
         if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * width_m:
             continue
         ends_g = [mean + proj.min() * axis, mean + proj.max() * axis]

@@ -197,3 +197,23 @@ def component_boxes(ids: npt.NDArray[np.integer], rows: npt.NDArray[np.integer],
     np.maximum.at(c1, ids, cols)
     return {int(k): (slice(int(r0[k]), int(r1[k]) + 1), slice(int(c0[k]), int(c1[k]) + 1))
             for k in np.asarray(wanted).tolist()}
+
+
+def median(v: npt.NDArray[np.floating]) -> float:
+    """``np.median`` of a non-empty 1-D array: the same value (a partition, then the middle one or
+    the mean of the middle two), without the generic machinery that dominates on short arrays."""
+    h = len(v) // 2
+    if len(v) % 2:
+        return float(np.partition(v, h)[h])
+    p = np.partition(v, (h - 1, h))
+    return float((p[h - 1] + p[h]) / 2)
+
+
+def cov2(centred: npt.NDArray[np.floating]) -> npt.NDArray[np.float64]:
+    """``np.cov(centred)`` for a (2, n) array of float64 rows, n >= 2: the same arithmetic (copy,
+    remove the row means, product, divide by n - 1) without its argument handling."""
+    x = np.array(centred, dtype=np.float64)
+    x -= x.mean(axis=1)[:, None]
+    c = np.dot(x, x.T.conj())
+    c *= np.true_divide(1, x.shape[1] - 1)
+    return c

@@ -23,7 +23,7 @@ from scipy import ndimage as ndi
 
 from langnav.analysis.elements import Wall
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import GridLayers, dilate4
+from langnav.analysis.precompute import GridLayers, cov2, dilate4, median
 from langnav.maps.grid import OccupancyGrid
 
 #: Smoothing of the wall mask before taking its gradient, in cells: enough to turn a pixel
@@ -175,16 +175,6 @@ def _direction_peaks(theta_deg: FloatArray, min_points: float) -> list[float]:
     return peaks
 
 
-def _median(v: FloatArray) -> float:
-    """``np.median`` of a non-empty 1-D array, the same value (partition, then the middle one or
-    the mean of the middle two) without its generic overhead."""
-    h = len(v) // 2
-    if len(v) % 2:
-        return float(np.partition(v, h)[h])
-    p = np.partition(v, (h - 1, h))
-    return float((p[h - 1] + p[h]) / 2)
-
-
 def _ang_diff(a: FloatArray, b: float) -> FloatArray:
     return np.abs((a - b + 180.0) % 360.0 - 180.0)
 
@@ -197,12 +187,7 @@ def _refit(x: FloatArray, y: FloatArray, n_x: float, n_y: float) -> tuple[float,
     if len(x) < 3:
         return None
     mx, my = float(x.mean()), float(y.mean())
-    # np.cov of the centred points, spelt out (the same arithmetic, without its overhead).
-    pts = np.stack([x - mx, y - my])
-    pts -= pts.mean(axis=1)[:, None]
-    cov = pts @ pts.T
-    cov *= np.true_divide(1, len(x) - 1)
-    _evals, evecs = np.linalg.eigh(cov)
+    _evals, evecs = np.linalg.eigh(cov2(np.stack([x - mx, y - my])))
     fx, fy = float(evecs[0, 0]), float(evecs[1, 0])  # smallest eigenvalue: the normal
     if fx * n_x + fy * n_y < 0:
         fx, fy = -fx, -fy
@@ -255,7 +240,7 @@ def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
                 member = remaining & (np.abs(rho - centre) <= max_dev)
                 if member.sum() == 0:
                     break
-                centre = _median(rho[member])
+                centre = median(rho[member])
                 member = remaining & (np.abs(rho - centre) <= max_dev)
                 remaining &= ~member
                 if member.sum() < min_len * 0.5:
