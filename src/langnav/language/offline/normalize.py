@@ -66,12 +66,13 @@ _OWNED_NOUNS: Final = _alternation({*ELEMENT_NOUNS, "end", "side", "middle", "ce
 _POSSESSIVE: Final = re.compile(
     rf"(?<![\w'-])(?P<det>(?:the|this|that|your|our|my|a)\s+)?(?P<owner>(?:(?:{_POSSESSIVE_MODIFIERS})\s+){{0,2}}"
     rf"(?:{_alternation(set(ELEMENT_NOUNS))}))'s?\s+(?P<owned>(?:(?:{_POSSESSIVE_MODIFIERS})\s+){{0,2}}"
-    rf"(?:{_OWNED_NOUNS}))(?![\w'-])")
+    rf"(?:{_OWNED_NOUNS}))(?![\w'-])"
+    r"(?P<where>\s+(?:on|to)\s+(?:the|your)\s+(?:left|right)(?:\s+(?:hand\s+)?side)?(?![\w'-]))?")
 
 
 def _unpossess(m: re.Match[str]) -> str:
     det = (m.group("det") or "the ").strip()
-    return f"the {m.group('owned')} of {det} {m.group('owner')}"
+    return f"the {m.group('owned')}{m.group('where') or ''} of {det} {m.group('owner')}"
 
 
 def normalize(clause: str) -> str:

@@ -140,7 +140,7 @@ def _name_message(name: str) -> str:
 
 
 def _unknowable_message(name: str) -> str:
-    return (f"I can't tell which one is '{name}': my map shows walls, doors and free space, but no colours "
+    return (f"I can't tell which one is '{name}': my map shows walls, doors and free space, but no colours, weights "
             "or materials. Tell me which one by where it is or its size, e.g. 'the second door on your left', "
             "'the nearest door' or 'the widest door'.")
 
