@@ -181,9 +181,11 @@ def test_server_answers_malformed_input_with_status_and_keeps_serving(sim_served
         assert "no topic '/nope'" in ask(json.dumps({"op": "subscribe", "topic": "/nope"}))["msg"]
         wrong = ask(json.dumps({"op": "subscribe", "topic": "/map", "type": "sensor_msgs/msg/Image"}))
         assert "has type nav_msgs/msg/OccupancyGrid" in wrong["msg"]
-        # the simulator takes no velocity commands: a clear refusal, not a crash
-        refused = ask(json.dumps({"op": "publish", "topic": "/cmd_vel", "msg": rm.twist(0.1, 0.0)}))
-        assert "cannot be driven by velocity" in refused["msg"]
+        # topics the robot publishes cannot be written to; cmd_vel takes only Twist / TwistStamped
+        refused = ask(json.dumps({"op": "publish", "topic": "/map", "msg": {}}))
+        assert "/map is published by the robot" in refused["msg"]
+        wrong_type = ask(json.dumps({"op": "advertise", "topic": "/cmd_vel", "type": "std_msgs/msg/String"}))
+        assert "takes geometry_msgs/msg/Twist or geometry_msgs/msg/TwistStamped" in wrong_type["msg"]
         bad_goal = json.dumps({"op": "send_action_goal", "id": "g1", "action": "/navigate_through_poses",
                                "action_type": rm.NAVIGATE_THROUGH_POSES, "args": {"poses": []}})
         ws.send(bad_goal)

@@ -21,6 +21,17 @@ feedback: fails the task and stops the robot); every wait has a timeout from
 roslibpy runs its transport (twisted reactor, or an asyncio loop) in a background thread that
 can start only once per process; :meth:`RosbridgeBackend.close` closes the connection and stops
 reconnecting but never terminates that loop, so any number of backends can come and go.
+
+Closing is ordered so that nothing is sent on a closed socket: first langnav's own loops (the
+Move/Rotate cmd_vel loops and the navigation watchdogs) are stopped and joined, then the last
+words go out (zero velocity, unsubscribe, unadvertise), then the WebSocket close handshake, queued
+behind them on the transport's thread, and only once the link is down is reconnecting switched
+off. (Dropping the TCP connection from the caller's thread, as an earlier version did, raced the
+queued messages and made twisted log "Attempt to send on a closed protocol" for each of them.)
+
+rosbridge answers a bad request with a ``status`` message; roslibpy registers no handler for that
+op (it logs a "No handler registered" traceback per message), so the backend installs one that
+logs the robot's message as a warning.
 """
 
 from __future__ import annotations
@@ -117,6 +128,9 @@ class RosbridgeConfig(BaseModel):
     motion_pose_source: Literal["odom", "pose"] = "odom"
 
     connect_timeout_s: float = Field(default=10.0, gt=0)
+    #: close(): wait this long for the close handshake (autobahn's closeHandshakeTimeout is 5 s)
+    #: and for langnav's own Move/Rotate loops and watchdogs to end (they poll every 50 ms).
+    close_timeout_s: float = Field(default=5.0, gt=0)
     #: Odometry older than this while moving stops the move (the base or the link stalled).
     odom_stale_s: float = Field(default=1.0, gt=0)
     #: Fail navigation when no feedback came for this long (Nav2 sends it every BT tick).
@@ -220,6 +234,10 @@ class RosbridgeBackend:
         self._tf = rm.TransformTree()
         self._tf_error: RobotError | None = None
         self._tasks: set[_Task] = set()
+        #: langnav's own threads (Move/Rotate loops, navigation watchdogs): joined by close()
+        self._workers: set[threading.Thread] = set()
+        #: set while the WebSocket is down (set by roslibpy's "close" event, cleared on "ready")
+        self._link_down = threading.Event()
         self._map_cache: tuple[Any, OccupancyGrid] | None = None
         try:
             self._ros = roslibpy.Ros(c.host, c.port, is_secure=c.secure, transport=c.transport)
@@ -228,6 +246,7 @@ class RosbridgeBackend:
         self._ros.factory.maxDelay = c.reconnect_max_delay_s
         self._ros.on("close", self._on_close)
         self._ros.on("ready", self._on_ready)
+        self._ros.factory.on_ready(self._install_status_handler)  # now if connected, else when it is
         try:
             self._ros.run(timeout=c.connect_timeout_s)
         except roslibpy.core.RosTimeoutError:
@@ -281,12 +300,30 @@ class RosbridgeBackend:
             self._tf_error = exc
             log.warning("%s", exc)
 
-    def _on_ready(self, *_: Any) -> None:
+    def _on_ready(self, proto: Any = None, *_: Any) -> None:
         self._connected = True
+        self._link_down.clear()
+        if proto is not None:
+            self._install_status_handler(proto)
+
+    def _install_status_handler(self, proto: Any) -> Any:
+        """roslibpy 2.x maps the ``status`` op to no handler (a TODO in its RosBridgeProtocol) and
+        logs a traceback for every status message; handle it: log what the robot said."""
+        handlers = getattr(proto, "_message_handlers", None)
+        if isinstance(handlers, dict) and handlers.get("status") is None:
+            handlers["status"] = self._on_status
+        return proto
+
+    def _on_status(self, message: Any) -> None:
+        level = str(message.get("level", "")) if hasattr(message, "get") else ""
+        text = message.get("msg", message) if hasattr(message, "get") else message
+        log.log(logging.WARNING if level in ("error", "warning") else logging.INFO,
+                "rosbridge at %s reports %s: %s", self.config.url, level or "status", text)
 
     def _on_close(self, *_: Any) -> None:
         was = self._connected
         self._connected = False
+        self._link_down.set()
         if self._closed:
             return
         if was:
@@ -297,21 +334,26 @@ class RosbridgeBackend:
             tasks = list(self._tasks)
         for task in tasks:
             task.finish(TaskStatus.FAILED, reason, self._cached_pose())
-        self._send_stop()
+        # This runs inside the transport's "close" event, while (with twisted) the factory still
+        # holds the dead protocol: a send now would go to the closed socket. Once the event is
+        # over the factory has dropped it, and the stop is queued until the link is back.
+        self._ros.call_later(0, self._send_stop)
 
-    def _stop_reconnecting(self) -> None:
+    def _stop_reconnecting(self, force: bool = False) -> None:
+        """Switch roslibpy's reconnecting off, on the transport's thread; ``force`` also drops a
+        connection whose close handshake never finished."""
         factory = self._ros.factory
         stop_trying = getattr(factory, "stopTrying", None)
-        if callable(stop_trying):  # twisted ReconnectingClientFactory
-            stop_trying()
+        if callable(stop_trying):  # twisted ReconnectingClientFactory: not thread-safe, so on its thread
+            self._ros.call_later(0, stop_trying)
             connector = getattr(factory, "connector", None)
-            if connector is not None:
-                try:
-                    connector.disconnect()
-                except Exception as exc:  # best effort on an already dead connector
-                    log.debug("disconnecting the roslibpy connector: %s", exc)
+            if force and connector is not None:
+                self._ros.call_later(0, connector.disconnect)
         else:  # asyncio transport: its reconnect loop checks this flag
             factory._stop = True
+            proto = getattr(factory, "_proto", None)
+            if force and proto is not None:
+                self._ros.call_later(0, proto.dropConnection)
 
     def _require_connection(self) -> None:
         if self._closed:
@@ -321,24 +363,60 @@ class RosbridgeBackend:
                              f"reconnecting); check that rosbridge runs and the network is up")
 
     def close(self) -> None:
+        """Stop the robot and disconnect, in an order that sends nothing on a closed socket (see
+        the module docstring). Running tasks end FAILED ("closed"). Idempotent."""
         if self._closed:
             return
-        try:
+        c = self.config
+        self._closed = True  # no new task starts; the link going down is no longer a fault
+        with self._lock:
+            tasks = list(self._tasks)
+        for task in tasks:
             if self._connected:
-                self.stop()
-        finally:
-            self._closed = True
-            with self._lock:
-                tasks = list(self._tasks)
-            for task in tasks:
-                task.finish(TaskStatus.FAILED, "the rosbridge backend was closed")
-            for t in self._subs:
-                t.unsubscribe()
-            try:
-                self._ros.close(timeout=self.config.connect_timeout_s)
-            except roslibpy.core.RosTimeoutError:
-                log.warning("rosbridge connection did not close within %s s", self.config.connect_timeout_s)
+                task.cancel()  # navigation: cancel the goal; Move/Rotate: their loop sends zero velocity
+            task.finish(TaskStatus.FAILED, "the rosbridge backend was closed")
+        self._join_workers(c.close_timeout_s)
+        if not self._connected:
+            for t in self._subs:  # nothing can be sent: just drop the handlers
+                self._ros.off(t.name)
             self._stop_reconnecting()
+            return
+        self._send_stop()
+        for t in self._subs:
+            t.unsubscribe()
+        self._cmd_vel.unadvertise()
+        try:
+            self._ros.close(timeout=c.close_timeout_s)  # queues the close frame behind the messages above
+        except roslibpy.core.RosTimeoutError:
+            log.warning("rosbridge connection did not start closing within %s s", c.close_timeout_s)
+        clean = self._link_down.wait(c.close_timeout_s)
+        if not clean:
+            log.warning("rosbridge at %s did not finish the close handshake within %s s; dropping the "
+                        "connection", c.url, c.close_timeout_s)
+        self._stop_reconnecting(force=not clean)
+
+    def _join_workers(self, timeout_s: float) -> None:
+        deadline = time.monotonic() + timeout_s
+        with self._lock:
+            workers = [t for t in self._workers if t is not threading.current_thread()]
+        for t in workers:
+            t.join(max(0.0, deadline - time.monotonic()))
+            if t.is_alive():
+                log.warning("%s did not stop within %s s", t.name, timeout_s)
+
+    def _spawn(self, name: str, target: Callable[[], None]) -> None:
+        """Start one of langnav's own worker threads (joined by close())."""
+        def run() -> None:
+            try:
+                target()
+            finally:
+                with self._lock:
+                    self._workers.discard(threading.current_thread())
+
+        t = threading.Thread(target=run, daemon=True, name=name)
+        with self._lock:
+            self._workers.add(t)
+        t.start()
 
     # -- reading -------------------------------------------------------------------------------
     def _wait_for(self, topic: str, timeout_s: float, what: str) -> _Stamped:
@@ -571,7 +649,7 @@ class RosbridgeBackend:
             finally:
                 self._end_task(task)
 
-        threading.Thread(target=run, daemon=True, name=f"rosbridge-{task.kind}").start()
+        self._spawn(f"rosbridge-{task.kind}", run)
 
     def _nav_watchdog(self, task: _Task) -> None:
         c = self.config
@@ -620,8 +698,7 @@ class RosbridgeBackend:
                 t.cancel()
         task = _Task(kind, lambda _t: None)
         self._add_task(task)
-        threading.Thread(target=self._run_motion, args=(task, phases), daemon=True,
-                         name=f"rosbridge-{kind}").start()
+        self._spawn(f"rosbridge-{kind}", lambda: self._run_motion(task, phases))
         return task
 
     def _motion_pose(self) -> tuple[Pose2D, float] | None:

@@ -21,7 +21,17 @@ Commands (the seven of :class:`~langnav.robot.protocol.RobotBackend`):
 * ``rotate``: 10 degree steps, left = counter-clockwise, turning in place.
 * ``stop``: cancels whatever runs and zeroes the velocity at once.
 
-A new task preempts the one running (its handle ends CANCELED), as a new Nav2 goal does.
+Teleop (``set_velocity``, what ``/cmd_vel`` drives over rosbridge): the base follows a commanded
+(linear, angular) velocity, within its speed and acceleration limits, for ``TELEOP_TIMEOUT_S`` of
+robot time after the last command, then brakes to a stop (a cmd_vel timeout, as
+diff_drive_controller's ``cmd_vel_timeout``). A non-zero command cancels a running task (its
+handle ends CANCELED), as teleop overrides Nav2 through a twist mux; a zero command only stops
+teleop motion and never cancels a task (a released joystick, or a watchdog's zero). Like Nav2's
+collision monitor, a teleop drive that its map shows running into an obstacle within braking
+distance is stopped (turning in place stays allowed); the bumper is the last resort.
+
+A new task preempts the one running (its handle ends CANCELED), as a new Nav2 goal does, and ends
+teleop.
 Determinism: the only randomness is the lidar noise, drawn from ``numpy.random.default_rng(seed)``;
 headless runs with the same seed and the same calls give the same trajectory.
 """
@@ -103,6 +113,9 @@ TURN_TOLERANCE_RAD: Final = math.radians(0.5)
 MIN_DRIVE_MPS: Final = 0.02
 #: Heading hold gain while driving straight (rad/s per rad of drift).
 HEADING_GAIN: Final = 2.0
+#: A teleop velocity is held this long (robot time) after the last command, then the base stops:
+#: diff_drive_controller's default cmd_vel_timeout, so a dropped teleop link cannot run the robot away.
+TELEOP_TIMEOUT_S: Final = 0.5
 MOVE_STEP_M: Final = 0.03
 ROTATE_STEP_RAD: Final = math.radians(10.0)
 MOVE_DIRECTIONS: Final = ("forward", "backward", "left", "right")
@@ -438,6 +451,11 @@ class SimBackend:
         self._t = 0.0
         self._steps = 0
         self._task: _Task | None = None
+        #: teleop: (linear_mps, angular_radps, held until this robot time)
+        self._teleop: tuple[float, float, float] | None = None
+        #: how often teleop was kept from driving into an obstacle (the collision monitor's stops)
+        self.teleop_blocks = 0
+        self._teleop_blocked = False
         self._scan: LaserScan | None = None
         self._next_scan_s = 0.0
         self._cells = self._map.cells().copy()
@@ -551,6 +569,8 @@ class SimBackend:
             if self._task.done.is_set():
                 self._task = None
                 v_cmd, w_cmd = 0.0, 0.0
+        elif self._teleop is not None:
+            v_cmd, w_cmd = self._teleop_tick(dt)
         lim = cfg.limits
         v = ramp(self._v, max(-lim.max_linear_mps, min(lim.max_linear_mps, v_cmd)), lim.max_linear_accel_mps2 * dt)
         w = ramp(self._w, max(-lim.max_angular_radps, min(lim.max_angular_radps, w_cmd)),
@@ -565,6 +585,7 @@ class SimBackend:
             self.collisions += 1
             self._v = self._w = 0.0
             log.warning("bumper hit at (%.2f, %.2f)", nx, ny)
+            self._teleop = None
             if self._task is not None:
                 self._task.finish(self, TaskStatus.FAILED, f"collision: the bumper hit something at "
                                                             f"({nx:.2f}, {ny:.2f}); stopped")
@@ -572,6 +593,28 @@ class SimBackend:
             return
         self._pose = Pose2D(nx, ny, wrap_angle(p.yaw_rad + w * dt))
         self._v, self._w = v, w
+
+    def _teleop_tick(self, dt: float) -> tuple[float, float]:
+        """The teleop velocity for this step: zero once the command timed out, or when driving on
+        would hit an obstacle of the robot's map before the base could brake."""
+        assert self._teleop is not None
+        v, w, until_s = self._teleop
+        if self._t > until_s + 1e-9:
+            self._teleop = None
+            log.debug("teleop: no velocity command for %.1f s: stopping", TELEOP_TIMEOUT_S)
+            return 0.0, 0.0
+        lim = self.config.limits
+        v = max(-lim.max_linear_mps, min(lim.max_linear_mps, v))
+        w = max(-lim.max_angular_radps, min(lim.max_angular_radps, w))
+        blocked = v != 0.0 and self.motion_blocked(self._pose, v, w, dt)
+        if blocked:
+            if not self._teleop_blocked:
+                self.teleop_blocks += 1
+                log.info("teleop: obstacle ahead of (%.2f, %.2f): linear velocity held at zero",
+                         self._pose.x_m, self._pose.y_m)
+            v = 0.0
+        self._teleop_blocked = blocked
+        return v, w
 
     def _sense(self) -> None:
         p = self._pose
@@ -639,7 +682,25 @@ class SimBackend:
             if self._task is not None:
                 self._task.finish(self, TaskStatus.CANCELED, "preempted by a new command")
             self._task = task
+            self._teleop = None
         return SimTaskHandle(self, task)
+
+    def set_velocity(self, linear_mps: float, angular_radps: float) -> None:
+        """Teleop: drive at this velocity (clamped to the base's limits) for ``TELEOP_TIMEOUT_S`` of
+        robot time; call again to keep going. A non-zero command cancels the running task."""
+        if not (math.isfinite(linear_mps) and math.isfinite(angular_radps)):
+            raise RobotError(f"a velocity is two finite numbers (m/s, rad/s), got ({linear_mps!r}, {angular_radps!r})")
+        with self.lock:
+            if self._closed:
+                raise RobotError("the simulator is closed; create a new one")
+            moving = linear_mps != 0.0 or angular_radps != 0.0
+            if not moving:
+                self._teleop = None  # stop teleop motion; a running task is left alone
+                return
+            if self._task is not None:
+                self._task.finish(self, TaskStatus.CANCELED, "cancelled by teleop (a velocity command)")
+                self._task = None
+            self._teleop = (float(linear_mps), float(angular_radps), self._t + TELEOP_TIMEOUT_S)
 
     def navigate_through_poses(self, poses: list[tuple[float, float] | tuple[float, float, float]]) -> SimTaskHandle:
         if not poses:
@@ -690,6 +751,7 @@ class SimBackend:
             if self._task is not None:
                 self._task.finish(self, TaskStatus.CANCELED, "stopped")
                 self._task = None
+            self._teleop = None
             self._v = self._w = 0.0
 
     def get_current_path(self, timeout_s: float = DEFAULT_REQUEST_TIMEOUT_S) -> list[tuple[float, float]]:
@@ -712,7 +774,8 @@ class SimBackend:
                 scan=self._scan, path=tuple(task.path()) if task else (), goals=tuple(task.goals()) if task else (),
                 busy=task is not None, time_s=self._t,
                 extra={"collisions": self.collisions, "map_version": self.map_cells_version,
-                       "task": task.kind if task else None, "steps": self._steps},
+                       "task": task.kind if task else None, "steps": self._steps,
+                       "teleop": self._teleop is not None},
             )
 
     def close(self) -> None:
