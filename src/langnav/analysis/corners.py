@@ -21,7 +21,7 @@ from scipy import ndimage as ndi
 
 from langnav.analysis.elements import Corner, Wall
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import GridLayers, truncated_sq_edt
+from langnav.analysis.precompute import GridLayers
 from langnav.maps.grid import OccupancyGrid
 
 #: Walls meet in a corner when the angle between them is within this of 90 degrees.
@@ -134,12 +134,7 @@ def approach_point(grid: OccupancyGrid, params: AnalysisParams, point: tuple[flo
     pr0, pc0 = max(0, r0 - m), max(0, c0 - m)
     pr1, pc1 = min(grid.height, r1 + m), min(grid.width, c1 + m)
     padded[pr0 - (r0 - m):pr1 - (r0 - m), pc0 - (c0 - m):pc1 - (c0 - m)] = (grid.free if free is None else free)[pr0:pr1, pc0:pc1]
-    if padded.all():  # nothing but floor around (never next to real walls): the plain transform
-        edt = np.asarray(ndi.distance_transform_edt(padded), dtype=np.float64)[m:-m, m:-m]
-    else:
-        # Exact up to m cells, more beyond: all the tests below can tell apart (a cell clear by
-        # more than m cells has the clearance; the fallback only compares cells that do not).
-        edt = np.sqrt(truncated_sq_edt(padded, m).astype(np.float64))[m:-m, m:-m]
+    edt = np.asarray(ndi.distance_transform_edt(padded), dtype=np.float64)[m:-m, m:-m]
     win_clear = np.maximum(edt * res - res / 2, 0.0)
     xs, ys = grid.cell_to_world(np.arange(r0, r1)[:, None], np.arange(c0, c1)[None, :])
     d = np.hypot(xs - point[0], ys - point[1])
