@@ -40,7 +40,7 @@ FloatArray = npt.NDArray[np.float64]
 #: degrees (a shelf end, a bench standing out into the room) is furniture, not a jamb.
 STUB_ACROSS_MAX_COS: Final = 0.5
 #: A wall piece this long (m) flanks a doorway whatever its overall direction.
-WALL_MIN_LENGTH_ANY_DIRECTION_M: Final = 3.0
+WALL_MIN_LENGTH_ANY_DIRECTION_M: Final = 2.0
 #: A wall stub is at least this many times longer than thick (a cabinet or a box is not); it
 #: then also has a direction.
 STUB_MIN_ELONGATION: Final = 1.8
@@ -326,10 +326,26 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
         else:
             kept.append((a, b, s, int(loc_arr[i])))
     # A crossing whose jambs are not both walls is a gap around furniture: one space.
+    # Two spaces are judged on their widest opening: a wall with several gaps (a dashed wall
+    # in a drawing, a doorway beside a broken wall) keeps them apart if that one is a doorway.
     if judge is not None:
-        for a, b, s, loc in kept:
+        judged: set[tuple[int, int]] = set()
+        for a, b, s, loc in sorted(kept, key=lambda e: -e[2]):
             ra, rb = uf.find(a), uf.find(b)
-            if ra != rb and not judge.is_doorway(loc // width, loc % width, s):
+            if ra == rb or (min(ra, rb), max(ra, rb)) in judged:
+                continue
+            if judge.is_doorway(loc // width, loc % width, s):
+                judged.add((min(ra, rb), max(ra, rb)))
+            else:
+                uf.parent[rb] = ra
+                peak_l[ra] = max(peak_l[ra], peak_l[rb])
+                area_l[ra] += area_l[rb]
+    # A piece whose opening is wide for its size (a bay of a room behind a desk) is part of
+    # the neighbour: a doorway is narrow next to the room it leads into.
+    if params.seg_merge_gap_ratio > 0:
+        for a, b, s, _ in sorted(kept, key=lambda e: -e[2]):
+            ra, rb = uf.find(a), uf.find(b)
+            if ra != rb and 2 * s >= params.seg_merge_gap_ratio * math.sqrt(min(area_l[ra], area_l[rb])):
                 uf.parent[rb] = ra
                 peak_l[ra] = max(peak_l[ra], peak_l[rb])
                 area_l[ra] += area_l[rb]
