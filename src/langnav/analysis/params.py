@@ -54,13 +54,13 @@ class AnalysisParams:
     seg_jamb_test: bool = True
     #: Segmentation: two hallway-narrow spaces stay one corridor when their clearance peaks are
     #: below this multiple of the opening's (a corridor narrowed by a cabinet, not a door).
-    seg_hallway_saddle_ratio: float = 1.0
+    seg_hallway_saddle_ratio: float = 1.6
     #: Segmentation: an unknown region enclosed by a room counts in its area up to this size (m2;
     #: an unscanned corner or half of a room), never a courtyard inside a corridor loop.
     seg_enclosed_unknown_max_area_m2: float = 30.0
     #: Segmentation: a space joins its neighbour when the opening between them is at least this
     #: multiple of the square root of its area (m / sqrt(m2); 0 switches it off).
-    seg_merge_gap_ratio: float = 0.0
+    seg_merge_gap_ratio: float = 0.4
     #: Segmentation: clearance (m) below which a free cell cannot start a space (about a robot radius).
     seg_min_peak_m: float = 0.15
     #: Straight wall segments shorter than this are not reported.
