@@ -65,7 +65,7 @@ def segment_spaces(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS)
     if not free.any():
         raise AnalysisError(f"{grid.source}: the map has no free space to segment")
     # Work on the part of the grid around the free space (maps often have wide margins).
-    margin = int(math.ceil(CROP_MARGIN_M / grid.resolution_m))
+    margin = math.ceil(CROP_MARGIN_M / grid.resolution_m)
     rows = np.flatnonzero(free.any(axis=1))
     cols = np.flatnonzero(free.any(axis=0))
     r0, r1 = max(0, rows[0] - margin), min(grid.height, rows[-1] + margin + 1)
