@@ -179,13 +179,12 @@ def _ridge(d: npt.NDArray[np.integer] | npt.NDArray[np.floating]) -> BoolArray:
     """Cells whose value is >= both neighbours along at least one of the four directions (the
     same cells for a distance map and for its square)."""
     p = np.pad(d, 1, mode="constant", constant_values=0)
-    c = p[1:-1, 1:-1]
-    out = np.zeros(d.shape, dtype=bool)
-    for (r_a, c_a), (r_b, c_b) in (((0, 1), (2, 1)), ((1, 0), (1, 2)), ((0, 0), (2, 2)), ((0, 2), (2, 0))):
-        a = p[r_a:r_a + d.shape[0], c_a:c_a + d.shape[1]]
-        b = p[r_b:r_b + d.shape[0], c_b:c_b + d.shape[1]]
-        out |= (c >= a) & (c >= b)
-    return out & (d > 0)
+    # c >= both of a pair <=> c >= the larger; for some pair <=> c >= the smallest of those.
+    h, w = d.shape
+    lowest = np.maximum(p[0:h, 1:w + 1], p[2:h + 2, 1:w + 1])  # up / down
+    for (r_a, c_a), (r_b, c_b) in (((1, 0), (1, 2)), ((0, 0), (2, 2)), ((0, 2), (2, 0))):
+        np.minimum(lowest, np.maximum(p[r_a:r_a + h, c_a:c_a + w], p[r_b:r_b + h, c_b:c_b + w]), out=lowest)
+    return (d >= lowest) & (d > 0)
 
 
 def _side_distances(open_: BoolArray, pts: npt.NDArray[np.float64], reach: npt.NDArray[np.float64],
