@@ -19,7 +19,7 @@ from scipy import ndimage as ndi
 
 from langnav.analysis.elements import Obstacle
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import GridLayers, border_labels, component_boxes
+from langnav.analysis.precompute import GridLayers, border_labels, component_boxes, nonzero2
 from langnav.analysis.unexplored import adjacent_pairs
 from langnav.maps.grid import OccupancyGrid
 
@@ -78,7 +78,7 @@ def find_obstacles(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
     is_candidate = np.zeros(n + 1, dtype=bool)
     is_candidate[candidates] = True
     mask = is_candidate[comp]
-    rr_c, cc_c = np.nonzero(mask)
+    rr_c, cc_c = nonzero2(mask)
     slices = component_boxes(comp[rr_c, cc_c], rr_c, cc_c, candidates)
     res = grid.resolution_m
     obstacles: list[Obstacle] = []

@@ -16,7 +16,7 @@ import numpy.typing as npt
 
 from langnav.analysis.elements import UnexploredArea
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import EIGHT, GridLayers, border_labels, dilate8
+from langnav.analysis.precompute import EIGHT, GridLayers, border_labels, dilate8, nonzero2
 from langnav.maps.grid import OccupancyGrid
 
 __all__ = ["EIGHT", "NEIGHBOURS_8", "UnexploredResult", "adjacent_pairs", "border_labels",
@@ -52,31 +52,28 @@ def adjacent_pairs(a: npt.NDArray[np.integer] | BoolArray, b: npt.NDArray[np.int
     """Unique (flat index of a cell with a > 0, label b > 0 of one of its 8 neighbours) pairs.
 
     Returned as an (N, 2) int64 array sorted by cell, then by label; vectorised: the eight
-    neighbour labels of each candidate cell are gathered from a zero-padded window of ``b`` and
-    deduplicated per cell by sorting the eight.
+    neighbour labels of each candidate cell are gathered at once and deduplicated per cell by
+    sorting the eight.
     """
     h, w = a.shape
     near = dilate8(b > 0)
-    near &= a > 0
-    rr, cc = np.nonzero(near)
-    if len(rr) == 0:
+    near &= a.astype(bool, copy=False) if a.dtype == np.bool_ else (a > 0)
+    flat = np.flatnonzero(near).astype(np.int64, copy=False)
+    if len(flat) == 0:
         return np.zeros((0, 2), dtype=np.int64)
-    # The window holding every candidate and its neighbours, padded with one ring of zeros
-    # (neighbours beyond the grid have no label).
-    r_lo, r_hi = int(rr[0]), int(rr[-1])
-    c_lo, c_hi = int(cc.min()), int(cc.max())
-    pw = c_hi - c_lo + 3
-    padded = np.zeros((r_hi - r_lo + 3, pw), dtype=b.dtype)
-    g_r0, g_r1 = max(0, r_lo - 1), min(h, r_hi + 2)
-    g_c0, g_c1 = max(0, c_lo - 1), min(w, c_hi + 2)
-    padded[g_r0 - r_lo + 1:g_r1 - r_lo + 1, g_c0 - c_lo + 1:g_c1 - c_lo + 1] = b[g_r0:g_r1, g_c0:g_c1]
-    flat_p = padded.ravel()
-    at = (rr - r_lo + 1).astype(np.int64) * pw + (cc - c_lo + 1)
-    nb = np.stack([flat_p[at + (dr * pw + dc)] for dr, dc in NEIGHBOURS_8], axis=1)
+    rr, cc = np.divmod(flat, w)
+    b_flat = b.ravel()
+    # Neighbour labels by flat offset; "clip" keeps the index in the array, and the cells on the
+    # grid's edge, whose offsets wrap round or fall off, are put right below.
+    nb = np.stack([b_flat.take(flat + (dr * w + dc), mode="clip") for dr, dc in NEIGHBOURS_8], axis=1)
+    edge = np.flatnonzero((rr == 0) | (rr == h - 1) | (cc == 0) | (cc == w - 1))
+    if len(edge):
+        for j, (dr, dc) in enumerate(NEIGHBOURS_8):
+            r2, c2 = rr[edge] + dr, cc[edge] + dc
+            nb[edge[(r2 < 0) | (r2 >= h) | (c2 < 0) | (c2 >= w)], j] = 0
     nb.sort(axis=1)
     keep = nb > 0
     keep[:, 1:] &= nb[:, 1:] != nb[:, :-1]
-    flat = rr.astype(np.int64) * w + cc
     cells = np.broadcast_to(flat[:, None], nb.shape)[keep]
     return np.stack([cells, nb[keep].astype(np.int64)], axis=1)
 
@@ -121,7 +118,7 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     # from their own cells; the outside one (most of a real map's unknown margin) from the
     # exterior mask's row and column counts, without listing its cells.
     counts_i = np.bincount(area_of, weights=sizes, minlength=n_areas + 1)
-    rows, cols = np.nonzero((area_labels > 0) & ~exterior)
+    rows, cols = nonzero2((area_labels > 0) & ~exterior)
     ids = area_labels[rows, cols]
     sum_r = np.bincount(ids, weights=rows, minlength=n_areas + 1)
     sum_c = np.bincount(ids, weights=cols, minlength=n_areas + 1)

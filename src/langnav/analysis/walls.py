@@ -23,7 +23,7 @@ from scipy import ndimage as ndi
 
 from langnav.analysis.elements import Wall
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import GridLayers, cov2, dilate4, median
+from langnav.analysis.precompute import GridLayers, cov2, dilate4, median, nonzero2
 from langnav.maps.grid import OccupancyGrid
 
 #: Smoothing of the wall mask before taking its gradient, in cells: enough to turn a pixel
@@ -79,7 +79,7 @@ def _face_points(labels: npt.NDArray[np.int32], wall: npt.NDArray[np.bool_], fre
     """
     near_wall = dilate4(wall)
     boundary = (labels > 0) & free & near_wall & ~wall
-    rows, cols = np.nonzero(boundary)
+    rows, cols = nonzero2(boundary)
     empty = np.zeros(0)
     if len(rows) == 0:
         return empty, empty, empty, empty, np.zeros(0, dtype=np.int32)
