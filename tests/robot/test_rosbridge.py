@@ -11,6 +11,7 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import json
+import logging
 import math
 import threading
 import time
@@ -346,3 +347,70 @@ def test_move_and_rotate_by_cmd_vel_closed_loop(stamped: bool) -> None:
     finally:
         robot.close()
         served.close()
+
+
+# -- teleop: /cmd_vel drives the simulator (Foxglove's teleop panel, roslibjs pages) -----------------
+def _ask(ws: Any, payload: dict[str, Any], op: str) -> dict[str, Any]:
+    """Send, then read until a reply with this ``op`` (a status error before it fails the test)."""
+    ws.send(json.dumps(payload))
+    deadline = time.monotonic() + 5.0
+    while time.monotonic() < deadline:
+        reply = json.loads(ws.recv(timeout=5))
+        if reply["op"] == op:
+            return reply
+        assert reply["op"] != "status", reply
+    raise AssertionError(f"no {op} within 5 s")
+
+
+@pytest.mark.parametrize("stamped", [False, True], ids=["Twist", "TwistStamped"])
+def test_cmd_vel_drives_the_simulator_then_its_timeout_stops_it(fresh_served: Served, stamped: bool) -> None:
+    sim = fresh_served.robot
+    msg_type = rm.TWIST_STAMPED if stamped else rm.TWIST
+    start = sim.get_robot_pose()
+    with connect(f"ws://127.0.0.1:{fresh_served.port}", open_timeout=5) as ws:
+        ws.send(json.dumps({"op": "advertise", "topic": "/cmd_vel", "type": msg_type}))
+        speeds: list[float] = []
+        t_end = time.monotonic() + 1.0  # 4 s of robot time
+        while time.monotonic() < t_end:  # a teleop panel publishes at 10-20 Hz while a key is held
+            ws.send(json.dumps({"op": "publish", "topic": "/cmd_vel",
+                                "msg": rm.cmd_vel(0.2, 0.05, stamped, "base_link")}))
+            speeds.append(sim.state().linear_mps)
+            time.sleep(0.05)
+        # nothing refused: the next reply on the socket is the answer to this call
+        reply = _ask(ws, {"op": "call_service", "id": "p", "service": "/langnav/get_robot_pose"}, "service_response")
+        assert reply["result"] is True
+        _until(lambda: sim.state().linear_mps == 0.0, 3.0, "the cmd_vel timeout to stop the robot")
+    end = sim.get_robot_pose()
+    assert max(speeds) == pytest.approx(0.2, abs=1e-6)
+    assert 0.4 < end.x_m - start.x_m < 1.2  # about 0.2 m/s for 4 s of robot time, and a curve left
+    assert end.y_m > start.y_m and 0.05 < end.yaw_rad - start.yaw_rad < 0.4
+    assert sim.collisions == 0  # type: ignore[attr-defined]
+
+
+def test_cmd_vel_cancels_a_running_navigation_goal(fresh_served: Served) -> None:
+    with connect(f"ws://127.0.0.1:{fresh_served.port}", open_timeout=5) as ws:
+        goal = rm.navigate_through_poses_goal([Pose2D(*GOAL, 0.0)])
+        ws.send(json.dumps({"op": "send_action_goal", "id": "g", "action": "/navigate_through_poses",
+                            "action_type": rm.NAVIGATE_THROUGH_POSES, "args": goal}))
+        _until(lambda: fresh_served.robot.state().busy, 3.0, "the goal to start")
+        ws.send(json.dumps({"op": "publish", "topic": "/cmd_vel", "msg": rm.twist(0.0, 0.5)}))
+        result = _ask(ws, {"op": "call_service", "id": "noop", "service": "/rosapi/topics"}, "action_result")
+    assert (result["id"], result["status"], result["result"]) == ("g", rm.GOAL_STATUS_CANCELED, True)
+    assert "teleop" in result["values"]["error_msg"]
+
+
+def test_close_mid_motion_stops_the_robot_and_sends_nothing_on_the_closed_socket(
+        fresh_served: Served, caplog: pytest.LogCaptureFixture) -> None:
+    caplog.set_level(logging.INFO)
+    robot = fresh_served.client()
+    turn = robot.rotate("left", 36)  # a full turn: the cmd_vel loop is publishing when close() comes
+    _until(lambda: abs(fresh_served.robot.state().angular_radps) > 0.1, 5.0, "the turn to start")
+    robot.close()
+    assert turn.wait(timeout_s=1.0).status is TaskStatus.FAILED
+    assert fresh_served.robot.state().extra["teleop"] is False  # the zero velocity arrived before the close
+    fresh_served.server.stop()  # the robot goes away right after: nothing may still be queued for it
+    time.sleep(0.5)  # anything queued on roslibpy's thread would have run (and failed) by now
+    transport = [r for r in caplog.records if r.name.split(".")[0] in ("twisted", "roslibpy", "autobahn")]
+    assert not [r for r in transport if r.levelno >= logging.WARNING], [r.getMessage() for r in transport]
+    # the server got a close frame (roslibpy sends none with no code: 1005), not a dropped TCP connection (1006)
+    assert any(r.getMessage() == "rosbridge client 1 disconnected (close code 1005)" for r in caplog.records)

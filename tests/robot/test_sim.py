@@ -325,3 +325,71 @@ def test_state_snapshot() -> None:
     assert len(st.path) > 5
     assert st.time_s == pytest.approx(1.0, abs=0.06)
     assert st.extra["collisions"] == 0
+
+
+# -- teleop (set_velocity: what /cmd_vel drives over rosbridge) ----------------------------------
+def test_teleop_velocity_is_held_for_the_timeout_then_the_base_stops() -> None:
+    from langnav.robot.sim.backend import TELEOP_TIMEOUT_S
+
+    s = sim(room_world(), (1.0, 2.0, 0.0))
+    s.set_velocity(0.2, 0.0)
+    s.step(TELEOP_TIMEOUT_S - 0.1)
+    assert s.linear_mps == pytest.approx(0.2)  # reached (0.5 m/s² ramp) and held
+    assert s.state().extra["teleop"] is True
+    s.step(1.0)  # no new command: the cmd_vel timeout stops it
+    assert s.linear_mps == 0.0 and s.state().extra["teleop"] is False
+    stopped = s.pose
+    s.step(1.0)
+    assert s.pose == stopped
+    # it drove at most 0.2 m/s for the timeout plus the braking
+    assert 0.04 < stopped.x_m - 1.0 < 0.2 * (TELEOP_TIMEOUT_S + 0.2)
+
+
+def test_teleop_respects_speed_and_acceleration_limits() -> None:
+    s = sim(room_world(), (1.0, 2.0, 0.0))
+    lim = s.config.limits
+    s.set_velocity(5.0, -9.0)
+    s.step()
+    assert s.linear_mps == pytest.approx(lim.max_linear_accel_mps2 * s.config.control_dt_s)
+    for _ in range(40):
+        s.set_velocity(5.0, -9.0)
+        s.step(0.1)
+    assert s.linear_mps == pytest.approx(lim.max_linear_mps)
+    assert s.angular_radps == pytest.approx(-lim.max_angular_radps)
+
+
+def test_teleop_into_a_wall_stops_short_without_a_collision() -> None:
+    s = sim(room_world(), (5.0, 3.2, 0.0))
+    for _ in range(60):  # 6 s at full speed towards the east wall at x = 6
+        s.set_velocity(0.3, 0.0)
+        s.step(0.1)
+    assert s.collisions == 0 and s.teleop_blocks >= 1
+    assert 6.0 - ROBOT_RADIUS_M - 0.15 < s.pose.x_m < 6.0 - ROBOT_RADIUS_M
+    s.set_velocity(0.0, 1.0)  # turning in place stays allowed
+    s.step(0.4)
+    assert s.pose.yaw_rad > 0.1
+
+
+def test_teleop_cancels_a_running_task_but_a_zero_command_does_not() -> None:
+    s = sim(room_world(), (1.0, 2.0, 0.0))
+    h = s.navigate_through_poses([(3.0, 2.0)])
+    s.step(1.0)
+    s.set_velocity(0.0, 0.0)  # a released joystick: navigation goes on
+    assert h.status() is TaskStatus.RUNNING
+    v0 = s.linear_mps
+    s.set_velocity(-0.1, 0.0)
+    r = h.wait(1.0)
+    assert r.status is TaskStatus.CANCELED and "teleop" in r.message
+    s.step(0.3)
+    assert not s.state().busy
+    assert s.linear_mps == pytest.approx(v0 - 0.5 * 0.3)  # braking towards -0.1 m/s at 0.5 m/s²
+    h2 = s.rotate("left", 9)  # a new task ends teleop
+    assert s.state().extra["teleop"] is False
+    assert h2.wait(20).status is TaskStatus.SUCCEEDED
+
+
+@pytest.mark.parametrize(("v", "w"), [(math.nan, 0.0), (0.1, math.inf)])
+def test_teleop_refuses_non_finite_velocity(v: float, w: float) -> None:
+    s = sim(room_world(), (1.0, 2.0, 0.0))
+    with pytest.raises(RobotError, match="finite"):
+        s.set_velocity(v, w)

@@ -369,7 +369,7 @@ class RosbridgeServer:
             pass
         finally:
             await self._drop_client(client)
-            log.info("rosbridge client %d disconnected", client.number)
+            log.info("rosbridge client %d disconnected (close code %s)", client.number, ws.close_code)
 
     async def _drop_client(self, client: _Client) -> None:
         if client not in self._clients:
