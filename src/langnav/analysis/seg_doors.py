@@ -27,7 +27,7 @@ from langnav.analysis.seg_core import EIGHT, BoolArray, FloatArray, IntArray
 #: Label given to the unknown in the second flood (larger than any space label).
 _OUTSIDE_OFFSET: Final = 1
 #: Unknown farther than this from the floor plays no part in finding openings into it.
-OPENING_BAND_M: Final = 2.5
+OPENING_BAND_M: Final = 2.0
 #: A frontier longer than this is a space fading into unexplored territory, not a doorway (with
 #: the bit of floor a scan sees beyond an open door, an opening's frontier is shorter).
 OPENING_MAX_EXTENT_M: Final = 4.0

@@ -32,8 +32,10 @@ log = logging.getLogger(__name__)
 #: are that room's floor (an unscanned corner); a region walled in on all sides (a courtyard, a
 #: closed room never entered) does not.
 ENCLOSED_UNKNOWN_MIN_FLOOR_SHARE: Final = 0.25
-#: Outlines of larger bounding boxes (cells) are traced on a subsampled mask.
-OUTLINE_MAX_CELLS: Final = 250_000
+#: Outlines of larger bounding boxes (cells) are traced on a subsampled mask (for drawing).
+OUTLINE_MAX_CELLS: Final = 60_000
+#: Widths of spaces with larger bounding boxes (cells) are measured on a subsampled mask.
+WIDTH_MAX_CELLS: Final = 250_000
 #: Outlines are thinned to about this many points before simplification (they are for drawing).
 OUTLINE_MAX_POINTS: Final = 400
 #: The grid is cropped to the free space plus this margin (m) before segmenting: enough for the
@@ -173,7 +175,7 @@ def _kind_and_size(mask: npt.NDArray[np.bool_], floor_cells: int, area_m2: float
     if hallway(width) and int(mask.sum()) > floor_cells:
         # Part of the space is unscanned or cluttered (shelves): measure on the whole space, on a
         # coarser copy when it is large (a corridor network spans the map).
-        k = max(1, math.ceil(math.sqrt(mask.size / OUTLINE_MAX_CELLS)))
+        k = max(1, math.ceil(math.sqrt(mask.size / WIDTH_MAX_CELLS)))
         whole = np.pad(mask[::k, ::k], 1)
         width = max(width, 2.0 * float(ndi.distance_transform_edt(whole, sampling=res * k).max()) - res * k)
     return (ElementKind.HALLWAY if hallway(width) else ElementKind.ROOM), area_m2 / width, width
