@@ -28,6 +28,7 @@ EIGHT: Final = np.ones((3, 3), dtype=bool)
 
 BoolArray = npt.NDArray[np.bool_]
 IntArray = npt.NDArray[np.int32]
+_S = TypeVar("_S", bound=np.generic)
 
 
 def dilate8(mask: BoolArray) -> BoolArray:
@@ -51,6 +52,19 @@ def dilate4(mask: BoolArray) -> BoolArray:
     out[:-1] |= m[1:]
     out[:, 1:] |= m[:, :-1]
     out[:, :-1] |= m[:, 1:]
+    return out
+
+
+def maximum3(a: npt.NDArray[_S]) -> npt.NDArray[_S]:
+    """``ndi.maximum_filter(a, size=3)`` for a 2-D array of finite values: the same result (its
+    "reflect" edges repeat the edge cell, which cannot raise a maximum), as two separable passes
+    of shifted maxima, several times faster."""
+    rows = a.copy()
+    np.maximum(rows[1:], a[:-1], out=rows[1:])
+    np.maximum(rows[:-1], a[1:], out=rows[:-1])
+    out = rows.copy()
+    np.maximum(out[:, 1:], rows[:, :-1], out=out[:, 1:])
+    np.maximum(out[:, :-1], rows[:, 1:], out=out[:, :-1])
     return out
 
 

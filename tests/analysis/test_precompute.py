@@ -1,0 +1,138 @@
+"""The shared precomputations and the fast stand-ins give exactly what numpy / scipy give."""
+
+from __future__ import annotations
+
+import numpy as np
+import numpy.typing as npt
+from analysis_maps import room_with_door
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from hypothesis.extra.numpy import arrays
+from scipy import ndimage as ndi
+
+from langnav.analysis.precompute import (
+    EIGHT,
+    GridLayers,
+    border_labels,
+    component_boxes,
+    cov2,
+    dilate4,
+    dilate8,
+    maximum3,
+    median,
+    nonzero2,
+    truncated_sq_edt,
+)
+from langnav.analysis.unexplored import NEIGHBOURS_8, adjacent_pairs
+from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
+
+SHAPES = st.tuples(st.integers(1, 24), st.integers(1, 24))
+
+
+def masks() -> st.SearchStrategy[npt.NDArray[np.bool_]]:
+    return SHAPES.flatmap(lambda s: arrays(np.bool_, s))
+
+
+@settings(max_examples=150, deadline=None)
+@given(masks())
+def test_dilations_match_binary_dilation(m: npt.NDArray[np.bool_]) -> None:
+    assert np.array_equal(dilate8(m), ndi.binary_dilation(m, structure=EIGHT))
+    assert np.array_equal(dilate4(m), ndi.binary_dilation(m))
+
+
+@settings(max_examples=100, deadline=None)
+@given(SHAPES.flatmap(lambda s: arrays(np.int32, s, elements=st.integers(-5, 9))))
+def test_maximum3_matches_maximum_filter(a: npt.NDArray[np.int32]) -> None:
+    assert np.array_equal(maximum3(a), ndi.maximum_filter(a, size=3))
+    f = a.astype(np.float64) / 7.0
+    assert np.array_equal(maximum3(f), ndi.maximum_filter(f, size=3))
+
+
+@settings(max_examples=100, deadline=None)
+@given(masks())
+def test_nonzero2_matches_nonzero(m: npt.NDArray[np.bool_]) -> None:
+    r, c = nonzero2(m)
+    er, ec = np.nonzero(m)
+    assert np.array_equal(r, er) and np.array_equal(c, ec)
+
+
+@settings(max_examples=200, deadline=None)
+@given(masks(), st.integers(0, 12))
+def test_truncated_sq_edt_is_exact_up_to_its_bound(m: npt.NDArray[np.bool_], bound: int) -> None:
+    d2 = truncated_sq_edt(m, bound)
+    assert (d2[~m] == 0).all()
+    beyond = d2[m] > bound * bound
+    if (~m).any():
+        ref = ndi.distance_transform_edt(m)
+        near = ref <= bound
+        # Bit for bit the same distances where exact, and above the bound exactly where the
+        # true distance is.
+        assert np.array_equal(np.sqrt(d2.astype(np.float64))[near], ref[near])
+        assert np.array_equal(beyond, ~near[m])
+    else:
+        assert beyond.all()
+
+
+def test_truncated_sq_edt_known_values() -> None:
+    m = np.ones((5, 9), dtype=bool)
+    m[2, 0] = False
+    d2 = truncated_sq_edt(m, 3)
+    assert d2[2, 0] == 0
+    assert d2[2, 3] == 9
+    assert d2[0, 1] == 5
+    assert d2[2, 8] > 9  # 8 cells away: only known to be beyond the bound
+
+
+@settings(max_examples=150, deadline=None)
+@given(arrays(np.float64, st.integers(1, 40), elements=st.floats(-1e6, 1e6)))
+def test_median_and_cov2_match_numpy(v: npt.NDArray[np.float64]) -> None:
+    assert median(v) == float(np.median(v))
+    if len(v) >= 2:
+        pts = np.stack([v, v[::-1] * 0.5 + 1.0])
+        assert np.array_equal(cov2(pts), np.cov(pts))
+
+
+@settings(max_examples=100, deadline=None)
+@given(masks())
+def test_component_boxes_match_find_objects(m: npt.NDArray[np.bool_]) -> None:
+    lab, n = ndi.label(m, structure=EIGHT)
+    rr, cc = np.nonzero(lab)
+    wanted = np.arange(1, n + 1)
+    boxes = component_boxes(lab[rr, cc], rr, cc, wanted)
+    assert boxes == {k: sl for k, sl in enumerate(ndi.find_objects(lab), start=1)}
+
+
+@settings(max_examples=100, deadline=None)
+@given(SHAPES.flatmap(lambda s: st.tuples(arrays(np.bool_, s), arrays(np.int32, s, elements=st.integers(0, 4)))))
+def test_adjacent_pairs_match_brute_force(ab: tuple[npt.NDArray[np.bool_], npt.NDArray[np.int32]]) -> None:
+    a, b = ab
+    h, w = a.shape
+    expected = sorted({(r * w + c, int(b[r + dr, c + dc]))
+                       for r, c in zip(*np.nonzero(a), strict=True)
+                       for dr, dc in NEIGHBOURS_8
+                       if 0 <= r + dr < h and 0 <= c + dc < w and b[r + dr, c + dc] > 0})
+    assert [tuple(p) for p in adjacent_pairs(a, b).tolist()] == expected
+
+
+def test_grid_layers_match_direct_computation() -> None:
+    grid = room_with_door()
+    cells = grid.cells.copy()
+    cells[0, :] = UNKNOWN  # an unknown strip on the border: the outside world
+    # An unknown speck in the middle of the floor.
+    inner = ndi.binary_erosion(cells == FREE, structure=EIGHT, iterations=2)
+    r, c = (int(v[0]) for v in np.nonzero(inner))
+    cells[r, c] = UNKNOWN
+    grid = OccupancyGrid(cells=cells, resolution_m=grid.resolution_m)
+    layers = GridLayers(grid)
+    assert np.array_equal(layers.free, cells == FREE)
+    assert np.array_equal(layers.occupied, cells == OCCUPIED)
+    assert np.array_equal(layers.unknown, cells == UNKNOWN)
+    lab, n = ndi.label(cells == UNKNOWN, structure=EIGHT)
+    comps = layers.unknown_components
+    assert comps.n == n and np.array_equal(comps.labels, lab)
+    assert comps.sizes[0] == 0 and comps.sizes[1:].tolist() == np.bincount(lab.ravel())[1:].tolist()
+    assert np.array_equal(layers.exterior, np.isin(lab, border_labels(lab)) & (lab > 0))
+    assert layers.exterior[0].all() and not layers.exterior[r, c] and layers.unknown[r, c]
+    # Computed once, and shared read-only.
+    assert layers.occupied_components is layers.occupied_components
+    assert not layers.free.flags.writeable
