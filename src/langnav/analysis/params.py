@@ -61,6 +61,10 @@ class AnalysisParams:
     #: Segmentation: a space joins its neighbour when the opening between them is at least this
     #: multiple of the square root of its area (m / sqrt(m2); 0 switches it off).
     seg_merge_gap_ratio: float = 0.4
+    #: Segmentation: grids with more cells than this (after cropping to the free space) are
+    #: segmented at seg_coarse_resolution_m, to keep large maps fast (thresholds are in metres).
+    seg_max_cells_full_resolution: int = 1_500_000
+    seg_coarse_resolution_m: float = 0.1
     #: Segmentation: clearance (m) below which a free cell cannot start a space (about a robot radius).
     seg_min_peak_m: float = 0.15
     #: Straight wall segments shorter than this are not reported.

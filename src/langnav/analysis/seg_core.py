@@ -372,6 +372,9 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
             changed = True
     roots = np.array([uf.find(i) for i in range(n)], dtype=np.int64)
     roots[0] = 0
+    # Pieces still too small to be a room have no neighbour to join: scan fragments, not spaces.
+    tiny = np.array([area_l[r] < params.room_min_area_m2 for r in roots.tolist()])
+    roots[tiny] = 0
     uniq, inv = np.unique(roots, return_inverse=True)
     # Keep 0 as 0; renumber roots by descending area so that label 1 is the biggest space.
     new_area = np.bincount(inv, weights=area, minlength=uniq.size)

@@ -9,6 +9,7 @@ not depend on the grid's resolution.
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import math
 from dataclasses import dataclass, field
@@ -24,7 +25,7 @@ from langnav.analysis.errors import AnalysisError
 from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
 from langnav.analysis.seg_core import EIGHT, Floor, JambJudge, basins, clean_floor, merge_basins
 from langnav.analysis.seg_doors import RawDoor, doors_between, label_max, openings_to_unknown
-from langnav.maps.grid import OCCUPIED, OccupancyGrid
+from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
 log = logging.getLogger(__name__)
 
@@ -73,14 +74,54 @@ def segment_spaces(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS)
     r0, r1 = max(0, rows[0] - margin), min(grid.height, rows[-1] + margin + 1)
     c0, c1 = max(0, cols[0] - margin), min(grid.width, cols[-1] + margin + 1)
     if (r0, r1, c0, c1) == (0, grid.height, 0, grid.width):
-        return _segment(grid, params)
+        return _segment_at_working_resolution(grid, params)
     ox, oy = grid.grid_to_world(r0, c0)
     sub = OccupancyGrid(grid.cells[r0:r1, c0:c1], grid.resolution_m, float(ox), float(oy),
                         grid.origin_yaw_rad, grid.source)
-    seg = _segment(sub, params)
+    seg = _segment_at_working_resolution(sub, params)
     labels = np.zeros(grid.cells.shape, dtype=np.int32)
     labels[r0:r1, c0:c1] = seg.labels
     return Segmentation(labels=labels, rooms=seg.rooms, doors=seg.doors)
+
+
+def _segment_at_working_resolution(grid: OccupancyGrid, params: AnalysisParams) -> Segmentation:
+    """Segment large fine grids on a coarser copy (every threshold is in metres, so the result
+    is the same within a cell), then carry the labels and room measures back to the grid."""
+    f = int(params.seg_coarse_resolution_m / grid.resolution_m + 1e-9)
+    if grid.cells.size <= params.seg_max_cells_full_resolution or f < 2:
+        return _segment(grid, params)
+    h, w = grid.cells.shape
+    ph, pw = -h % f, -w % f
+    cells = np.pad(grid.cells, ((0, ph), (0, pw)), constant_values=UNKNOWN)
+    blocks = cells.reshape((h + ph) // f, f, (w + pw) // f, f)
+    coarse = np.full(blocks.shape[::2], UNKNOWN, dtype=np.int8)
+    coarse[2 * (blocks == FREE).sum(axis=(1, 3)) >= f * f] = FREE
+    coarse[(blocks == OCCUPIED).any(axis=(1, 3))] = OCCUPIED  # thin walls survive
+    seg = _segment(OccupancyGrid(coarse, grid.resolution_m * f, grid.origin_x_m, grid.origin_y_m,
+                                 grid.origin_yaw_rad, grid.source), params)
+    labels = np.repeat(np.repeat(seg.labels, f, axis=0), f, axis=1)[:h, :w].copy()
+    labels[grid.cells == OCCUPIED] = 0
+    # Free cells of coarse blocks that held a wall take a neighbour's label.
+    orphan = (grid.cells == FREE) & (labels == 0)
+    if orphan.any():
+        labels[orphan] = ndi.maximum_filter(labels, size=2 * f + 1)[orphan]
+    objs = ndi.find_objects(labels)
+    rooms = tuple(_measured_at(grid, labels, r, objs[r.label - 1]) for r in seg.rooms
+                  if r.label <= len(objs) and objs[r.label - 1] is not None)
+    return Segmentation(labels=labels, rooms=rooms, doors=seg.doors)
+
+
+def _measured_at(grid: OccupancyGrid, labels: npt.NDArray[np.int32], room: Room,
+                 sl: tuple[slice, slice]) -> Room:
+    """``room`` with its areas, centroid and cells measured on ``grid`` (finer than it was found on)."""
+    mask = labels[sl] == room.label
+    free = mask & (grid.cells[sl] == FREE)
+    rr, cc = np.nonzero(free if free.any() else mask)
+    xs, ys = grid.cell_to_world(rr + sl[0].start, cc + sl[1].start)
+    a = grid.cell_area_m2
+    return dataclasses.replace(room, area_m2=float(mask.sum()) * a, free_area_m2=float(free.sum()) * a,
+                               centroid=(float(xs.mean()), float(ys.mean())),
+                               cells_xy=np.column_stack([xs, ys]))
 
 
 def _segment(grid: OccupancyGrid, params: AnalysisParams) -> Segmentation:
