@@ -1,12 +1,14 @@
 """``langnav run``: translate, validate and execute one prompt on a robot, printing every event.
 
     langnav run --world MAP.yaml --pose X,Y,YAW_DEG [--known-map] [--backend sim|rosbridge]
-                [--json] [--translator NAME] "prompt"
+                [--rosbridge-url ws://HOST:PORT] [--json] [--translator NAME] "prompt"
 
 With the simulator (the default) the robot starts at ``--pose`` in the world ``--world`` and knows
 only what its lidar sees, unless ``--known-map`` gives it the world map as its own (a floor
 already mapped). The simulator runs headless, faster than real time. With ``--backend rosbridge``
-the robot, its map and its pose come from a ROS 2 robot (``--rosbridge HOST:PORT``).
+the robot, its map (``/map``) and its pose (tf) come from a ROS 2 robot behind rosbridge
+(``--rosbridge-url ws://HOST:PORT``, or ``langnav sim --rosbridge-port``); ``--world``, ``--pose``
+and ``--known-map`` are then ignored: the prompt is grounded on the robot's own map.
 
 The prompt is read against the robot's own map and pose; exploration prompts ("explore", "map
 this floor") run frontier exploration. With ``--json`` every event is one JSON object per line;
@@ -21,6 +23,7 @@ import json
 import logging
 import math
 from typing import Any, Final
+from urllib.parse import urlsplit
 
 import yaml
 
@@ -36,6 +39,8 @@ BACKENDS: Final = ("sim", "rosbridge")
 EXIT_CODES: Final = {PlanStatus.SUCCEEDED: 0, PlanStatus.FAILED: 1, PlanStatus.CANCELLED: 1, PlanStatus.REJECTED: 2}
 #: Time to let a cancelled plan stop the robot on Ctrl-C.
 CANCEL_GRACE_S: Final = 10.0
+#: rosbridge_server's default port, for a URL without one.
+ROSBRIDGE_DEFAULT_PORT: Final = 9090
 
 
 def _pose(text: str) -> tuple[float, float, float]:
@@ -62,7 +67,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    help="start pose X,Y,YAW_DEG (sim; default the most open spot; use --pose=-1,2,0 for negatives)")
     p.add_argument("--known-map", action="store_true", help="start the simulated robot with the world map as its own")
     p.add_argument("--backend", default="sim", choices=BACKENDS, help="robot backend (default: sim)")
-    p.add_argument("--rosbridge", default=None, metavar="HOST:PORT", help="rosbridge server (rosbridge backend)")
+    p.add_argument("--rosbridge-url", default=None, metavar="ws://HOST:PORT",
+                   help="rosbridge server (rosbridge backend; default ws://127.0.0.1:9090)")
+    p.add_argument("--rosbridge", default=None, metavar="HOST:PORT", help="rosbridge server as HOST:PORT (older form)")
     p.add_argument("--robot-option", type=_option, action="append", default=[], metavar="KEY=VALUE",
                    help="extra backend option (repeatable), e.g. cmd_vel_stamped=true")
     p.add_argument("--translator", default="offline", help="offline (default), gemini, openai, local, auto")
@@ -82,13 +89,32 @@ def _make_robot(args: argparse.Namespace) -> RobotBackend:
     else:
         if args.world is not None or args.pose is not None or args.known_map:
             log.warning("--world, --pose and --known-map are for the simulator; the robot gives its own")
-        if args.rosbridge:
-            host, _, port = args.rosbridge.rpartition(":")
-            if not host or not port.isdigit():
+        if args.rosbridge_url and args.rosbridge:
+            raise RobotError("give --rosbridge-url or --rosbridge, not both")
+        if args.rosbridge_url:
+            host, port, secure = rosbridge_address(args.rosbridge_url)
+            options.setdefault("host", host)
+            options.setdefault("port", port)
+            options.setdefault("secure", secure)
+        elif args.rosbridge:
+            host, _, port_text = args.rosbridge.rpartition(":")
+            if not host or not port_text.isdigit():
                 raise RobotError(f"--rosbridge is HOST:PORT, got {args.rosbridge!r}")
             options.setdefault("host", host)
-            options.setdefault("port", int(port))
+            options.setdefault("port", int(port_text))
     return create_backend(args.backend, **options)
+
+
+def rosbridge_address(url: str) -> tuple[str, int, bool]:
+    """``ws://HOST[:PORT]`` or ``wss://...`` -> (host, port, secure); the port defaults to 9090."""
+    parts = urlsplit(url.strip())
+    if parts.scheme not in ("ws", "wss") or not parts.hostname or parts.path not in ("", "/"):
+        raise RobotError(f"--rosbridge-url is ws://HOST:PORT (or wss://), e.g. ws://192.168.1.42:9090; got {url!r}")
+    try:
+        port = parts.port or ROSBRIDGE_DEFAULT_PORT
+    except ValueError:
+        raise RobotError(f"--rosbridge-url has a bad port: {url!r}") from None
+    return parts.hostname, port, parts.scheme == "wss"
 
 
 class _Printer:
