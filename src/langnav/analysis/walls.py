@@ -205,6 +205,8 @@ def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
     min_len = params.wall_min_length_m / res
     max_dev = max(params.wall_max_deviation_m / res, 0.5)
     max_gap = params.door_max_width_m / res + 1.0
+    # Counting points within +-max_dev of each offset bin: a box kernel that wide.
+    window = np.ones(2 * math.ceil(max_dev) + 1)
     lines: list[WallLine] = []
     if len(x) == 0:
         return lines
@@ -217,7 +219,7 @@ def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
         # The histogram alone can merge two close directions; the tolerance keeps groups tight.
         for peak in _direction_peaks(th, min_points=min_len * 0.5):
             near = _ang_diff(th, peak) <= DIRECTION_TOL_DEG
-            if near.sum() < min_len * 0.5:
+            if np.count_nonzero(near) < min_len * 0.5:
                 continue
             sel = idx[near]
             x_sel, y_sel = x[sel], y[sel]
@@ -228,27 +230,26 @@ def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
             squarely = _ang_diff(th[near], math.degrees(phi)) <= REFIT_TOL_DEG
             remaining = np.ones(len(sel), dtype=bool)
             for _ in range(MAX_LINES_PER_DIRECTION):
-                if remaining.sum() < min_len * 0.5:
+                if np.count_nonzero(remaining) < min_len * 0.5:
                     break
                 r_rem = rho[remaining]
                 base = math.floor(float(r_rem.min()))
                 hist = np.bincount((r_rem - base).astype(int))
                 # Count within +-max_dev of each bin: the densest line offset.
-                k = math.ceil(max_dev)
-                dens = np.convolve(hist, np.ones(2 * k + 1), mode="same")
+                dens = np.convolve(hist, window, mode="same")
                 centre = base + float(np.argmax(dens)) + 0.5
                 member = remaining & (np.abs(rho - centre) <= max_dev)
-                if member.sum() == 0:
+                if not member.any():
                     break
                 centre = median(rho[member])
                 member = remaining & (np.abs(rho - centre) <= max_dev)
                 remaining &= ~member
-                if member.sum() < min_len * 0.5:
+                if np.count_nonzero(member) < min_len * 0.5:
                     break  # the densest line left is too short: so is every other one
                 # Fit the line through the points that face squarely onto it (the ends of a run
                 # bend round corners and bumps and would tilt it).
                 square = member & squarely
-                fit_set = square if square.sum() >= 3 else member
+                fit_set = square if np.count_nonzero(square) >= 3 else member
                 fit = _refit(x_sel[fit_set], y_sel[fit_set], n_x, n_y)
                 m_nx, m_ny, m_centre = (n_x, n_y, centre) if fit is None else fit
                 s_line = -x_sel[member] * m_ny + y_sel[member] * m_nx
