@@ -12,6 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from langnav.analysis.elements import ElementKind, Room
+from langnav.analysis.params import AnalysisParams
 from langnav.analysis.segmentation import UNKNOWN_ID, Segmentation, segment_spaces
 from langnav.eval.segmentation import colour_gt_rooms, door_precision_recall, room_precision_recall
 from langnav.maps.draw import MapBuilder
@@ -242,3 +243,22 @@ def test_bench_maps_at_half_the_cell_size_give_the_same_spaces_and_doors(shared_
         assert math.dist(e.center, d.center) < 0.1
         assert e.width_m == pytest.approx(d.width_m, abs=0.05)
         assert (UNKNOWN_ID in e.connects) == (UNKNOWN_ID in d.connects)
+
+
+def test_large_grids_segmented_at_the_coarse_working_resolution_agree() -> None:
+    grid = corridor_with_rooms(0.025)
+    full = segment_spaces(grid)
+    coarse = segment_spaces(grid, AnalysisParams(seg_max_cells_full_resolution=1000,
+                                                 seg_coarse_resolution_m=0.05))
+    assert coarse.labels.shape == full.labels.shape
+    assert sorted(r.kind for r in coarse.rooms) == sorted(r.kind for r in full.rooms)
+    assert sorted(r.area_m2 for r in coarse.rooms) == pytest.approx(sorted(r.area_m2 for r in full.rooms), rel=0.03)
+    assert len(coarse.doors) == len(full.doors)
+    for d in full.doors:
+        e = min(coarse.doors, key=lambda o, d=d: math.dist(o.center, d.center))
+        assert math.dist(e.center, d.center) < 0.1
+        assert e.width_m == pytest.approx(d.width_m, abs=0.1)
+    # Labels agree on the free cells (the coarse copy only differs next to walls).
+    free = grid.free
+    same = np.mean(np.equal(coarse.labels[free] > 0, full.labels[free] > 0))
+    assert same > 0.97

@@ -2,11 +2,12 @@
 
 Pure array functions; :mod:`langnav.analysis.segmentation` turns their output into elements.
 
-Method (after Bormann et al., ICRA 2016, "distance" and "Voronoi" methods, and the merge step
-of ROSE², RA-L 2022):
+Method (after Bormann et al., ICRA 2016, "distance" and "Voronoi" methods, and the decluttering
+and merging steps of ROSE², RA-L 2022):
 
-1. *Floor*: free cells, plus occupied specks (scan noise) and small unknown holes enclosed by
-   free space.
+1. *Floor*: free cells, plus occupied specks (scan noise), small unknown holes enclosed by free
+   space, and free-standing clutter (furniture islands up to ``seg_island_max_area_m2`` that
+   are not thin wall stubs): furniture must not split a room.
 2. *Clearance*: the Euclidean distance of every floor cell to the nearest non-floor cell, in
    metres. Its ridges are the Voronoi skeleton of the free space; a doorway is a *saddle* of it
    (a local minimum of clearance along the skeleton), a room is a hill.
@@ -14,8 +15,11 @@ of ROSE², RA-L 2022):
 4. *Merge tree*: basins are merged across their saddles from the widest saddle down (a
    persistence simplification). Two basins stay apart only where the saddle is as narrow as a
    door and both hills rise clearly above it; otherwise the "saddle" is just a bulge of one space.
-5. Small pieces (closets below ``room_min_area_m2``, slivers) join the neighbour they share the
-   widest opening with.
+   Two narrow spaces meeting through an opening nearly as wide as they are stay one corridor.
+5. *Jambs*: the widest opening left between two spaces must be cut in a wall: both of its jambs
+   belong to the wall network or to a wall stub running along the gap (:class:`JambJudge`).
+6. A space whose opening is wide for its size (``seg_merge_gap_ratio``) and pieces smaller than
+   ``room_min_area_m2`` join their neighbour; isolated fragments below that size are dropped.
 """
 
 from __future__ import annotations
