@@ -1,13 +1,13 @@
 """The command context generator: what an LLM is told before it reads a prompt.
 
-As in the paper, the model gets (1) the command syntax, (2) the intent JSON schema it must
-answer in, (3) the elements found in the map with their properties *relative to the robot*
-(distance, bearing, side, order by distance, size, the room the robot is in), (4) the robot's
-pose, (5) the rules, and (6) a few worked examples. The model never sees or writes goal
-coordinates: it names elements and properties; code computes the coordinates.
+As in the paper, the model gets the command syntax, the rules, the intent JSON schema it must
+answer in (system message), a few worked examples (earlier turns), then the elements found in the
+map with their properties *relative to the robot* (distance, bearing, side, order by distance,
+size, the room the robot is in) and the robot's pose, with the request (the last turn). The model
+never writes goal coordinates: it names elements and properties; code computes the coordinates.
 
-The context is bounded: at most ``MAX_ELEMENTS`` elements (every room and hallway, then the
-nearest of the rest), so its size does not grow with the building.
+The context is bounded: at most ``MAX_ELEMENTS`` elements (every room and hallway, the nearest of
+each other kind by quota, then the nearest of the rest), so its size does not grow with the building.
 """
 
 from __future__ import annotations
@@ -38,8 +38,8 @@ from langnav.analysis.elements import (
 from langnav.language.llm.base import Message, answer_schema, robot_side
 from langnav.language.translator import Context
 
-#: Elements listed at most (~25 tokens each: 40 keep the whole context near 2.5k tokens, which a
-#: 1.5B local model reads in ~20 s on 2 cores and which covers the nearest of every kind).
+#: Elements listed at most (~35 tokens each: 40 keep the map part near 1.5k tokens, and cover the
+#: nearest of every kind in a six-room floor).
 MAX_ELEMENTS: Final = 40
 #: Rooms and hallways are always listed ("the biggest room" needs all of them), up to this many.
 MAX_ROOMS: Final = 25
