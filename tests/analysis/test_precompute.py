@@ -18,6 +18,7 @@ from langnav.analysis.precompute import (
     cov2,
     dilate4,
     dilate8,
+    label8_cells,
     maximum3,
     median,
     nonzero2,
@@ -100,6 +101,16 @@ def test_component_boxes_match_find_objects(m: npt.NDArray[np.bool_]) -> None:
     wanted = np.arange(1, n + 1)
     boxes = component_boxes(lab[rr, cc], rr, cc, wanted)
     assert boxes == {k: sl for k, sl in enumerate(ndi.find_objects(lab), start=1)}
+
+
+@settings(max_examples=150, deadline=None)
+@given(masks())
+def test_label8_cells_matches_ndi_label(m: npt.NDArray[np.bool_]) -> None:
+    lab, n = ndi.label(m, structure=EIGHT)
+    flat = np.flatnonzero(m)
+    got, got_n = label8_cells(flat, m.shape)
+    assert got_n == n
+    assert np.array_equal(got, lab.ravel()[flat])
 
 
 @settings(max_examples=100, deadline=None)

@@ -23,10 +23,10 @@ from skimage.morphology import skeletonize
 from langnav.analysis.elements import Door, NarrowPassage
 from langnav.analysis.params import AnalysisParams
 from langnav.analysis.precompute import (
-    EIGHT,
     GridLayers,
     component_boxes,
     cov2,
+    label8_cells,
     median,
     truncated_sq_edt,
 )
@@ -94,12 +94,11 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     # The medial axis within the band: ridge cells of the distance map (a local maximum across
     # some direction), thinned to one cell. Cheaper than skeletonising all free space.
     skel = skeletonize(band & _ridge(d2))
-    narrow = skel
-    chains, n = ndi.label(narrow, structure=EIGHT)
+    # Chains of the skeleton (8-connected), labelled from its few cells, not the whole window.
+    idx = np.flatnonzero(skel)
+    cid, n = label8_cells(idx, skel.shape)
     if n == 0:
         return ()
-    idx = np.flatnonzero(chains.ravel())
-    cid = chains.ravel()[idx]
     w = width_of[d2.ravel()[idx]]
     # Per chain: the 20th-percentile width (sort by (chain, width), pick the rank).
     order = np.lexsort((w, cid))
@@ -107,27 +106,26 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     starts = np.searchsorted(cid_s, np.arange(1, n + 1))
     counts = np.bincount(cid, minlength=n + 1)[1:]
     ref = w_s[starts + (counts * 0.2).astype(int)]
-    core = np.zeros_like(narrow)
-    core.ravel()[idx] = w <= ref[cid - 1] + CORE_WIDTH_TOL_M
-    cores, m = ndi.label(core, structure=EIGHT)
+    core_idx = idx[w <= ref[cid - 1] + CORE_WIDTH_TOL_M]
+    core_id, m = label8_cells(core_idx, skel.shape)
     passages: list[NarrowPassage] = []
     # Necessary conditions, vectorised, before the per-core work: a chain of n cells spans at
     # most n * sqrt(2) cells and at most its bounding box's diagonal.
-    core_idx = idx[cores.ravel()[idx] > 0]
-    core_id = cores.ravel()[core_idx]
     n_cells = np.bincount(core_id, minlength=m + 1)
     min_cells = params.passage_min_length_m / res - 1.0
     long_enough = np.flatnonzero(n_cells * math.sqrt(2) >= min_cells)
     long_enough = long_enough[long_enough > 0]
     core_r, core_c = np.divmod(core_idx, sub.shape[1])
     boxes = component_boxes(core_id, core_r, core_c, long_enough)
+    # Each core's cells, in raster order.
+    by_core = np.argsort(core_id, kind="stable")
+    core_start = np.searchsorted(core_id[by_core], np.arange(m + 2))
     for k in long_enough.tolist():
         sl = boxes[k]
         if math.hypot(sl[0].stop - sl[0].start, sl[1].stop - sl[1].start) < min_cells:
             continue
-        rr, cc = np.nonzero(cores[sl] == k)
-        rr = rr + sl[0].start
-        cc = cc + sl[1].start
+        cells = by_core[core_start[k]:core_start[k + 1]]
+        rr, cc = core_r[cells], core_c[cells]
         if len(rr) < 2:
             continue
         pts = np.stack([cc + 0.5, rr + 0.5], axis=1).astype(float)

@@ -19,6 +19,8 @@ from typing import Any, Final, TypeVar
 import numpy as np
 import numpy.typing as npt
 from scipy import ndimage as ndi
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
 
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
@@ -239,3 +241,34 @@ def nonzero2(mask: npt.NDArray[np.generic]) -> tuple[npt.NDArray[np.intp], npt.N
     flat = np.flatnonzero(mask)
     rows, cols = np.divmod(flat, mask.shape[1])
     return rows, cols
+
+
+def label8_cells(flat: npt.NDArray[np.integer], shape: tuple[int, int]) -> tuple[npt.NDArray[np.int32], int]:
+    """8-connected components of a sparse set of cells, given by their sorted flat indices in an
+    array of ``shape``: the label of each cell (1..n) and n, numbered as ``ndi.label`` numbers
+    them (in the raster order of each component's first cell). For thin sets (a skeleton) this
+    costs a pass over the cells, not over the whole array."""
+    n_cells = len(flat)
+    if n_cells == 0:
+        return np.zeros(0, dtype=np.int32), 0
+    h, w = shape
+    f = np.asarray(flat, dtype=np.int64)
+    r, c = np.divmod(f, w)
+    src: list[npt.NDArray[np.intp]] = []
+    dst: list[npt.NDArray[np.intp]] = []
+    # Each neighbour pair once: east, south-west, south, south-east.
+    for dr, dc in ((0, 1), (1, -1), (1, 0), (1, 1)):
+        nb = f + (dr * w + dc)
+        pos = np.minimum(np.searchsorted(f, nb), n_cells - 1)
+        hit = (f[pos] == nb) & (c + dc >= 0) & (c + dc < w) & (r + dr < h)
+        src.append(np.flatnonzero(hit))
+        dst.append(pos[hit])
+    i = np.concatenate(src)
+    j = np.concatenate(dst)
+    graph = coo_matrix((np.ones(len(i), dtype=np.int8), (i, j)), shape=(n_cells, n_cells))
+    n, comp = connected_components(graph, directed=False)
+    # Renumber by first appearance (the cells are in raster order).
+    _, first = np.unique(comp, return_index=True)
+    relabel = np.empty(n, dtype=np.int32)
+    relabel[np.argsort(first)] = np.arange(1, n + 1, dtype=np.int32)
+    return relabel[comp], int(n)
