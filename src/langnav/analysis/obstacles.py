@@ -19,7 +19,7 @@ from scipy import ndimage as ndi
 
 from langnav.analysis.elements import Obstacle
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import GridLayers, border_labels, component_boxes, nonzero2
+from langnav.analysis.precompute import GridLayers, border_labels, component_boxes
 from langnav.analysis.unexplored import adjacent_pairs
 from langnav.maps.grid import OccupancyGrid
 
@@ -77,32 +77,40 @@ def find_obstacles(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
         return empty
     is_candidate = np.zeros(n + 1, dtype=bool)
     is_candidate[candidates] = True
-    mask = is_candidate[comp]
-    rr_c, cc_c = nonzero2(mask)
-    slices = component_boxes(comp[rr_c, cc_c], rr_c, cc_c, candidates)
+    # The candidates' cells, from the (few) occupied cells: grouped by candidate, each group in
+    # raster order, with their world centres computed at once.
+    occ_flat = layers.occupied_flat
+    occ_comp = comp.ravel()[occ_flat]
+    of_candidate = is_candidate[occ_comp]
+    cand_flat, cand_comp = occ_flat[of_candidate], occ_comp[of_candidate]
+    mask = np.zeros(comp.shape, dtype=bool)
+    mask.ravel()[cand_flat] = True
+    by_cand = np.argsort(cand_comp, kind="stable")
+    cand_flat, cand_comp = cand_flat[by_cand], cand_comp[by_cand]
+    cand_r, cand_c = np.divmod(cand_flat, comp.shape[1])
+    slices = component_boxes(cand_comp, cand_r, cand_c, candidates)
+    cand_x, cand_y = grid.cell_to_world(cand_r, cand_c)
+    bounds = np.searchsorted(cand_comp, np.append(candidates, n + 1))
     res = grid.resolution_m
     obstacles: list[Obstacle] = []
     for k, c in enumerate(candidates.tolist(), start=1):
         sl = slices[c]
-        own = comp[sl] == c
+        oxs, oys = cand_x[bounds[k - 1]:bounds[k]], cand_y[bounds[k - 1]:bounds[k]]
+        xs, ys = oxs, oys
         # A hole needs a ring round it: nothing to fill in a box less than 3 cells across.
-        filled = ndi.binary_fill_holes(own) if min(own.shape) >= 3 else own
-        rr, cc = np.nonzero(filled)
-        rr = rr + sl[0].start
-        cc = cc + sl[1].start
-        xs, ys = grid.cell_to_world(rr, cc)
-        if filled is own:
-            oxs, oys = xs, ys
-        else:
-            orr, occ_c = np.nonzero(own)
-            oxs, oys = grid.cell_to_world(orr + sl[0].start, occ_c + sl[1].start)
+        if min(sl[0].stop - sl[0].start, sl[1].stop - sl[1].start) >= 3:
+            own = comp[sl] == c
+            filled = ndi.binary_fill_holes(own)
+            if np.count_nonzero(filled) > len(oxs):
+                rr, cc = np.nonzero(filled)
+                xs, ys = grid.cell_to_world(rr + sl[0].start, cc + sl[1].start)
         # Extent: bounding box of the cell squares in the map frame (cells are res wide).
         extent = ((float(xs.max() - xs.min()) + res), (float(ys.max() - ys.min()) + res))
         space = int(best_space[c])
         obstacles.append(Obstacle(
             id=f"obstacle_{k}",
             centroid=(float(xs.mean()), float(ys.mean())),
-            area_m2=float(len(rr) * grid.cell_area_m2),
+            area_m2=float(len(xs) * grid.cell_area_m2),
             extent_m=extent,
             room=room_ids.get(space) if space > 0 else None,
             cells_xy=np.stack([oxs, oys], axis=1),

@@ -124,6 +124,11 @@ class GridLayers:
         return _frozen(self.grid.cells == UNKNOWN)
 
     @cached_property
+    def occupied_flat(self) -> npt.NDArray[np.intp]:
+        """Flat indices of the occupied cells, ascending (a real map has few)."""
+        return _frozen(np.flatnonzero(self.occupied))
+
+    @cached_property
     def occupied_components(self) -> Components:
         """8-connected components of the occupied cells."""
         return label8(self.occupied)
