@@ -414,3 +414,73 @@ def test_close_mid_motion_stops_the_robot_and_sends_nothing_on_the_closed_socket
     assert not [r for r in transport if r.levelno >= logging.WARNING], [r.getMessage() for r in transport]
     # the server got a close frame (roslibpy sends none with no code: 1005), not a dropped TCP connection (1006)
     assert any(r.getMessage() == "rosbridge client 1 disconnected (close code 1005)" for r in caplog.records)
+
+
+# -- Foxglove: rosapi discovery, definitions, cbor-raw (CDR) subscriptions, /rosout -------------------
+def test_rosapi_topics_and_raw_types_describe_every_topic(sim_served: tuple[Served, RosbridgeBackend]) -> None:
+    served, _ = sim_served
+    with connect(f"ws://127.0.0.1:{served.port}", open_timeout=5) as ws:
+        full = _ask(ws, {"op": "call_service", "id": "t", "service": "/rosapi/topics_and_raw_types",
+                         "type": "rosapi/TopicsAndRawTypes"}, "service_response")
+        plain = _ask(ws, {"op": "call_service", "id": "u", "service": "/rosapi/topics"}, "service_response")
+    values = full["values"]
+    assert full["result"] is True and set(values) == {"topics", "types", "typedefs_full_text"}
+    assert len(values["topics"]) == len(values["types"]) == len(values["typedefs_full_text"])
+    assert plain["values"] == {"topics": values["topics"], "types": values["types"]}
+    by_topic = dict(zip(values["topics"], values["types"], strict=True))
+    assert by_topic == {"/map": rm.OCCUPANCY_GRID, "/scan": rm.LASER_SCAN, "/plan": rm.PATH, "/tf": rm.TF_MESSAGE,
+                        "/tf_static": rm.TF_MESSAGE, "/odom": rm.ODOMETRY, "/amcl_pose": rm.POSE_WITH_COV_STAMPED,
+                        "/rosout": "rcl_interfaces/msg/Log", "/cmd_vel": rm.TWIST}
+    # Foxglove takes rcl_interfaces/msg/Log among the types as "this is ROS 2", then parses each definition
+    rosbags_typesys = pytest.importorskip("rosbags.typesys")
+    for type_name, text in zip(values["types"], values["typedefs_full_text"], strict=True):
+        assert type_name in rosbags_typesys.get_types_from_msg(text, type_name)
+
+
+def test_cbor_raw_subscription_sends_cdr_that_the_definitions_decode(sim_served: tuple[Served, RosbridgeBackend]) -> None:
+    cbor2 = pytest.importorskip("cbor2")
+    rosbags_typesys = pytest.importorskip("rosbags.typesys")
+    served, _ = sim_served
+    with connect(f"ws://127.0.0.1:{served.port}", open_timeout=5) as ws:
+        defs = _ask(ws, {"op": "call_service", "id": "t", "service": "/rosapi/topics_and_raw_types"},
+                    "service_response")["values"]
+        store = rosbags_typesys.get_typestore(rosbags_typesys.Stores.EMPTY)
+        for type_name, text in zip(defs["types"], defs["typedefs_full_text"], strict=True):
+            store.register(rosbags_typesys.get_types_from_msg(text, type_name))
+        for topic in ("/map", "/odom"):  # as Foxglove subscribes
+            ws.send(json.dumps({"op": "subscribe", "topic": topic, "compression": "cbor-raw"}))
+        got: dict[str, Any] = {}
+        deadline = time.monotonic() + 5.0
+        while len(got) < 2 and time.monotonic() < deadline:
+            frame = ws.recv(timeout=5)
+            assert isinstance(frame, bytes), frame  # binary CBOR, not JSON text
+            envelope = cbor2.loads(frame)
+            assert envelope["op"] == "publish" and set(envelope["msg"]) == {"secs", "nsecs", "bytes"}
+            got[envelope["topic"]] = envelope["msg"]["bytes"]
+    grid = store.deserialize_cdr(got["/map"], rm.OCCUPANCY_GRID)
+    truth = served.robot.get_map()
+    assert (grid.info.width, grid.info.height, grid.header.frame_id) == (truth.width, truth.height, "map")
+    assert (grid.data == truth.to_ros_data()).mean() > 0.99  # the map keeps being refined from scans
+    odom = store.deserialize_cdr(got["/odom"], rm.ODOMETRY)
+    pose = served.robot.get_robot_pose()
+    assert (odom.header.frame_id, odom.child_frame_id) == ("odom", "base_link")
+    assert math.hypot(odom.pose.pose.position.x - pose.x_m, odom.pose.pose.position.y - pose.y_m) < 0.5
+
+
+def test_rosout_carries_the_servers_log(sim_served: tuple[Served, RosbridgeBackend],
+                                        caplog: pytest.LogCaptureFixture) -> None:
+    caplog.set_level(logging.INFO, logger="langnav")
+    served, _ = sim_served
+    with connect(f"ws://127.0.0.1:{served.port}", open_timeout=5) as ws:
+        ws.send(json.dumps({"op": "subscribe", "topic": "/rosout", "type": "rcl_interfaces/msg/Log"}))
+        ws.send(json.dumps({"op": "bogus"}))  # the server logs the refusal
+        deadline = time.monotonic() + 5.0
+        while time.monotonic() < deadline:
+            reply = json.loads(ws.recv(timeout=5))
+            if reply["op"] == "publish" and "unknown operation 'bogus'" in reply["msg"]["msg"]:
+                break
+        else:
+            raise AssertionError("no /rosout record of the refusal within 5 s")
+    log_msg = reply["msg"]
+    assert (reply["topic"], log_msg["level"], log_msg["name"]) == ("/rosout", 20, "langnav.robot.rosbridge_server")
+    assert log_msg["function"] == "_status" and log_msg["line"] > 0

@@ -1,7 +1,11 @@
 """Serve any :class:`RobotBackend` as a ROS 2 robot over the rosbridge v2 JSON protocol.
 
-One asyncio WebSocket server (``websockets``), one task per client, no fragments, JSON only.
-Shapes follow the ROS 2 message definitions, so Foxglove, roslibjs pages and roslibpy scripts
+One asyncio WebSocket server (``websockets``), one task per client, no fragments. Requests are
+JSON text; topics are sent as JSON, or, when a subscription asks for ``compression: "cbor"`` or
+``"cbor-raw"``, as binary CBOR frames (``cbor-raw``: the message's CDR bytes, as rosbridge_suite
+sends them, which is what Foxglove's rosbridge connection asks for and decodes with the
+definitions from ``/rosapi/topics_and_raw_types``). Shapes follow the ROS 2 message definitions
+(:mod:`langnav.robot.ros_interfaces`), so Foxglove, roslibjs pages and roslibpy scripts
 (langnav's own ``rosbridge`` backend among them) can watch and drive the robot as if it were a
 TurtleBot running Nav2 behind rosbridge_suite.
 
@@ -18,6 +22,8 @@ name                   type                                        notes
 /tf_static             tf2_msgs/msg/TFMessage                      map -> odom (identity), latched
 /odom                  nav_msgs/msg/Odometry                       pose and body twist
 /amcl_pose             geometry_msgs/msg/PoseWithCovarianceStamped pose in map
+/rosout                rcl_interfaces/msg/Log                      langnav's log records (what the
+                                                                   logging setup lets through)
 /cmd_vel (subscribed)  geometry_msgs/msg/Twist or TwistStamped     only for backends with
                                                                    ``set_velocity``; zeroed when
                                                                    commands stop for 0.5 s
@@ -25,7 +31,9 @@ name                   type                                        notes
 /langnav/get_robot_pose langnav_interfaces/srv/GetRobotPose        response ``{"pose": PoseStamped}``
 /map_server/map        nav_msgs/srv/GetMap                         response ``{"map": ...}``
 /langnav/stop          std_srvs/srv/Trigger                        stops the robot
-/rosapi/topics         rosapi/srv/Topics                           topic discovery
+/rosapi/topics         rosapi_msgs/srv/Topics                      ``{"topics", "types"}``
+/rosapi/topics_and_raw_types rosapi_msgs/srv/TopicsAndRawTypes     ``{"topics", "types",
+                                                                   "typedefs_full_text"}``
 =====================  ==========================================  ==============================
 
 Anything malformed (bad JSON, no ``op``, an unknown op, a topic or service it does not have, a
@@ -41,6 +49,7 @@ cancelled and a velocity it commanded is zeroed: a dropped link leaves a stopped
 from __future__ import annotations
 
 import asyncio
+import collections
 import contextlib
 import hashlib
 import itertools
@@ -54,11 +63,13 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from typing import Any, Final, Protocol, TypeVar, runtime_checkable
 
+import cbor2
 from pydantic import BaseModel, ConfigDict, Field
 from websockets.asyncio.server import Server, ServerConnection, serve
 from websockets.exceptions import ConnectionClosed
 
 from langnav.errors import LangnavError
+from langnav.robot import ros_interfaces as ri
 from langnav.robot import ros_messages as rm
 from langnav.robot.errors import RobotError, RobotTimeout
 from langnav.robot.protocol import Pose2D, RobotBackend, TaskHandle, TaskStatus
@@ -73,7 +84,16 @@ DEFAULT_START_TIMEOUT_S: Final = 10.0
 _DIGEST: Final = hashlib.blake2b
 
 GET_ROBOT_POSE_SRV: Final = "langnav_interfaces/srv/GetRobotPose"
-TOPICS_SRV: Final = "rosapi/srv/Topics"
+TOPICS_SRV: Final = "rosapi_msgs/srv/Topics"
+TOPICS_AND_RAW_TYPES_SRV: Final = "rosapi_msgs/srv/TopicsAndRawTypes"
+LOG: Final = "rcl_interfaces/msg/Log"
+#: Subscription encodings: rosbridge's "none" (JSON), "cbor" (the JSON values as CBOR) and
+#: "cbor-raw" (the CDR bytes in a CBOR envelope). rosbridge's "png" is not offered.
+COMPRESSIONS: Final = ("none", "cbor", "cbor-raw")
+#: /rosout keeps at most this many records waiting for the next publish (a burst drops the oldest).
+ROSOUT_BACKLOG: Final = 200
+#: rcl_interfaces/msg/Log levels (rcutils' severities are Python's logging levels).
+_LOG_LEVELS: Final = ((logging.CRITICAL, 50), (logging.ERROR, 40), (logging.WARNING, 30), (logging.INFO, 20))
 
 T = TypeVar("T")
 
@@ -103,6 +123,11 @@ class RosbridgeServerConfig(BaseModel):
     get_map_service: str = "/map_server/map"
     stop_service: str = "/langnav/stop"
     topics_service: str = "/rosapi/topics"
+    topics_and_raw_types_service: str = "/rosapi/topics_and_raw_types"
+    rosout_topic: str = "/rosout"
+    #: /rosout carries the records of this logger and its children at this level and above.
+    rosout_logger: str = "langnav"
+    rosout_level: int = Field(default=logging.INFO, ge=0)
     map_frame: str = "map"
     odom_frame: str = "odom"
     base_frame: str = "base_link"
@@ -137,6 +162,8 @@ class _Client:
     ws: ServerConnection
     number: int
     subscriptions: dict[str, set[str]] = field(default_factory=dict)
+    #: topic -> how this client wants it encoded (one of COMPRESSIONS)
+    compression: dict[str, str] = field(default_factory=dict)
     advertised: dict[str, str] = field(default_factory=dict)
     goals: dict[str, _Goal] = field(default_factory=dict)
     drove_velocity: bool = False
@@ -164,13 +191,16 @@ class RosbridgeServer:
             c.tf_static_topic: _TopicSpec(rm.TF_MESSAGE, latched=True),
             c.odom_topic: _TopicSpec(rm.ODOMETRY),
             c.pose_topic: _TopicSpec(rm.POSE_WITH_COV_STAMPED),
+            c.rosout_topic: _TopicSpec(LOG),
         }
         self._services: dict[str, str] = {
             c.get_pose_service: GET_ROBOT_POSE_SRV,
             c.get_map_service: rm.GET_MAP_SRV,
             c.stop_service: rm.TRIGGER_SRV,
             c.topics_service: TOPICS_SRV,
+            c.topics_and_raw_types_service: TOPICS_AND_RAW_TYPES_SRV,
         }
+        self._rosout = _RosoutHandler(c.rosout_level)
         self._clients: set[_Client] = set()
         self._numbers = itertools.count(1)
         self._latched: dict[str, dict[str, Any]] = {}
@@ -243,13 +273,17 @@ class RosbridgeServer:
                 self._stream(self.config.plan_rate_hz, self._publish_plan),
                 self._stream(self.config.map_rate_hz, self._publish_map),
                 self._stream(1.0 / self.config.cmd_vel_timeout_s, self._cmd_vel_watchdog),
+                self._stream(self.config.state_rate_hz, self._publish_rosout),
             )]
+            rosout_logger = logging.getLogger(self.config.rosout_logger)
+            rosout_logger.addHandler(self._rosout)
             self._ready.set()
             if on_ready is not None:
                 on_ready(self.port)
             try:
                 await self._stop_event.wait()
             finally:
+                rosout_logger.removeHandler(self._rosout)
                 for t in streams:
                     t.cancel()
                 for client in list(self._clients):
@@ -268,15 +302,20 @@ class RosbridgeServer:
             raise RobotTimeout(f"the {self.backend.name} backend did not answer "
                                f"{getattr(fn, '__name__', fn)} within {self.config.backend_call_timeout_s} s") from None
 
-    async def _send(self, client: _Client, message: dict[str, Any]) -> None:
-        try:
-            text = json.dumps(message, allow_nan=False)
-        except (TypeError, ValueError) as exc:
-            log.error("cannot encode %s for client %d: %s", message.get("op"), client.number, exc)
-            text = json.dumps({"op": "status", "level": "error", "msg": f"server could not encode a "
-                               f"{message.get('op')} message: {exc}"})
+    async def _send(self, client: _Client, message: dict[str, Any] | bytes) -> None:
+        """Send a JSON message, or an already encoded binary (CBOR) frame."""
+        data: str | bytes
+        if isinstance(message, bytes):
+            data = message
+        else:
+            try:
+                data = json.dumps(message, allow_nan=False)
+            except (TypeError, ValueError) as exc:
+                log.error("cannot encode %s for client %d: %s", message.get("op"), client.number, exc)
+                data = json.dumps({"op": "status", "level": "error", "msg": f"server could not encode a "
+                                   f"{message.get('op')} message: {exc}"})
         with contextlib.suppress(ConnectionClosed):
-            await client.ws.send(text)
+            await client.ws.send(data)
 
     async def _status(self, client: _Client, level: str, msg: str, mid: Any = None) -> None:
         log.info("client %d: %s: %s", client.number, level, msg)
@@ -292,8 +331,17 @@ class RosbridgeServer:
         spec = self._topics[topic]
         if spec.latched:
             self._latched[topic] = msg
+        frames = _Frames(topic, spec.msg_type, msg)
         for client in self._subscribers(topic):
-            await self._send(client, {"op": "publish", "topic": topic, "msg": msg})
+            await self._send_frame(client, frames)
+
+    async def _send_frame(self, client: _Client, frames: _Frames) -> None:
+        mode = client.compression.get(frames.topic, "none")
+        try:
+            await self._send(client, frames.encoded(mode))
+        except LangnavError as exc:  # a message that does not fit its own definition: a bug, say so
+            log.error("cannot encode %s as %s for client %d: %s", frames.topic, mode, client.number, exc)
+            await self._status(client, "error", f"server could not encode {frames.topic} as {mode}: {exc}")
 
     # -- periodic streams ----------------------------------------------------------------------
     async def _stream(self, rate_hz: float, step: Callable[[], Any]) -> None:
@@ -348,6 +396,13 @@ class RosbridgeServer:
         if force or digest != self._map_digest or self.config.map_topic not in self._latched:
             self._map_digest = digest
             await self._publish(self.config.map_topic, rm.occupancy_grid(grid, self.config.map_frame))
+
+    async def _publish_rosout(self) -> None:
+        records = self._rosout.drain()
+        if not self._subscribers(self.config.rosout_topic):
+            return
+        for record in records:
+            await self._publish(self.config.rosout_topic, _log_message(record))
 
     async def _cmd_vel_watchdog(self) -> None:
         last = self._last_cmd_vel_s
@@ -425,9 +480,16 @@ class RosbridgeServer:
         wanted = msg.get("type")
         if wanted and _normal_type(wanted) != _normal_type(spec.msg_type):
             raise RobotError(f"topic {topic} has type {spec.msg_type}, not {wanted}")
+        compression = msg.get("compression") or "none"
+        if compression not in COMPRESSIONS:
+            await self._status(client, "warning", f"compression {compression!r} is not supported "
+                               f"(only {', '.join(COMPRESSIONS)}); sending {topic} as JSON", msg.get("id"))
+            compression = "none"
         sub_id = str(msg.get("id") or f"subscribe:{topic}")
         first = not client.subscriptions.get(topic)
         client.subscriptions.setdefault(topic, set()).add(sub_id)
+        if first or compression == "cbor-raw":  # as rosbridge: cbor-raw wins over the others
+            client.compression[topic] = compression
         if spec.latched and first:
             await self._send_latched(client, topic)
 
@@ -440,7 +502,7 @@ class RosbridgeServer:
             return  # _publish sent it to every subscriber, this client included
         latched = self._latched.get(topic)
         if latched is not None:
-            await self._send(client, {"op": "publish", "topic": topic, "msg": latched})
+            await self._send_frame(client, _Frames(topic, self._topics[topic].msg_type, latched))
 
     async def _op_unsubscribe(self, client: _Client, msg: dict[str, Any]) -> None:
         topic = self._topic_name(msg)
@@ -504,10 +566,12 @@ class RosbridgeServer:
             elif service == c.stop_service:
                 await self._stop_everything()
                 values = {"success": True, "message": "stopped"}
-            else:  # topics
+            else:  # rosapi: topics, topics_and_raw_types
                 names = [*sorted(self._topics), c.cmd_vel_topic]
                 types = [*(self._topics[n].msg_type for n in names[:-1]), rm.TWIST]
                 values = {"topics": names, "types": types}
+                if service == c.topics_and_raw_types_service:
+                    values["typedefs_full_text"] = [ri.full_text(t) for t in types]
             await self._service_response(client, service, mid, values, ok=True)
         except LangnavError as exc:
             await self._service_response(client, service, mid, f"{service}: {exc}", ok=False)
@@ -644,6 +708,57 @@ class RosbridgeServer:
         "action_result": _op_unsupported,
         "fragment": _op_unsupported,
     }
+
+
+class _Frames:
+    """One published message, encoded once per compression that a subscriber asked for."""
+
+    def __init__(self, topic: str, msg_type: str, msg: dict[str, Any]) -> None:
+        self.topic = topic
+        self.msg_type = msg_type
+        self.msg = msg
+        self._cache: dict[str, dict[str, Any] | bytes] = {}
+
+    def encoded(self, mode: str) -> dict[str, Any] | bytes:
+        if mode not in self._cache:
+            out: dict[str, Any] = {"op": "publish", "topic": self.topic, "msg": self.msg}
+            if mode == "none":
+                self._cache[mode] = out
+            elif mode == "cbor":
+                self._cache[mode] = cbor2.dumps(out)
+            else:  # cbor-raw: the CDR bytes and the time they were sent, as rosbridge_suite does
+                secs, nsecs = divmod(time.time_ns(), 1_000_000_000)
+                out["msg"] = {"secs": secs, "nsecs": nsecs, "bytes": ri.serialize_cdr(self.msg_type, self.msg)}
+                self._cache[mode] = cbor2.dumps(out)
+        return self._cache[mode]
+
+
+class _RosoutHandler(logging.Handler):
+    """Keeps langnav's log records (from any thread) until the /rosout stream publishes them."""
+
+    def __init__(self, level: int) -> None:
+        super().__init__(level)
+        self._records: collections.deque[logging.LogRecord] = collections.deque(maxlen=ROSOUT_BACKLOG)
+
+    def emit(self, record: logging.LogRecord) -> None:
+        self._records.append(record)
+
+    def drain(self) -> list[logging.LogRecord]:
+        out = []
+        while self._records:
+            out.append(self._records.popleft())
+        return out
+
+
+def _log_message(record: logging.LogRecord) -> dict[str, Any]:
+    """A log record as an ``rcl_interfaces/msg/Log``."""
+    level = next((ros for py, ros in _LOG_LEVELS if record.levelno >= py), 10)
+    try:
+        text = record.getMessage()
+    except (TypeError, ValueError) as exc:  # a bad format string in someone's log call
+        text = f"{record.msg!r} (unformattable: {exc})"
+    return {"stamp": rm.stamp(record.created), "level": level, "name": record.name, "msg": text,
+            "file": record.pathname, "function": record.funcName or "", "line": max(0, record.lineno)}
 
 
 def _normal_type(name: str) -> str:
