@@ -65,6 +65,12 @@ class AnalysisParams:
     #: segmented at seg_coarse_resolution_m, to keep large maps fast (thresholds are in metres).
     seg_max_cells_full_resolution: int = 1_500_000
     seg_coarse_resolution_m: float = 0.1
+    #: Segmentation: judge every door-wide opening between two spaces (any gap beside furniture
+    #: joins them) instead of only the widest one.
+    seg_jamb_all_openings: bool = False
+    #: Segmentation: two spaces joined through more door-wide openings than this are one space
+    #: (a row of desks or shelves, not a wall; 0 switches it off).
+    seg_max_openings_between: int = 2
     #: Segmentation: clearance (m) below which a free cell cannot start a space (about a robot radius).
     seg_min_peak_m: float = 0.15
     #: Straight wall segments shorter than this are not reported.

@@ -336,11 +336,26 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
         judged: set[tuple[int, int]] = set()
         for a, b, s, loc in sorted(kept, key=lambda e: -e[2]):
             ra, rb = uf.find(a), uf.find(b)
-            if ra == rb or (min(ra, rb), max(ra, rb)) in judged:
+            if ra == rb or (not params.seg_jamb_all_openings and (min(ra, rb), max(ra, rb)) in judged):
                 continue
             if judge.is_doorway(loc // width, loc % width, s):
                 judged.add((min(ra, rb), max(ra, rb)))
             else:
+                uf.parent[rb] = ra
+                peak_l[ra] = max(peak_l[ra], peak_l[rb])
+                area_l[ra] += area_l[rb]
+    # Spaces joined through many door-wide openings are one space with a row of clutter.
+    if params.seg_max_openings_between > 0:
+        min_clear = (params.door_min_width_m - resolution_m) / 2
+        count: dict[tuple[int, int], int] = {}
+        for a, b, s, _ in kept:
+            ra, rb = uf.find(a), uf.find(b)
+            if ra != rb and s >= min_clear:
+                key = (min(ra, rb), max(ra, rb))
+                count[key] = count.get(key, 0) + 1
+        for (ra, rb), c in count.items():
+            ra, rb = uf.find(ra), uf.find(rb)
+            if ra != rb and c > params.seg_max_openings_between:
                 uf.parent[rb] = ra
                 peak_l[ra] = max(peak_l[ra], peak_l[rb])
                 area_l[ra] += area_l[rb]
