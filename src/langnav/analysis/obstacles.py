@@ -19,7 +19,7 @@ from scipy import ndimage as ndi
 
 from langnav.analysis.elements import Obstacle
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import GridLayers, border_labels, component_boxes
+from langnav.analysis.precompute import GridLayers, border_labels, component_boxes, dilate8
 from langnav.analysis.unexplored import adjacent_pairs
 from langnav.maps.grid import OccupancyGrid
 
@@ -54,8 +54,10 @@ def find_obstacles(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
     structural[border_labels(comp)] = True
     if exterior is None:
         exterior = layers.exterior
-    ext_pairs = adjacent_pairs(exterior, comp)
-    structural[ext_pairs[:, 1]] = True
+    # Components touching the outside world: those with a cell next to (8-neighbours) it.
+    occ_flat = layers.occupied_flat
+    occ_comp = comp.ravel()[occ_flat]
+    structural[occ_comp[dilate8(exterior).ravel()[occ_flat]]] = True
     # Which space labels each component borders: (space cell, component) pairs -> (comp, label).
     lab_pairs = adjacent_pairs(labels, comp)
     space_of_pair = labels.ravel()[lab_pairs[:, 0]].astype(np.int64)
@@ -79,8 +81,6 @@ def find_obstacles(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
     is_candidate[candidates] = True
     # The candidates' cells, from the (few) occupied cells: grouped by candidate, each group in
     # raster order, with their world centres computed at once.
-    occ_flat = layers.occupied_flat
-    occ_comp = comp.ravel()[occ_flat]
     of_candidate = is_candidate[occ_comp]
     cand_flat, cand_comp = occ_flat[of_candidate], occ_comp[of_candidate]
     mask = np.zeros(comp.shape, dtype=bool)
