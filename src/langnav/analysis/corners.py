@@ -53,6 +53,19 @@ def _intersect(a: Wall, b: Wall) -> tuple[float, float] | None:
     return (round(ax + t * dax, 9) + 0.0, round(ay + t * day, 9) + 0.0)
 
 
+def _square_pairs(ws: list[Wall], cos_max: float) -> list[tuple[int, int]]:
+    """Index pairs (i < j, in loop order) of walls of non-zero length whose directions are within
+    the skew of perpendicular: |u_i . u_j| <= cos_max, each term as plain float arithmetic."""
+    lengths = [w.length_m for w in ws]
+    ok_len = np.array([length != 0 for length in lengths])
+    ux = np.array([(w.end[0] - w.start[0]) / length if length != 0 else 0.0 for w, length in zip(ws, lengths, strict=True)])
+    uy = np.array([(w.end[1] - w.start[1]) / length if length != 0 else 0.0 for w, length in zip(ws, lengths, strict=True)])
+    square = np.abs(ux[:, None] * ux[None, :] + uy[:, None] * uy[None, :]) <= cos_max
+    square &= ok_len[:, None] & ok_len[None, :]
+    ii, jj = np.nonzero(np.triu(square, k=1))
+    return list(zip(ii.tolist(), jj.tolist(), strict=True))
+
+
 def find_corners(grid: OccupancyGrid, params: AnalysisParams, walls: tuple[Wall, ...],
                  labels: npt.NDArray[np.int32], room_labels: Mapping[str, int],
                  layers: GridLayers | None = None) -> tuple[tuple[Corner, ...], tuple[Wall, ...]]:
@@ -70,37 +83,30 @@ def find_corners(grid: OccupancyGrid, params: AnalysisParams, walls: tuple[Wall,
     found: list[tuple[str | None, tuple[float, float], Wall, Wall]] = []
     for room, ws in by_room.items():
         room_found: list[tuple[float, float]] = []
-        for i, a in enumerate(ws):
-            for b in ws[i + 1:]:
-                la, lb = a.length_m, b.length_m
-                if la == 0 or lb == 0:
-                    continue
-                ua = ((a.end[0] - a.start[0]) / la, (a.end[1] - a.start[1]) / la)
-                ub = ((b.end[0] - b.start[0]) / lb, (b.end[1] - b.start[1]) / lb)
-                if abs(ua[0] * ub[0] + ua[1] * ub[1]) > cos_max:
-                    continue
-                x = _intersect(a, b)
-                if x is None:
-                    continue
-                da = min(_dist(x, a.start), _dist(x, a.end))
-                db = min(_dist(x, b.start), _dist(x, b.end))
-                if da > CORNER_END_TOL_M or db > CORNER_END_TOL_M:
-                    continue
-                # Directions from the corner along each wall (towards its far end).
-                fa = a.end if _dist(x, a.end) > _dist(x, a.start) else a.start
-                fb = b.end if _dist(x, b.end) > _dist(x, b.start) else b.start
-                va = (fa[0] - x[0], fa[1] - x[1])
-                vb = (fb[0] - x[0], fb[1] - x[1])
-                concave = (vb[0] * a.inward[0] + vb[1] * a.inward[1] > 0
-                           and va[0] * b.inward[0] + va[1] * b.inward[1] > 0)
-                # Either way the two walls meet there: move their ends onto the meeting point.
-                if concave and not any(_dist(x, p) < CORNER_MERGE_M for p in room_found):
-                    room_found.append(x)
-                    found.append((room, x, a, b))
-                for w in (a, b):
-                    e = ends[w.id]
-                    j = 0 if _dist(x, e[0]) < _dist(x, e[1]) else 1
-                    e[j] = x
+        for i, j in _square_pairs(ws, cos_max):
+            a, b = ws[i], ws[j]
+            x = _intersect(a, b)
+            if x is None:
+                continue
+            da = min(_dist(x, a.start), _dist(x, a.end))
+            db = min(_dist(x, b.start), _dist(x, b.end))
+            if da > CORNER_END_TOL_M or db > CORNER_END_TOL_M:
+                continue
+            # Directions from the corner along each wall (towards its far end).
+            fa = a.end if _dist(x, a.end) > _dist(x, a.start) else a.start
+            fb = b.end if _dist(x, b.end) > _dist(x, b.start) else b.start
+            va = (fa[0] - x[0], fa[1] - x[1])
+            vb = (fb[0] - x[0], fb[1] - x[1])
+            concave = (vb[0] * a.inward[0] + vb[1] * a.inward[1] > 0
+                       and va[0] * b.inward[0] + va[1] * b.inward[1] > 0)
+            # Either way the two walls meet there: move their ends onto the meeting point.
+            if concave and not any(_dist(x, p) < CORNER_MERGE_M for p in room_found):
+                room_found.append(x)
+                found.append((room, x, a, b))
+            for w in (a, b):
+                e = ends[w.id]
+                near_end = 0 if _dist(x, e[0]) < _dist(x, e[1]) else 1
+                e[near_end] = x
     corners: list[Corner] = []
     for k, (room, x, a, b) in enumerate(found, start=1):
         label = room_labels.get(room, 0) if room is not None else 0
