@@ -187,15 +187,18 @@ def truncated_sq_edt(mask: BoolArray, max_cells: int) -> npt.NDArray[np.signedin
     out = g2.copy()
     tmp = np.empty_like(g2)
     # Row pass: the nearest outside cell dc columns away is at least dc away; past max_cells
-    # it cannot make a distance within the bound.
+    # it cannot make a distance within the bound. Inner columns take the nearer of their two
+    # columns dc away at once; the dc columns at each edge have only one of them.
     for dc in range(1, min(int(max_cells), w - 1) + 1):
         k = dtype(dc * dc)
-        t = tmp[:, dc:]
-        np.add(g2[:, :-dc], k, out=t)
-        np.minimum(out[:, dc:], t, out=out[:, dc:])
-        t = tmp[:, :-dc]
-        np.add(g2[:, dc:], k, out=t)
-        np.minimum(out[:, :-dc], t, out=out[:, :-dc])
+        if 2 * dc < w:
+            t = tmp[:, dc:w - dc]
+            np.minimum(g2[:, :w - 2 * dc], g2[:, 2 * dc:], out=t)
+            t += k
+            np.minimum(out[:, dc:w - dc], t, out=out[:, dc:w - dc])
+        e = min(dc, w - dc)
+        np.minimum(out[:, :e], g2[:, dc:dc + e] + k, out=out[:, :e])
+        np.minimum(out[:, w - e:], g2[:, w - e - dc:w - dc] + k, out=out[:, w - e:])
     return out
 
 
