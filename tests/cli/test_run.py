@@ -122,3 +122,24 @@ def test_nearest_door_over_rosbridge_is_grounded_on_the_robots_map(
     truth = sim.get_robot_pose()
     assert math.hypot(truth.x_m - x, truth.y_m - y) < 0.05
     assert events[-1]["status"] == "succeeded" and sim.collisions == 0
+
+
+def test_ros2_backend_without_ros_is_a_clear_error(capsys: pytest.CaptureFixture[str]) -> None:
+    try:
+        import rclpy  # noqa: F401
+    except ImportError:
+        pass
+    else:
+        pytest.skip("ROS 2 is installed here")
+    code = main(["run", "--backend", "ros2", "--json", "turn left"])
+    err = capsys.readouterr().err
+    assert code == 2
+    assert "needs ROS 2 (rclpy)" in err and "--backend rosbridge" in err
+
+
+@pytest.mark.parametrize(("url", "message"), [("http://robot:9090", "--rosbridge-url is ws://HOST:PORT"),
+                                               ("ws://robot:99999", "bad port")])
+def test_a_bad_rosbridge_url_is_refused_before_connecting(url: str, message: str,
+                                                          capsys: pytest.CaptureFixture[str]) -> None:
+    code = main(["run", "--backend", "rosbridge", "--rosbridge-url", url, "turn left"])
+    assert code == 2 and message in capsys.readouterr().err

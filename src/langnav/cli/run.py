@@ -1,6 +1,6 @@
 """``langnav run``: translate, validate and execute one prompt on a robot, printing every event.
 
-    langnav run --world MAP.yaml --pose X,Y,YAW_DEG [--known-map] [--backend sim|rosbridge]
+    langnav run --world MAP.yaml --pose X,Y,YAW_DEG [--known-map] [--backend sim|rosbridge|ros2]
                 [--rosbridge-url ws://HOST:PORT] [--json] [--translator NAME] "prompt"
 
 With the simulator (the default) the robot starts at ``--pose`` in the world ``--world`` and knows
@@ -8,7 +8,9 @@ only what its lidar sees, unless ``--known-map`` gives it the world map as its o
 already mapped). The simulator runs headless, faster than real time. With ``--backend rosbridge``
 the robot, its map (``/map``) and its pose (tf) come from a ROS 2 robot behind rosbridge
 (``--rosbridge-url ws://HOST:PORT``, or ``langnav sim --rosbridge-port``); ``--world``, ``--pose``
-and ``--known-map`` are then ignored: the prompt is grounded on the robot's own map.
+and ``--known-map`` are then ignored: the prompt is grounded on the robot's own map. ``--backend
+ros2`` drives Nav2 through rclpy and needs ROS 2 on this machine. ``--robot-option KEY=VALUE``
+sets any field of the backend's config (e.g. ``cmd_vel_stamped=true``, ``namespace=/robot1``).
 
 The prompt is read against the robot's own map and pose; exploration prompts ("explore", "map
 this floor") run frontier exploration. With ``--json`` every event is one JSON object per line;
@@ -35,7 +37,8 @@ from langnav.robot.protocol import RobotBackend, create_backend
 
 log = logging.getLogger(__name__)
 
-BACKENDS: Final = ("sim", "rosbridge")
+#: sim runs anywhere; rosbridge reaches a robot over WebSocket; ros2 needs ROS 2 (rclpy) on this machine.
+BACKENDS: Final = ("sim", "rosbridge", "ros2")
 EXIT_CODES: Final = {PlanStatus.SUCCEEDED: 0, PlanStatus.FAILED: 1, PlanStatus.CANCELLED: 1, PlanStatus.REJECTED: 2}
 #: Time to let a cancelled plan stop the robot on Ctrl-C.
 CANCEL_GRACE_S: Final = 10.0
@@ -89,6 +92,10 @@ def _make_robot(args: argparse.Namespace) -> RobotBackend:
     else:
         if args.world is not None or args.pose is not None or args.known_map:
             log.warning("--world, --pose and --known-map are for the simulator; the robot gives its own")
+        if args.backend != "rosbridge":
+            if args.rosbridge_url or args.rosbridge:
+                raise RobotError(f"--rosbridge-url and --rosbridge are for --backend rosbridge, not {args.backend}")
+            return create_backend(args.backend, **options)
         if args.rosbridge_url and args.rosbridge:
             raise RobotError("give --rosbridge-url or --rosbridge, not both")
         if args.rosbridge_url:
