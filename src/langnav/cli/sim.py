@@ -3,8 +3,10 @@
     langnav sim --world MAP.yaml --pose X,Y,YAW_DEG [--known-map] [--rosbridge-port 9090] [--host 127.0.0.1]
 
 Foxglove (Open connection -> Rosbridge -> ws://HOST:PORT), roslibjs pages and roslibpy scripts
-see a ROS 2 robot: /map, /scan, /plan, /tf, /tf_static, /odom, /amcl_pose and the
-/navigate_through_poses action. ``langnav run --backend rosbridge`` drives it like a real one.
+see a ROS 2 robot: /map, /scan, /plan, /tf, /tf_static, /odom, /amcl_pose, /rosout, the
+/navigate_through_poses action, /rosapi/topics_and_raw_types (the message definitions Foxglove
+decodes with), and /cmd_vel for teleop (Twist or TwistStamped, held 0.5 s).
+``langnav run --backend rosbridge --rosbridge-url ws://HOST:PORT`` drives it like a real one.
 """
 
 from __future__ import annotations
