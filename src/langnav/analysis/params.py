@@ -71,6 +71,9 @@ class AnalysisParams:
     #: Segmentation: two spaces joined through more door-wide openings than this are one space
     #: (a row of desks or shelves, not a wall; 0 switches it off).
     seg_max_openings_between: int = 2
+    #: Segmentation: unknown notches of a space narrower than twice this (m; the unscanned wedges
+    #: between laser rays) count as part of it (0 switches it off).
+    seg_close_unknown_gaps_m: float = 0.5
     #: Segmentation: clearance (m) below which a free cell cannot start a space (about a robot radius).
     seg_min_peak_m: float = 0.15
     #: Straight wall segments shorter than this are not reported.

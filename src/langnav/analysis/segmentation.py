@@ -132,6 +132,9 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams) -> Segmentation:
     labels = merge_basins(raw_labels, fl.clearance_m, res, params, judge)
     labels, exterior = _attach_enclosed_unknown(labels, fl, grid, params)
     labels = _fill_enclosed(labels, params.seg_island_max_area_m2 / (res * res))
+    if params.seg_close_unknown_gaps_m > 0:
+        labels = _close_unknown_gaps(labels, grid.cells == UNKNOWN, grid.cells == OCCUPIED,
+                                     params.seg_close_unknown_gaps_m / res)
     exterior &= labels == 0
     raw_doors = doors_between(labels, fl.clearance_m, res, params)
     raw_doors += openings_to_unknown(labels, fl.floor, exterior, grid.cells == OCCUPIED,
@@ -200,6 +203,39 @@ def _fill_enclosed(labels: npt.NDArray[np.int32], max_cells: float) -> npt.NDArr
         take = sizes <= max_cells
         take[0] = False
         out[sl][take[pockets]] = k
+    return out
+
+
+def _shifted(a: npt.NDArray[np.int32], dr: int, dc: int, fill: int) -> npt.NDArray[np.int32]:
+    """``a`` moved so that out[r, c] = a[r + dr, c + dc] (``fill`` outside)."""
+    out = np.full_like(a, fill)
+    h, w = a.shape
+    out[max(0, -dr):h - max(0, dr), max(0, -dc):w - max(0, dc)] = \
+        a[max(0, dr):h - max(0, -dr), max(0, dc):w - max(0, -dc)]
+    return out
+
+
+def _close_unknown_gaps(labels: npt.NDArray[np.int32], unknown: npt.NDArray[np.bool_],
+                        occupied: npt.NDArray[np.bool_], radius_cells: float) -> npt.NDArray[np.int32]:
+    """Give each space the unknown cells in its narrow notches (the unscanned wedges between
+    laser rays in a room): an unknown cell with the same space on both sides, within
+    ``radius_cells`` along a row, a column or a diagonal, and no wall in between."""
+    r = int(radius_cells)
+    if r < 1 or not unknown.any():
+        return labels
+    seen = np.where(occupied, -1, labels).astype(np.int32)  # walls stop the look-out
+    out = labels.copy()
+    todo = unknown & (labels == 0)
+    for dr, dc in ((0, 1), (1, 0), (1, 1), (1, -1)):
+        ahead = np.zeros_like(seen)
+        behind = np.zeros_like(seen)
+        for step in range(1, r + 1):
+            fwd = _shifted(seen, dr * step, dc * step, -1)
+            bwd = _shifted(seen, -dr * step, -dc * step, -1)
+            ahead = np.where(ahead == 0, fwd, ahead)
+            behind = np.where(behind == 0, bwd, behind)
+        fill = todo & (ahead == behind) & (ahead > 0) & (out == 0)
+        out[fill] = ahead[fill]
     return out
 
 
