@@ -147,3 +147,26 @@ def test_grid_layers_match_direct_computation() -> None:
     # Computed once, and shared read-only.
     assert layers.occupied_components is layers.occupied_components
     assert not layers.free.flags.writeable
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(0, 2**32 - 1), st.sampled_from([0, 10**12]), st.sampled_from([8, 16, 256]))
+def test_wall_gradient_is_ndi_sobel_of_the_smoothed_mask(seed: int, tiled_from: int, tile: int) -> None:
+    """Tiled or not, the gradient at the face cells is bit for bit the whole-grid filters'."""
+    import langnav.analysis.walls as walls
+
+    rng = np.random.default_rng(seed)
+    h, w = (int(v) for v in rng.integers(1, 60, size=2))
+    wall = rng.random((h, w)) < rng.uniform(0.05, 0.5)
+    rows, cols = np.nonzero(rng.random((h, w)) < 0.3)
+    if len(rows) == 0:
+        return
+    sm = ndi.gaussian_filter(wall.astype(np.float32), walls.GRADIENT_SIGMA_CELLS)
+    old = (walls.TILED_MIN_WINDOW_CELLS, walls.GRADIENT_TILE_CELLS)
+    walls.TILED_MIN_WINDOW_CELLS, walls.GRADIENT_TILE_CELLS = tiled_from, tile
+    try:
+        gy, gx = walls._wall_gradient(wall, rows, cols)
+    finally:
+        walls.TILED_MIN_WINDOW_CELLS, walls.GRADIENT_TILE_CELLS = old
+    assert np.array_equal(gy, ndi.sobel(sm, axis=0)[rows, cols].astype(float))
+    assert np.array_equal(gx, ndi.sobel(sm, axis=1)[rows, cols].astype(float))

@@ -34,7 +34,7 @@ GRADIENT_SIGMA_CELLS: Final = 1.0
 _GRADIENT_PAD: Final = int(4 * GRADIENT_SIGMA_CELLS) + 2
 #: On large maps, the wall mask is smoothed only in square tiles of this size (cells) that hold
 #: wall faces; the open floor and the unknown margin between them are skipped.
-GRADIENT_TILE_CELLS: Final = 128
+GRADIENT_TILE_CELLS: Final = 256
 #: ... when the faces' window has at least this many cells: on smaller ones the per-tile overhead
 #: outweighs the saving (on a 3-Mcell map tiles halve the time: fewer cells, and cache-sized).
 TILED_MIN_WINDOW_CELLS: Final = 1_000_000
@@ -111,17 +111,19 @@ def _wall_gradient(wall: npt.NDArray[np.bool_], rows: npt.NDArray[np.intp], cols
     t = GRADIENT_TILE_CELLS
     n_tc = (c1 - c0 + t - 1) // t
     key = ((rows - r0) // t) * n_tc + (cols - c0) // t
-    tiles = np.unique(key)
+    counts = np.bincount(key)
+    tiles = np.flatnonzero(counts)
+    bounds = np.concatenate([[0], np.cumsum(counts[tiles])])
+    order = np.argsort(key, kind="stable")
     gy = np.empty(len(rows))
     gx = np.empty(len(rows))
-    order = np.argsort(key, kind="stable")
-    bounds = np.searchsorted(key[order], np.append(tiles, tiles[-1] + 1))
-    for i, tile in enumerate(tiles.tolist()):
+    for i in range(len(tiles)):
         sel = order[bounds[i]:bounds[i + 1]]
-        tr, tc = divmod(tile, n_tc)
-        win = (max(0, r0 + tr * t - _GRADIENT_PAD), min(h, r0 + (tr + 1) * t + _GRADIENT_PAD),
-               max(0, c0 + tc * t - _GRADIENT_PAD), min(w, c0 + (tc + 1) * t + _GRADIENT_PAD))
-        gy[sel], gx[sel] = _gradient_window(wall, rows[sel], cols[sel], win)
+        rs, cs = rows[sel], cols[sel]
+        # The window around this tile's cells only.
+        win = (max(0, int(rs.min()) - _GRADIENT_PAD), min(h, int(rs.max()) + _GRADIENT_PAD + 1),
+               max(0, int(cs.min()) - _GRADIENT_PAD), min(w, int(cs.max()) + _GRADIENT_PAD + 1))
+        gy[sel], gx[sel] = _gradient_window(wall, rs, cs, win)
     return gy, gx
 
 
@@ -130,16 +132,20 @@ def _gradient_window(wall: npt.NDArray[np.bool_], rows: npt.NDArray[np.intp], co
     """``ndi.sobel`` along rows and along columns of the smoothed window, at the given cells only.
 
     Spelt out as ``ndi.sobel`` computes it (each pass in double, stored as float32, reflected at
-    the edges), so the values are bit for bit the same without filtering the whole window.
+    the edges), so the values are bit for bit the same without filtering the whole window. The
+    cells are at least ``_GRADIENT_PAD`` inside every edge of the window that is not the grid's,
+    so a neighbour index off the window is off the grid, where "reflect" repeats the edge cell.
     """
     r0, r1, c0, c1 = win
     sm = ndi.gaussian_filter(wall[r0:r1, c0:c1].astype(np.float32), GRADIENT_SIGMA_CELLS)
-    padded = np.pad(sm, 1, mode="symmetric")  # numpy's "symmetric" is ndimage's "reflect"
-    rr = rows - r0 + 1
-    cc = cols - c0 + 1
+    hh, ww = sm.shape
+    rr = rows - r0
+    cc = cols - c0
+    near_r = {d: np.clip(rr + d, 0, hh - 1) for d in (-1, 0, 1)}
+    near_c = {d: np.clip(cc + d, 0, ww - 1) for d in (-1, 0, 1)}
 
     def at(dr: int, dc: int) -> FloatArray:
-        return padded[rr + dr, cc + dc].astype(np.float64)
+        return sm[near_r[dr], near_c[dc]].astype(np.float64)
 
     def stored(v: FloatArray) -> FloatArray:  # a pass's output, kept as float32
         return v.astype(np.float32).astype(np.float64)
