@@ -14,7 +14,7 @@ from langnav.cli import main
 from langnav.maps.draw import MapBuilder
 from langnav.maps.io import save_map
 from langnav.robot.protocol import create_backend
-from langnav.robot.rosbridge_server import RosbridgeServer
+from langnav.robot.rosbridge_server import RosbridgeServer, RosbridgeServerConfig
 
 
 @pytest.fixture
@@ -71,7 +71,10 @@ DEMO_START = (12.2, 1.8, 0.0)  # in the demo floor's south-east room, facing eas
 def served_demo() -> Iterator[tuple[Any, int]]:
     """What `langnav sim --world demo --known-map --rosbridge-port 0` runs, in-process."""
     sim: Any = create_backend("sim", world="demo", pose=DEMO_START, known_map=True)
-    server = RosbridgeServer(sim)
+    # the clock runs SIM_SPEED times faster: odometry and tf at SIM_SPEED x the default rate keep
+    # the same rate in robot time, so the closed-loop Move sees the robot as often as it would live
+    default = RosbridgeServerConfig()
+    server = RosbridgeServer(sim, RosbridgeServerConfig(state_rate_hz=default.state_rate_hz * SIM_SPEED))
     sim.start(realtime=True, speed=SIM_SPEED)
     port = server.start("127.0.0.1", 0)
     yield sim, port
