@@ -74,6 +74,9 @@ class AnalysisParams:
     #: Segmentation: unknown notches of a space narrower than twice this (m; the unscanned wedges
     #: between laser rays) count as part of it (0 switches it off).
     seg_close_unknown_gaps_m: float = 0.5
+    #: Segmentation: free cells left out of every space (thin laser rays across an unscanned
+    #: room) join the space they reach first through free cells within this distance (m; 0 off).
+    seg_claim_free_m: float = 3.0
     #: Segmentation: clearance (m) below which a free cell cannot start a space (about a robot radius).
     seg_min_peak_m: float = 0.15
     #: Straight wall segments shorter than this are not reported.

@@ -19,6 +19,7 @@ import numpy as np
 import numpy.typing as npt
 from scipy import ndimage as ndi
 from skimage.measure import approximate_polygon, find_contours
+from skimage.segmentation import watershed
 
 from langnav.analysis.elements import Door, ElementKind, Room
 from langnav.analysis.errors import AnalysisError
@@ -132,6 +133,8 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams) -> Segmentation:
     labels = merge_basins(raw_labels, fl.clearance_m, res, params, judge)
     labels, exterior = _attach_enclosed_unknown(labels, fl, grid, params)
     labels = _fill_enclosed(labels, params.seg_island_max_area_m2 / (res * res))
+    if params.seg_claim_free_m > 0:
+        labels = _claim_free(labels, fl.free, params.seg_claim_free_m / res)
     if params.seg_close_unknown_gaps_m > 0:
         labels = _close_unknown_gaps(labels, grid.cells == UNKNOWN, grid.cells == OCCUPIED,
                                      params.seg_close_unknown_gaps_m / res)
@@ -236,6 +239,33 @@ def _close_unknown_gaps(labels: npt.NDArray[np.int32], unknown: npt.NDArray[np.b
             behind = np.where(behind == 0, bwd, behind)
         fill = todo & (ahead == behind) & (ahead > 0) & (out == 0)
         out[fill] = ahead[fill]
+    return out
+
+
+def _claim_free(labels: npt.NDArray[np.int32], free: npt.NDArray[np.bool_],
+                max_cells: float) -> npt.NDArray[np.int32]:
+    """Give the scanned cells left out of every space (thin laser rays across an unscanned
+    room, cells joined to a space only diagonally) to the space they reach first through free
+    cells (8-connected), if they lie within ``max_cells`` of it: a room's scanned floor is all
+    of it, not only the part wide enough to flood."""
+    todo = free & (labels == 0)
+    if not todo.any() or labels.max() == 0:
+        return labels
+    near = ndi.distance_transform_edt(labels == 0) <= max_cells
+    todo &= near
+    # Only a window around the cells to claim takes part.
+    rows = np.flatnonzero(todo.any(axis=1))
+    cols = np.flatnonzero(todo.any(axis=0))
+    if rows.size == 0:
+        return labels
+    r0, r1 = max(0, rows[0] - 1), min(labels.shape[0], rows[-1] + 2)
+    c0, c1 = max(0, cols[0] - 1), min(labels.shape[1], cols[-1] + 2)
+    lab = labels[r0:r1, c0:c1]
+    grow = todo[r0:r1, c0:c1]
+    # A flood over a flat image reaches cells in the order of their (8-connected) distance.
+    flood = watershed(np.zeros(lab.shape, dtype=np.uint8), lab, mask=grow | (lab > 0), connectivity=2)
+    out = labels.copy()
+    out[r0:r1, c0:c1] = np.where(grow, flood, lab)
     return out
 
 
