@@ -51,6 +51,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     except LangnavError as exc:
         print(f"langnav {args.command}: {exc}", file=sys.stderr)
         return 2
+    except OSError as exc:  # a file or socket the OS refused: say which and why, without a traceback
+        where = f"{exc.filename}: " if getattr(exc, "filename", None) else ""
+        print(f"langnav {args.command}: {where}{exc.strerror or exc}", file=sys.stderr)
+        return 1
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return 130

@@ -7,8 +7,10 @@ bundled demo world.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import time
+from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
@@ -16,6 +18,7 @@ import numpy as np
 from langnav.analysis.elements import ElementKind, MapAnalysis
 from langnav.analysis.pipeline import analyze
 from langnav.analysis.render import save_png
+from langnav.errors import LangnavError
 from langnav.maps.demo import DEMO_NAME, demo_map_path
 from langnav.maps.io import load_map
 
@@ -58,13 +61,27 @@ def run(args: argparse.Namespace) -> int:
     seconds = time.perf_counter() - t0
     print(summary(result, seconds))
     if args.json is not None:
-        args.json.parent.mkdir(parents=True, exist_ok=True)
-        args.json.write_text(json.dumps(result.to_json(), indent=1), encoding="utf-8")
+        with _writing(args.json, "--json"):
+            args.json.parent.mkdir(parents=True, exist_ok=True)
+            args.json.write_text(json.dumps(result.to_json(), indent=1), encoding="utf-8")
         print(f"  wrote {args.json}")
     if args.png is not None:
-        print(f"  wrote {save_png(result, args.png)}")
+        with _writing(args.png, "--png"):
+            written = save_png(result, args.png)
+        print(f"  wrote {written}")
     if args.labels is not None:
-        args.labels.parent.mkdir(parents=True, exist_ok=True)
-        np.save(args.labels, result.labels_image().astype(np.int32))
+        with _writing(args.labels, "--labels"):
+            args.labels.parent.mkdir(parents=True, exist_ok=True)
+            np.save(args.labels, result.labels_image().astype(np.int32))
         print(f"  wrote {args.labels}")
     return 0
+
+
+@contextlib.contextmanager
+def _writing(path: Path, option: str) -> Iterator[None]:
+    """An output file that cannot be written becomes an error naming the option, file and reason."""
+    try:
+        yield
+    except (OSError, ValueError) as exc:
+        reason = getattr(exc, "strerror", None) or str(exc)
+        raise LangnavError(f"{option} {path}: cannot write it ({reason}); pick a writable file path") from exc

@@ -23,12 +23,12 @@ from __future__ import annotations
 import argparse
 import json
 import logging
-import math
 from typing import Any, Final
 from urllib.parse import urlsplit
 
 import yaml
 
+from langnav.cli.options import pose_arg
 from langnav.errors import LangnavError
 from langnav.plan.events import EventKind, ExecEvent, PlanStatus, pose_tuple
 from langnav.plan.executor import DEFAULT_EXPLORE_TIMEOUT_S, PlanExecutor
@@ -46,16 +46,6 @@ CANCEL_GRACE_S: Final = 10.0
 ROSBRIDGE_DEFAULT_PORT: Final = 9090
 
 
-def _pose(text: str) -> tuple[float, float, float]:
-    try:
-        parts = [float(v) for v in text.split(",")]
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"--pose is X,Y,YAW_DEG in metres and degrees, got {text!r}") from None
-    if len(parts) not in (2, 3) or not all(math.isfinite(v) for v in parts):
-        raise argparse.ArgumentTypeError(f"--pose is X,Y[,YAW_DEG] (finite numbers), got {text!r}")
-    return (parts[0], parts[1], parts[2] if len(parts) == 3 else 0.0)
-
-
 def _option(text: str) -> tuple[str, Any]:
     key, sep, value = text.partition("=")
     if not sep or not key.strip():
@@ -66,7 +56,7 @@ def _option(text: str) -> tuple[str, Any]:
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("prompt", help="what the robot should do, in plain words")
     p.add_argument("--world", help="the simulated world: map_server YAML or image, or 'demo' (sim only; default demo)")
-    p.add_argument("--pose", type=_pose, default=None,
+    p.add_argument("--pose", type=pose_arg, default=None,
                    help="start pose X,Y,YAW_DEG (sim; default the most open spot; use --pose=-1,2,0 for negatives)")
     p.add_argument("--known-map", action="store_true", help="start the simulated robot with the world map as its own")
     p.add_argument("--backend", default="sim", choices=BACKENDS, help="robot backend (default: sim)")

@@ -6,21 +6,10 @@ import argparse
 import logging
 from pathlib import Path
 
+from langnav.cli.options import pose_arg
 from langnav.web.settings import DEFAULT_HOST, DEFAULT_PORT, WebSettings, make_token
 
 log = logging.getLogger(__name__)
-
-
-def _pose(text: str) -> tuple[float, float, float]:
-    try:
-        parts = [float(v) for v in text.split(",")]
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"--pose wants X,Y,YAW_DEG in metres and degrees, got {text!r}") from None
-    if len(parts) == 2:
-        parts.append(0.0)
-    if len(parts) != 3:
-        raise argparse.ArgumentTypeError(f"--pose wants X,Y,YAW_DEG, got {text!r}")
-    return parts[0], parts[1], parts[2]
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -33,7 +22,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    help="address to listen on (default 127.0.0.1; any other needs the printed token)")
     p.add_argument("--port", type=int, default=DEFAULT_PORT, help=f"port (default {DEFAULT_PORT})")
     p.add_argument("--known-map", action="store_true", help="the robot starts with the whole world map as its own")
-    p.add_argument("--pose", type=_pose, default=None, help="start pose X,Y,YAW_DEG (default: the world's open spot)")
+    p.add_argument("--pose", type=pose_arg, default=None, help="start pose X,Y,YAW_DEG (default: the world's open spot)")
     p.add_argument("--db", type=Path, default=Path("langnav.db"), help="SQLite file of the conversation")
 
 
@@ -51,8 +40,12 @@ def run(args: argparse.Namespace) -> int:
     import uvicorn
 
     from langnav.web.app import create_app
+    from langnav.web.session import RobotSession
 
     settings = settings_from_args(args)
+    # Built before the server starts, so a bad world, start pose, database or robot address is a
+    # one-line error (exit 2) instead of a traceback from inside the server's start-up.
+    session = RobotSession(settings)
     shown_host = f"[{settings.host}]" if ":" in settings.host else settings.host
     url = f"http://{shown_host}:{settings.port}/"
     if settings.requires_token:
@@ -60,9 +53,12 @@ def run(args: argparse.Namespace) -> int:
               f"(shown once):\n  {settings.token}\nopen {url}?token={settings.token}", flush=True)
     else:
         print(f"langnav: open {url}", flush=True)
-    app = create_app(settings)
-    uvicorn.run(app, host=settings.host, port=settings.port, log_level="warning", ws_ping_interval=20.0,
-                # Frames are small and mostly numbers; compressing each one for every viewer
-                # costs more CPU than the bytes it saves on a local network.
-                ws_per_message_deflate=False)
+    app = create_app(settings, session_factory=lambda _settings: session)
+    try:
+        uvicorn.run(app, host=settings.host, port=settings.port, log_level="warning", ws_ping_interval=20.0,
+                    # Frames are small and mostly numbers; compressing each one for every viewer
+                    # costs more CPU than the bytes it saves on a local network.
+                    ws_per_message_deflate=False)
+    finally:
+        session.close()  # idempotent: the app's shutdown closed it already unless start-up failed
     return 0

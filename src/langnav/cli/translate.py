@@ -8,6 +8,7 @@ import json
 import sys
 from pathlib import Path
 
+from langnav.cli.options import pose_arg
 from langnav.errors import LangnavError
 from langnav.eval.cases import MapCache, load_cases
 from langnav.language.translator import get_translator
@@ -19,21 +20,11 @@ from langnav.plan.commands import describe
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("prompt", nargs="?", help="what the robot should do (with --map and --pose)")
     p.add_argument("--map", type=Path, help="map_server YAML (or a map image)")
-    p.add_argument("--pose", help="robot pose X,Y,YAW_DEG in the map frame (use --pose=-1,2,0 for negatives)")
+    p.add_argument("--pose", type=pose_arg,
+                   help="robot pose X,Y,YAW_DEG in the map frame (use --pose=-1,2,0 for negatives)")
     p.add_argument("--cases", type=Path, help="bench case file (JSONL); writes one output line per case")
     p.add_argument("--translator", default="offline", help="offline (default), gemini, openai, local, auto")
     p.add_argument("--json", action="store_true", help="machine-readable output")
-
-
-def parse_pose(text: str) -> tuple[float, float, float]:
-    parts = [t for t in text.replace(" ", "").split(",") if t]
-    try:
-        vals = [float(t) for t in parts]
-    except ValueError:
-        vals = []
-    if len(vals) != 3:
-        raise LangnavError(f"--pose must be X,Y,YAW_DEG (three numbers), got {text!r}")
-    return vals[0], vals[1], vals[2]
 
 
 def run(args: argparse.Namespace) -> int:
@@ -43,7 +34,7 @@ def run(args: argparse.Namespace) -> int:
     if args.map is None or args.pose is None or not args.prompt:
         raise LangnavError("give --map MAP.yaml --pose X,Y,YAW_DEG \"prompt\", or --cases CASES.jsonl")
     grid = load_map(args.map)
-    result = planner.plan(args.prompt, grid, parse_pose(args.pose))
+    result = planner.plan(args.prompt, grid, args.pose)
     if args.json:
         print(json.dumps(result.to_json(), indent=2))
     else:

@@ -209,6 +209,22 @@ class FreeSpace:
     def value_at(self, x_m: float, y_m: float) -> int:
         return self.grid.value_at(x_m, y_m)
 
+    def standing_problem(self, x_m: float, y_m: float) -> str | None:
+        """Why the robot cannot stand at (x, y), as words ("outside the map (it spans ...)", "on an
+        occupied cell", "in unmapped space", "only 0.10 m from a wall ..."); None when it can."""
+        idx = self.index(x_m, y_m)
+        if idx is None:
+            lo_x, lo_y, hi_x, hi_y = self.grid.bounds_m
+            return f"outside the map (it spans x {lo_x:.1f}..{hi_x:.1f}, y {lo_y:.1f}..{hi_y:.1f} m)"
+        value = int(self.grid.cells[idx])
+        if value != FREE:
+            return "on an occupied cell" if value == OCCUPIED else "in unmapped space"
+        clear = float(self.clearance_m[idx])
+        if clear < self.robot_radius_m - 1e-9:
+            return (f"only {clear:.2f} m from a wall or unmapped space (the robot needs "
+                    f"{self.robot_radius_m:.2f} m)")
+        return None
+
     def component_at(self, x_m: float, y_m: float, snap_m: float = START_SNAP_M) -> int:
         """The passable component holding (x, y) or the nearest passable cell within ``snap_m``; 0 if none."""
         idx = self.index(x_m, y_m)

@@ -268,6 +268,11 @@ def _move(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> Grounded
     end_xy = (pose.x_m + real * math.cos(a), pose.y_m + real * math.sin(a))
     clear, free_run = ctx.space.segment_clear(pose.xy, end_xy, ctx.params.robot_radius_m)
     if not clear:
+        here = ctx.space.standing_problem(pose.x_m, pose.y_m)
+        if here is not None:
+            raise GroundingError(
+                f"I can't move from ({pose.x_m:.2f}, {pose.y_m:.2f}): that position is {here}. Check that "
+                "my pose on the map is right; nothing was run.")
         safe = max(0.0, free_run - 0.05)
         raise GroundingError(
             f"Moving {d.value} {dist:g} m would take me into a wall or an obstacle after about "
@@ -281,9 +286,11 @@ def _move(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> Grounded
 def _component(ctx: GroundingContext, pose: Pose) -> int:
     comp = ctx.space.component_at(pose.x_m, pose.y_m)
     if comp == 0:
+        where = ctx.space.standing_problem(pose.x_m, pose.y_m)
         raise GroundingError(
-            f"I find no free space around my position ({pose.x_m:.2f}, {pose.y_m:.2f}); "
-            "check that my pose on the map is right before sending me anywhere.")
+            f"I find no free space around my position ({pose.x_m:.2f}, {pose.y_m:.2f})"
+            + (f", which is {where}" if where else "")
+            + "; check that my pose on the map is right before sending me anywhere.")
     return comp
 
 

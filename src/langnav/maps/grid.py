@@ -33,6 +33,10 @@ MAX_CELLS: Final = 400_000_000
 #: Sane resolutions, in metres per cell.
 MIN_RESOLUTION_M: Final = 0.001
 MAX_RESOLUTION_M: Final = 10.0
+#: Largest origin offset accepted, in metres: 10 000 km (a map frame anchored anywhere on Earth)
+#: while a float64 still resolves a cell to better than a micrometre; beyond it, world <-> cell
+#: transforms lose whole cells.
+MAX_ORIGIN_M: Final = 1e7
 
 Int8Array = npt.NDArray[np.int8]
 FloatArray = npt.NDArray[np.float64]
@@ -76,6 +80,9 @@ class OccupancyGrid:
         for name in ("origin_x_m", "origin_y_m", "origin_yaw_rad"):
             if not math.isfinite(getattr(self, name)):
                 raise MapError(f"{self.source}: {name} must be finite")
+            if abs(getattr(self, name)) > MAX_ORIGIN_M:
+                raise MapError(f"{self.source}: {name} {getattr(self, name)!r} is beyond ±{MAX_ORIGIN_M:g}; "
+                               "put the map's origin near its own floor")
         if self.cells.dtype != np.int8:
             object.__setattr__(self, "cells", self.cells.astype(np.int8))
         bad = ~np.isin(self.cells, (FREE, OCCUPIED, UNKNOWN))

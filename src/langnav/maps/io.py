@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import logging
 import math
+import re
 from pathlib import Path
 from typing import Any, Final
 
@@ -40,6 +41,8 @@ DEFAULT_FREE_THRESH: Final = 0.25
 #: unknown (occ = 50/255 = 0.19608) reads back as unknown; with 0.25 it would read back as free.
 SAVE_FREE_THRESH: Final = 0.196
 MODES: Final = ("trinary", "scale", "raw")
+#: Longest YAML value quoted back in an error message.
+SHOWN_MAX_CHARS: Final = 80
 IMAGE_SUFFIXES: Final = (".pgm", ".png", ".bmp", ".jpg", ".jpeg", ".tif", ".tiff", ".gif")
 
 # PIL refuses decompression bombs itself; keep its limit in line with ours.
@@ -49,10 +52,7 @@ Image.MAX_IMAGE_PIXELS = MAX_CELLS
 def load_map(path: str | Path, resolution_m: float | None = None) -> OccupancyGrid:
     """Load a map_server YAML, or a bare image (with ``resolution_m``, default 0.05 m)."""
     p = Path(path)
-    if not p.exists():
-        raise MapError(f"{p}: no such file")
-    if p.is_dir():
-        raise MapError(f"{p}: is a directory; give a map .yaml or an image")
+    _require_file(p, "no such file", "is a directory; give a map .yaml or an image")
     if p.suffix.lower() in (".yaml", ".yml"):
         if resolution_m is not None:
             log.warning("%s: --resolution ignored, the YAML gives the resolution", p)
@@ -61,6 +61,19 @@ def load_map(path: str | Path, resolution_m: float | None = None) -> OccupancyGr
         return load_bare_image(p, resolution_m if resolution_m is not None else DEFAULT_BARE_RESOLUTION_M)
     raise MapError(f"{p}: unknown map type {p.suffix!r}; give a .yaml (map_server) or an image "
                    f"({', '.join(IMAGE_SUFFIXES)})")
+
+
+def _require_file(path: Path, missing: str, directory: str) -> None:
+    """Raise MapError unless ``path`` is an existing file (a name the OS refuses counts as missing)."""
+    try:
+        exists, is_dir = path.exists(), path.is_dir()
+    except (OSError, ValueError) as exc:
+        raise MapError(f"{_shown(str(path))}: cannot use this path: {exc.__class__.__name__}: "
+                       f"{getattr(exc, 'strerror', None) or exc}") from exc
+    if not exists:
+        raise MapError(f"{path}: {missing}")
+    if is_dir:
+        raise MapError(f"{path}: {directory}")
 
 
 def _read_yaml(path: Path) -> dict[str, Any]:
@@ -77,15 +90,40 @@ def _read_yaml(path: Path) -> dict[str, Any]:
     return doc
 
 
+#: A number YAML 1.1 (PyYAML) reads as a string but map_server's yaml-cpp reads as a number:
+#: exponents without a dot or a sign ("5e-2", "1E3").
+_YAML11_NUMBER: Final = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)[eE][+-]?\d+")
+
+
+def _as_finite(val: Any) -> float | None:
+    """``val`` as a finite float, or None: a bool, a non-number, NaN, an infinity or an integer
+    too large for a float is no number here."""
+    if isinstance(val, str) and _YAML11_NUMBER.fullmatch(val.strip()):
+        val = float(val)
+    if isinstance(val, bool) or not isinstance(val, int | float):
+        return None
+    try:
+        out = float(val)
+    except OverflowError:
+        return None
+    return out if math.isfinite(out) else None
+
+
+def _shown(val: Any) -> str:
+    """A YAML value for a message, cut short (a hostile file may hold a megabyte in one key)."""
+    text = repr(val)
+    return text if len(text) <= SHOWN_MAX_CHARS else text[:SHOWN_MAX_CHARS - 3] + "..."
+
+
 def _number(path: Path, doc: dict[str, Any], key: str, default: float | None = None) -> float:
     if key not in doc:
         if default is None:
             raise MapError(f"{path}: missing required key {key!r}")
         return default
-    val = doc[key]
-    if isinstance(val, bool) or not isinstance(val, int | float) or not math.isfinite(float(val)):
-        raise MapError(f"{path}: {key} must be a finite number, got {val!r}")
-    return float(val)
+    val = _as_finite(doc[key])
+    if val is None:
+        raise MapError(f"{path}: {key} must be a finite number, got {_shown(doc[key])}")
+    return val
 
 
 def load_map_yaml(path: str | Path) -> OccupancyGrid:
@@ -97,15 +135,15 @@ def load_map_yaml(path: str | Path) -> OccupancyGrid:
         raise MapError(f"{p}: missing or empty 'image' key")
     resolution = _number(p, doc, "resolution")
     origin = doc.get("origin")
-    if (not isinstance(origin, list) or len(origin) not in (2, 3)
-            or not all(isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v)
-                       for v in origin)):
-        raise MapError(f"{p}: origin must be [x, y, yaw] (numbers), got {origin!r}")
-    ox, oy = float(origin[0]), float(origin[1])
-    oyaw = float(origin[2]) if len(origin) == 3 else 0.0
+    values = [_as_finite(v) for v in origin] if isinstance(origin, list) else []
+    if len(values) not in (2, 3) or any(v is None for v in values):
+        raise MapError(f"{p}: origin must be [x, y, yaw] (finite numbers: metres, metres, radians), "
+                       f"got {_shown(origin)}")
+    ox, oy = float(values[0] or 0.0), float(values[1] or 0.0)
+    oyaw = float(values[2] or 0.0) if len(values) == 3 else 0.0
     negate = doc.get("negate", 0)
     if negate not in (0, 1, True, False):
-        raise MapError(f"{p}: negate must be 0 or 1, got {negate!r}")
+        raise MapError(f"{p}: negate must be 0 or 1, got {_shown(negate)}")
     occ_th = _number(p, doc, "occupied_thresh", DEFAULT_OCCUPIED_THRESH)
     free_th = _number(p, doc, "free_thresh", DEFAULT_FREE_THRESH)
     if not (0.0 <= free_th < occ_th <= 1.0):
@@ -113,7 +151,7 @@ def load_map_yaml(path: str | Path) -> OccupancyGrid:
                        f"free_thresh={free_th}, occupied_thresh={occ_th}")
     mode = doc.get("mode", "trinary")
     if mode not in MODES:
-        raise MapError(f"{p}: mode {mode!r} is not one of {', '.join(MODES)}")
+        raise MapError(f"{p}: mode {_shown(mode)} is not one of {', '.join(MODES)}")
     img_path = Path(image) if Path(image).is_absolute() else p.parent / image
     pixels, alpha = _read_image(img_path)
     ros = _pixels_to_ros(pixels, alpha, mode=mode, negate=bool(negate), occ_th=occ_th, free_th=free_th)
@@ -123,15 +161,18 @@ def load_map_yaml(path: str | Path) -> OccupancyGrid:
 
 def _read_image(path: Path) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64] | None]:
     """Pixel shades in [0, 1] (mean of colour channels) and alpha in [0, 1] if any, image orientation."""
-    if not path.exists():
-        raise MapError(f"{path}: map image not found")
+    _require_file(path, "map image not found",
+                  "the map image is a directory; the YAML's 'image' must name an image file")
     try:
         with Image.open(path) as im:
             im.load()
             bands = im.getbands()
-            if im.mode in ("I", "I;16", "I;16B", "F"):
+            if im.mode in ("I", "I;16", "I;16B", "I;16L", "F"):
                 arr = np.asarray(im, dtype=np.float64)
-                top = 65535.0 if arr.max(initial=0) > 255 else 255.0
+                # 16-bit PNGs and PGMs with maxval > 255 (which PIL scales to 0..65535) are 16-bit
+                # whatever their largest value; only other wide images are judged by their values.
+                sixteen = im.mode.startswith("I;16") or im.format in ("PPM", "PGM")
+                top = 65535.0 if sixteen or arr.max(initial=0) > 255 else 255.0
                 return np.clip(arr / top, 0, 1), None
             has_alpha = "A" in bands
             rgb = im.convert("RGBA" if has_alpha else ("RGB" if len(bands) >= 3 else "L"))

@@ -24,7 +24,7 @@ from pydantic import ValidationError
 
 from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
 from langnav.grounding.geometry import FreeSpace, Pose, free_space_for
-from langnav.maps.grid import FREE, OccupancyGrid
+from langnav.maps.grid import OccupancyGrid
 from langnav.plan.commands import (
     MOVE_STEP_M,
     ROTATE_STEP_DEG,
@@ -99,8 +99,10 @@ def validate_plan(commands: Sequence[Command | dict[str, Any]], grid: OccupancyG
         if isinstance(c, NavigateThroughPoses):
             comp = fs.component_at(pose.x_m, pose.y_m)
             if comp == 0:
+                where = fs.standing_problem(pose.x_m, pose.y_m)
                 reasons.append(f"command {i}: there is no free space around the robot's pose "
-                               f"({pose.x_m:.2f}, {pose.y_m:.2f}); check the pose before navigating")
+                               f"({pose.x_m:.2f}, {pose.y_m:.2f})" + (f", which is {where}" if where else "")
+                               + "; check the pose before navigating")
                 out.append(c)
                 continue
             new_poses: list[list[float]] = []
@@ -150,20 +152,12 @@ def validate_plan(commands: Sequence[Command | dict[str, Any]], grid: OccupancyG
 def _check_pose(fs: FreeSpace, grid: OccupancyGrid, x: float, y: float, comp: int,
                 params: AnalysisParams) -> tuple[tuple[float, float] | None, str]:
     """(the pose or its repair, why) — None when it can be neither used nor safely repaired."""
-    idx = fs.index(x, y)
-    if idx is None:
-        lo_x, lo_y, hi_x, hi_y = grid.bounds_m
-        return None, (f"outside the map (it spans x {lo_x:.1f}..{hi_x:.1f}, y {lo_y:.1f}..{hi_y:.1f} m)")
-    value = grid.cells[idx]
-    clear = float(fs.clearance_m[idx])
-    if value == FREE and clear >= params.robot_radius_m - 1e-9 and fs.is_reachable(x, y, comp):
+    if fs.index(x, y) is None:
+        return None, fs.standing_problem(x, y) or "outside the map"
+    problem = fs.standing_problem(x, y)
+    if problem is None and fs.is_reachable(x, y, comp):
         return (x, y), ""
-    if value != FREE:
-        why = "it is on an occupied cell" if value == 100 else "it is in unmapped space"
-    elif clear < params.robot_radius_m:
-        why = f"it is only {clear:.2f} m from a wall or unmapped space (the robot needs {params.robot_radius_m:.2f} m)"
-    else:
-        why = "the robot cannot reach it through free space from where it is"
+    why = f"it is {problem}" if problem else "the robot cannot reach it through free space from where it is"
     snapped = fs.safe_point_near((x, y), comp, SNAP_MAX_M)
     if snapped is None:
         return None, why + f", and no valid cell is within {SNAP_MAX_M} m"

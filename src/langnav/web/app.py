@@ -150,6 +150,16 @@ _TITLES: Final = {400: "Bad request", 401: "Token required", 403: "Forbidden", 4
                   503: "Robot unavailable"}
 
 
+def _reason(error: Any) -> str:
+    """One validation error as a sentence: where in the request, and what was wrong."""
+    loc = [str(p) for p in error.get("loc", ()) if p != "body"]
+    if error.get("type") == "json_invalid":
+        why = (error.get("ctx") or {}).get("error", "")
+        at = f" at character {loc[-1]}" if loc else ""
+        return f"body: not valid JSON{at}" + (f" ({why})" if why else "") + '; send e.g. {"text": "stop"}'
+    return f"{'.'.join(loc) or 'body'}: {error.get('msg', '')}"
+
+
 def _install_error_handlers(app: FastAPI) -> None:
     @app.exception_handler(StarletteHTTPException)
     async def _http(request: Request, exc: StarletteHTTPException) -> Response:
@@ -157,12 +167,13 @@ def _install_error_handlers(app: FastAPI) -> None:
         message = exc.detail if isinstance(exc.detail, str) else title
         if exc.status_code == 404 and message == "Not Found":
             message = f"There is nothing at {request.url.path}."
+        elif exc.status_code == 400 and message == "There was an error parsing the body":
+            message = "The request body could not be read: send UTF-8 JSON (Content-Type: application/json)."
         return error_response(request, exc.status_code, title, message, headers=getattr(exc, "headers", None))
 
     @app.exception_handler(RequestValidationError)
     async def _invalid(request: Request, exc: RequestValidationError) -> Response:
-        reasons = [f"{'.'.join(str(p) for p in e.get('loc', ()) if p != 'body') or 'body'}: {e.get('msg', '')}"
-                   for e in exc.errors()]
+        reasons = [_reason(e) for e in exc.errors()]
         return error_response(request, 422, "Invalid request", "The request was not understood: "
                               + "; ".join(reasons), reasons)
 

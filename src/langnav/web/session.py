@@ -110,6 +110,19 @@ def load_world(settings: WebSettings) -> OccupancyGrid:
     return load_map(demo_map_path())
 
 
+def _make_robot(settings: WebSettings) -> RobotBackend:
+    """The robot backend the settings name (the simulator in ``settings.world``)."""
+    options: dict[str, Any] = dict(settings.backend_options)
+    if settings.backend == "sim":
+        options.setdefault("world", load_world(settings))
+        options.setdefault("known_map", settings.known_map)
+        if settings.start_pose is not None:
+            options.setdefault("pose", settings.start_pose)
+    import langnav.robot  # noqa: F401  (registers the built-in backends)
+
+    return create_backend(settings.backend, **options)
+
+
 class RobotSession:
     """See the module docstring. Create, :meth:`start`, use from any thread, :meth:`close`."""
 
@@ -118,15 +131,11 @@ class RobotSession:
         self.store = ConversationStore(settings.db_path)
         self.broadcaster = Broadcaster()
         if robot is None:
-            options: dict[str, Any] = dict(settings.backend_options)
-            if settings.backend == "sim":
-                options.setdefault("world", load_world(settings))
-                options.setdefault("known_map", settings.known_map)
-                if settings.start_pose is not None:
-                    options.setdefault("pose", settings.start_pose)
-            import langnav.robot  # noqa: F401  (registers the built-in backends)
-
-            robot = create_backend(settings.backend, **options)
+            try:
+                robot = _make_robot(settings)
+            except BaseException:
+                self.store.close()  # a world or robot that cannot be used leaves no open database
+                raise
         self.robot = robot
         self.radius_m = float(getattr(getattr(robot, "config", None), "robot_radius_m", DEFAULT_RADIUS_M))
         self.translator = settings.translator

@@ -24,6 +24,8 @@ MAX_HISTORY_ROWS: Final = 1000
 #: Wait this long for another writer's lock before failing (WAL makes waits rare and short).
 BUSY_TIMEOUT_S: Final = 5.0
 SCHEMA_VERSION: Final = 1
+#: SQLite's largest INTEGER; a larger Python int cannot even be bound as a parameter.
+SQLITE_MAX_INT: Final = 2**63 - 1
 
 _SCHEMA = """
 CREATE TABLE IF NOT EXISTS messages (
@@ -61,9 +63,9 @@ class ConversationStore:
 
     def __init__(self, path: str | Path) -> None:
         self.path = str(path)
-        if self.path != ":memory:":
-            Path(self.path).parent.mkdir(parents=True, exist_ok=True)
         try:
+            if self.path != ":memory:":
+                Path(self.path).parent.mkdir(parents=True, exist_ok=True)
             self._db = sqlite3.connect(self.path, timeout=BUSY_TIMEOUT_S, check_same_thread=False,
                                        isolation_level=None)
             if self.path != ":memory:":
@@ -71,7 +73,7 @@ class ConversationStore:
             self._db.execute("PRAGMA synchronous=NORMAL")
             self._db.executescript(_SCHEMA)
             self._db.execute(f"PRAGMA user_version={SCHEMA_VERSION}")
-        except sqlite3.Error as exc:
+        except (sqlite3.Error, OSError) as exc:
             raise StoreError(f"cannot open the conversation database {self.path}: {exc}; "
                              "check the path is writable or pass another --db") from exc
         self._lock = threading.Lock()
@@ -93,10 +95,11 @@ class ConversationStore:
     def history(self, after_id: int = 0, limit: int = MAX_HISTORY_ROWS) -> list[Message]:
         """Messages with id > ``after_id``, oldest first; the newest ``limit`` of them."""
         limit = max(1, min(int(limit), MAX_HISTORY_ROWS))
+        after_id = max(0, min(int(after_id), SQLITE_MAX_INT))  # ids are positive int64s
         with self._lock:
             rows = self._db.execute(
                 "SELECT id, created_s, role, kind, plan_id, payload FROM messages WHERE id > ? "
-                "ORDER BY id DESC LIMIT ?", (int(after_id), limit)).fetchall()
+                "ORDER BY id DESC LIMIT ?", (after_id, limit)).fetchall()
         return [Message(r[0], r[1], r[2], r[3], r[4], json.loads(r[5])) for r in reversed(rows)]
 
     def last_plan_id(self) -> int:
