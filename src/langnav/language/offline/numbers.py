@@ -132,7 +132,36 @@ _NOT_UNITS: Final = r"(?:seconds?|secs?|minutes?|mins?|hours?|times|steps?|perce
 _BARE_PATTERN: Final = re.compile(rf"{_B}(?P<num>{NUMBER})(?!\s*(?:st|nd|rd|th)\b)(?![\w])(?!\s*{_NOT_UNITS}\b)")
 #: "1 m 50", "2 metres 30": metres and centimetres.
 _METRES_CENTIMETRES: Final = re.compile(
-    r"(?<![\w.])(?P<m>\d+)\s*(?:m|meters?|metres?)\s+(?:and\s+)?(?P<cm>\d{1,2})(?!\s*(?:cm|mm|m|degrees?|deg|\.|\d))(?![\w.])")
+    r"(?<![\w.])(?P<m>\d+)\s*(?:m|meters?|metres?)\s+(?:and\s+)?(?P<cm>\d{1,2})"
+    rf"(?!\s*(?:cm|mm|m|degrees?|deg|\.|\d|{_NOT_UNITS}\b))(?![\w.])")
+
+
+#: "1e3", "2.5E-1": scientific notation, written out before anything else reads the digits.
+_SCIENTIFIC: Final = re.compile(r"(?<![\w.])(?P<mant>\d+(?:\.\d+)?|\.\d+)[eE](?P<exp>[+-]?\d{1,6})(?![\d.])")
+#: "1,000", "12,500,000": thousands separated by commas (a decimal comma has one or two digits).
+_THOUSANDS: Final = re.compile(r"(?<![\d.,])\d{1,3}(?:,\d{3})+(?![\d,])")
+#: Written-out values beyond this are shown as this (they are out of every range anyway).
+_HUGE: Final = 1e15
+#: "-5 m", "−90 degrees": a minus sign right before a number (not a range such as "2-3 m").
+NEGATIVE_NUMBER: Final = re.compile(r"(?<![\w.])[-−–](?=\.?\d)")
+
+
+def canonical_numbers(text: str) -> str:
+    """Digits in one form before a prompt is split and read: scientific notation written out
+    ("1e3" -> "1000", "1e309" -> a huge number, "1e-400" -> "0") and thousands separators
+    dropped ("1,000,000" -> "1000000")."""
+    text = _THOUSANDS.sub(lambda m: m.group(0).replace(",", ""), text)
+    return _SCIENTIFIC.sub(_write_out, text)
+
+
+def _write_out(m: re.Match[str]) -> str:
+    try:
+        value = float(f"{m.group('mant')}e{m.group('exp')}")
+    except OverflowError:  # pragma: no cover - float() gives inf rather than raising
+        value = math.inf
+    if not math.isfinite(value) or value >= _HUGE:
+        return f"{_HUGE:.0f}"
+    return f"{value:.6f}".rstrip("0").rstrip(".") or "0"
 
 
 def number_value(text: str) -> float:

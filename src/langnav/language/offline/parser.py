@@ -85,6 +85,23 @@ class Problem(StrEnum):
     OTHER_FLOOR = "other_floor"      # "take the stairs up", "use the lift": the robot stays on its floor
     UNKNOWABLE = "unknowable"        # "the red door", "the wooden door": no colours or materials in a grid
     DURATION = "duration"            # "move forward for 5 seconds": moves go by distance, turns by angle
+    BAD_NUMBER = "bad_number"        # "turn left ninety billion degrees": a number not read in full
+
+
+class _OutOfRange(Exception):
+    """A turn beyond MAX_TURN_DEG while building a step (read_clause turns it into OUT_OF_RANGE)."""
+
+
+def _checked_angle(angle: float | None) -> float | None:
+    if angle is not None and angle > MAX_TURN_DEG:
+        raise _OutOfRange
+    return angle
+
+
+#: Words left unread that show a number was not read in full: digits, and magnitudes the
+#: number words do not cover.
+_NUMBERISH_RE: Final = re.compile(r"\d|\b(?:thousands?|millions?|billions?|trillions?|zillions?|gazillions?|"
+                                  r"dozens?|hundreds|infinity|infinite)\b")
 
 
 @dataclass(frozen=True)
@@ -641,8 +658,20 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
         if not stop_only:
             return Reading(unread=(text,), confidence=0.3, problem=Problem.NO_ANTECEDENT)
         phrases = [p for p in phrases if p.ref.kind != Element.NONE]
-    steps = _build_steps(c, phrases, verb)
+    try:
+        steps = _build_steps(c, phrases, verb)
+    except _OutOfRange:
+        return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.OUT_OF_RANGE)
     leftovers = [w for w in c.s.leftover_words() if w not in lx.STOPWORDS]
+    if (verb[0] == _Verb.NONE and not phrases and steps and (leftovers or c.previous is None)
+            and all(st.movement == Movement.MOVE for st in steps) and not _MOVE_DIR_RE.search(norm)):
+        # a distance with no verb and no direction ("banana 2", "alert(1)", a lone "2 m") is no
+        # instruction of its own: it may only complete the step before it ("move forward, 2 m")
+        return Reading(unread=(text,), confidence=NOTHING_READ_CONFIDENCE, problem=Problem.UNREADABLE)
+    if steps and any(_NUMBERISH_RE.search(w) for w in leftovers):
+        # a number left unread ("the 25th door", "ninety billion degrees", "3.5.5 m") means the
+        # step was read without it: never move on a misread number, ask instead
+        return Reading(unread=(text,), confidence=NOTHING_READ_CONFIDENCE, problem=Problem.BAD_NUMBER)
     guessed = [st for st in steps if st.movement in (Movement.MOVE, Movement.ROTATE) and st.amount == Amount.DEFAULT]
     if durations and guessed:
         # "drive forward for 5 seconds": a time is no distance; ask rather than guess one
@@ -1068,7 +1097,8 @@ def _single_rotation(c: _Clause, vm: re.Match[str] | None) -> Step:
             else:
                 direction = Direction.LEFT
                 c.doubt(GUESSED_DIRECTION_FACTOR)
-    return Step(movement=Movement.ROTATE, direction=direction, angle_deg=angle, amount=amount, text=c.text[:500])
+    return Step(movement=Movement.ROTATE, direction=direction, angle_deg=_checked_angle(angle), amount=amount,
+                text=c.text[:500])
 
 
 def _move_steps(c: _Clause, verb: _Verb, vm: re.Match[str] | None) -> list[Step]:
@@ -1135,7 +1165,8 @@ def _rotation_from(c: _Clause, direction: Direction, quantities: list[Quantity],
         c.s.use(q.start, q.end)
         angle = (angle or 0.0) + q.value
     amount = None if angle is not None else Amount.LITTLE if little else Amount.DEFAULT
-    return Step(movement=Movement.ROTATE, direction=direction, angle_deg=angle, amount=amount, text=c.text[:500])
+    return Step(movement=Movement.ROTATE, direction=direction, angle_deg=_checked_angle(angle), amount=amount,
+                text=c.text[:500])
 
 
 def _move_direction(c: _Clause, vm: re.Match[str] | None) -> Direction | None:

@@ -7,6 +7,7 @@ from collections.abc import Sequence
 from typing import Final
 
 from langnav.language.intent import Amount, Detail, Direction, ElementRef, Intent, Movement, Step
+from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.splitter import split_steps
 from langnav.language.translator import Context, clean_prompt
@@ -21,6 +22,8 @@ CONFIDENT: Final = 0.8
 #: an ``auto`` translator does not pass them (or an injection attempt) on to a model.
 SURE_REFUSALS: Final = frozenset({Problem.NAME, Problem.OUT_OF_SCOPE, Problem.OUT_OF_RANGE, Problem.QUESTION,
                                   Problem.OTHER_FLOOR, Problem.DURATION, Problem.UNKNOWABLE})
+#: Problems in one step that refuse the whole prompt: a number out of range or not read in full.
+WHOLE_PROMPT_REFUSALS: Final = frozenset({Problem.OUT_OF_RANGE, Problem.BAD_NUMBER})
 #: A reading that runs some steps and leaves a whole instruction out is unsure at best.
 PARTIAL_CONFIDENCE: Final = 0.5
 #: The intent holds at most this many steps (the schema's limit).
@@ -29,6 +32,9 @@ MAX_STEPS: Final = 20
 UNSAFE_MESSAGE: Final = (
     "I won't do that: my safety rules always stay on, and I never drive into walls, obstacles or "
     "people, or faster than my safe speed. Tell me where to go instead, e.g. 'go to the nearest door'.")
+NEGATIVE_MESSAGE: Final = (
+    "I can't use the negative number '{number}': say which way instead, e.g. 'move backward 2 metres' "
+    "or 'turn right 90 degrees'.")
 TOO_MANY_STEPS_MESSAGE: Final = (
     f"That is more than {MAX_STEPS} steps; give me at most {MAX_STEPS} at a time.")
 
@@ -48,6 +54,11 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     if is_unsafe(text):
         log.info("refused an unsafe prompt: %.80s", text)
         return _clarify(UNSAFE_MESSAGE, confidence=1.0, unread=[])
+    negative = NEGATIVE_NUMBER.search(text)
+    if negative is not None:
+        shown = text[negative.start():negative.start() + 12].split()[0]
+        return _clarify(NEGATIVE_MESSAGE.format(number=shown), confidence=1.0, unread=[])
+    text = canonical_numbers(text)
     steps: list[Step] = []
     unread: list[str] = []
     problems: list[tuple[Problem, str, Reading]] = []
@@ -94,6 +105,13 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
         unread.extend(asked[2].unread)
     if len(steps) > MAX_STEPS:
         return _clarify(TOO_MANY_STEPS_MESSAGE, confidence=1.0, unread=[])
+    misread = [(p, clause, r) for p, clause, r in problems if p in WHOLE_PROMPT_REFUSALS]
+    if misread:
+        # a step whose number is beyond range or unreadable: the other steps were planned around
+        # it ("turn left, 4000 degrees"; "go to door 2 and turn left"), so none of them runs
+        problem, clause, reading = misread[0]
+        return _clarify(_problem_message(problem, clause), confidence=reading.confidence,
+                        unread=[] if problem in SURE_REFUSALS else list(reading.unread))
     if not steps:
         if not problems:
             return _clarify(_unreadable_message(text), confidence=0.2, unread=[text[:200]])
@@ -165,6 +183,9 @@ def _problem_message(problem: Problem, clause: str) -> str:
     if problem == Problem.OUT_OF_RANGE:
         return (f"\"{quoted}\" asks for more than one move or turn may do (at most 100 m or ten full "
                 "turns). Name a place to go to instead, e.g. 'go to the farthest door'.")
+    if problem == Problem.BAD_NUMBER:
+        return (f"I could not read the number in \"{quoted}\", so I will not move. Give it in digits or "
+                "words, e.g. 'move forward 2.5 metres', 'turn left 90 degrees' or 'the second door'.")
     if problem == Problem.NO_ANTECEDENT:
         return (f"In \"{quoted}\" I can't tell what 'it' or 'there' means. Name the place, e.g. "
                 "'the nearest door' or 'the left corner of this room'.")
