@@ -277,9 +277,10 @@ class PlanRun:
             status, message = self._run_items()
         except _Cancelled:
             status, message = PlanStatus.CANCELLED, "cancelled"
-        except LangnavError as exc:
+        except LangnavError as exc:  # a lost connection, a robot that refused: stop what may be moving
             status, message = PlanStatus.FAILED, str(exc)
             log.info("plan failed: %s", exc)
+            self._safe_stop()
         except Exception as exc:  # report, never leave the plan hanging; the robot is stopped
             log.exception("plan crashed")
             status, message = PlanStatus.FAILED, f"internal error: {exc}"
@@ -419,7 +420,7 @@ class PlanRun:
             if slice_s <= 0:
                 handle.cancel()
                 self._safe_stop()
-                return TaskResult(TaskStatus.FAILED, f"timed out after {budget.total_s:.0f} s; the robot stopped")
+                return TaskResult(TaskStatus.FAILED, f"timed out after {budget.total_s:g} s; the robot stopped")
             try:
                 result = handle.wait(slice_s)
             except RobotTimeout:
