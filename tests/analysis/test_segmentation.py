@@ -287,3 +287,20 @@ def test_laser_rays_across_an_unscanned_part_belong_to_the_room() -> None:
     assert seg.labels[r1 - n, c1] == label
     off = segment_spaces(rays, AnalysisParams(seg_claim_free_m=0.0))
     assert off.labels[r0 - n + 1, c0 + n - 1] == 0
+
+
+def test_a_corridor_narrowed_by_a_cabinet_stays_one_hallway() -> None:
+    """A 1.6 m corridor with a cabinet against one wall leaving 0.95 m: the opening is narrow
+    enough for a door, but wide for the corridor (over half its width): one hallway."""
+    b = MapBuilder(16.0, 3.0)
+    b.room(0.5, 0.5, 15.5, 2.1)
+    b.rect(7.0, 1.45, 8.0, 2.1, 100)
+    grid = b.build()
+    seg = segment_spaces(grid)
+    assert [r.kind for r in seg.rooms] == [ElementKind.HALLWAY]
+    assert seg.rooms[0].area_m2 == pytest.approx(15.0 * 1.6 - 0.65, rel=0.03)
+    assert seg.doors == ()
+    # Judged on their peaks alone, the two halves would be two spaces joined by a doorway.
+    split = segment_spaces(grid, AnalysisParams(seg_corridor_saddle_ratio=0.0))
+    assert len(split.rooms) == 2
+    assert len(split.doors) == 1

@@ -55,6 +55,12 @@ class AnalysisParams:
     #: Segmentation: two hallway-narrow spaces stay one corridor when their clearance peaks are
     #: below this multiple of the opening's (a corridor narrowed by a cabinet, not a door).
     seg_hallway_saddle_ratio: float = 1.6
+    #: Segmentation: two spaces whose typical half-widths (twice their mean clearance: a
+    #: corridor's half-width, whatever junctions and recesses raise its peak) are hallway-narrow,
+    #: one of them elongated, stay one corridor when the opening is wider than about 2 / this of
+    #: the corridor's width: the opening's clearance exceeds the wider half-width / this ratio
+    #: (a corridor narrowed by cabinets or a pillar, not a door; 0 switches it off).
+    seg_corridor_saddle_ratio: float = 2.0
     #: Segmentation: an unknown region enclosed by a room counts in its area up to this size (m2;
     #: an unscanned corner or half of a room), never a courtyard inside a corridor loop.
     seg_enclosed_unknown_max_area_m2: float = 30.0

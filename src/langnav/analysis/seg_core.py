@@ -15,7 +15,9 @@ and merging steps of ROSE², RA-L 2022):
 4. *Merge tree*: basins are merged across their saddles from the widest saddle down (a
    persistence simplification). Two basins stay apart only where the saddle is as narrow as a
    door and both hills rise clearly above it; otherwise the "saddle" is just a bulge of one space.
-   Two narrow spaces meeting through an opening nearly as wide as they are stay one corridor.
+   Two narrow spaces meeting through an opening nearly as wide as they are stay one corridor;
+   so do two pieces of a corridor, judged on their typical width (twice the mean clearance)
+   rather than their peak, which junctions and door recesses raise.
 5. *Jambs*: the widest opening left between two spaces must be cut in a wall: both of its jambs
    belong to the wall network or to a wall stub running along the gap (:class:`JambJudge`).
 6. A space whose opening is wide for its size (``seg_merge_gap_ratio``) and pieces smaller than
@@ -303,6 +305,10 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
     peak = np.zeros(n)
     on = labels > 0
     np.maximum.at(peak, labels[on], clearance_m[on])
+    # Summed clearance (m x cells): twice the mean clearance of a space is about its half-width
+    # where it is long and narrow, whatever bulges (junctions, door recesses) raise its peak.
+    clear_sum = np.bincount(flat, weights=clearance_m.ravel(), minlength=n)
+    cells = np.bincount(flat, minlength=n).astype(float)
     a_arr, b_arr, s_arr, loc_arr = adjacent_pairs(labels, clearance_m)
     width = labels.shape[1]
     # A doorway's saddle clearance is about half its width (cell centres: + half a cell).
@@ -311,6 +317,19 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
     uf = _UnionFind(n)
     peak_l = peak.tolist()
     area_l = area.tolist()
+    csum_l = clear_sum.tolist()
+    cells_l = cells.tolist()
+
+    def half_width(r: int) -> float:
+        return 2.0 * csum_l[r] / max(cells_l[r], 1.0)
+
+    def join(ra: int, rb: int) -> None:
+        uf.parent[rb] = ra
+        peak_l[ra] = max(peak_l[ra], peak_l[rb])
+        area_l[ra] += area_l[rb]
+        csum_l[ra] += csum_l[rb]
+        cells_l[ra] += cells_l[rb]
+
     kept: list[tuple[int, int, float, int]] = []
     for i in np.argsort(-s_arr, kind="stable"):
         a, b, s = int(a_arr[i]), int(b_arr[i]), float(s_arr[i])
@@ -322,11 +341,17 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
         # narrowed by clutter, not two spaces and a door.
         corridor = max(peak_l[ra], peak_l[rb]) <= hallway_peak_max and \
             low < s * params.seg_hallway_saddle_ratio
+        if params.seg_corridor_saddle_ratio > 0 and not corridor:
+            wa, wb = half_width(ra), half_width(rb)
+            # At least one of them is long for its width (a corridor piece, not a room whose
+            # furniture lowers its mean clearance).
+            elongated = any(area_l[r] >= params.hallway_min_elongation * (2.0 * w) ** 2
+                            for r, w in ((ra, wa), (rb, wb)))
+            corridor = elongated and max(wa, wb) <= hallway_peak_max and \
+                max(wa, wb) < s * params.seg_corridor_saddle_ratio
         if s > door_clear_max or low - s < params.seg_persistence_m or \
                 low < s * params.seg_peak_saddle_ratio or corridor:
-            uf.parent[rb] = ra
-            peak_l[ra] = max(peak_l[ra], peak_l[rb])
-            area_l[ra] += area_l[rb]
+            join(ra, rb)
         else:
             kept.append((a, b, s, int(loc_arr[i])))
     # A crossing whose jambs are not both walls is a gap around furniture: one space.
@@ -341,9 +366,7 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
             if judge.is_doorway(loc // width, loc % width, s):
                 judged.add((min(ra, rb), max(ra, rb)))
             else:
-                uf.parent[rb] = ra
-                peak_l[ra] = max(peak_l[ra], peak_l[rb])
-                area_l[ra] += area_l[rb]
+                join(ra, rb)
     # Spaces joined through many door-wide openings are one space with a row of clutter.
     if params.seg_max_openings_between > 0:
         min_clear = (params.door_min_width_m - resolution_m) / 2
@@ -356,18 +379,14 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
         for (ra, rb), c in count.items():
             ra, rb = uf.find(ra), uf.find(rb)
             if ra != rb and c > params.seg_max_openings_between:
-                uf.parent[rb] = ra
-                peak_l[ra] = max(peak_l[ra], peak_l[rb])
-                area_l[ra] += area_l[rb]
+                join(ra, rb)
     # A piece whose opening is wide for its size (a bay of a room behind a desk) is part of
     # the neighbour: a doorway is narrow next to the room it leads into.
     if params.seg_merge_gap_ratio > 0:
         for a, b, s, _ in sorted(kept, key=lambda e: -e[2]):
             ra, rb = uf.find(a), uf.find(b)
             if ra != rb and 2 * s >= params.seg_merge_gap_ratio * math.sqrt(min(area_l[ra], area_l[rb])):
-                uf.parent[rb] = ra
-                peak_l[ra] = max(peak_l[ra], peak_l[rb])
-                area_l[ra] += area_l[rb]
+                join(ra, rb)
     # Small pieces join the neighbour they share the widest opening with.
     best: dict[int, tuple[float, int]] = {}
     changed = True
@@ -385,9 +404,7 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
             rx, ry = uf.find(x), uf.find(y)
             if rx == ry or area_l[rx] >= params.room_min_area_m2:
                 continue
-            uf.parent[rx] = ry
-            area_l[ry] += area_l[rx]
-            peak_l[ry] = max(peak_l[ry], peak_l[rx])
+            join(ry, rx)
             changed = True
     roots = np.array([uf.find(i) for i in range(n)], dtype=np.int64)
     roots[0] = 0
