@@ -266,7 +266,8 @@ def test_large_grids_segmented_at_the_coarse_working_resolution_agree() -> None:
 
 def test_laser_rays_across_an_unscanned_part_belong_to_the_room() -> None:
     """A room scanned only near its door: the thin free rays reaching into the unscanned part
-    (one cell wide, diagonal ones joined only corner to corner) are floor of that room."""
+    (one cell wide, diagonal ones joined only corner to corner, dashed ones broken by unknown
+    cells) are floor of that room."""
     b = MapBuilder(8.0, 6.0)
     b.room(0.5, 0.5, 7.5, 5.5)
     b.unknown(0.0, 0.0, 8.0, 3.0)  # the far half was never scanned (nor its walls) ...
@@ -279,12 +280,13 @@ def test_laser_rays_across_an_unscanned_part_belong_to_the_room() -> None:
     cells[r0 - np.arange(n), c0 + np.arange(n)] = 0
     r1, c1 = (int(v) for v in grid.world_to_index(6.0, 3.01))
     cells[r1 - n:r1 + 1, c1] = 0
+    cells[r1 - n:r1 - 3:7, c1] = -1  # the vertical ray is dashed: broken by unscanned cells
     rays = OccupancyGrid(cells, res, grid.origin_x_m, grid.origin_y_m, source="rays")
     seg = segment_spaces(rays)
     assert len(seg.rooms) == 1
     label = seg.rooms[0].label
     assert seg.labels[r0 - n + 1, c0 + n - 1] == label  # the diagonal ray's far end
-    assert seg.labels[r1 - n, c1] == label
+    assert seg.labels[r1 - n + 1, c1] == label  # the dashed ray's far end
     off = segment_spaces(rays, AnalysisParams(seg_claim_free_m=0.0))
     assert off.labels[r0 - n + 1, c0 + n - 1] == 0
 

@@ -131,10 +131,10 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams) -> Segmentation:
     raw_labels = basins(fl.clearance_m, fl.floor, params.seg_min_peak_m)
     judge = JambJudge(fl.floor, fl.clearance_m, res, params) if params.seg_jamb_test else None
     labels = merge_basins(raw_labels, fl.clearance_m, res, params, judge)
+    if params.seg_claim_free_m > 0:
+        labels = _claim_free(labels, fl.free, grid.cells != OCCUPIED, params.seg_claim_free_m / res)
     labels, exterior = _attach_enclosed_unknown(labels, fl, grid, params)
     labels = _fill_enclosed(labels, params.seg_island_max_area_m2 / (res * res))
-    if params.seg_claim_free_m > 0:
-        labels = _claim_free(labels, fl.free, params.seg_claim_free_m / res)
     if params.seg_close_unknown_gaps_m > 0:
         labels = _close_unknown_gaps(labels, grid.cells == UNKNOWN, grid.cells == OCCUPIED,
                                      params.seg_close_unknown_gaps_m / res)
@@ -155,7 +155,9 @@ def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor, grid: Occ
     Returns the new labels and the unknown that remains unexplored territory.
     """
     ext = fl.exterior
-    lab, n = ndi.label(ext, structure=EIGHT)
+    # 4-connected: the unknown between laser rays (one cell wide, often diagonal) is a piece of
+    # its own, enclosed by the room those rays belong to.
+    lab, n = ndi.label(ext)
     if n == 0:
         return labels, ext
     border = np.unique(np.concatenate([lab[0], lab[-1], lab[:, 0], lab[:, -1]]))
@@ -243,11 +245,12 @@ def _close_unknown_gaps(labels: npt.NDArray[np.int32], unknown: npt.NDArray[np.b
 
 
 def _claim_free(labels: npt.NDArray[np.int32], free: npt.NDArray[np.bool_],
-                max_cells: float) -> npt.NDArray[np.int32]:
-    """Give the scanned cells left out of every space (thin laser rays across an unscanned
-    room, cells joined to a space only diagonally) to the space they reach first through free
-    cells (8-connected), if they lie within ``max_cells`` of it: a room's scanned floor is all
-    of it, not only the part wide enough to flood."""
+                passable: npt.NDArray[np.bool_], max_cells: float) -> npt.NDArray[np.int32]:
+    """Give the scanned cells left out of every space (laser rays across an unscanned part of a
+    room, broken into dashes; cells joined to a space only diagonally) to the space they reach
+    first through ``passable`` cells (free or unknown: no wall in between, 8-connected), if they
+    lie within ``max_cells`` of it: a room's scanned floor is all of it, not only the part wide
+    enough to flood."""
     todo = free & (labels == 0)
     if not todo.any() or labels.max() == 0:
         return labels
@@ -260,12 +263,14 @@ def _claim_free(labels: npt.NDArray[np.int32], free: npt.NDArray[np.bool_],
         return labels
     r0, r1 = max(0, rows[0] - 1), min(labels.shape[0], rows[-1] + 2)
     c0, c1 = max(0, cols[0] - 1), min(labels.shape[1], cols[-1] + 2)
-    lab = labels[r0:r1, c0:c1]
-    grow = todo[r0:r1, c0:c1]
+    win = (slice(r0, r1), slice(c0, c1))
+    lab = labels[win]
+    grow = todo[win]
     # A flood over a flat image reaches cells in the order of their (8-connected) distance.
-    flood = watershed(np.zeros(lab.shape, dtype=np.uint8), lab, mask=grow | (lab > 0), connectivity=2)
+    flood = watershed(np.zeros(lab.shape, dtype=np.uint8), lab, connectivity=2,
+                      mask=(passable[win] & near[win]) | (lab > 0))
     out = labels.copy()
-    out[r0:r1, c0:c1] = np.where(grow, flood, lab)
+    out[win] = np.where(grow, flood, lab)
     return out
 
 
