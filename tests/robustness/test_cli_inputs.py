@@ -148,3 +148,22 @@ def test_run_pose_in_a_wall_is_one_line(tmp_path: Path, capsys: pytest.CaptureFi
                          "move forward 0.5 m"], capsys)
     assert code == 2
     assert "start pose (0.10, 0.10)" in err
+
+
+def test_translate_cases_with_a_missing_map_answers_every_case(tmp_path: Path,
+                                                               capsys: pytest.CaptureFixture[str]) -> None:
+    import json
+
+    _world(tmp_path)
+    cases = tmp_path / "cases.jsonl"
+    cases.write_text(
+        json.dumps({"id": "a", "map": "room.yaml", "pose": [2, 1.5, 0], "prompt": "move forward 0.5 m",
+                    "expect": "clarify"}) + "\n"
+        + json.dumps({"id": "b", "map": "nope.yaml", "pose": [2, 1.5, 0], "prompt": "stop", "expect": "clarify"})
+        + "\n", encoding="utf-8")
+    code, out, _ = _run(["translate", "--cases", str(cases)], capsys)
+    assert code == 0
+    a, b = (json.loads(line) for line in out.splitlines())
+    assert a["commands"] == [{"command": "Move", "direction": "forward", "repeat": 17}]
+    assert b["commands"] == [] and b["clarification"].startswith("cannot load the map: ")
+    assert "nope.yaml: no such file" in b["clarification"]

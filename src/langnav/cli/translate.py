@@ -10,7 +10,7 @@ from pathlib import Path
 
 from langnav.cli.options import pose_arg
 from langnav.errors import LangnavError
-from langnav.eval.cases import MapCache, load_cases
+from langnav.eval.cases import MapCache, bench_output, load_cases
 from langnav.language.translator import get_translator
 from langnav.maps.io import load_map
 from langnav.pipeline import Planner, PlanResult
@@ -46,13 +46,7 @@ def run_cases(planner: Planner, cases_path: Path) -> int:
     cases = load_cases(cases_path)
     maps = MapCache(cases_path.resolve().parent)
     for case in cases:
-        try:
-            grid = maps.get(case)
-        except LangnavError as exc:
-            line = {"id": case.id, "commands": [], "clarification": f"cannot load the map: {exc}"}
-        else:
-            line = planner.plan(case.prompt, grid, case.pose).to_bench(case.id)
-        sys.stdout.write(json.dumps(line) + "\n")
+        sys.stdout.write(json.dumps(bench_output(planner, maps, case)) + "\n")
     sys.stdout.flush()
     return 0
 

@@ -4,13 +4,16 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from langnav.errors import LangnavError
 from langnav.maps.grid import OccupancyGrid
 from langnav.maps.io import load_map
+
+if TYPE_CHECKING:
+    from langnav.pipeline import Planner
 
 
 class CaseError(LangnavError):
@@ -62,3 +65,13 @@ class MapCache:
         if mp not in self._maps:
             self._maps[mp] = load_map(mp)
         return self._maps[mp]
+
+
+def bench_output(planner: Planner, maps: MapCache, case: BenchCase) -> dict[str, Any]:
+    """One case's bench output line. A map that cannot be loaded is that case's refusal (with
+    the reason), so one broken case does not stop a whole run."""
+    try:
+        grid = maps.get(case)
+    except LangnavError as exc:
+        return {"id": case.id, "commands": [], "clarification": f"cannot load the map: {exc}"}
+    return planner.plan(case.prompt, grid, case.pose).to_bench(case.id)

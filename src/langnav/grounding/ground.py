@@ -63,6 +63,8 @@ from langnav.language.intent import (
 )
 from langnav.language.intent import Element as Kind
 from langnav.plan.commands import (
+    MOVE_STEP_M,
+    ROTATE_STEP_DEG,
     Command,
     GetCurrentPath,
     GetMap,
@@ -238,7 +240,7 @@ def _rotate(step: Step, pose: Pose, index: int) -> GroundedStep:
         raise GroundingError("A turn of 0 degrees does nothing; say how far to turn, e.g. 'turn left 45 degrees'.")
     n = steps_for_angle(angle)
     sign = 1.0 if direction == "left" else -1.0
-    end = Pose(pose.x_m, pose.y_m, pose.yaw_rad + sign * math.radians(n * 10.0))
+    end = Pose(pose.x_m, pose.y_m, pose.yaw_rad + sign * math.radians(n * ROTATE_STEP_DEG))
     note = "turn around" if d == Direction.AROUND else f"turn {direction} {angle:g}°"
     return GroundedStep(index, step, (Rotate(direction=direction, repeat=n, note=note),), pose, end, note)
 
@@ -262,7 +264,7 @@ def _move(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> Grounded
     if dist <= 0:
         raise GroundingError("A move of 0 m does nothing; say how far, e.g. 'move forward 1 meter'.")
     n = steps_for_distance(dist)
-    real = n * 0.03
+    real = n * MOVE_STEP_M
     word, offset = _MOVE_HEADING[d]
     a = pose.yaw_rad + offset
     end_xy = (pose.x_m + real * math.cos(a), pose.y_m + real * math.sin(a))

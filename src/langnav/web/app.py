@@ -150,6 +150,16 @@ _TITLES: Final = {400: "Bad request", 401: "Token required", 403: "Forbidden", 4
                   503: "Robot unavailable"}
 
 
+#: Library errors as HTTP answers (status, title); subclasses before their bases.
+LIBRARY_ERRORS: Final[dict[type[LangnavError], tuple[int, str]]] = {
+    PlanRejected: (422, "Plan rejected"),
+    SessionBusy: (409, "Busy"),
+    TranslationError: (400, "Not understood"),
+    RobotError: (503, "Robot unavailable"),
+    LangnavError: (400, "Cannot do that"),
+}
+
+
 def _reason(error: Any) -> str:
     """One validation error as a sentence: where in the request, and what was wrong."""
     loc = [str(p) for p in error.get("loc", ()) if p != "body"]
@@ -177,25 +187,13 @@ def _install_error_handlers(app: FastAPI) -> None:
         return error_response(request, 422, "Invalid request", "The request was not understood: "
                               + "; ".join(reasons), reasons)
 
-    @app.exception_handler(PlanRejected)
-    async def _rejected(request: Request, exc: PlanRejected) -> Response:
-        return error_response(request, 422, "Plan rejected", str(exc), exc.reasons)
+    async def _library_error(request: Request, exc: Exception) -> Response:
+        # the most specific class in LIBRARY_ERRORS the error is an instance of
+        status, title = next(v for k, v in LIBRARY_ERRORS.items() if isinstance(exc, k))
+        return error_response(request, status, title, str(exc), getattr(exc, "reasons", None))
 
-    @app.exception_handler(SessionBusy)
-    async def _busy(request: Request, exc: SessionBusy) -> Response:
-        return error_response(request, 409, "Busy", str(exc))
-
-    @app.exception_handler(TranslationError)
-    async def _translation(request: Request, exc: TranslationError) -> Response:
-        return error_response(request, 400, "Not understood", str(exc))
-
-    @app.exception_handler(RobotError)
-    async def _robot(request: Request, exc: RobotError) -> Response:
-        return error_response(request, 503, "Robot unavailable", str(exc))
-
-    @app.exception_handler(LangnavError)
-    async def _langnav(request: Request, exc: LangnavError) -> Response:
-        return error_response(request, 400, "Cannot do that", str(exc))
+    for error_class in LIBRARY_ERRORS:
+        app.add_exception_handler(error_class, _library_error)
 
     @app.exception_handler(Exception)
     async def _crash(request: Request, exc: Exception) -> Response:

@@ -163,36 +163,38 @@ def _unknowable_message(name: str) -> str:
             "'the nearest door' or 'the widest door'.")
 
 
+#: What to tell the user for each problem a step may have; ``{quoted}`` is the step as written.
+PROBLEM_MESSAGES: Final[dict[Problem, str]] = {
+    Problem.OTHER_FLOOR: ("I can't do \"{quoted}\": I drive only on the floor my map shows; I can't use stairs, "
+                          "lifts or escalators, or go to another floor."),
+    Problem.DURATION: ("In \"{quoted}\" I'm given a time, but I move by distance and turn by angle. Tell me how "
+                       "far or how much, e.g. 'move forward 1 metre' or 'turn left 45 degrees'."),
+    Problem.OUT_OF_SCOPE: ("I can't do \"{quoted}\": I can only drive, turn, stop, explore the map and tell you "
+                           "where I am, my path or the map."),
+    Problem.NEGATED: ("I read \"{quoted}\" as something not to do, so I will not move. Tell me what to do "
+                      "instead, e.g. 'go to the door on your right'."),
+    Problem.QUESTION: ("I can't answer \"{quoted}\": I can tell you where I am, the path I am following, or "
+                       "show the map. Ask e.g. 'where are you?' or 'show me the map'."),
+    Problem.OUT_OF_RANGE: ("\"{quoted}\" asks for more than one move or turn may do (at most 100 m or ten full "
+                           "turns). Name a place to go to instead, e.g. 'go to the farthest door'."),
+    Problem.BAD_NUMBER: ("I could not read the number in \"{quoted}\", so I will not move. Give it in digits or "
+                         "words, e.g. 'move forward 2.5 metres', 'turn left 90 degrees' or 'the second door'."),
+    Problem.NO_ANTECEDENT: ("In \"{quoted}\" I can't tell what 'it' or 'there' means. Name the place, e.g. "
+                            "'the nearest door' or 'the left corner of this room'."),
+}
+
+
 def _problem_message(problem: Problem, clause: str) -> str:
-    quoted = clause if len(clause) <= 120 else clause[:117] + "..."
-    if problem == Problem.OTHER_FLOOR:
-        return (f"I can't do \"{quoted}\": I drive only on the floor my map shows; I can't use stairs, lifts "
-                "or escalators, or go to another floor.")
-    if problem == Problem.DURATION:
-        return (f"In \"{quoted}\" I'm given a time, but I move by distance and turn by angle. Tell me how far "
-                "or how much, e.g. 'move forward 1 metre' or 'turn left 45 degrees'.")
-    if problem == Problem.OUT_OF_SCOPE:
-        return (f"I can't do \"{quoted}\": I can only drive, turn, stop, explore the map and tell you "
-                "where I am, my path or the map.")
-    if problem == Problem.NEGATED:
-        return (f"I read \"{quoted}\" as something not to do, so I will not move. Tell me what to do "
-                "instead, e.g. 'go to the door on your right'.")
-    if problem == Problem.QUESTION:
-        return (f"I can't answer \"{quoted}\": I can tell you where I am, the path I am following, or "
-                "show the map. Ask e.g. 'where are you?' or 'show me the map'.")
-    if problem == Problem.OUT_OF_RANGE:
-        return (f"\"{quoted}\" asks for more than one move or turn may do (at most 100 m or ten full "
-                "turns). Name a place to go to instead, e.g. 'go to the farthest door'.")
-    if problem == Problem.BAD_NUMBER:
-        return (f"I could not read the number in \"{quoted}\", so I will not move. Give it in digits or "
-                "words, e.g. 'move forward 2.5 metres', 'turn left 90 degrees' or 'the second door'.")
-    if problem == Problem.NO_ANTECEDENT:
-        return (f"In \"{quoted}\" I can't tell what 'it' or 'there' means. Name the place, e.g. "
-                "'the nearest door' or 'the left corner of this room'.")
-    return _unreadable_message(clause)
+    template = PROBLEM_MESSAGES.get(problem)
+    if template is None:
+        return _unreadable_message(clause)
+    return template.format(quoted=_quoted(clause))
+
+
+def _quoted(text: str) -> str:
+    return text if len(text) <= 120 else text[:117] + "..."
 
 
 def _unreadable_message(text: str) -> str:
-    quoted = text if len(text) <= 120 else text[:117] + "..."
-    return (f"I didn't understand \"{quoted}\". Try for example 'go through the first door on your left', "
+    return (f"I didn't understand \"{_quoted(text)}\". Try for example 'go through the first door on your left', "
             "'move forward 1 metre' or 'turn right 90 degrees'.")
