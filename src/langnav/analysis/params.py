@@ -60,7 +60,7 @@ class AnalysisParams:
     #: one of them elongated, stay one corridor when the opening is wider than about 2 / this of
     #: the corridor's width: the opening's clearance exceeds the wider half-width / this ratio
     #: (a corridor narrowed by cabinets or a pillar, not a door; 0 switches it off).
-    seg_corridor_saddle_ratio: float = 2.0
+    seg_corridor_saddle_ratio: float = 1.8
     #: Segmentation: an unknown region enclosed by a room counts in its area up to this size (m2;
     #: an unscanned corner or half of a room), never a courtyard inside a corridor loop.
     seg_enclosed_unknown_max_area_m2: float = 30.0
