@@ -174,3 +174,42 @@ def test_translator_that_is_not_configured_is_a_clear_400(client: TestClient, mo
     r = client.post("/api/translator", json={"name": "nope"})
     assert r.status_code == 400 and "choose one of" in str(_error(r)["message"])
     assert client.get("/api/status").json()["translator"] == "offline"
+
+
+def test_the_live_view_survives_a_failing_frame(tmp_path: Path) -> None:
+    import time
+
+    app = create_app(WebSettings(db_path=tmp_path / "c.db", known_map=True, start_pose=HALLWAY_POSE))
+    with TestClient(app, base_url="http://127.0.0.1:8000") as c:
+        session = app.state.session
+        real = session.feedback.where_am_i
+        calls = {"n": 0}
+
+        def flaky(pose: object) -> str:
+            calls["n"] += 1
+            if calls["n"] == 1:
+                raise ValueError("a bug in one frame")
+            return str(real(pose))
+
+        session.feedback.where_am_i = flaky
+        before = session.frames_published
+        end = time.monotonic() + 10.0
+        while session.frames_published < before + 3 and time.monotonic() < end:
+            time.sleep(0.05)
+        assert calls["n"] >= 2  # it went on after the failure
+        assert session.frames_published >= before + 3
+        assert c.get("/api/status").status_code == 200
+
+
+def test_a_crashing_analysis_keeps_the_session_up(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    import langnav.analysis.pipeline as pipeline
+
+    def boom(*a: object, **k: object) -> object:
+        raise ValueError("analysis bug")
+
+    app = create_app(WebSettings(db_path=tmp_path / "c.db", known_map=True, start_pose=HALLWAY_POSE))
+    with TestClient(app, base_url="http://127.0.0.1:8000") as c:
+        session = app.state.session
+        monkeypatch.setattr(pipeline, "analyze", boom)
+        assert session._analyze(session.robot.get_map()) is None
+        assert c.get("/api/status").status_code == 200

@@ -371,6 +371,10 @@ class RobotSession:
         except LangnavError as exc:
             log.warning("map analysis failed: %s", exc)
             return None
+        except Exception:  # a bug in the analysis: keep the last good elements, log it, stay up
+            log.exception("map analysis crashed on a %dx%d map; keeping the previous elements",
+                          grid.width, grid.height)
+            return None
 
     def _set_analysis(self, analysis: MapAnalysis, digest: str) -> None:
         with self._state_lock:
@@ -428,6 +432,9 @@ class RobotSession:
                     self._refresh_map()
             except RobotError as exc:
                 log.warning("robot state unavailable: %s", exc)
+                self._halt.wait(1.0)
+            except Exception:  # one bad frame must not end the live view for good
+                log.exception("publishing the robot's state failed; trying again")
                 self._halt.wait(1.0)
 
 
