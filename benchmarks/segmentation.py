@@ -28,6 +28,7 @@ from pathlib import Path
 import numpy as np
 from PIL import Image
 
+from langnav.analysis.elements import Door
 from langnav.analysis.params import AnalysisParams
 from langnav.analysis.segmentation import Segmentation
 from langnav.analysis.segmentation import segment_spaces as _segment_spaces
@@ -144,25 +145,35 @@ def bench_ipa(quick: bool) -> None:
 
 
 def bench_ipa_doors() -> None:
-    print("(c) IPA doorway detection")
+    print("(c) IPA doorway detection (doors the robot can pass; + narrow: with the narrow doors too)")
     tp = det = truth = 0
+    tp_n = det_n = 0
     for inp, lab in IPA_DOOR_MAPS.items():
         grid = ipa_grid(IPA_VRF / "original_maps" / f"{inp}_original.png")
         blobs = ipa_doorway_blobs(_grey(IPA_VRF / "training_maps" / f"training_{lab}.png"))
         seg = segment_spaces(grid)
-        rc = []
-        for d in seg.doors:
-            r, c = grid.world_to_index(*d.center)
-            rc.append((grid.height - 1 - int(r), int(c)))
-        pr = door_precision_recall(rc, blobs, grid.resolution_m)
-        m = round(pr.recall * pr.n_truth)
-        tp += m
+
+        def image_rc(doors: tuple[Door, ...], grid: OccupancyGrid = grid) -> list[tuple[int, int]]:
+            rc = []
+            for d in doors:
+                r, c = grid.world_to_index(*d.center)
+                rc.append((grid.height - 1 - int(r), int(c)))
+            return rc
+
+        pr = door_precision_recall(image_rc(seg.doors), blobs, grid.resolution_m)
+        prn = door_precision_recall(image_rc(seg.doors + seg.narrow_doors), blobs, grid.resolution_m)
+        tp += round(pr.recall * pr.n_truth)
         det += pr.n_predicted
         truth += pr.n_truth
+        tp_n += round(prn.recall * prn.n_truth)
+        det_n += prn.n_predicted
         print(f"  {inp:<28} precision {100 * pr.precision:5.1f}  recall {100 * pr.recall:5.1f}"
-              f"  (detected {pr.n_predicted:3d}, labelled {pr.n_truth:3d})", flush=True)
+              f"  (detected {pr.n_predicted:3d}, labelled {pr.n_truth:3d}); + narrow: precision "
+              f"{100 * prn.precision:5.1f}  recall {100 * prn.recall:5.1f}", flush=True)
     print(f"  ALL doorways                 precision {100 * tp / max(det, 1):5.1f}  recall "
           f"{100 * tp / max(truth, 1):5.1f}  (detected {det}, labelled {truth})", flush=True)
+    print(f"  ALL doorways + narrow        precision {100 * tp_n / max(det_n, 1):5.1f}  recall "
+          f"{100 * tp_n / max(truth, 1):5.1f}  (detected {det_n}, labelled {truth})", flush=True)
 
 
 def _in_poly(x: float, y: float, poly: list[list[float]]) -> bool:

@@ -306,3 +306,23 @@ def test_a_corridor_narrowed_by_a_cabinet_stays_one_hallway() -> None:
     split = segment_spaces(grid, AnalysisParams(seg_corridor_saddle_ratio=0.0))
     assert len(split.rooms) == 2
     assert len(split.doors) == 1
+
+
+def test_an_opening_too_narrow_for_the_robot_is_a_narrow_door() -> None:
+    b = MapBuilder(9.0, 4.0)
+    b.room(0.5, 0.5, 4.5, 3.5).room(4.65, 0.5, 8.5, 3.5).door_v(4.575, 2.0, 0.35)
+    grid = b.build()
+    seg = segment_spaces(grid)
+    west, east = room_by_point(seg, grid, 2.0, 2.0), room_by_point(seg, grid, 6.5, 2.0)
+    assert west.id != east.id
+    assert seg.doors == ()  # the robot (door_min_width_m 0.55 m) cannot pass it
+    assert len(seg.narrow_doors) == 1
+    d = seg.narrow_doors[0]
+    assert d.id == "narrow_door_1"
+    assert set(d.connects) == {west.id, east.id}
+    assert d.center == pytest.approx((4.575, 2.0), abs=POS_TOL_M)
+    assert d.width_m == pytest.approx(0.35, abs=POS_TOL_M)
+    assert d.width_m < AnalysisParams().door_min_width_m
+    wide = segment_spaces(two_rooms())  # the same rooms with a 0.9 m door
+    assert len(wide.doors) == 1
+    assert wide.narrow_doors == ()

@@ -60,8 +60,10 @@ def _boundary_pairs(labels: IntArray) -> tuple[npt.NDArray[np.int64], ...]:
 
 
 def doors_between(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
-                  params: AnalysisParams, outside_label: int | None = None) -> list[RawDoor]:
-    """Doorways along the boundaries of ``labels`` (see module doc).
+                  params: AnalysisParams, outside_label: int | None = None,
+                  min_width_m: float | None = None) -> list[RawDoor]:
+    """Doorways along the boundaries of ``labels`` (see module doc), from ``min_width_m``
+    (default ``params.door_min_width_m``) to ``params.door_max_width_m`` wide.
 
     With ``outside_label``, only boundaries between a space and that label are examined, and the
     doorway's ``b`` is 0 (unknown).
@@ -85,7 +87,7 @@ def doors_between(labels: IntArray, clearance_m: FloatArray, resolution_m: float
     key, pr, pc, qr, qc, val = key[order], pr[order], pc[order], qr[order], qc[order], val[order]
     starts = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
     ends = np.r_[starts[1:], key.size]
-    min_w = params.door_min_width_m - resolution_m
+    min_w = (params.door_min_width_m if min_width_m is None else min_width_m) - resolution_m
     max_w = params.door_max_width_m + resolution_m
     found: list[RawDoor] = []
     for s0, s1 in zip(starts, ends, strict=True):

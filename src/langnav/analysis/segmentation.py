@@ -45,6 +45,10 @@ OUTLINE_MAX_POINTS: Final = 400
 CROP_MARGIN_M: Final = 3.0
 #: Id used in ``Door.connects`` for unexplored territory.
 UNKNOWN_ID: Final = "unknown"
+#: Openings between two spaces narrower than the robot can pass (``door_min_width_m``) but at
+#: least this wide (m) are reported apart, as narrow doors: a doorway drawn narrow in a floor
+#: plan, a door left ajar. Narrower gaps are cracks in a wall (missed scan points).
+NARROW_DOOR_MIN_WIDTH_M: Final = 0.25
 
 
 @dataclass(frozen=True, eq=False)
@@ -55,6 +59,9 @@ class Segmentation:
     labels: npt.NDArray[np.int32] = field(repr=False)
     rooms: tuple[Room, ...]
     doors: tuple[Door, ...]
+    #: Openings between two spaces too narrow for the robot (see NARROW_DOOR_MIN_WIDTH_M): doors
+    #: to a person, never a way through for the robot; not in ``doors``.
+    narrow_doors: tuple[Door, ...] = ()
 
     def room_by_label(self, label: int) -> Room | None:
         for r in self.rooms:
@@ -82,7 +89,7 @@ def segment_spaces(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS)
     seg = _segment_at_working_resolution(sub, params)
     labels = np.zeros(grid.cells.shape, dtype=np.int32)
     labels[r0:r1, c0:c1] = seg.labels
-    return Segmentation(labels=labels, rooms=seg.rooms, doors=seg.doors)
+    return Segmentation(labels=labels, rooms=seg.rooms, doors=seg.doors, narrow_doors=seg.narrow_doors)
 
 
 def _segment_at_working_resolution(grid: OccupancyGrid, params: AnalysisParams) -> Segmentation:
@@ -109,7 +116,7 @@ def _segment_at_working_resolution(grid: OccupancyGrid, params: AnalysisParams) 
     objs = ndi.find_objects(labels)
     rooms = tuple(_measured_at(grid, labels, r, objs[r.label - 1]) for r in seg.rooms
                   if r.label <= len(objs) and objs[r.label - 1] is not None)
-    return Segmentation(labels=labels, rooms=rooms, doors=seg.doors)
+    return Segmentation(labels=labels, rooms=rooms, doors=seg.doors, narrow_doors=seg.narrow_doors)
 
 
 def _measured_at(grid: OccupancyGrid, labels: npt.NDArray[np.int32], room: Room,
@@ -139,13 +146,18 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams) -> Segmentation:
         labels = _close_unknown_gaps(labels, grid.cells == UNKNOWN, grid.cells == OCCUPIED,
                                      params.seg_close_unknown_gaps_m / res)
     exterior &= labels == 0
-    raw_doors = doors_between(labels, fl.clearance_m, res, params)
+    between = doors_between(labels, fl.clearance_m, res, params,
+                            min_width_m=min(NARROW_DOOR_MIN_WIDTH_M, params.door_min_width_m))
+    passable = params.door_min_width_m - res
+    raw_doors = [d for d in between if d.width_m >= passable]
+    raw_narrow = [d for d in between if d.width_m < passable]
     raw_doors += openings_to_unknown(labels, fl.floor, exterior, grid.cells == OCCUPIED,
                                      fl.clearance_m, res, params)
     rooms = _rooms(grid, labels, fl, params)
     ids = {r.label: r.id for r in rooms}
     doors = _doors(grid, raw_doors, ids)
-    return Segmentation(labels=labels, rooms=tuple(rooms), doors=tuple(doors))
+    narrow = _doors(grid, raw_narrow, ids, prefix="narrow_door")
+    return Segmentation(labels=labels, rooms=tuple(rooms), doors=tuple(doors), narrow_doors=tuple(narrow))
 
 
 def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor, grid: OccupancyGrid,
@@ -339,7 +351,7 @@ def _outline(grid: OccupancyGrid, sub: npt.NDArray[np.bool_], sl: tuple[slice, s
     return np.column_stack([xs, ys])
 
 
-def _doors(grid: OccupancyGrid, raw: list[RawDoor], ids: dict[int, str]) -> list[Door]:
+def _doors(grid: OccupancyGrid, raw: list[RawDoor], ids: dict[int, str], prefix: str = "door") -> list[Door]:
     doors: list[Door] = []
     c, s = math.cos(grid.origin_yaw_rad), math.sin(grid.origin_yaw_rad)
     # Order doors by position (bottom-left first) so that ids are stable.
@@ -355,10 +367,10 @@ def _doors(grid: OccupancyGrid, raw: list[RawDoor], ids: dict[int, str]) -> list
         cx, cy = float(x), float(y)
         other = ids[d.b] if d.b != 0 else UNKNOWN_ID
         doors.append(Door(
-            id=f"door_{len(doors) + 1}", center=(cx, cy), width_m=d.width_m,
+            id=f"{prefix}_{len(doors) + 1}", center=(cx, cy), width_m=d.width_m,
             jambs=((cx - tx * h, cy - ty * h), (cx + tx * h, cy + ty * h)),
             normal=(float(nx), float(ny)), connects=(ids[d.a], other)))
     return doors
 
 
-__all__ = ["UNKNOWN_ID", "Segmentation", "segment_spaces"]
+__all__ = ["NARROW_DOOR_MIN_WIDTH_M", "UNKNOWN_ID", "Segmentation", "segment_spaces"]
