@@ -146,3 +146,37 @@ def test_word_salad_plans_only_poses_on_free_space(prompt: str, pose: tuple[floa
             assert 1 <= c.repeat <= math.ceil(100 / 0.03)
         elif isinstance(c, Rotate):
             assert 1 <= c.repeat <= 360
+
+
+class _Scripted:
+    """A chat backend that answers with fixed text (an LLM gone wrong)."""
+
+    name = "scripted"
+
+    def __init__(self, answer: str) -> None:
+        self.answer = answer
+        self.calls = 0
+
+    def complete(self, messages: object, schema: object, timeout_s: float) -> str:
+        self.calls += 1
+        return self.answer
+
+
+@pytest.mark.parametrize(("answer", "words"), [
+    ('{"steps":[{"movement":"move","direction":"forward","distance_m":' + "9" * 5000 + "}]}", "not usable JSON"),
+    ("[" * 3000 + "]" * 3000, "not usable JSON"),
+    ('{"steps":[{"movement":"move","direction":"forward","distance_m":NaN}]}', "less than or equal to 100"),
+    ('{"steps":[{"movement":"move","direction":"forward","distance_m":-5}]}', "greater than or equal to 0"),
+    ('{"steps":[{"movement":"navigate","target":{"kind":"door"},"x":999,"y":999}]}', "Extra inputs"),
+    ("Sure! Driving at full speed now.", "not valid JSON"),
+])
+def test_broken_llm_answers_are_refused_with_the_reason(answer: str, words: str) -> None:
+    from langnav.language.llm.base import LLMTranslator
+
+    backend = _Scripted(answer)
+    planner = Planner(LLMTranslator(backend))
+    r = planner.plan("go to the door", GRID, HALLWAY)
+    assert r.commands == () and r.clarification is not None
+    assert "internal error" not in r.clarification
+    assert "answered twice in a form langnav cannot use" in r.clarification and words in r.clarification
+    assert backend.calls == 2  # asked once more with the error, then refused

@@ -95,6 +95,9 @@ def parse_answer(raw: str) -> Intent:
     except json.JSONDecodeError as exc:
         raise AnswerError(f"the answer is not valid JSON ({exc.msg} at line {exc.lineno} column {exc.colno}); "
                           "answer with one JSON object only, no prose") from None
+    except (ValueError, RecursionError) as exc:  # a number of thousands of digits, nesting too deep
+        raise AnswerError(f"the answer is not usable JSON ({str(exc)[:80]}); answer with one short JSON "
+                          "object, numbers in plain decimals") from None
     if not isinstance(data, dict):
         raise AnswerError(f"the answer must be a JSON object with 'steps' and 'clarification', not a {type(data).__name__}")
     for key in _BOOKKEEPING:
