@@ -167,3 +167,26 @@ def test_translate_cases_with_a_missing_map_answers_every_case(tmp_path: Path,
     assert a["commands"] == [{"command": "Move", "direction": "forward", "repeat": 17}]
     assert b["commands"] == [] and b["clarification"].startswith("cannot load the map: ")
     assert "nope.yaml: no such file" in b["clarification"]
+
+
+@pytest.mark.parametrize(("option", "value"), [("--timeout", "-1"), ("--timeout", "nan"), ("--timeout", "inf"),
+                                               ("--timeout", "0"), ("--seed", "-5"), ("--seed", "x")])
+def test_run_refuses_bad_numbers_before_starting(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                 option: str, value: str) -> None:
+    code, _, err = _run(["run", "--world", str(_world(tmp_path)), f"{option}={value}", "stop"], capsys)
+    assert code == 2
+    assert f"argument {option}: expected a" in err
+
+
+def test_eval_report_to_an_unwritable_place(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    import json
+
+    _world(tmp_path)
+    cases = tmp_path / "cases.jsonl"
+    cases.write_text(json.dumps({"id": "a", "map": "room.yaml", "pose": [2, 1.5, 0], "prompt": "stop",
+                                 "expect": [{"command": "Stop"}]}) + "\n", encoding="utf-8")
+    (tmp_path / "afile").write_text("x")
+    code, out, err = _run(["eval", "--cases", str(cases), "--report", str(tmp_path / "afile" / "r.md")], capsys)
+    assert code == 1
+    assert "prompt accuracy" in out  # the table was printed before the report failed
+    assert err.startswith("langnav eval: ") and "afile" in err

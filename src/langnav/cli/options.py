@@ -19,4 +19,26 @@ def pose_arg(text: str) -> tuple[float, float, float]:
     return parts[0], parts[1], parts[2] if len(parts) == 3 else 0.0
 
 
-__all__ = ["pose_arg"]
+def seconds_arg(text: str) -> float:
+    """A time limit in seconds: a positive, finite number."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and value > 0):
+        raise argparse.ArgumentTypeError(f"expected a positive number of seconds, e.g. 600; got {text!r}")
+    return value
+
+
+def seed_arg(text: str) -> int:
+    """A random seed: a whole number >= 0."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = -1
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"expected a whole number >= 0, got {text!r}")
+    return value
+
+
+__all__ = ["pose_arg", "seconds_arg", "seed_arg"]

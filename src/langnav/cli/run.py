@@ -28,7 +28,7 @@ from urllib.parse import urlsplit
 
 import yaml
 
-from langnav.cli.options import pose_arg
+from langnav.cli.options import pose_arg, seconds_arg, seed_arg
 from langnav.errors import LangnavError
 from langnav.plan.events import EventKind, ExecEvent, PlanStatus, pose_tuple
 from langnav.plan.executor import DEFAULT_EXPLORE_TIMEOUT_S, PlanExecutor
@@ -66,8 +66,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--robot-option", type=_option, action="append", default=[], metavar="KEY=VALUE",
                    help="extra backend option (repeatable), e.g. cmd_vel_stamped=true")
     p.add_argument("--translator", default="offline", help="offline (default), gemini, openai, local, auto")
-    p.add_argument("--seed", type=int, default=0, help="random seed of the simulated lidar noise")
-    p.add_argument("--timeout", type=float, default=DEFAULT_EXPLORE_TIMEOUT_S,
+    p.add_argument("--seed", type=seed_arg, default=0, help="random seed of the simulated lidar noise")
+    p.add_argument("--timeout", type=seconds_arg, default=DEFAULT_EXPLORE_TIMEOUT_S,
                    help="give up on the whole plan after this many seconds (robot time in the simulator)")
     p.add_argument("--json", action="store_true", help="one JSON object per line")
 
