@@ -3,6 +3,12 @@
 :func:`segment_spaces` splits the free space of a grid into spaces at its doorways (see
 :mod:`langnav.analysis.seg_core` for the method), tells hallways from rooms, and finds the
 doorways between spaces and into unexplored territory (:mod:`langnav.analysis.seg_doors`).
+
+After the split, each space takes the rest of its floor: the scanned cells too thin to flood
+(laser rays across an unscanned part of a room, broken into dashes: they join the space they
+reach without crossing a wall), then the unknown those rays and its walls enclose, its small
+enclosed pockets, and the unscanned notches between its rays. Openings between two spaces that
+are too narrow for the robot are reported apart (``Segmentation.narrow_doors``).
 Every threshold is a named parameter in metres (:class:`AnalysisParams`), so the result does
 not depend on the grid's resolution.
 """
