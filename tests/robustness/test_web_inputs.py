@@ -213,3 +213,11 @@ def test_a_crashing_analysis_keeps_the_session_up(tmp_path: Path, monkeypatch: p
         monkeypatch.setattr(pipeline, "analyze", boom)
         assert session._analyze(session.robot.get_map()) is None
         assert c.get("/api/status").status_code == 200
+
+
+def test_settings_refuse_a_start_pose_that_is_not_finite() -> None:
+    from langnav.web.settings import SettingsError
+
+    with pytest.raises(SettingsError, match="start_pose must be three finite numbers"):
+        WebSettings.from_env(environ={}, start_pose=(float("nan"), 0.0, 0.0))
+    assert WebSettings.from_env(environ={}, start_pose=(1.0, 2.0, 90.0)).start_pose == (1.0, 2.0, 90.0)

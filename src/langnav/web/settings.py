@@ -8,6 +8,7 @@ the app requires a token for every request that moves the robot (see :mod:`langn
 from __future__ import annotations
 
 import ipaddress
+import math
 import os
 import secrets
 from pathlib import Path
@@ -78,6 +79,13 @@ class WebSettings(BaseModel):
         if not v.strip():
             raise ValueError("host must not be empty; use 127.0.0.1 to serve this machine only")
         return v.strip()
+
+    @field_validator("start_pose")
+    @classmethod
+    def _pose_finite(cls, v: tuple[float, float, float] | None) -> tuple[float, float, float] | None:
+        if v is not None and not all(math.isfinite(c) for c in v):
+            raise ValueError(f"start_pose must be three finite numbers (x_m, y_m, yaw_deg), got {v}")
+        return v
 
     @property
     def requires_token(self) -> bool:
