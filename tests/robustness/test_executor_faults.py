@@ -4,7 +4,6 @@ reason and the robot is stopped; nothing raises."""
 
 from __future__ import annotations
 
-import threading
 from typing import Any
 
 import numpy as np
@@ -35,17 +34,8 @@ def robot() -> SimBackend:
     return create_sim(_world(), (1.0, 1.0, 0.0), known_map=True)
 
 
-class Events:
-    def __init__(self) -> None:
-        self.events: list[ExecEvent] = []
-        self.lock = threading.Lock()
-
-    def __call__(self, ev: ExecEvent) -> None:
-        with self.lock:
-            self.events.append(ev)
-
-    def of(self, kind: EventKind) -> list[ExecEvent]:
-        return [e for e in self.events if e.kind is kind]
+def _of(events: list[ExecEvent], kind: EventKind) -> list[ExecEvent]:
+    return [e for e in events if e.kind is kind]
 
 
 def test_controls_twice_and_when_idle(robot: SimBackend) -> None:
@@ -69,11 +59,11 @@ def test_controls_twice_and_when_idle(robot: SimBackend) -> None:
 
 
 def test_a_timeout_names_its_budget(robot: SimBackend) -> None:
-    ev = Events()
+    ev: list[ExecEvent] = []
     cfg = ExecutorConfig(poll_s=0.1, move_timeout_s=0.5)
-    assert PlanExecutor(robot, cfg).run([Move(direction="forward", repeat=150)], on_event=ev,
+    assert PlanExecutor(robot, cfg).run([Move(direction="forward", repeat=150)], on_event=ev.append,
                                         timeout_s=WAIT_S) is PlanStatus.FAILED
-    (failed,) = ev.of(EventKind.FAILED)
+    (failed,) = _of(ev, EventKind.FAILED)
     assert failed.message == "timed out after 0.5 s; the robot stopped"
     assert robot.linear_mps == 0.0
 
@@ -101,8 +91,8 @@ class _LostHandle:
         return self.inner.wait(timeout_s)
 
 
-class _LosingRobot:
-    """The simulator, but the link drops during a Move; counts the stops it is sent."""
+class _Wrapped:
+    """The simulator with some of its methods replaced by a subclass."""
 
     def __init__(self, sim: SimBackend) -> None:
         self.sim = sim
@@ -110,6 +100,10 @@ class _LosingRobot:
 
     def __getattr__(self, name: str) -> Any:
         return getattr(self.sim, name)
+
+
+class _LosingRobot(_Wrapped):
+    """The simulator, but the link drops during a Move; counts the stops it is sent."""
 
     def move(self, direction: str, steps: int) -> TaskHandle:
         return _LostHandle(self.sim.move(direction, steps))
@@ -123,9 +117,9 @@ def test_a_connection_lost_mid_command_stops_the_robot(robot: SimBackend) -> Non
     robot.start(realtime=True)
     try:
         flaky = _LosingRobot(robot)
-        ev = Events()
+        ev: list[ExecEvent] = []
         run = PlanExecutor(flaky, ExecutorConfig(poll_s=0.05)).start(  # type: ignore[arg-type]
-            [Move(direction="forward", repeat=150)], on_event=ev)
+            [Move(direction="forward", repeat=150)], on_event=ev.append)
         assert run.wait(WAIT_S) is PlanStatus.FAILED
         assert run.message == "the connection to the robot was lost"
         assert flaky.stops >= 1
@@ -134,15 +128,8 @@ def test_a_connection_lost_mid_command_stops_the_robot(robot: SimBackend) -> Non
         robot.close()
 
 
-class _ShrinkingMap:
-    """The simulator, but after the first step its map has lost all its free space."""
-
-    def __init__(self, sim: SimBackend) -> None:
-        self.sim = sim
-        self.maps = 0
-
-    def __getattr__(self, name: str) -> Any:
-        return getattr(self.sim, name)
+class _ShrinkingMap(_Wrapped):
+    """The simulator, but its map has lost all its free space (as seen when re-grounding)."""
 
     def get_map(self, timeout_s: float = 5.0) -> OccupancyGrid:
         grid = self.sim.get_map(timeout_s)
@@ -154,14 +141,14 @@ def test_regrounding_on_a_changed_map_fails_the_plan_with_the_reason(robot: SimB
     result = planner.plan("turn left 30 degrees then go to the middle of the room", robot.get_map(),
                           (1.0, 1.0, 0.0))
     assert result.ok, result.clarification
-    ev = Events()
+    ev: list[ExecEvent] = []
     wrapped = _ShrinkingMap(robot)
-    status = PlanExecutor(wrapped).run(result.items, on_event=ev, timeout_s=WAIT_S)  # type: ignore[arg-type]
+    status = PlanExecutor(wrapped).run(result.items, on_event=ev.append, timeout_s=WAIT_S)  # type: ignore[arg-type]
     assert status is PlanStatus.FAILED
-    (failed,) = ev.of(EventKind.FAILED)
+    (failed,) = _of(ev, EventKind.FAILED)
     assert failed.message.startswith("could not re-plan this step from here: ")
     assert "no free space" in failed.message
-    assert [e.kind for e in ev.events if e.kind is EventKind.STARTED] == [EventKind.STARTED]  # only the turn
+    assert [e.kind for e in ev if e.kind is EventKind.STARTED] == [EventKind.STARTED]  # only the turn
     assert robot.linear_mps == 0.0
 
 
