@@ -190,3 +190,14 @@ def test_eval_report_to_an_unwritable_place(tmp_path: Path, capsys: pytest.Captu
     assert code == 1
     assert "prompt accuracy" in out  # the table was printed before the report failed
     assert err.startswith("langnav eval: ") and "afile" in err
+
+
+@pytest.mark.parametrize("command", ["run", "translate"])
+def test_run_and_translate_name_a_broken_map(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                             command: str) -> None:
+    bad = _world(tmp_path, "bad", origin="[0, .nan, 0]")
+    argv = (["run", "--world", str(bad), "stop"] if command == "run"
+            else ["translate", "--map", str(bad), "--pose=1,1,0", "stop"])
+    code, _, err = _run(argv, capsys)
+    assert code == 2
+    assert err.startswith(f"langnav {command}: {bad}: origin must be [x, y, yaw]")
