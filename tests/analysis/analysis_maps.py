@@ -47,3 +47,49 @@ def two_rooms_partition() -> OccupancyGrid:
     b.box(1.0, 1.2, 1.6, 1.8)
     b.rect(5.0, 2.0, 5.05, 2.05, OCCUPIED)  # one occupied cell: noise, not an obstacle
     return b.build(source="two_rooms_partition")
+
+
+def room_beside_corridor(exit_door: bool = True) -> OccupancyGrid:
+    """A 5 x 4.5 m room and, east of it across one wall, a 1.3 m wide corridor of the same length:
+    a 1.0 m door between them at y = 1.5, and (``exit_door``) a 0.8 m door in the corridor's
+    short south wall onto the unknown outside (that wall is then mostly doorway)."""
+    b = MapBuilder(9.0, 7.0, origin=(-1.0, -1.5))
+    b.room(0.0, 0.0, 5.0, 4.5)
+    b.room(5.15, 0.0, 6.45, 4.5)
+    b.door_v(5.075, 1.5, 1.0)
+    if exit_door:
+        b.door_h(5.8, -0.075, 0.8)
+    return b.build(source="room_beside_corridor")
+
+
+def door_beside_corner() -> OccupancyGrid:
+    """A 5 x 4 m room whose 0.9 m north door is flush with its west wall (no jamb between them),
+    opening into a 5 x 2 m room north of it; a 1.2 x 1.0 m unscanned patch covers the south-east
+    corner of the first room."""
+    b = MapBuilder(7.0, 8.5, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 5.0, 4.0)
+    b.room(0.0, 4.15, 5.0, 6.15)
+    b.door_h(0.45, 4.075, 0.9)
+    b.unknown(3.8, 0.0, 5.0, 1.0)
+    return b.build(source="door_beside_corner")
+
+
+def l_room_and_closed_room() -> OccupancyGrid:
+    """The L-shaped room of :func:`l_room` with its notch (2.15..4, 2.15..4) a closed room of its
+    own: the L's walls lines cross in that room, which is no corner of the L."""
+    b = MapBuilder(6.0, 6.0, origin=(-1.0, -1.0))
+    b.rect(-0.15, -0.15, 4.15, 4.15, OCCUPIED)
+    b.free(0.0, 0.0, 4.0, 2.0).free(0.0, 0.0, 2.0, 4.0)
+    b.free(2.15, 2.15, 4.0, 4.0)
+    return b.build(source="l_room_and_closed_room")
+
+
+def shelf_off_wall(gap_m: float = 0.7, shelf_length_m: float = 3.0) -> OccupancyGrid:
+    """A 6 x 5 m room with a door; a 0.3 m deep shelf ``shelf_length_m`` long stands ``gap_m`` off
+    its west wall (x = 0), from y = 1.0: the strip between them is a narrow passage when it is
+    narrow and long enough."""
+    b = MapBuilder(8.0, 7.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 6.0, 5.0)
+    b.door_v(6.075, 2.5, 0.9)
+    b.box(gap_m, 1.0, gap_m + 0.3, 1.0 + shelf_length_m)
+    return b.build(source="shelf_off_wall")

@@ -10,7 +10,16 @@ import math
 
 import numpy as np
 import pytest
-from analysis_maps import corridor_with_side_passage, l_room, room_with_door, two_rooms_partition
+from analysis_maps import (
+    corridor_with_side_passage,
+    door_beside_corner,
+    l_room,
+    l_room_and_closed_room,
+    room_beside_corridor,
+    room_with_door,
+    shelf_off_wall,
+    two_rooms_partition,
+)
 
 from langnav.analysis.corners import find_corners
 from langnav.analysis.obstacles import find_obstacles
@@ -52,8 +61,8 @@ def test_room_walls_are_its_four_sides_door_included() -> None:
     walls = find_walls(grid, P, labels, ids, wall=grid.occupied & ~obst.mask)
     corners, walls = find_corners(grid, P, walls, labels, {v: k for k, v in ids.items()})
     got = sorted(seg(rounded(w.start), rounded(w.end)) for w in walls)
-    # West wall stops where the unscanned patch begins; north wall likewise. The east wall runs
-    # across the door (a door does not break a wall).
+    # West wall stops where the unscanned patch begins; north wall likewise (walls are what was
+    # seen). The east wall runs across the door (a door does not break a wall).
     assert got == sorted([
         seg((0.0, 0.0), (4.0, 0.0)), seg((4.0, 0.0), (4.0, 3.0)),
         seg((1.0, 3.0), (4.0, 3.0)), seg((0.0, 0.0), (0.0, 2.0)),
@@ -61,7 +70,9 @@ def test_room_walls_are_its_four_sides_door_included() -> None:
     inward = {seg(rounded(w.start), rounded(w.end)): rounded(w.inward) for w in walls}
     assert inward[seg((0.0, 0.0), (4.0, 0.0))] == (0.0, 1.0)
     assert inward[seg((4.0, 0.0), (4.0, 3.0))] == (-1.0, 0.0)
-    assert sorted(rounded(c.point) for c in corners) == [(0.0, 0.0), (4.0, 0.0), (4.0, 3.0)]
+    # The north-west corner is under the unscanned patch: the west and north walls, followed
+    # across it, still meet there.
+    assert sorted(rounded(c.point) for c in corners) == [(0.0, 0.0), (0.0, 3.0), (4.0, 0.0), (4.0, 3.0)]
     assert all(w.room == "space_1" for w in walls)
 
 
@@ -74,6 +85,70 @@ def test_l_room_has_six_walls_and_five_inner_corners() -> None:
     ])
     # The elbow (2, 2) is convex seen from inside: not a corner a person can stand in.
     assert sorted(rounded(c.point) for c in corners) == [(0.0, 0.0), (0.0, 4.0), (2.0, 4.0), (4.0, 0.0), (4.0, 2.0)]
+
+
+def snap(p: tuple[float, float]) -> tuple[float, float]:
+    """A point to the nearest 5 cm (fitted walls sit within a cell of the drawn ones)."""
+    return (round(round(p[0] / 0.05) * 0.05, 2) + 0.0, round(round(p[1] / 0.05) * 0.05, 2) + 0.0)
+
+
+def split_labels(grid: OccupancyGrid, axis: int, at_m: float) -> np.ndarray:
+    """Hand labels for two spaces: free cells below ``at_m`` along x (axis 0) or y (axis 1) are
+    space 1, the others space 2 (as a segmentation would cut at the doorway)."""
+    rows, cols = np.nonzero(grid.free)
+    xy = grid.cell_to_world(rows, cols)
+    hand = np.zeros(grid.cells.shape, dtype=np.int32)
+    hand[rows, cols] = np.where(xy[axis] < at_m, 1, 2)
+    return hand
+
+
+def walls_and_corners_of(grid: OccupancyGrid, labels: np.ndarray, ids: dict[int, str]):
+    walls = find_walls(grid, P, labels, ids)
+    return find_corners(grid, P, walls, labels, {v: k for k, v in ids.items()})
+
+
+def test_every_side_of_a_room_and_its_corridor_is_a_wall() -> None:
+    # A door jamb in a side wall faces the same way as the end wall beyond it: the end wall's
+    # line must still be found wherever its face falls within a cell.
+    grid = room_beside_corridor(exit_door=False)
+    ids = {1: "room", 2: "corridor"}
+    corners, walls = walls_and_corners_of(grid, split_labels(grid, 0, 5.075), ids)
+    got = sorted((w.room, seg(snap(w.start), snap(w.end))) for w in walls)
+    assert got == sorted([
+        ("room", seg((0.0, 0.0), (5.0, 0.0))), ("room", seg((5.0, 0.0), (5.0, 4.5))),
+        ("room", seg((0.0, 4.5), (5.0, 4.5))), ("room", seg((0.0, 0.0), (0.0, 4.5))),
+        ("corridor", seg((5.15, 0.0), (6.45, 0.0))), ("corridor", seg((6.45, 0.0), (6.45, 4.5))),
+        ("corridor", seg((5.15, 4.5), (6.45, 4.5))), ("corridor", seg((5.15, 0.0), (5.15, 4.5))),
+    ])
+    assert sorted((c.room, snap(c.point)) for c in corners) == sorted(
+        [("room", p) for p in ((0.0, 0.0), (5.0, 0.0), (0.0, 4.5), (5.0, 4.5))]
+        + [("corridor", p) for p in ((5.15, 0.0), (6.45, 0.0), (5.15, 4.5), (6.45, 4.5))])
+
+
+def test_corner_beside_a_door_and_under_an_unscanned_patch() -> None:
+    # The north door is flush with the west wall; an unscanned patch covers the south-east corner.
+    grid = door_beside_corner()
+    ids = {1: "south", 2: "north"}
+    corners, walls = walls_and_corners_of(grid, split_labels(grid, 1, 4.075), ids)
+    south = sorted(snap(c.point) for c in corners if c.room == "south")
+    assert south == [(0.0, 0.0), (0.0, 4.0), (5.0, 0.0), (5.0, 4.0)]
+    north = sorted(snap(c.point) for c in corners if c.room == "north")
+    assert north == [(0.0, 4.15), (0.0, 6.15), (5.0, 4.15), (5.0, 6.15)]
+    # Walls keep the ends that were seen: the north wall of the south room starts at the door.
+    north_wall = [w for w in walls if w.room == "south" and abs(w.start[1] - 4.0) < 0.05 and abs(w.end[1] - 4.0) < 0.05]
+    assert len(north_wall) == 1
+    assert min(north_wall[0].start[0], north_wall[0].end[0]) == pytest.approx(0.95, abs=0.06)
+
+
+def test_wall_lines_crossing_in_another_room_are_no_corner() -> None:
+    # The L's north and east walls, prolonged, cross at (4, 4): inside the closed room in its notch.
+    grid = l_room_and_closed_room()
+    labels, ids = spaces(grid)
+    corners, _walls = walls_and_corners_of(grid, labels, ids)
+    assert sorted(rounded(c.point) for c in corners if c.room == "space_1") == [
+        (0.0, 0.0), (0.0, 4.0), (2.0, 4.0), (4.0, 0.0), (4.0, 2.0)]
+    assert sorted(rounded(c.point) for c in corners if c.room == "space_2") == [
+        (2.15, 2.15), (2.15, 4.0), (4.0, 2.15), (4.0, 4.0)]
 
 
 def test_corner_approach_is_clear_inside_and_near() -> None:
@@ -171,3 +246,25 @@ def test_doorway_and_wide_gaps_are_not_passages() -> None:
     labels, ids = spaces(grid)
     blocking = grid.occupied | grid.unknown
     assert find_passages(grid, P, labels, ids, [], blocking) == ()
+
+
+def passages_of(grid: OccupancyGrid):
+    labels, ids = spaces(grid)
+    return find_passages(grid, P, labels, ids, [], grid.occupied | grid.unknown)
+
+
+def test_passage_between_a_wall_and_a_long_shelf() -> None:
+    # Its skeleton line runs on along the room's walls (one-sided there): the two-sided stretch
+    # between the wall and the shelf is the passage.
+    (p,) = passages_of(shelf_off_wall(0.7, 3.0))
+    assert p.width_m == pytest.approx(0.7, abs=1e-6)
+    assert p.center == pytest.approx((0.35, 2.5), abs=0.05)
+    # Its two-sided stretch stops short of the flaring mouths (by up to about a width at each).
+    assert 2.4 <= p.length_m <= 3.1
+    assert p.connects == ("space_1",)
+
+
+@pytest.mark.parametrize(("gap_m", "shelf_m"), [(1.3, 3.0), (0.7, 1.0)])
+def test_wide_or_short_gap_beside_a_shelf_is_no_passage(gap_m: float, shelf_m: float) -> None:
+    # Wider than a passage, or not clearly longer than wide.
+    assert passages_of(shelf_off_wall(gap_m, shelf_m)) == ()

@@ -6,7 +6,10 @@ width is between the robot's diameter and ``params.passage_max_width_m`` form ca
 A chain's *core* is where the width stays close to its narrowest (the stretch between two
 parallel sides, without the flaring mouths). A core is a passage when it is longer than
 ``params.passage_min_length_m`` and clearly longer than wide (a short gap beside a chair is a
-gap, not a passage), and it is not a doorway.
+gap, not a passage), has sides along most of its length, and it is not a doorway. A passage
+along a wall (between the wall and a long shelf) shares its skeleton line with the one-sided
+strip along the rest of the room's walls: a core without sides along most of its length is
+split into its two-sided stretches, and each is judged on its own.
 """
 
 from __future__ import annotations
@@ -46,6 +49,10 @@ SIDE_TOL_M: Final = 0.15
 #: A passage axis within this (degrees) of a grid axis is taken as that axis: pixel noise tilts
 #: the fitted axis of a straight passage by a degree or two.
 AXIS_SNAP_DEG: Final = 3.0
+#: A core that is not bounded along most of its length is split into its two-sided stretches,
+#: each cell tried across this many directions over 180 degrees (22.5 degrees apart: the side
+#: of a passage at any angle is within 11.25 degrees, 2 % farther, of one of them).
+TWO_SIDED_DIRECTIONS: Final = 8
 #: Look this far beyond a mouth for the space the passage opens into.
 MOUTH_SEARCH_M: Final = 1.0
 
@@ -120,12 +127,27 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     # Each core's cells, in raster order.
     by_core = np.argsort(core_id, kind="stable")
     core_start = np.searchsorted(core_id[by_core], np.arange(m + 2))
+    pieces: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], bool]] = []
     for k in long_enough.tolist():
         sl = boxes[k]
         if math.hypot(sl[0].stop - sl[0].start, sl[1].stop - sl[1].start) < min_cells:
             continue
         cells = by_core[core_start[k]:core_start[k + 1]]
-        rr, cc = core_r[cells], core_c[cells]
+        pieces.append((core_r[cells], core_c[cells], True))
+    # Ridge cells of the cores without sides along most of their length, split after the cores.
+    retry_r: list[npt.NDArray[np.intp]] = []
+    retry_c: list[npt.NDArray[np.intp]] = []
+    while pieces or retry_r:
+        if not pieces:
+            # A passage along a wall shares its skeleton line with the strip along the rest of
+            # that wall (the same width from the wall): its two-sided stretches, judged alone.
+            ar, ac = np.concatenate(retry_r), np.concatenate(retry_c)
+            retry_r, retry_c = [], []
+            long_r, long_c = _join(_pieces(ar, ac, sub.shape, min_cells))
+            two_r, two_c = _two_sided(sub, long_r, long_c, dist_of[d2[long_r, long_c]] / res, SIDE_TOL_M / res)
+            pieces = [(pr, pc, False) for pr, pc in _pieces(two_r, two_c, sub.shape, min_cells)]
+            continue
+        rr, cc, whole_core = pieces.pop(0)
         if len(rr) < 2:
             continue
         pts = np.stack([cc + 0.5, rr + 0.5], axis=1).astype(float)
@@ -148,6 +170,10 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                                 SIDE_TOL_M / res)
         bounded = np.isfinite(sides).all(axis=1)
         if bounded.mean() < MIN_BOUNDED_FRACTION:
+            if whole_core and len(rr) * math.sqrt(2) >= min_cells:
+                across = _across_ridge(d2, rr, cc)
+                retry_r.append(rr[across])
+                retry_c.append(cc[across])
             continue
         # Width: across the passage between its two sides (exact for axis-aligned sides).
         width_m = (median(sides[bounded].sum(axis=1)) - 0.5) * res
@@ -183,6 +209,67 @@ def _ridge(d: npt.NDArray[np.integer] | npt.NDArray[np.floating]) -> BoolArray:
     for (r_a, c_a), (r_b, c_b) in (((1, 0), (1, 2)), ((0, 0), (2, 2)), ((0, 2), (2, 0))):
         np.minimum(lowest, np.maximum(p[r_a:r_a + h, c_a:c_a + w], p[r_b:r_b + h, c_b:c_b + w]), out=lowest)
     return (d >= lowest) & (d > 0)
+
+
+def _across_ridge(d: npt.NDArray[np.integer], rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp]) -> BoolArray:
+    """Per cell: is its value >= both neighbours along one of the four directions, and > one of
+    them? A ridge across, not a plateau along a wall (the strip beside a single wall is level
+    along the wall and rises away from it). A cheap necessary test for a cell with two sides."""
+    h, w = d.shape
+    v = d[rr, cc]
+    near_r = {k: np.clip(rr + k, 0, h - 1) for k in (-1, 0, 1)}
+    near_c = {k: np.clip(cc + k, 0, w - 1) for k in (-1, 0, 1)}
+    out = np.zeros(len(rr), dtype=bool)
+    for dr, dc in ((0, 1), (1, 0), (1, 1), (1, -1)):
+        a = d[near_r[dr], near_c[dc]]
+        b = d[near_r[-dr], near_c[-dc]]
+        out |= (v >= a) & (v >= b) & ((v > a) | (v > b))
+    return out
+
+
+def _pieces(rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp], shape: tuple[int, int], min_cells: float
+            ) -> list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]]:
+    """The 8-connected pieces of a set of cells that may span ``min_cells`` (n cells span at most
+    n * sqrt(2), and at most their bounding box's diagonal)."""
+    if len(rr) == 0:
+        return []
+    flat = np.sort(rr * shape[1] + cc)
+    ids, n = label8_cells(flat, shape)
+    rows, cols = np.divmod(flat, shape[1])
+    out = []
+    for i in np.flatnonzero(np.bincount(ids, minlength=n + 1) * math.sqrt(2) >= min_cells).tolist():
+        if i == 0:
+            continue
+        sel = ids == i
+        pr, pc = rows[sel], cols[sel]
+        if math.hypot(int(pr.max()) - int(pr.min()) + 1, int(pc.max()) - int(pc.min()) + 1) >= min_cells:
+            out.append((pr, pc))
+    return out
+
+
+def _join(pieces: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]]
+          ) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]:
+    """All the cells of some pieces, as one (rows, cols) pair."""
+    if not pieces:
+        empty = np.zeros(0, dtype=np.intp)
+        return empty, empty
+    return np.concatenate([p[0] for p in pieces]), np.concatenate([p[1] for p in pieces])
+
+
+def _two_sided(open_: BoolArray, rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp],
+               reach: npt.NDArray[np.float64], tol_cells: float) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]:
+    """The skeleton cells (rows ``rr``, cols ``cc``) with blocking cells within their half-width
+    ``reach`` + ``tol_cells`` on two opposite sides, along one of ``TWO_SIDED_DIRECTIONS``
+    directions (a cell beside one wall has a single side)."""
+    if len(rr) == 0:
+        return rr, cc
+    pts = np.stack([cc + 0.5, rr + 0.5], axis=1).astype(float)
+    two_sided = np.zeros(len(pts), dtype=bool)
+    for k in range(TWO_SIDED_DIRECTIONS):
+        a = math.pi * k / TWO_SIDED_DIRECTIONS
+        sides = _side_distances(open_, pts, reach, np.array([math.cos(a), math.sin(a)]), tol_cells)
+        two_sided |= np.isfinite(sides).all(axis=1)
+    return rr[two_sided], cc[two_sided]
 
 
 def _side_distances(open_: BoolArray, pts: npt.NDArray[np.float64], reach: npt.NDArray[np.float64],

@@ -5,7 +5,8 @@ wall is the gradient of the lightly smoothed wall mask; the *face point* is on t
 towards the wall. Per space, face points are grouped by direction (histogram peaks), then by
 offset along that direction (points within ``params.wall_max_deviation_m`` of one line), then
 split along the line where the gap is wider than a doorway (a door does not break a wall: the
-wall of a room is the whole side). Runs shorter than ``params.wall_min_length_m`` are dropped.
+wall of a room is the whole side). Runs shorter than ``params.wall_min_length_m``, or solid for
+less than half their length outside their widest opening, are dropped.
 Everything is computed in grid coordinates and turned into world metres at the end, so a map
 with a rotated origin gives rotated walls.
 """
@@ -44,6 +45,9 @@ DIRECTION_BIN_DEG: Final = 5.0
 DIRECTION_TOL_DEG: Final = 20.0
 #: Face points within this of the group direction (degrees) define the fitted line.
 REFIT_TOL_DEG: Final = 5.0
+#: A wall run is solid (face points per cell of length) for at least this share of its length
+#: outside its widest opening (a door does not make a wall sparse; scattered clutter does).
+MIN_SOLID_FRACTION: Final = 0.5
 #: At most this many lines are taken out of one direction group (guards noisy real maps).
 MAX_LINES_PER_DIRECTION: Final = 200
 
@@ -212,7 +216,8 @@ def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
     max_dev = max(params.wall_max_deviation_m / res, 0.5)
     max_gap = params.door_max_width_m / res + 1.0
     # Counting points within +-max_dev of each offset bin: a box kernel that wide.
-    window = np.ones(2 * math.ceil(max_dev) + 1)
+    half = math.ceil(max_dev)
+    window = np.ones(2 * half + 1)
     lines: list[WallLine] = []
     if len(x) == 0:
         return lines
@@ -241,13 +246,15 @@ def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
                 r_rem = rho[remaining]
                 base = math.floor(float(r_rem.min()))
                 hist = np.bincount((r_rem - base).astype(int))
-                # Count within +-max_dev of each bin: the densest line offset.
-                dens = np.convolve(hist, window, mode="same")
-                centre = base + float(np.argmax(dens)) + 0.5
-                member = remaining & (np.abs(rho - centre) <= max_dev)
-                if not member.any():
-                    break
-                centre = median(rho[member])
+                # Count within +-half of each bin (bin k: "full" output k + half): the densest
+                # line offset. Of tied bins take the middle one (a compact line ties every bin
+                # whose window holds it; the first of them is off by the half window), then the
+                # median of the points in its window.
+                dens = np.convolve(hist, window, mode="full")[half:half + len(hist)]
+                ties = np.flatnonzero(dens == dens.max())
+                k = int(ties[len(ties) // 2])
+                in_window = remaining & (rho >= base + k - half) & (rho < base + k + half + 1)
+                centre = median(rho[in_window])
                 member = remaining & (np.abs(rho - centre) <= max_dev)
                 remaining &= ~member
                 if np.count_nonzero(member) < min_len * 0.5:
@@ -267,7 +274,12 @@ def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
                     # Face points are cell centres projected on the face: the run covers half a
                     # cell more at each end.
                     s0, s1 = float(s_m[a]) - 0.5, float(s_m[b]) + 0.5
-                    if s1 - s0 >= min_len and (b - a + 1) >= 0.5 * (s1 - s0):
+                    # Solid for at least half its length not counting its widest opening (a
+                    # short wall that is mostly a doorway, as at a corridor's end, is still a
+                    # wall), and for at least half the shortest wall's length.
+                    opening = max(float(np.max(np.diff(s_m[a:b + 1]))) - 1.0, 0.0) if b > a else 0.0
+                    solid_needed = MIN_SOLID_FRACTION * max(s1 - s0 - opening, min_len)
+                    if s1 - s0 >= min_len and (b - a + 1) >= solid_needed:
                         lines.append(WallLine(int(space), (m_nx, m_ny), m_centre, s0, s1))
     return lines
 
