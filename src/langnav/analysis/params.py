@@ -61,6 +61,14 @@ class AnalysisParams:
     #: the corridor's width: the opening's clearance exceeds the wider half-width / this ratio
     #: (a corridor narrowed by cabinets or a pillar, not a door; 0 switches it off).
     seg_corridor_saddle_ratio: float = 1.8
+    #: Segmentation: an opening between two spaces wider than a door, up to this width (m), still
+    #: separates them when it is a gap in a wall line (0 switches it off); it is reported as a
+    #: door (an opening) of that width.
+    seg_wall_gap_max_width_m: float = 3.0
+    #: Segmentation: ... a gap in a wall line: the wall runs on straight past both jambs for this
+    #: length (m), non-floor on at least this share of it (scanned walls have holes).
+    seg_wall_line_min_length_m: float = 1.0
+    seg_wall_line_min_share: float = 0.8
     #: Segmentation: an unknown region enclosed by a room counts in its area up to this size (m2;
     #: an unscanned corner or half of a room), never a courtyard inside a corridor loop.
     seg_enclosed_unknown_max_area_m2: float = 30.0

@@ -18,6 +18,9 @@ and merging steps of ROSE², RA-L 2022):
    Two narrow spaces meeting through an opening nearly as wide as they are stay one corridor;
    so do two pieces of a corridor, judged on their typical width (twice the mean clearance)
    rather than their peak, which junctions and door recesses raise.
+   An opening wider than a door (up to ``seg_wall_gap_max_width_m``) still separates two
+   spaces that rise above it when it is a gap in a wall line: the wall runs on straight past
+   both of its jambs (ROSE²'s rooms bounded by the building's wall lines, in local form).
 5. *Jambs*: the widest opening left between two spaces must be cut in a wall: both of its jambs
    belong to the wall network or to a wall stub running along the gap (:class:`JambJudge`).
 6. A space whose opening is wide for its size (``seg_merge_gap_ratio``) and pieces smaller than
@@ -272,6 +275,30 @@ class JambJudge:
         j = int(np.flatnonzero(opposite)[np.argmin(d2[opposite])])
         return (int(rr[i] + r0), int(cc[i] + c0)), (int(rr[j] + r0), int(cc[j] + c0))
 
+    def on_wall_line(self, row: int, col: int, clearance_m: float, length_m: float,
+                     min_share: float) -> bool:
+        """Does the wall run on straight past both jambs of the crossing at (row, col), for
+        ``length_m`` with non-floor on at least ``min_share`` of it (a gap in a wall line)?"""
+        jj = self.jambs(row, col, clearance_m)
+        if jj is None:
+            return False
+        (r1, c1), (r2, c2) = jj
+        n = math.hypot(r2 - r1, c2 - c1) or 1.0
+        tr, tc = (r2 - r1) / n, (c2 - c1) / n
+        steps = np.arange(1, max(2, round(length_m / self.res)) + 1, dtype=float)
+        h, w = self.obstacle.shape
+        for (jr, jc), sign in (((r1, c1), -1.0), ((r2, c2), 1.0)):
+            hit = np.zeros(steps.size, dtype=bool)
+            for off in (-1.0, 0.0, 1.0):  # a cell either side of the line: walls are not ruled
+                rr = np.rint(jr + sign * tr * steps - tc * off).astype(np.int64)
+                cc = np.rint(jc + sign * tc * steps + tr * off).astype(np.int64)
+                inside = (rr >= 0) & (rr < h) & (cc >= 0) & (cc < w)
+                hit[inside] |= self.obstacle[rr[inside], cc[inside]]
+                hit[~inside] = True
+            if hit.mean() < min_share:
+                return False
+        return True
+
     def is_doorway(self, row: int, col: int, clearance_m: float) -> bool:
         jj = self.jambs(row, col, clearance_m)
         if jj is None:
@@ -314,6 +341,7 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
     # A doorway's saddle clearance is about half its width (cell centres: + half a cell).
     door_clear_max = (params.door_max_width_m + resolution_m) / 2
     hallway_peak_max = params.hallway_max_width_m / 2
+    wall_gap_clear_max = (params.seg_wall_gap_max_width_m + resolution_m) / 2
     uf = _UnionFind(n)
     peak_l = peak.tolist()
     area_l = area.tolist()
@@ -349,6 +377,14 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
                             for r, w in ((ra, wa), (rb, wb)))
             corridor = elongated and max(wa, wb) <= hallway_peak_max and \
                 max(wa, wb) < s * params.seg_corridor_saddle_ratio
+        # An opening wider than a door is still a boundary where it is a gap in a wall line
+        # (an open front, a glass wall): the wall runs on straight past both of its ends.
+        if judge is not None and not corridor and door_clear_max < s <= wall_gap_clear_max \
+                and low - s >= params.seg_persistence_m and \
+                judge.on_wall_line(int(loc_arr[i]) // width, int(loc_arr[i]) % width, s,
+                                   params.seg_wall_line_min_length_m, params.seg_wall_line_min_share):
+            kept.append((a, b, s, int(loc_arr[i])))
+            continue
         if s > door_clear_max or low - s < params.seg_persistence_m or \
                 low < s * params.seg_peak_saddle_ratio or corridor:
             join(ra, rb)
