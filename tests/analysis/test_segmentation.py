@@ -348,3 +348,26 @@ def test_a_wide_gap_in_a_straight_wall_separates_two_rooms() -> None:
     assert len(one.rooms) == 1
     assert one.doors == ()
 
+
+
+def test_demo_world_door_off_the_hallway_stays_a_door() -> None:
+    """The bundled demo: a 1 m door with wall jambs in the hallway's north wall leads into the
+    furnished north room, whose low mean clearance (table, unscanned end) once made it look
+    like a piece of the hallway: the two were merged through the door."""
+    from langnav.maps.demo import build_demo_grid
+
+    grid = build_demo_grid()
+    seg = segment_spaces(grid)
+    kinds = sorted(r.kind.value for r in seg.rooms)
+    assert kinds == ["hallway", "room", "room", "room"]
+    hall = room_by_point(seg, grid, 1.5, 5.0)
+    north = room_by_point(seg, grid, 3.0, 7.5)
+    assert hall.kind == ElementKind.HALLWAY
+    assert north.kind == ElementKind.ROOM and north.id != hall.id
+    assert len(seg.doors) == 5
+    door = min(seg.doors, key=lambda d: math.dist(d.center, (4.0, 5.825)))
+    assert set(door.connects) == {hall.id, north.id}
+    assert door.center == pytest.approx((4.0, 5.825), abs=POS_TOL_M)
+    assert door.width_m == pytest.approx(1.0, abs=POS_TOL_M)
+    exits = [d for d in seg.doors if UNKNOWN_ID in d.connects]
+    assert len(exits) == 1 and exits[0].center[0] == pytest.approx(14.075, abs=POS_TOL_M)

@@ -309,6 +309,11 @@ class JambJudge:
         return all(self.structural(j, tangent) for j in jj)
 
 
+#: An opening whose jambs lie within 30 degrees of a corridor piece's long axis is in its side
+#: wall (a door off the corridor); one across the axis continues the corridor.
+_SIDE_OPENING_MIN_COS: Final = math.cos(math.radians(30.0))
+
+
 class _UnionFind:
     def __init__(self, n: int) -> None:
         self.parent = list(range(n))
@@ -336,6 +341,12 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
     # where it is long and narrow, whatever bulges (junctions, door recesses) raise its peak.
     clear_sum = np.bincount(flat, weights=clearance_m.ravel(), minlength=n)
     cells = np.bincount(flat, minlength=n).astype(float)
+    # First and second moments of each piece's cells (row, col): its long axis, to tell an
+    # opening across a corridor (it continues) from one in its side wall (a door off it).
+    rows_i, cols_i = np.indices(labels.shape)
+    rf, cf = rows_i.ravel().astype(float), cols_i.ravel().astype(float)
+    mom = [np.bincount(flat, weights=w, minlength=n).tolist()
+           for w in (rf, cf, rf * rf, cf * cf, rf * cf)]
     a_arr, b_arr, s_arr, loc_arr = adjacent_pairs(labels, clearance_m)
     width = labels.shape[1]
     # A doorway's saddle clearance is about half its width (cell centres: + half a cell).
@@ -357,6 +368,34 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
         area_l[ra] += area_l[rb]
         csum_l[ra] += csum_l[rb]
         cells_l[ra] += cells_l[rb]
+        for m in mom:
+            m[ra] += m[rb]
+
+    def axis_cos(r: int, tangent: tuple[float, float]) -> float:
+        """|cos| of the angle between ``tangent`` (unit, row/col) and piece ``r``'s long axis:
+        near 1 for an opening in its side wall, near 0 for a cut across it."""
+        k = max(cells_l[r], 1.0)
+        mr, mc = mom[0][r] / k, mom[1][r] / k
+        vrr, vcc = mom[2][r] / k - mr * mr, mom[3][r] / k - mc * mc
+        vrc = mom[4][r] / k - mr * mc
+        # Long axis: the covariance's main eigenvector (angle from the row axis).
+        theta = 0.5 * math.atan2(2.0 * vrc, vrr - vcc)
+        return abs(math.cos(theta) * tangent[0] + math.sin(theta) * tangent[1])
+
+    def side_door(loc: int, s: float, pieces: tuple[int, ...]) -> bool:
+        """Is the crossing at ``loc`` a doorway cut in walls along the side of one of the
+        corridor ``pieces`` (a room off a hallway: never a corridor narrowing)?"""
+        if judge is None or not pieces:
+            return False
+        row, col = loc // width, loc % width
+        jj = judge.jambs(row, col, s)
+        if jj is None or not judge.is_doorway(row, col, s):
+            return False
+        (r1, c1), (r2, c2) = jj
+        d = math.hypot(r2 - r1, c2 - c1) or 1.0
+        cos = [axis_cos(r, ((r2 - r1) / d, (c2 - c1) / d)) for r in pieces]
+        # Across one piece's axis: that piece ends there (a corridor's branch at a junction).
+        return max(cos) > _SIDE_OPENING_MIN_COS and min(cos) > _SIDE_OPENING_MIN_COS
 
     kept: list[tuple[int, int, float, int]] = []
     for i in np.argsort(-s_arr, kind="stable"):
@@ -373,10 +412,11 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
             wa, wb = half_width(ra), half_width(rb)
             # At least one of them is long for its width (a corridor piece, not a room whose
             # furniture lowers its mean clearance).
-            elongated = any(area_l[r] >= params.hallway_min_elongation * (2.0 * w) ** 2
-                            for r, w in ((ra, wa), (rb, wb)))
-            corridor = elongated and max(wa, wb) <= hallway_peak_max and \
-                max(wa, wb) < s * params.seg_corridor_saddle_ratio
+            long_pieces = tuple(r for r, w in ((ra, wa), (rb, wb))
+                                if area_l[r] >= params.hallway_min_elongation * (2.0 * w) ** 2)
+            corridor = bool(long_pieces) and max(wa, wb) <= hallway_peak_max and \
+                max(wa, wb) < s * params.seg_corridor_saddle_ratio and \
+                not side_door(int(loc_arr[i]), s, long_pieces)
         # An opening wider than a door is still a boundary where it is a gap in a wall line
         # (an open front, a glass wall): the wall runs on straight past both of its ends.
         if judge is not None and not corridor and door_clear_max < s <= wall_gap_clear_max \
