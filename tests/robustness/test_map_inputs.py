@@ -157,22 +157,12 @@ def test_one_cell_corridor() -> None:
     assert len(a.rooms) == 0  # narrower than the robot: no space it could use
 
 
-#: Not fixed here (src/langnav/analysis/ is its owners'): ``segmentation._shifted`` slices with a
-#: negative end when a shift is at least the grid's size (``_shifted(np.zeros((3, 7)), 0, 8, 0)``
-#: raises ValueError), so about half of all small random grids crash ``analyze``. Strict: once
-#: it is fixed these tests pass, fail as XPASS, and the marks must go.
-ANALYSIS_SHIFT_BUG = pytest.mark.xfail(raises=ValueError, strict=True,
-                                       reason="analysis/segmentation._shifted: shift >= grid size")
-
-
-@ANALYSIS_SHIFT_BUG
 def test_known_small_grid_that_crashes_analysis() -> None:
     rng = np.random.default_rng(2)
     cells = rng.choice(np.array([FREE, OCCUPIED, UNKNOWN]), size=(21, 7), p=[0.6, 0.25, 0.15])
     analyze(_grid(cells))
 
 
-@ANALYSIS_SHIFT_BUG
 @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.integers(1, 24), st.integers(1, 24), st.integers(0, 2**32 - 1))
 def test_random_small_grids_never_crash_analysis(h: int, w: int, seed: int) -> None:

@@ -233,6 +233,8 @@ def _shifted(a: npt.NDArray[np.int32], dr: int, dc: int, fill: int) -> npt.NDArr
     """``a`` moved so that out[r, c] = a[r + dr, c + dc] (``fill`` outside)."""
     out = np.full_like(a, fill)
     h, w = a.shape
+    if abs(dr) >= h or abs(dc) >= w:  # moved wholly off the grid: nothing of ``a`` is left
+        return out
     out[max(0, -dr):h - max(0, dr), max(0, -dc):w - max(0, dc)] = \
         a[max(0, dr):h - max(0, -dr), max(0, dc):w - max(0, -dc)]
     return out
