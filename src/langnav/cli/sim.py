@@ -16,6 +16,7 @@ import math
 import time
 from typing import Any
 
+from langnav.cli.options import pose_arg
 from langnav.robot.errors import RobotError
 from langnav.robot.protocol import Pose2D, create_backend
 from langnav.robot.rosbridge_server import RosbridgeServer
@@ -24,19 +25,9 @@ from langnav.robot.rosbridge_server import RosbridgeServer
 STATUS_PERIOD_S = 2.0
 
 
-def _pose(text: str) -> tuple[float, float, float]:
-    try:
-        parts = [float(v) for v in text.split(",")]
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"--pose is X,Y,YAW_DEG in metres and degrees, got {text!r}") from None
-    if len(parts) not in (2, 3) or not all(math.isfinite(v) for v in parts):
-        raise argparse.ArgumentTypeError(f"--pose is X,Y[,YAW_DEG] (finite numbers), got {text!r}")
-    return (parts[0], parts[1], parts[2] if len(parts) == 3 else 0.0)
-
-
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--world", required=True, help="ground-truth map (map_server YAML or image)")
-    parser.add_argument("--pose", type=_pose, default=None, help="start pose X,Y,YAW_DEG (default: the most open spot)")
+    parser.add_argument("--pose", type=pose_arg, default=None, help="start pose X,Y,YAW_DEG (default: the most open spot)")
     parser.add_argument("--known-map", action="store_true", help="start with the whole map known (a floor already mapped)")
     parser.add_argument("--rosbridge-port", type=int, default=9090, help="rosbridge WebSocket port (0: any free port)")
     parser.add_argument("--host", default="127.0.0.1", help="interface to listen on (0.0.0.0 for the LAN)")
