@@ -76,7 +76,13 @@ from langnav.robot.sim.controller import (
 from langnav.robot.sim.costmap import Costmap, InflationParams, inflate
 from langnav.robot.sim.lidar import Lidar, LidarSpec
 from langnav.robot.sim.mapping import LogOddsMap
-from langnav.robot.sim.planner import NoPathError, path_length_m, plan
+from langnav.robot.sim.planner import (
+    NoPathError,
+    WalledOffError,
+    path_length_m,
+    plan,
+    traversal_costs,
+)
 from langnav.robot.sim.world import ROBOT_RADIUS_M, World, disc_clearances_m
 
 log = logging.getLogger(__name__)
@@ -89,6 +95,11 @@ SCAN_PERIOD_S: Final = 0.2
 COSTMAP_PERIOD_S: Final = 1.0
 #: Replan this often while the map keeps changing (paths through unknown space get better).
 REPLAN_PERIOD_S: Final = 3.0
+#: Plan in a window reaching this far beyond start and goal (a detour through a neighbouring
+#: room fits), ...
+PLAN_MARGIN_M: Final = 10.0
+#: ... grown this many times over while the goal is walled off in it, up to the whole map.
+PLAN_GROWTH: Final = 4
 #: An intermediate pose of NavigateThroughPoses counts as passed within this distance.
 VIA_TOLERANCE_M: Final = 0.5
 #: Give up after this many failed plans in a row, retrying once a second (Nav2's recoveries).
@@ -299,12 +310,11 @@ class _NavTask(_Task):
 
     def _replan(self, sim: SimBackend) -> bool:
         pose = sim.pose
-        costmap = sim.costmap(fresh=True)
         try:
             pts: list[tuple[float, float]] = []
             start = (pose.x_m, pose.y_m)
             for x, y, _ in self.poses[self.target:]:
-                seg = plan(costmap, start, (x, y))
+                seg = sim.plan_path(start, (x, y))
                 pts.extend(seg if not pts else seg[1:])
                 start = seg[-1]
         except NoPathError as exc:
@@ -442,9 +452,7 @@ class SimBackend:
         self._rng = np.random.default_rng(self.config.seed)
         self._lidar = Lidar(self.world, self.config.lidar)
         self._map = LogOddsMap(frame, known=self.world.frame if self.config.known_map else None)
-        if self.world.collides(pose.x_m, pose.y_m, self.config.robot_radius_m):
-            raise RobotError(f"the start pose ({pose.x_m:.2f}, {pose.y_m:.2f}) is inside an obstacle or closer "
-                             f"than {self.config.robot_radius_m} m to one; pick a free spot")
+        check_start(self.world, pose, self.config.robot_radius_m)
         self._pose = Pose2D(pose.x_m, pose.y_m, wrap_angle(pose.yaw_rad))
         self._v = 0.0
         self._w = 0.0
@@ -458,8 +466,7 @@ class SimBackend:
         self._teleop_blocked = False
         self._scan: LaserScan | None = None
         self._next_scan_s = 0.0
-        self._cells = self._map.cells().copy()
-        self._occupied = self._cells == OCCUPIED
+        self._occupied = self._map.cells() == OCCUPIED
         self.map_cells_version = 0
         self._costmap: Costmap | None = None
         self._costmap_version = -1
@@ -620,13 +627,11 @@ class SimBackend:
         p = self._pose
         ranges = self._lidar.scan(p.x_m, p.y_m, p.yaw_rad, self._rng)
         spec = self._lidar.spec
-        self._map.integrate(p.x_m, p.y_m, p.yaw_rad, self._lidar.angles_rad, ranges, spec.range_max_m)
+        changed = self._map.integrate(p.x_m, p.y_m, p.yaw_rad, self._lidar.angles_rad, ranges, spec.range_max_m)
         self._scan = LaserScan(spec.angle_min_rad, spec.angle_increment_rad, spec.range_max_m,
                                tuple(ranges.tolist()), p)
-        cells = self._map.cells()
-        if not np.array_equal(cells, self._cells):
-            self._cells = cells.copy()
-            self._occupied = self._cells == OCCUPIED
+        if changed is not None:  # only the scan's window can have changed
+            self._occupied[changed] = self._map.cells()[changed] == OCCUPIED
             self.map_cells_version += 1
         self._next_scan_s = self._t + self.config.scan_period_s
 
@@ -640,6 +645,40 @@ class SimBackend:
             self._costmap_s = self._t
         assert self._costmap is not None
         return self._costmap
+
+    def plan_path(self, start_xy: tuple[float, float], goal_xy: tuple[float, float]) -> list[tuple[float, float]]:
+        """A path on the robot's map, planned in a window around start and goal (PLAN_MARGIN_M
+        around them, grown PLAN_GROWTH times while the goal is walled off in it, up to the whole
+        map): the cost scales with the trip, not with the map. The costmap is inflated over the
+        window plus the inflation radius, so obstacles just outside it still count."""
+        frame = self.world.frame
+        for what, (x, y) in (("start", start_xy), ("goal", goal_xy)):
+            r, c = (float(v) for v in frame.world_to_cell(x, y))
+            if not (0.0 <= r < frame.height and 0.0 <= c < frame.width):
+                raise NoPathError(f"the {what} ({x:.2f}, {y:.2f}) is outside the map (extent {_extent(frame)})")
+        rs, cs = frame.world_to_index([start_xy[0], goal_xy[0]], [start_xy[1], goal_xy[1]])
+        h, w = frame.height, frame.width
+        pad = math.ceil(self.config.inflation.inflation_radius_m / frame.resolution_m) + 1
+        margin = math.ceil(PLAN_MARGIN_M / frame.resolution_m)
+        while True:
+            r0, r1 = max(int(rs.min()) - margin, 0), min(int(rs.max()) + margin + 1, h)
+            c0, c1 = max(int(cs.min()) - margin, 0), min(int(cs.max()) + margin + 1, w)
+            whole = r0 == 0 and c0 == 0 and r1 == h and c1 == w
+            p0, p1 = max(r0 - pad, 0), min(r1 + pad, h)
+            q0, q1 = max(c0 - pad, 0), min(c1 + pad, w)
+            costmap = inflate(self._map.window_grid(slice(p0, p1), slice(q0, q1)), self.config.inflation)
+            costs = traversal_costs(costmap)
+            inner = np.zeros(costs.shape, dtype=bool)
+            inner[r0 - p0:r1 - p0, c0 - q0:c1 - q0] = True
+            costs[~inner] = np.inf  # the pad only informs the inflation
+            try:
+                return plan(costmap, start_xy, goal_xy, costs=costs)
+            except WalledOffError:
+                if whole:
+                    raise
+                margin *= PLAN_GROWTH
+                log.debug("no path within %.0f m of start and goal: searching a wider window",
+                          margin * frame.resolution_m / PLAN_GROWTH)
 
     def map_blocks(self, x0: float, y0: float, x1: float, y1: float) -> bool:
         """Whether the robot's map shows an obstacle in the robot's way from (x0, y0) to (x1, y1):
@@ -795,9 +834,38 @@ def _as_pose(pose: Pose2D | tuple[float, float] | tuple[float, float, float] | N
         return pose
     if pose is None:
         return default_start(world.frame)
-    if len(pose) not in (2, 3):
+    try:
+        values = [float(v) for v in pose]
+    except (TypeError, ValueError):
+        raise RobotError(f"a start pose is (x, y[, yaw_deg]) in numbers, got {pose!r}") from None
+    if len(values) not in (2, 3):
         raise RobotError(f"a start pose is (x, y[, yaw_deg]), got {pose!r}")
-    return Pose2D(float(pose[0]), float(pose[1]), math.radians(float(pose[2])) if len(pose) == 3 else 0.0)
+    return Pose2D(values[0], values[1], math.radians(values[2]) if len(values) == 3 else 0.0)
+
+
+def _extent(grid: OccupancyGrid) -> str:
+    x0, y0, x1, y1 = grid.bounds_m
+    return f"x {x0:.2f}..{x1:.2f} m, y {y0:.2f}..{y1:.2f} m"
+
+
+def check_start(world: World, pose: Pose2D, radius_m: float) -> None:
+    """Refuse a start pose the robot cannot stand on, saying why: not finite numbers, off the map,
+    a map with no spot wide enough for the robot, or too near an obstacle."""
+    frame = world.frame
+    if not all(math.isfinite(v) for v in (pose.x_m, pose.y_m, pose.yaw_rad)):
+        raise RobotError(f"the start pose ({pose.x_m!r}, {pose.y_m!r}, yaw {pose.yaw_rad!r} rad) must be finite "
+                         f"numbers on the map (extent {_extent(frame)})")
+    r, c = (float(v) for v in frame.world_to_cell(pose.x_m, pose.y_m))  # floats: 1e300 fits no integer
+    if not (0.0 <= r < frame.height and 0.0 <= c < frame.width):
+        raise RobotError(f"the start pose ({pose.x_m:.2f}, {pose.y_m:.2f}) is outside the map "
+                         f"(extent {_extent(frame)}); pick a free spot on it")
+    if world.collides(pose.x_m, pose.y_m, radius_m):
+        if world.widest_clearance_m() < radius_m:
+            raise RobotError(f"{frame.source}: the map has no spot wide enough for the robot "
+                             f"(radius {radius_m} m); it is {frame.width}x{frame.height} cells of "
+                             f"{frame.resolution_m} m")
+        raise RobotError(f"the start pose ({pose.x_m:.2f}, {pose.y_m:.2f}) is inside an obstacle or closer "
+                         f"than {radius_m} m to one; pick a free spot")
 
 
 def default_start(grid: OccupancyGrid) -> Pose2D:

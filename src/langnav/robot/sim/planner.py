@@ -40,6 +40,10 @@ class NoPathError(RobotError):
     """The planner found no path on the robot's map."""
 
 
+class WalledOffError(NoPathError):
+    """No path: the goal is cut off from the start on the map searched (a larger window may help)."""
+
+
 def traversal_costs(costmap: Costmap, allow_unknown: bool = True) -> npt.NDArray[np.float64]:
     """Per-cell cost for the planner: ``inf`` where the robot's centre must not go."""
     c = costmap.costs
@@ -105,7 +109,7 @@ def plan(costmap: Costmap, start_xy: tuple[float, float], goal_xy: tuple[float, 
     mcp = MCP_Geometric(cost)
     cum, _ = mcp.find_costs([s], [goal_cell])
     if not np.isfinite(cum[goal_cell]):
-        raise NoPathError(f"no path from ({start_xy[0]:.2f}, {start_xy[1]:.2f}) to "
+        raise WalledOffError(f"no path from ({start_xy[0]:.2f}, {start_xy[1]:.2f}) to "
                           f"({goal_xy[0]:.2f}, {goal_xy[1]:.2f}): the goal is walled off on the robot's map")
     cells = np.asarray(mcp.traceback(goal_cell), dtype=np.float64)
     xs, ys = frame.cell_to_world(cells[:, 0], cells[:, 1])

@@ -28,6 +28,11 @@ ROBOT_RADIUS_M: Final = 0.17
 #: "specks under about 0.05 m2 are noise").
 SPECK_MAX_M2: Final = 0.05
 
+#: Block side (cells) of the coarse "any matter in this block" index behind the quick collision accept:
+#: 16 cells = 0.8 m at 5 cm, about the robot's diameter plus its margins, so most free-space checks
+#: need only a 5x5 block look-up, and the index is 1/256 of the grid.
+BLOCK_CELLS: Final = 16
+
 BoolArray = npt.NDArray[np.bool_]
 
 
@@ -53,8 +58,8 @@ class World:
         self._base_solid = solid_mask(grid)
         self._solid: BoolArray = self._base_solid.copy()
         self.version = 0
-        self._clear: npt.NDArray[np.float64] | None = None
-        self._clear_version = -1
+        self._block_solid: BoolArray | None = None
+        self._block_version = -1
 
     # -- reading ---------------------------------------------------------------------------------
     @property
@@ -84,17 +89,43 @@ class World:
     def collides(self, x_m: float, y_m: float, radius_m: float = ROBOT_RADIUS_M) -> bool:
         """Whether a disc of ``radius_m`` at (x, y) overlaps matter."""
         r, c = self._base.world_to_index(x_m, y_m)
-        # quick accept: centre-to-centre distance minus a cell diagonal is a safe lower bound
-        if self._base.in_bounds(r, c) and (
-                (self._centre_clearance()[int(r), int(c)] - math.sqrt(2.0)) * self._base.resolution_m > radius_m):
+        if self._base.in_bounds(r, c) and self._no_matter_near(int(r), int(c), radius_m):
             return False
         return self.clearance_m(x_m, y_m, radius_m) < radius_m
 
-    def _centre_clearance(self) -> npt.NDArray[np.float64]:
-        if self._clear is None or self._clear_version != self.version:
-            self._clear = ndimage.distance_transform_edt(~self._solid).astype(np.float64)
-            self._clear_version = self.version
-        return self._clear
+    def _no_matter_near(self, r: int, c: int, radius_m: float) -> bool:
+        """Quick accept: no solid cell in the blocks around cell (r, c) that a disc of ``radius_m``
+        (plus a cell) can reach, and those blocks all inside the map (outside counts as matter)."""
+        blocks = self._blocks()
+        k = math.ceil((radius_m / self._base.resolution_m + 2.0) / BLOCK_CELLS)
+        br, bc = r // BLOCK_CELLS, c // BLOCK_CELLS
+        if br - k < 0 or bc - k < 0 or br + k >= blocks.shape[0] or bc + k >= blocks.shape[1]:
+            return False
+        # a cell outside these blocks is at least k * BLOCK_CELLS - 1 cells from (r, c) in row or column
+        return not blocks[br - k:br + k + 1, bc - k:bc + k + 1].any()
+
+    def _blocks(self) -> BoolArray:
+        """Which BLOCK_CELLS x BLOCK_CELLS blocks hold matter (a partial block at the far edges counts
+        as matter: part of it lies off the map). 1/256 of the grid, rebuilt when the world changes."""
+        if self._block_solid is None or self._block_version != self.version:
+            h, w = self._solid.shape
+            bh, bw = -(-h // BLOCK_CELLS), -(-w // BLOCK_CELLS)
+            padded = np.ones((bh * BLOCK_CELLS, bw * BLOCK_CELLS), dtype=bool)
+            padded[:h, :w] = self._solid
+            blocks: BoolArray = np.asarray(padded.reshape(bh, BLOCK_CELLS, bw, BLOCK_CELLS).any(axis=(1, 3)))
+            self._block_solid = blocks
+            self._block_version = self.version
+            return blocks
+        return self._block_solid
+
+    def widest_clearance_m(self) -> float:
+        """The largest clearance (to matter or the map's edge) of any cell centre: whether the robot
+        fits anywhere at all. A distance transform of the whole grid: for error messages only."""
+        free = np.pad(~self._solid, 1, constant_values=False)
+        if not free.any():
+            return 0.0
+        d = ndimage.distance_transform_edt(free)
+        return max(float(d.max()) - 0.5, 0.0) * self._base.resolution_m
 
     # -- changing --------------------------------------------------------------------------------
     def add_obstacle(self, x_m: float, y_m: float, radius_m: float = 0.2) -> None:
@@ -106,13 +137,17 @@ class World:
         if not (max_x_m > min_x_m and max_y_m > min_y_m):
             raise RobotError(f"a box needs max > min, got ({min_x_m}, {min_y_m})-({max_x_m}, {max_y_m})")
         g = self._base
-        rr, cc = np.indices(self._solid.shape)
+        # only the cells under the box's bounding rectangle (in grid coordinates) can be in it
+        cr, cc0 = g.world_to_cell([min_x_m, min_x_m, max_x_m, max_x_m], [min_y_m, max_y_m, min_y_m, max_y_m])
+        r_lo, r_hi = max(math.floor(float(cr.min())) - 1, 0), min(math.ceil(float(cr.max())) + 1, g.height)
+        c_lo, c_hi = max(math.floor(float(cc0.min())) - 1, 0), min(math.ceil(float(cc0.max())) + 1, g.width)
+        rr, cc = np.mgrid[r_lo:max(r_hi, r_lo), c_lo:max(c_hi, c_lo)]
         x, y = g.cell_to_world(rr, cc)
         mask = (x >= min_x_m) & (x <= max_x_m) & (y >= min_y_m) & (y <= max_y_m)
         if not mask.any():
             raise RobotError(f"the box ({min_x_m}, {min_y_m})-({max_x_m}, {max_y_m}) misses the world "
                              f"{g.bounds_m}")
-        self._solid |= mask
+        self._solid[r_lo:r_hi, c_lo:c_hi] |= mask
         self.version += 1
 
     def remove_obstacles(self) -> None:
