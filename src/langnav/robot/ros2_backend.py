@@ -34,15 +34,14 @@ from langnav.robot import ros_messages as rm
 from langnav.robot.errors import RobotError, RobotTimeout
 from langnav.robot.protocol import (
     DEFAULT_REQUEST_TIMEOUT_S,
-    DEFAULT_TASK_TIMEOUT_S,
     Pose2D,
     RobotState,
     TaskFeedback,
     TaskHandle,
-    TaskResult,
     TaskStatus,
     register_backend,
 )
+from langnav.robot.task_state import ReportedTask
 
 log = logging.getLogger(__name__)
 
@@ -95,25 +94,13 @@ def _import_ros() -> dict[str, Any]:
             "TransformListener": TransformListener}
 
 
-class _Ros2Task:
+class _Ros2Task(ReportedTask):
     """A TaskHandle over BasicNavigator's single active task."""
 
     def __init__(self, kind: str, backend: Ros2Backend) -> None:
-        self.kind = kind
+        super().__init__(kind)
         self._backend = backend
-        self._cond = threading.Condition()
-        self._status = TaskStatus.RUNNING
-        self._feedback: TaskFeedback | None = None
-        self._result: TaskResult | None = None
         self.cancel_requested = False
-
-    def status(self) -> TaskStatus:
-        with self._cond:
-            return self._status
-
-    def feedback(self) -> TaskFeedback | None:
-        with self._cond:
-            return self._feedback
 
     def cancel(self) -> None:
         with self._cond:
@@ -122,28 +109,12 @@ class _Ros2Task:
             self.cancel_requested = True
         self._backend._cancel()
 
-    def wait(self, timeout_s: float = DEFAULT_TASK_TIMEOUT_S) -> TaskResult:
-        with self._cond:
-            if not self._cond.wait_for(lambda: self._result is not None, timeout_s):
-                raise RobotTimeout(f"{self.kind} still running after {timeout_s} s; it was left running")
-            assert self._result is not None
-            return self._result
-
     def set_feedback(self, fb: TaskFeedback) -> None:
         with self._cond:
             self._feedback = fb
 
     def finish(self, status: TaskStatus, message: str, pose: Pose2D | None) -> None:
-        with self._cond:
-            if self._result is None:
-                self._status = status
-                self._result = TaskResult(status, message, pose)
-                self._cond.notify_all()
-
-    @property
-    def done(self) -> bool:
-        with self._cond:
-            return self._result is not None
+        self._set_result(status, message, pose)
 
 
 class Ros2Backend:

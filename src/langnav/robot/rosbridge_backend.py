@@ -53,16 +53,15 @@ from langnav.robot import ros_messages as rm
 from langnav.robot.errors import RobotError, RobotTimeout
 from langnav.robot.protocol import (
     DEFAULT_REQUEST_TIMEOUT_S,
-    DEFAULT_TASK_TIMEOUT_S,
     LaserScan,
     Pose2D,
     RobotState,
     TaskFeedback,
     TaskHandle,
-    TaskResult,
     TaskStatus,
     register_backend,
 )
+from langnav.robot.task_state import ReportedTask
 
 log = logging.getLogger(__name__)
 
@@ -157,27 +156,17 @@ class _Stamped:
     received_s: float
 
 
-class _Task:
+class _Task(ReportedTask):
     """A TaskHandle whose state is set from roslibpy's thread and read from the caller's."""
 
+    wait_hint = " (cancel() it, or wait longer)"
+
     def __init__(self, kind: str, on_cancel: Callable[[_Task], None]) -> None:
-        self.kind = kind
-        self._cond = threading.Condition()
-        self._status = TaskStatus.RUNNING
-        self._feedback: TaskFeedback | None = None
-        self._result: TaskResult | None = None
+        super().__init__(kind)
         self._on_cancel = on_cancel
         self.cancel_requested_s: float | None = None
         self.last_news_s = time.monotonic()
         self.goal_id = ""
-
-    def status(self) -> TaskStatus:
-        with self._cond:
-            return self._status
-
-    def feedback(self) -> TaskFeedback | None:
-        with self._cond:
-            return self._feedback
 
     def cancel(self) -> None:
         with self._cond:
@@ -185,14 +174,6 @@ class _Task:
                 return
             self.cancel_requested_s = time.monotonic()
         self._on_cancel(self)
-
-    def wait(self, timeout_s: float = DEFAULT_TASK_TIMEOUT_S) -> TaskResult:
-        with self._cond:
-            if not self._cond.wait_for(lambda: self._result is not None, timeout_s):
-                raise RobotTimeout(f"{self.kind} still running after {timeout_s} s; it was left running "
-                                   f"(cancel() it, or wait longer)")
-            assert self._result is not None
-            return self._result
 
     def set_feedback(self, fb: TaskFeedback) -> None:
         with self._cond:
@@ -202,19 +183,10 @@ class _Task:
 
     def finish(self, status: TaskStatus, message: str, pose: Pose2D | None = None) -> bool:
         """Set the result once; later calls are ignored (first outcome wins)."""
-        with self._cond:
-            if self._result is not None:
-                return False
-            self._status = status
-            self._result = TaskResult(status, message, pose)
-            self._cond.notify_all()
+        if not self._set_result(status, message, pose):
+            return False
         log.info("%s %s: %s", self.kind, status.value, message)
         return True
-
-    @property
-    def done(self) -> bool:
-        with self._cond:
-            return self._result is not None
 
 
 class RosbridgeBackend:
