@@ -389,3 +389,16 @@ def test_a_small_random_grid_is_segmented() -> None:
     seg = segment_spaces(OccupancyGrid(cells, 0.05))
     assert all(r.area_m2 > 0 for r in seg.rooms)
     assert int(seg.labels.max()) == len(seg.rooms)
+
+
+def test_a_corridor_on_a_huge_mostly_unknown_grid_keeps_its_own_area() -> None:
+    """4000 x 4000 cells, all unknown but a 2 m x 170 m corridor: the corridor's area, never
+    the unknown around it (nor the whole map)."""
+    cells = np.full((4000, 4000), -1, np.int8)
+    cells[100:140, 100:3500] = 0
+    cells[99, 100:3500] = 100
+    cells[140, 100:3500] = 100
+    seg = segment_spaces(OccupancyGrid(cells, 0.05))
+    assert len(seg.rooms) == 1
+    assert seg.rooms[0].kind == ElementKind.HALLWAY
+    assert seg.rooms[0].area_m2 == pytest.approx(2.0 * 170.0, rel=0.05)
