@@ -30,6 +30,7 @@ from skimage.segmentation import watershed
 from langnav.analysis.elements import Door, ElementKind, Room
 from langnav.analysis.errors import AnalysisError
 from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
+from langnav.analysis.precompute import nonzero2
 from langnav.analysis.seg_core import EIGHT, Floor, JambJudge, basins, clean_floor, merge_basins
 from langnav.analysis.seg_doors import RawDoor, doors_between, label_max, openings_to_unknown
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
@@ -248,19 +249,35 @@ def _close_unknown_gaps(labels: npt.NDArray[np.int32], unknown: npt.NDArray[np.b
     r = int(radius_cells)
     if r < 1 or not unknown.any():
         return labels
-    seen = np.where(occupied, -1, labels).astype(np.int32)  # walls stop the look-out
-    out = labels.copy()
     todo = unknown & (labels == 0)
+    # Only cells with a space within r (in the chessboard metric) can be filled: look out from
+    # those alone, through a copy of the labels padded with r cells of wall.
+    todo &= ndi.maximum_filter(labels > 0, size=2 * r + 1)
+    rows, cols = nonzero2(todo)
+    if rows.size == 0:
+        return labels
+    h, w = labels.shape
+    seen = np.full((h + 2 * r, w + 2 * r), -1, dtype=np.int32)  # walls stop the look-out
+    seen[r:r + h, r:r + w] = np.where(occupied, -1, labels)
+    flat_seen = seen.ravel()
+    pw = w + 2 * r
+    base = (rows + r) * pw + (cols + r)
+    value = np.zeros(rows.size, dtype=np.int32)  # what each cell gets (0: nothing yet)
     for dr, dc in ((0, 1), (1, 0), (1, 1), (1, -1)):
-        ahead = np.zeros_like(seen)
-        behind = np.zeros_like(seen)
+        step_off = dr * pw + dc
+        ahead = np.zeros(rows.size, dtype=np.int32)
+        behind = np.zeros(rows.size, dtype=np.int32)
         for step in range(1, r + 1):
-            fwd = _shifted(seen, dr * step, dc * step, -1)
-            bwd = _shifted(seen, -dr * step, -dc * step, -1)
-            ahead = np.where(ahead == 0, fwd, ahead)
-            behind = np.where(behind == 0, bwd, behind)
-        fill = todo & (ahead == behind) & (ahead > 0) & (out == 0)
-        out[fill] = ahead[fill]
+            # The first non-zero value met along the line (a space, or -1: a wall, the edge).
+            fwd = flat_seen[base + step * step_off]
+            bwd = flat_seen[base - step * step_off]
+            np.copyto(ahead, fwd, where=ahead == 0)
+            np.copyto(behind, bwd, where=behind == 0)
+        fill = (ahead == behind) & (ahead > 0) & (value == 0)
+        value[fill] = ahead[fill]
+    out = labels.copy()
+    got = value > 0
+    out[rows[got], cols[got]] = value[got]
     return out
 
 
