@@ -9,10 +9,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 from scipy import ndimage as ndi
+from skimage import measure
 
 from langnav.analysis.precompute import (
     EIGHT,
     GridLayers,
+    approximate_polygon,
     border_labels,
     component_boxes,
     cov2,
@@ -170,3 +172,22 @@ def test_wall_gradient_is_ndi_sobel_of_the_smoothed_mask(seed: int, tiled_from: 
         walls.TILED_MIN_WINDOW_CELLS, walls.GRADIENT_TILE_CELLS = old
     assert np.array_equal(gy, ndi.sobel(sm, axis=0)[rows, cols].astype(float))
     assert np.array_equal(gx, ndi.sobel(sm, axis=1)[rows, cols].astype(float))
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.integers(2, 120).flatmap(lambda n: arrays(np.float64, (n, 2), elements=st.integers(-40, 40).map(lambda v: v / 2))),
+       st.sampled_from([0.3, 1.0, 2.5]), st.booleans())
+def test_approximate_polygon_matches_skimage(pts: npt.NDArray[np.float64], tolerance: float, walk: bool) -> None:
+    coords = np.cumsum(pts, axis=0) / 3.0 if walk else pts  # a random walk, or scattered points
+    expected = measure.approximate_polygon(coords, tolerance)
+    got = approximate_polygon(coords, tolerance)
+    assert got.shape == expected.shape and np.array_equal(got, expected)
+
+
+def test_approximate_polygon_keeps_corners_of_a_square() -> None:
+    side = np.arange(0.0, 10.0)
+    square = np.vstack([np.column_stack([side, np.zeros(10)]), np.column_stack([np.full(10, 10.0), side]),
+                        np.column_stack([10.0 - side, np.full(10, 10.0)]), np.column_stack([np.zeros(10), 10.0 - side]),
+                        [[0.0, 0.0]]])
+    got = approximate_polygon(square, 1.0)
+    assert got.tolist() == [[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0], [0.0, 0.0]]

@@ -16,7 +16,9 @@ The stand-ins give *exactly* what the numpy / scipy call they replace gives (pro
 - :func:`component_boxes`: ``ndi.find_objects`` for chosen components, from their cells;
 - :func:`truncated_sq_edt`: ``distance_transform_edt`` squared, exact up to a bound (what a
   test of short clearances needs), in small integers;
-- :func:`median`, :func:`cov2`: ``np.median`` and ``np.cov`` without their overhead.
+- :func:`median`, :func:`cov2`: ``np.median`` and ``np.cov`` without their overhead;
+- :func:`approximate_polygon`: ``skimage.measure.approximate_polygon`` (Douglas-Peucker), all
+  the segments of a level of its recursion at once.
 
 The cached arrays are shared: they are marked read-only so that no caller changes them for the
 others by mistake.
@@ -292,3 +294,63 @@ def label8_cells(flat: npt.NDArray[np.integer], shape: tuple[int, int]) -> tuple
     relabel = np.empty(n, dtype=np.int32)
     relabel[np.argsort(first)] = np.arange(1, n + 1, dtype=np.int32)
     return relabel[comp], int(n)
+
+
+def approximate_polygon(coords: npt.NDArray[np.float64], tolerance: float) -> npt.NDArray[np.float64]:
+    """``skimage.measure.approximate_polygon(coords, tolerance)`` for a (K, 2) float64 chain and
+    ``tolerance > 0``: the same points, bit for bit.
+
+    Douglas-Peucker keeps a point where it splits a segment, and whether and where a segment
+    splits depends on that segment alone, so the segments of one level of the recursion are
+    measured together: per-point arithmetic vectorised exactly as skimage writes it, and each
+    segment's angle, sine and cosine computed on its own scalars, as skimage does.
+    """
+    if tolerance <= 0:
+        raise ValueError(f"approximate_polygon needs a positive tolerance, got {tolerance}")
+    xy = np.asarray(coords, dtype=np.float64)
+    n = xy.shape[0]
+    chain = np.zeros(n, dtype=bool)
+    chain[0] = True
+    chain[-1] = True
+    rows, cols = xy[:, 0], xy[:, 1]
+    starts = np.array([0], dtype=np.intp)
+    ends = np.array([n - 1], dtype=np.intp)
+    while True:
+        inner = ends - starts > 1  # a segment with no point between its ends never splits
+        starts, ends = starts[inner], ends[inner]
+        if starts.size == 0:
+            break
+        r0, c0, r1, c1 = rows[starts], cols[starts], rows[ends], cols[ends]
+        dr, dc = r1 - r0, c1 - c0
+        cos = np.empty(starts.size)
+        sin = np.empty(starts.size)
+        dist = np.empty(starts.size)
+        for i in range(starts.size):
+            angle = -np.arctan2(dr[i], dc[i])
+            sin[i] = np.sin(angle)
+            cos[i] = np.cos(angle)
+            dist[i] = c0[i] * np.sin(angle) + r0[i] * np.cos(angle)
+        # The points between the ends of every segment, segment by segment.
+        counts = ends - starts - 1
+        first = np.cumsum(counts) - counts
+        seg = np.repeat(np.arange(starts.size), counts)
+        idx = np.arange(int(counts.sum())) - first[seg] + starts[seg] + 1
+        pr, pc = rows[idx], cols[idx]
+        dr0, dc0 = pr - r0[seg], pc - c0[seg]
+        dr1, dc1 = pr - r1[seg], pc - c1[seg]
+        sdr, sdc = dr[seg], dc[seg]
+        perp = ((dr0 * sdr + dc0 * sdc) > 0) & ((-dr1 * sdr - dc1 * sdc) > 0)
+        d = np.where(perp, np.abs(pr * cos[seg] + pc * sin[seg] - dist[seg]),
+                     np.minimum(np.sqrt(dc0**2 + dr0**2), np.sqrt(dc1**2 + dr1**2)))
+        top = np.maximum.reduceat(d, first)
+        split = top > tolerance
+        if not split.any():
+            break
+        # The first point at the maximum of each segment that splits.
+        at_top = np.flatnonzero((d == top[seg]) & split[seg])
+        _, first_hit = np.unique(seg[at_top], return_index=True)
+        new = idx[at_top[first_hit]]
+        chain[new] = True
+        starts = np.concatenate([starts[split], new])
+        ends = np.concatenate([new, ends[split]])
+    return xy[chain, :]

@@ -24,13 +24,13 @@ from typing import Final
 import numpy as np
 import numpy.typing as npt
 from scipy import ndimage as ndi
-from skimage.measure import approximate_polygon, find_contours
+from skimage.measure import find_contours
 from skimage.segmentation import watershed
 
 from langnav.analysis.elements import Door, ElementKind, Room
 from langnav.analysis.errors import AnalysisError
 from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
-from langnav.analysis.precompute import nonzero2
+from langnav.analysis.precompute import approximate_polygon, nonzero2
 from langnav.analysis.seg_core import EIGHT, Floor, JambJudge, basins, clean_floor, merge_basins
 from langnav.analysis.seg_doors import RawDoor, doors_between, label_max, openings_to_unknown
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
