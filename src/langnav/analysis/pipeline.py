@@ -45,14 +45,13 @@ DEFAULT_CACHE_SIZE: Final = 8
 
 def analyze(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS) -> MapAnalysis:
     """Find every element of ``grid`` (see :mod:`langnav.analysis.elements`)."""
-    seg = segment_spaces(grid, params)
+    # Masks and components the segmentation and every detector need, computed once.
+    layers = GridLayers(grid)
+    seg = segment_spaces(grid, params, layers)
     labels = np.asarray(seg.labels, dtype=np.int32)
     rooms = tuple(seg.rooms)
     room_ids = {r.label: r.id for r in rooms}
     room_labels = {r.id: r.label for r in rooms}
-
-    # Masks and components every detector needs, computed once.
-    layers = GridLayers(grid)
     unx = find_unexplored(grid, params, layers)
     obst = find_obstacles(grid, params, labels, room_ids, exterior=unx.exterior, layers=layers)
     walls = find_walls(grid, params, labels, room_ids, wall=layers.occupied & ~obst.mask, layers=layers)

@@ -39,6 +39,7 @@ from scipy import ndimage as ndi
 from skimage.segmentation import watershed
 
 from langnav.analysis.params import AnalysisParams
+from langnav.analysis.precompute import Components, GridLayers, dilate8, maximum3
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN
 
 BoolArray = npt.NDArray[np.bool_]
@@ -67,13 +68,17 @@ class Floor:
     clearance_m: FloatArray  # Euclidean distance of floor cells to the nearest non-floor cell
 
 
-def _small_components(mask: BoolArray, max_cells: float, *, structure: npt.NDArray[np.bool_] = EIGHT,
-                      exclude_border: bool = False) -> BoolArray:
-    """Cells of the connected components of ``mask`` with at most ``max_cells`` cells."""
-    lab, n = ndi.label(mask, structure=structure)
+def _small_components(mask: BoolArray, max_cells: float, *, exclude_border: bool = False,
+                      components: Components | None = None) -> BoolArray:
+    """Cells of the 8-connected components of ``mask`` with at most ``max_cells`` cells
+    (``components``: that labelling of ``mask``, when it is at hand)."""
+    if components is None:
+        lab, n = ndi.label(mask, structure=EIGHT)
+        sizes = np.bincount(lab.ravel()) if n else np.zeros(1, dtype=np.int64)
+    else:
+        lab, n, sizes = components.labels, components.n, components.sizes
     if n == 0:
         return np.zeros_like(mask)
-    sizes = np.bincount(lab.ravel())
     keep = sizes <= max_cells
     keep[0] = False
     if exclude_border:
@@ -82,18 +87,24 @@ def _small_components(mask: BoolArray, max_cells: float, *, structure: npt.NDArr
     return keep[lab]
 
 
-def clean_floor(cells: npt.NDArray[np.int8], resolution_m: float, params: AnalysisParams) -> Floor:
-    """Floor mask and clearance map of a trinary grid (see module doc, step 1-2)."""
+def clean_floor(cells: npt.NDArray[np.int8], resolution_m: float, params: AnalysisParams,
+                layers: GridLayers | None = None) -> Floor:
+    """Floor mask and clearance map of a trinary grid (see module doc, step 1-2). ``layers``:
+    the masks and components of these very cells, when they are at hand."""
     cell_area = resolution_m * resolution_m
-    occupied = cells == OCCUPIED
-    unknown = cells == UNKNOWN
-    free = cells == FREE
+    if layers is None:
+        occupied, unknown, free = cells == OCCUPIED, cells == UNKNOWN, cells == FREE
+        occ_comp = unk_comp = None
+    else:
+        occupied, unknown, free = layers.occupied, layers.unknown, layers.free
+        occ_comp, unk_comp = layers.occupied_components, layers.unknown_components
     # Occupied specks: isolated noise hits, chair legs. Only those touching free space count.
-    specks = _small_components(occupied, params.seg_speck_max_area_m2 / cell_area)
-    specks &= ndi.binary_dilation(free, structure=EIGHT)
+    specks = _small_components(occupied, params.seg_speck_max_area_m2 / cell_area, components=occ_comp)
+    specks &= dilate8(free)
     free = free | specks
     # Unknown holes enclosed by free space (unscanned spots behind furniture, sensor dropouts).
-    holes = _small_components(unknown, params.seg_hole_max_area_m2 / cell_area, exclude_border=True)
+    holes = _small_components(unknown, params.seg_hole_max_area_m2 / cell_area, exclude_border=True,
+                              components=unk_comp)
     floor = free | holes
     exterior = unknown & ~holes
     islands = _furniture(floor, resolution_m, params)
@@ -125,11 +136,15 @@ def _furniture(floor: BoolArray, resolution_m: float, params: AnalysisParams) ->
     # Chessboard distance: a square neighbourhood is as good as a disc for grouping, and cheap.
     # Floor cells within half the join distance of two pieces bridge a gap up to the join distance.
     join_cells = int(params.seg_jamb_join_m / 2 / resolution_m + 1e-9)
-    grouped = ndi.distance_transform_cdt(floor, metric="chessboard") <= join_cells
+    solid = ~floor
+    if not solid.any():
+        return np.zeros_like(floor)
+    # The non-floor grown by join_cells (a square): the cells within that chessboard distance.
+    grouped = dilate8(solid) if join_cells == 1 else \
+        ndi.maximum_filter(solid, size=2 * join_cells + 1, mode="constant", cval=False)
     comp, n = ndi.label(grouped, structure=EIGHT)
     if n == 0:
         return np.zeros_like(floor)
-    solid = ~floor
     area = np.bincount(comp[solid], minlength=n + 1) * cell_area
     small = area <= params.seg_island_max_area_m2
     small[0] = False
@@ -152,7 +167,7 @@ def _furniture(floor: BoolArray, resolution_m: float, params: AnalysisParams) ->
 
 def basins(clearance_m: FloatArray, floor: BoolArray, min_peak_m: float) -> IntArray:
     """Watershed of -clearance from its local maxima (plateaus are one marker each)."""
-    peaks = (clearance_m >= ndi.maximum_filter(clearance_m, size=3)) & floor & (clearance_m >= min_peak_m)
+    peaks = (clearance_m >= maximum3(clearance_m)) & floor & (clearance_m >= min_peak_m)
     markers, _ = ndi.label(peaks, structure=EIGHT)
     lab = watershed(-clearance_m, markers, mask=floor)
     return np.asarray(lab, dtype=np.int32)
@@ -333,19 +348,22 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
     if n <= 1:
         return labels
     flat = labels.ravel()
-    area = np.bincount(flat, minlength=n).astype(float) * resolution_m**2
+    cells = np.bincount(flat, minlength=n).astype(float)
+    area = cells * resolution_m**2
+    # The cells of the pieces (label 0 is never measured below), in raster order.
+    on_flat = np.flatnonzero(flat)
+    lab_on = flat[on_flat]
+    clear_on = clearance_m.ravel()[on_flat]
     peak = np.zeros(n)
-    on = labels > 0
-    np.maximum.at(peak, labels[on], clearance_m[on])
+    np.maximum.at(peak, lab_on, clear_on)
     # Summed clearance (m x cells): twice the mean clearance of a space is about its half-width
     # where it is long and narrow, whatever bulges (junctions, door recesses) raise its peak.
-    clear_sum = np.bincount(flat, weights=clearance_m.ravel(), minlength=n)
-    cells = np.bincount(flat, minlength=n).astype(float)
+    clear_sum = np.bincount(lab_on, weights=clear_on, minlength=n)
     # First and second moments of each piece's cells (row, col): its long axis, to tell an
     # opening across a corridor (it continues) from one in its side wall (a door off it).
-    rows_i, cols_i = np.indices(labels.shape)
-    rf, cf = rows_i.ravel().astype(float), cols_i.ravel().astype(float)
-    mom = [np.bincount(flat, weights=w, minlength=n).tolist()
+    rows_i, cols_i = np.divmod(on_flat, labels.shape[1])
+    rf, cf = rows_i.astype(float), cols_i.astype(float)
+    mom = [np.bincount(lab_on, weights=w, minlength=n).tolist()
            for w in (rf, cf, rf * rf, cf * cf, rf * cf)]
     a_arr, b_arr, s_arr, loc_arr = adjacent_pairs(labels, clearance_m)
     width = labels.shape[1]

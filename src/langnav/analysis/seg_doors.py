@@ -22,6 +22,7 @@ from scipy import ndimage as ndi
 from skimage.segmentation import watershed
 
 from langnav.analysis.params import AnalysisParams
+from langnav.analysis.precompute import maximum3
 from langnav.analysis.seg_core import EIGHT, BoolArray, FloatArray, IntArray
 
 #: Label given to the unknown in the second flood (larger than any space label).
@@ -143,7 +144,7 @@ def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
     """
     if not exterior.any() or labels.max() == 0:
         return []
-    frontier = floor & (labels > 0) & ndi.maximum_filter(exterior, size=3)
+    frontier = floor & (labels > 0) & maximum3(exterior)
     if not frontier.any():
         return []
     door_clear_max = (params.door_max_width_m + resolution_m) / 2

@@ -30,7 +30,7 @@ from skimage.segmentation import watershed
 from langnav.analysis.elements import Door, ElementKind, Room
 from langnav.analysis.errors import AnalysisError
 from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
-from langnav.analysis.precompute import approximate_polygon, nonzero2
+from langnav.analysis.precompute import GridLayers, approximate_polygon, dilate8, maximum3, nonzero2
 from langnav.analysis.seg_core import EIGHT, Floor, JambJudge, basins, clean_floor, merge_basins
 from langnav.analysis.seg_doors import RawDoor, doors_between, label_max, openings_to_unknown
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
@@ -77,9 +77,16 @@ class Segmentation:
         return None
 
 
-def segment_spaces(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS) -> Segmentation:
-    """Split the free space of ``grid`` into rooms and hallways joined by doorways."""
-    free = grid.free
+def segment_spaces(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS,
+                   layers: GridLayers | None = None) -> Segmentation:
+    """Split the free space of ``grid`` into rooms and hallways joined by doorways.
+
+    ``layers``: the masks and components of ``grid`` (:class:`GridLayers`), when the caller has
+    them; they are used where the grid is segmented as it is (neither cropped nor coarsened).
+    """
+    if layers is not None and layers.grid is not grid:
+        raise ValueError("segment_spaces: layers were computed for another grid; pass GridLayers(grid)")
+    free = grid.free if layers is None else layers.free
     if not free.any():
         raise AnalysisError(f"{grid.source}: the map has no free space to segment")
     # Work on the part of the grid around the free space (maps often have wide margins).
@@ -89,7 +96,7 @@ def segment_spaces(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS)
     r0, r1 = max(0, rows[0] - margin), min(grid.height, rows[-1] + margin + 1)
     c0, c1 = max(0, cols[0] - margin), min(grid.width, cols[-1] + margin + 1)
     if (r0, r1, c0, c1) == (0, grid.height, 0, grid.width):
-        return _segment_at_working_resolution(grid, params)
+        return _segment_at_working_resolution(grid, params, layers)
     ox, oy = grid.grid_to_world(r0, c0)
     sub = OccupancyGrid(grid.cells[r0:r1, c0:c1], grid.resolution_m, float(ox), float(oy),
                         grid.origin_yaw_rad, grid.source)
@@ -99,12 +106,13 @@ def segment_spaces(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS)
     return Segmentation(labels=labels, rooms=seg.rooms, doors=seg.doors, narrow_doors=seg.narrow_doors)
 
 
-def _segment_at_working_resolution(grid: OccupancyGrid, params: AnalysisParams) -> Segmentation:
+def _segment_at_working_resolution(grid: OccupancyGrid, params: AnalysisParams,
+                                   layers: GridLayers | None = None) -> Segmentation:
     """Segment large fine grids on a coarser copy (every threshold is in metres, so the result
     is the same within a cell), then carry the labels and room measures back to the grid."""
     f = int(params.seg_coarse_resolution_m / grid.resolution_m + 1e-9)
     if grid.cells.size <= params.seg_max_cells_full_resolution or f < 2:
-        return _segment(grid, params)
+        return _segment(grid, params, layers)
     h, w = grid.cells.shape
     ph, pw = -h % f, -w % f
     cells = np.pad(grid.cells, ((0, ph), (0, pw)), constant_values=UNKNOWN)
@@ -139,26 +147,29 @@ def _measured_at(grid: OccupancyGrid, labels: npt.NDArray[np.int32], room: Room,
                                cells_xy=np.column_stack([xs, ys]))
 
 
-def _segment(grid: OccupancyGrid, params: AnalysisParams) -> Segmentation:
+def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | None = None) -> Segmentation:
     res = grid.resolution_m
-    fl = clean_floor(grid.cells, res, params)
+    fl = clean_floor(grid.cells, res, params, layers)
+    if layers is None:
+        occupied, unknown = grid.cells == OCCUPIED, grid.cells == UNKNOWN
+    else:
+        occupied, unknown = layers.occupied, layers.unknown
     raw_labels = basins(fl.clearance_m, fl.floor, params.seg_min_peak_m)
     judge = JambJudge(fl.floor, fl.clearance_m, res, params) if params.seg_jamb_test else None
     labels = merge_basins(raw_labels, fl.clearance_m, res, params, judge)
     if params.seg_claim_free_m > 0:
-        labels = _claim_free(labels, fl.free, grid.cells != OCCUPIED, params.seg_claim_free_m / res)
+        labels = _claim_free(labels, fl.free, ~occupied, params.seg_claim_free_m / res)
     labels, exterior = _attach_enclosed_unknown(labels, fl, grid, params)
     labels = _fill_enclosed(labels, params.seg_island_max_area_m2 / (res * res))
     if params.seg_close_unknown_gaps_m > 0:
-        labels = _close_unknown_gaps(labels, grid.cells == UNKNOWN, grid.cells == OCCUPIED,
-                                     params.seg_close_unknown_gaps_m / res)
+        labels = _close_unknown_gaps(labels, unknown, occupied, params.seg_close_unknown_gaps_m / res)
     exterior &= labels == 0
     between = doors_between(labels, fl.clearance_m, res, params,
                             min_width_m=min(NARROW_DOOR_MIN_WIDTH_M, params.door_min_width_m))
     passable = params.door_min_width_m - res
     raw_doors = [d for d in between if d.width_m >= passable]
     raw_narrow = [d for d in between if d.width_m < passable]
-    raw_doors += openings_to_unknown(labels, fl.floor, exterior, grid.cells == OCCUPIED,
+    raw_doors += openings_to_unknown(labels, fl.floor, exterior, occupied,
                                      fl.clearance_m, res, params)
     rooms = _rooms(grid, labels, fl, params)
     ids = {r.label: r.id for r in rooms}
@@ -180,10 +191,10 @@ def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor, grid: Occ
     if n == 0:
         return labels, ext
     border = np.unique(np.concatenate([lab[0], lab[-1], lab[:, 0], lab[:, -1]]))
-    ring = ndi.binary_dilation(ext, structure=EIGHT) & ~ext
-    rr, cc = np.nonzero(ring)
+    ring = dilate8(ext) & ~ext
+    rr, cc = nonzero2(ring)
     # Which unknown region each ring cell touches (the largest label among its 8 neighbours).
-    near = ndi.maximum_filter(lab, size=3)[rr, cc]
+    near = maximum3(lab)[rr, cc]
     ring_room = labels[rr, cc]
     total = np.bincount(near, minlength=n + 1)
     out = labels.copy()
