@@ -127,13 +127,16 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     # Each core's cells, in raster order.
     by_core = np.argsort(core_id, kind="stable")
     core_start = np.searchsorted(core_id[by_core], np.arange(m + 2))
-    pieces: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], bool]] = []
+    # Per piece: its cells, and for a whole core which of them are a ridge across (see
+    # _across_ridge; a per-cell test, made for all the core cells at once).
+    pieces: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]] = []
+    across_core = _across_ridge(d2, core_r, core_c)
     for k in long_enough.tolist():
         sl = boxes[k]
         if math.hypot(sl[0].stop - sl[0].start, sl[1].stop - sl[1].start) < min_cells:
             continue
         cells = by_core[core_start[k]:core_start[k + 1]]
-        pieces.append((core_r[cells], core_c[cells], True))
+        pieces.append((core_r[cells], core_c[cells], across_core[cells]))
     # Ridge cells of the cores without sides along most of their length, split after the cores.
     retry_r: list[npt.NDArray[np.intp]] = []
     retry_c: list[npt.NDArray[np.intp]] = []
@@ -145,9 +148,9 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             retry_r, retry_c = [], []
             long_r, long_c = _join(_pieces(ar, ac, sub.shape, min_cells))
             two_r, two_c = _two_sided(sub, long_r, long_c, dist_of[d2[long_r, long_c]] / res, SIDE_TOL_M / res)
-            pieces = [(pr, pc, False) for pr, pc in _pieces(two_r, two_c, sub.shape, min_cells)]
+            pieces = [(pr, pc, None) for pr, pc in _pieces(two_r, two_c, sub.shape, min_cells)]
             continue
-        rr, cc, whole_core = pieces.pop(0)
+        rr, cc, across = pieces.pop(0)
         if len(rr) < 2:
             continue
         pts = np.stack([cc + 0.5, rr + 0.5], axis=1).astype(float)
@@ -170,8 +173,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                                 SIDE_TOL_M / res)
         bounded = np.isfinite(sides).all(axis=1)
         if bounded.mean() < MIN_BOUNDED_FRACTION:
-            if whole_core and len(rr) * math.sqrt(2) >= min_cells:
-                across = _across_ridge(d2, rr, cc)
+            if across is not None and len(rr) * math.sqrt(2) >= min_cells:
                 retry_r.append(rr[across])
                 retry_c.append(cc[across])
             continue

@@ -30,7 +30,14 @@ from skimage.segmentation import watershed
 from langnav.analysis.elements import Door, ElementKind, Room
 from langnav.analysis.errors import AnalysisError
 from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
-from langnav.analysis.precompute import GridLayers, approximate_polygon, dilate8, maximum3, nonzero2
+from langnav.analysis.precompute import (
+    GridLayers,
+    approximate_polygon,
+    border_labels,
+    dilate8,
+    maximum3,
+    nonzero2,
+)
 from langnav.analysis.seg_core import EIGHT, Floor, JambJudge, basins, clean_floor, merge_basins
 from langnav.analysis.seg_doors import RawDoor, doors_between, label_max, openings_to_unknown
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
@@ -230,7 +237,10 @@ def _fill_enclosed(labels: npt.NDArray[np.int32], max_cells: float) -> npt.NDArr
         if sl is None:
             continue
         sub = labels[sl]
-        inside = ndi.binary_fill_holes(sub == k) & (sub == 0)
+        # The holes of the space (as ndi.binary_fill_holes finds them: the rest of the box not
+        # 4-connected to its edge) that no other space holds.
+        rest, _ = ndi.label(sub != k)
+        inside = (sub == 0) & ~np.isin(rest, border_labels(rest))
         if not inside.any():
             continue
         pockets, n = ndi.label(inside, structure=EIGHT)
