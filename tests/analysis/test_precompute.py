@@ -20,6 +20,7 @@ from langnav.analysis.precompute import (
     cov2,
     dilate4,
     dilate8,
+    edt_scaled,
     label8_cells,
     maximum3,
     median,
@@ -191,3 +192,11 @@ def test_approximate_polygon_keeps_corners_of_a_square() -> None:
                         [[0.0, 0.0]]])
     got = approximate_polygon(square, 1.0)
     assert got.tolist() == [[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0], [0.0, 0.0]]
+
+
+@settings(max_examples=150, deadline=None)
+@given(masks(), st.sampled_from([0.025, 0.05, 0.07, 0.1, 1.0]))
+def test_edt_scaled_matches_distance_transform_edt(m: npt.NDArray[np.bool_], step: float) -> None:
+    expected = ndi.distance_transform_edt(m, sampling=step)
+    got = edt_scaled(m, step)
+    assert got.dtype == np.float64 and np.array_equal(got, expected)

@@ -39,7 +39,7 @@ from scipy import ndimage as ndi
 from skimage.segmentation import watershed
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import Components, GridLayers, dilate8, maximum3
+from langnav.analysis.precompute import Components, GridLayers, dilate8, edt_scaled, maximum3
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN
 
 BoolArray = npt.NDArray[np.bool_]
@@ -110,7 +110,7 @@ def clean_floor(cells: npt.NDArray[np.int8], resolution_m: float, params: Analys
     islands = _furniture(floor, resolution_m, params)
     floor = floor | islands
     exterior &= ~islands
-    clearance = ndi.distance_transform_edt(floor, sampling=resolution_m)
+    clearance = edt_scaled(floor, resolution_m)
     return Floor(floor=floor, free=free, exterior=exterior, clearance_m=clearance)
 
 
