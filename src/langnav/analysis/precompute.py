@@ -304,8 +304,8 @@ def approximate_polygon(coords: npt.NDArray[np.float64], tolerance: float) -> np
 
     Douglas-Peucker keeps a point where it splits a segment, and whether and where a segment
     splits depends on that segment alone, so the segments of one level of the recursion are
-    measured together: per-point arithmetic vectorised exactly as skimage writes it, and each
-    segment's angle, sine and cosine computed on its own scalars, as skimage does.
+    measured together, with skimage's arithmetic element by element (numpy's sine, cosine and
+    arctangent give an array the values they give its elements one by one).
     """
     if tolerance <= 0:
         raise ValueError(f"approximate_polygon needs a positive tolerance, got {tolerance}")
@@ -324,19 +324,14 @@ def approximate_polygon(coords: npt.NDArray[np.float64], tolerance: float) -> np
             break
         r0, c0, r1, c1 = rows[starts], cols[starts], rows[ends], cols[ends]
         dr, dc = r1 - r0, c1 - c0
-        cos = np.empty(starts.size)
-        sin = np.empty(starts.size)
-        dist = np.empty(starts.size)
-        for i in range(starts.size):
-            angle = -np.arctan2(dr[i], dc[i])
-            sin[i] = np.sin(angle)
-            cos[i] = np.cos(angle)
-            dist[i] = c0[i] * np.sin(angle) + r0[i] * np.cos(angle)
+        angle = -np.arctan2(dr, dc)
+        sin, cos = np.sin(angle), np.cos(angle)
+        dist = c0 * sin + r0 * cos
         # The points between the ends of every segment, segment by segment.
         counts = ends - starts - 1
         first = np.cumsum(counts) - counts
         seg = np.repeat(np.arange(starts.size), counts)
-        idx = np.arange(int(counts.sum())) - first[seg] + starts[seg] + 1
+        idx = np.arange(int(counts.sum())) + np.repeat(starts + 1 - first, counts)
         pr, pc = rows[idx], cols[idx]
         dr0, dc0 = pr - r0[seg], pc - c0[seg]
         dr1, dc1 = pr - r1[seg], pc - c1[seg]
@@ -350,7 +345,7 @@ def approximate_polygon(coords: npt.NDArray[np.float64], tolerance: float) -> np
             break
         # The first point at the maximum of each segment that splits.
         at_top = np.flatnonzero((d == top[seg]) & split[seg])
-        _, first_hit = np.unique(seg[at_top], return_index=True)
+        first_hit = np.r_[True, seg[at_top[1:]] != seg[at_top[:-1]]]
         new = idx[at_top[first_hit]]
         chain[new] = True
         starts = np.concatenate([starts[split], new])
