@@ -267,6 +267,40 @@ def nonzero2(mask: npt.NDArray[np.generic]) -> tuple[npt.NDArray[np.intp], npt.N
     return rows, cols
 
 
+#: Up to this many cells, :func:`label8_cells` joins them in plain Python (a sparse graph's
+#: set-up costs more than the whole job).
+LABEL8_SMALL_CELLS: Final = 200
+
+
+def _label8_few(flat: list[int], shape: tuple[int, int]) -> tuple[npt.NDArray[np.int32], int]:
+    """:func:`label8_cells` for a few cells (sorted flat indices, as a list): union-find."""
+    h, w = shape
+    where = {f: i for i, f in enumerate(flat)}
+    parent = list(range(len(flat)))
+
+    def root(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for i, f in enumerate(flat):
+        r, c = divmod(f, w)
+        for dr, dc in ((0, 1), (1, -1), (1, 0), (1, 1)):
+            if 0 <= c + dc < w and r + dr < h:
+                j = where.get(f + dr * w + dc)
+                if j is not None:
+                    a, b = root(i), root(j)
+                    if a != b:
+                        parent[max(a, b)] = min(a, b)
+    # Number the components by their first cell (the cells are in raster order).
+    number: dict[int, int] = {}
+    out = np.empty(len(flat), dtype=np.int32)
+    for i in range(len(flat)):
+        out[i] = number.setdefault(root(i), len(number) + 1)
+    return out, len(number)
+
+
 def label8_cells(flat: npt.NDArray[np.integer], shape: tuple[int, int]) -> tuple[npt.NDArray[np.int32], int]:
     """8-connected components of a sparse set of cells, given by their sorted flat indices in an
     array of ``shape``: the label of each cell (1..n) and n, numbered as ``ndi.label`` numbers
@@ -275,6 +309,8 @@ def label8_cells(flat: npt.NDArray[np.integer], shape: tuple[int, int]) -> tuple
     n_cells = len(flat)
     if n_cells == 0:
         return np.zeros(0, dtype=np.int32), 0
+    if n_cells <= LABEL8_SMALL_CELLS:
+        return _label8_few(np.asarray(flat).tolist(), shape)
     h, w = shape
     f = np.asarray(flat, dtype=np.int64)
     r, c = np.divmod(f, w)

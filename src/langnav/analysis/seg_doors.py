@@ -137,8 +137,9 @@ def label_max(labels: IntArray, values: FloatArray) -> FloatArray:
 
 def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
                         obstacle: BoolArray, clearance_m: FloatArray, resolution_m: float,
-                        params: AnalysisParams) -> list[RawDoor]:
-    """Doorways from a space into unexplored territory (see module doc).
+                        params: AnalysisParams, peak: FloatArray | None = None) -> list[RawDoor]:
+    """Doorways from a space into unexplored territory (see module doc). ``peak``:
+    ``label_max(labels, clearance_m)``, when the caller has it.
 
     Only windows around the frontier (floor touching unexplored unknown) are flooded again.
     """
@@ -153,7 +154,8 @@ def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
     groups, _ = ndi.label(ndi.maximum_filter(frontier, size=join), structure=EIGHT)
     groups[~frontier] = 0
     margin = math.ceil(OPENING_BAND_M / resolution_m)
-    peak = label_max(labels, clearance_m)
+    if peak is None:
+        peak = label_max(labels, clearance_m)
     h, w = labels.shape
     out: list[RawDoor] = []
     max_extent = OPENING_MAX_EXTENT_M / resolution_m

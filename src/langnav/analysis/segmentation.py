@@ -176,9 +176,10 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     passable = params.door_min_width_m - res
     raw_doors = [d for d in between if d.width_m >= passable]
     raw_narrow = [d for d in between if d.width_m < passable]
+    peaks = label_max(labels, fl.clearance_m)  # the widest clearance of each space
     raw_doors += openings_to_unknown(labels, fl.floor, exterior, occupied,
-                                     fl.clearance_m, res, params)
-    rooms = _rooms(grid, labels, fl, params)
+                                     fl.clearance_m, res, params, peaks)
+    rooms = _rooms(grid, labels, fl, params, peaks)
     ids = {r.label: r.id for r in rooms}
     doors = _doors(grid, raw_doors, ids)
     narrow = _doors(grid, raw_narrow, ids, prefix="narrow_door")
@@ -352,12 +353,12 @@ def _kind_and_size(mask: npt.NDArray[np.bool_], floor_cells: int, area_m2: float
 
 
 def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
-           params: AnalysisParams) -> list[Room]:
+           params: AnalysisParams, peaks: npt.NDArray[np.float64]) -> list[Room]:
+    """The spaces of ``labels``, measured; ``peaks``: the widest clearance of each (by label)."""
     res = grid.resolution_m
     n = int(labels.max())
     rooms: list[Room] = []
     objs = ndi.find_objects(labels)
-    peaks = label_max(labels, fl.clearance_m)
     for k in range(1, n + 1):
         sl = objs[k - 1]
         if sl is None:
