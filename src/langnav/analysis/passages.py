@@ -55,6 +55,9 @@ AXIS_SNAP_DEG: Final = 3.0
 TWO_SIDED_DIRECTIONS: Final = 8
 #: Look this far beyond a mouth for the space the passage opens into.
 MOUTH_SEARCH_M: Final = 1.0
+#: Side distances of many pieces are sampled together, about this many samples at a time
+#: (bounded memory on a large map; fewer numpy calls on a small one).
+SIDE_BATCH_SAMPLES: Final = 400_000
 
 BoolArray = npt.NDArray[np.bool_]
 
@@ -140,8 +143,64 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     # Ridge cells of the cores without sides along most of their length, split after the cores.
     retry_r: list[npt.NDArray[np.intp]] = []
     retry_c: list[npt.NDArray[np.intp]] = []
-    while pieces or retry_r:
-        if not pieces:
+    # Two rounds: the cores, then the two-sided stretches of those without sides.
+    while pieces:
+        # Each piece's axis and length, and the cheap test first, with the skeleton's width (at
+        # most a cell narrower than the true one); then the sides of all that pass, at once.
+        measured: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None, npt.NDArray[np.float64],
+                             npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64], float]] = []
+        for rr, cc, across in pieces:
+            if len(rr) < 2:
+                continue
+            pts = np.stack([cc + 0.5, rr + 0.5], axis=1).astype(float)
+            mean = pts.mean(axis=0)
+            cov = cov2((pts - mean).T)
+            evals, evecs = np.linalg.eigh(cov)
+            axis = evecs[:, int(np.argmax(evals))]
+            # Snap a nearly axis-aligned passage onto the grid axis (cleaner width sampling).
+            if abs(axis[0]) >= math.cos(math.radians(AXIS_SNAP_DEG)):
+                axis = np.array([math.copysign(1.0, axis[0]), 0.0])
+            elif abs(axis[1]) >= math.cos(math.radians(AXIS_SNAP_DEG)):
+                axis = np.array([0.0, math.copysign(1.0, axis[1])])
+            proj = (pts - mean) @ axis
+            length_m = (float(proj.max() - proj.min()) + 1.0) * res
+            rough_w = median(width_of[d2[rr, cc]])
+            if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * rough_w:
+                continue
+            measured.append((rr, cc, across, pts, mean, axis, proj, length_m))
+        side_sets = _side_distances_each(sub, [m[3] for m in measured],
+                                         [dist_of[d2[m[0], m[1]]] / res for m in measured],
+                                         [np.array([-m[5][1], m[5][0]]) for m in measured], SIDE_TOL_M / res)
+        for (rr, cc, across, _pts, mean, axis, proj, length_m), sides in zip(measured, side_sets, strict=True):
+            bounded = np.isfinite(sides).all(axis=1)
+            if bounded.mean() < MIN_BOUNDED_FRACTION:
+                if across is not None and len(rr) * math.sqrt(2) >= min_cells:
+                    retry_r.append(rr[across])
+                    retry_c.append(cc[across])
+                continue
+            # Width: across the passage between its two sides (exact for axis-aligned sides).
+            width_m = (median(sides[bounded].sum(axis=1)) - 0.5) * res
+            if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * width_m:
+                continue
+            ends_g = [mean + proj.min() * axis, mean + proj.max() * axis]
+            centre_g = mean + 0.5 * (proj.min() + proj.max()) * axis
+            cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
+            centre = (float(cx), float(cy))
+            if any(math.dist(centre, d.center) <= d.width_m / 2 + params.door_max_depth_m for d in doors):
+                continue
+            ends_w: list[tuple[float, float]] = []
+            spaces: list[str] = []
+            for sign, e in zip((-1.0, 1.0), ends_g, strict=True):
+                ex, ey = grid.grid_to_world(e[1] + r0, e[0] + c0)
+                ends_w.append((float(ex), float(ey)))
+                sid = _space_beyond(labels, e + np.array([c0, r0]), sign * axis, res, room_ids)
+                if sid is not None and sid not in spaces:
+                    spaces.append(sid)
+            passages.append(NarrowPassage(id=f"passage_{len(passages) + 1}", center=centre, width_m=width_m,
+                                          length_m=length_m, ends=(ends_w[0], ends_w[1]),
+                                          connects=tuple(spaces)))
+        pieces = []
+        if retry_r:
             # A passage along a wall shares its skeleton line with the strip along the rest of
             # that wall (the same width from the wall): its two-sided stretches, judged alone.
             ar, ac = np.concatenate(retry_r), np.concatenate(retry_c)
@@ -149,55 +208,6 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             long_r, long_c = _join(_pieces(ar, ac, sub.shape, min_cells))
             two_r, two_c = _two_sided(sub, long_r, long_c, dist_of[d2[long_r, long_c]] / res, SIDE_TOL_M / res)
             pieces = [(pr, pc, None) for pr, pc in _pieces(two_r, two_c, sub.shape, min_cells)]
-            continue
-        rr, cc, across = pieces.pop(0)
-        if len(rr) < 2:
-            continue
-        pts = np.stack([cc + 0.5, rr + 0.5], axis=1).astype(float)
-        mean = pts.mean(axis=0)
-        cov = cov2((pts - mean).T)
-        evals, evecs = np.linalg.eigh(cov)
-        axis = evecs[:, int(np.argmax(evals))]
-        # Snap a nearly axis-aligned passage onto the grid axis (cleaner width sampling).
-        if abs(axis[0]) >= math.cos(math.radians(AXIS_SNAP_DEG)):
-            axis = np.array([math.copysign(1.0, axis[0]), 0.0])
-        elif abs(axis[1]) >= math.cos(math.radians(AXIS_SNAP_DEG)):
-            axis = np.array([0.0, math.copysign(1.0, axis[1])])
-        proj = (pts - mean) @ axis
-        length_m = (float(proj.max() - proj.min()) + 1.0) * res
-        # Cheap test first, with the skeleton's width (at most a cell narrower than the true one).
-        rough_w = median(width_of[d2[rr, cc]])
-        if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * rough_w:
-            continue
-        sides = _side_distances(sub, pts, dist_of[d2[rr, cc]] / res, np.array([-axis[1], axis[0]]),
-                                SIDE_TOL_M / res)
-        bounded = np.isfinite(sides).all(axis=1)
-        if bounded.mean() < MIN_BOUNDED_FRACTION:
-            if across is not None and len(rr) * math.sqrt(2) >= min_cells:
-                retry_r.append(rr[across])
-                retry_c.append(cc[across])
-            continue
-        # Width: across the passage between its two sides (exact for axis-aligned sides).
-        width_m = (median(sides[bounded].sum(axis=1)) - 0.5) * res
-        if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * width_m:
-            continue
-        ends_g = [mean + proj.min() * axis, mean + proj.max() * axis]
-        centre_g = mean + 0.5 * (proj.min() + proj.max()) * axis
-        cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
-        centre = (float(cx), float(cy))
-        if any(math.dist(centre, d.center) <= d.width_m / 2 + params.door_max_depth_m for d in doors):
-            continue
-        ends_w: list[tuple[float, float]] = []
-        spaces: list[str] = []
-        for sign, e in zip((-1.0, 1.0), ends_g, strict=True):
-            ex, ey = grid.grid_to_world(e[1] + r0, e[0] + c0)
-            ends_w.append((float(ex), float(ey)))
-            sid = _space_beyond(labels, e + np.array([c0, r0]), sign * axis, res, room_ids)
-            if sid is not None and sid not in spaces:
-                spaces.append(sid)
-        passages.append(NarrowPassage(id=f"passage_{len(passages) + 1}", center=centre, width_m=width_m,
-                                      length_m=length_m, ends=(ends_w[0], ends_w[1]),
-                                      connects=tuple(spaces)))
     return tuple(passages)
 
 
@@ -275,22 +285,32 @@ def _two_sided(open_: BoolArray, rr: npt.NDArray[np.intp], cc: npt.NDArray[np.in
 
 
 def _side_distances(open_: BoolArray, pts: npt.NDArray[np.float64], reach: npt.NDArray[np.float64],
-                    normal: npt.NDArray[np.float64], tol_cells: float) -> npt.NDArray[np.float64]:
+                    normal: npt.NDArray[np.float64], tol_cells: float,
+                    stop: float | None = None) -> npt.NDArray[np.float64]:
     """Per point (x, y in grid cells): distance (cells) to the first non-open cell along -normal
-    and +normal, within reach + tol; ``inf`` where that side is open. Shape (N, 2).
+    and +normal, within reach + tol; ``inf`` where that side is open. Shape (N, 2). ``normal``
+    is one (2,) vector, or one per point (N, 2); ``stop`` is where the samples end (default:
+    past the longest reach).
 
     Sampling every half cell from a cell centre, the first blocked sample is 0 to 0.5 cell past
     the side's edge: the two sides summed, minus half a cell, is the width.
     """
-    steps = np.arange(0.0, float(reach.max()) + tol_cells + 0.5, 0.5)
+    if stop is None:
+        stop = float(reach.max()) + tol_cells + 0.5
+    steps = np.arange(0.0, stop, 0.5)
     limit = reach + tol_cells
     out = np.full((len(pts), 2), np.inf)
     h, w = open_.shape
+    nrm = np.asarray(normal, dtype=np.float64)
     for j, sign in enumerate((-1.0, 1.0)):
         # All samples of all points at once: (N, steps), the same arithmetic as one by one.
         t = sign * steps
-        x = pts[:, 0:1] + (t * normal[0])[None, :]
-        y = pts[:, 1:2] + (t * normal[1])[None, :]
+        if nrm.ndim == 1:
+            x = pts[:, 0:1] + (t * nrm[0])[None, :]
+            y = pts[:, 1:2] + (t * nrm[1])[None, :]
+        else:
+            x = pts[:, 0:1] + t[None, :] * nrm[:, 0:1]
+            y = pts[:, 1:2] + t[None, :] * nrm[:, 1:2]
         r = np.floor(y).astype(int)
         c = np.floor(x).astype(int)
         inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
@@ -300,6 +320,31 @@ def _side_distances(open_: BoolArray, pts: npt.NDArray[np.float64], reach: npt.N
         first = np.argmax(hit, axis=1)
         found = hit[np.arange(len(pts)), first]
         out[found, j] = steps[first[found]]
+    return out
+
+
+def _side_distances_each(open_: BoolArray, pts: Sequence[npt.NDArray[np.float64]],
+                         reach: Sequence[npt.NDArray[np.float64]], normal: Sequence[npt.NDArray[np.float64]],
+                         tol_cells: float) -> list[npt.NDArray[np.float64]]:
+    """:func:`_side_distances` of several point sets (each with its own normal), the same values,
+    worked out together in batches of about ``SIDE_BATCH_SAMPLES`` samples: one sample step
+    list for all (the longest; a sample past a point's reach never counts)."""
+    out: list[npt.NDArray[np.float64]] = []
+    i = 0
+    while i < len(pts):
+        # Take sets while the batch stays small.
+        j, n_pts, stop = i, 0, 0.0
+        while j < len(pts):
+            s = max(stop, float(reach[j].max()) + tol_cells + 0.5)
+            if j > i and (n_pts + len(pts[j])) * (2.0 * s + 1.0) > SIDE_BATCH_SAMPLES:
+                break
+            stop, n_pts, j = s, n_pts + len(pts[j]), j + 1
+        sizes = [len(p) for p in pts[i:j]]
+        normals = np.repeat(np.array(normal[i:j]).reshape(-1, 2), sizes, axis=0)
+        sides = _side_distances(open_, np.concatenate(pts[i:j]), np.concatenate(reach[i:j]),
+                                normals, tol_cells, stop=stop)
+        out.extend(np.split(sides, np.cumsum(sizes)[:-1]))
+        i = j
     return out
 
 
