@@ -21,6 +21,7 @@ from langnav.analysis.precompute import (
     dilate4,
     dilate8,
     edt_scaled,
+    fill_holes,
     label8_cells,
     maximum3,
     median,
@@ -200,3 +201,18 @@ def test_edt_scaled_matches_distance_transform_edt(m: npt.NDArray[np.bool_], ste
     expected = ndi.distance_transform_edt(m, sampling=step)
     got = edt_scaled(m, step)
     assert got.dtype == np.float64 and np.array_equal(got, expected)
+
+
+@settings(max_examples=150, deadline=None)
+@given(masks())
+def test_fill_holes_matches_binary_fill_holes(m: npt.NDArray[np.bool_]) -> None:
+    assert np.array_equal(fill_holes(m), ndi.binary_fill_holes(m))
+
+
+def test_fill_holes_fills_a_ring_not_a_notch() -> None:
+    ring = np.zeros((5, 6), dtype=bool)
+    ring[1:4, 1:4] = True
+    ring[2, 2] = False  # a hole
+    ring[1:4, 5] = True  # a bar by the edge: the cell between is open to the edge above
+    got = fill_holes(ring)
+    assert got[2, 2] and not got[2, 4] and got.sum() == ring.sum() + 1

@@ -15,11 +15,16 @@ from dataclasses import dataclass
 
 import numpy as np
 import numpy.typing as npt
-from scipy import ndimage as ndi
 
 from langnav.analysis.elements import Obstacle
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import GridLayers, border_labels, component_boxes, dilate8
+from langnav.analysis.precompute import (
+    GridLayers,
+    border_labels,
+    component_boxes,
+    dilate8,
+    fill_holes,
+)
 from langnav.analysis.unexplored import adjacent_pairs
 from langnav.maps.grid import OccupancyGrid
 
@@ -100,7 +105,7 @@ def find_obstacles(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
         # A hole needs a ring round it: nothing to fill in a box less than 3 cells across.
         if min(sl[0].stop - sl[0].start, sl[1].stop - sl[1].start) >= 3:
             own = comp[sl] == c
-            filled = ndi.binary_fill_holes(own)
+            filled = fill_holes(own)
             if np.count_nonzero(filled) > len(oxs):
                 rr, cc = np.nonzero(filled)
                 xs, ys = grid.cell_to_world(rr + sl[0].start, cc + sl[1].start)

@@ -33,8 +33,8 @@ from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
 from langnav.analysis.precompute import (
     GridLayers,
     approximate_polygon,
-    border_labels,
     dilate8,
+    fill_holes,
     maximum3,
     nonzero2,
 )
@@ -238,10 +238,7 @@ def _fill_enclosed(labels: npt.NDArray[np.int32], max_cells: float) -> npt.NDArr
         if sl is None:
             continue
         sub = labels[sl]
-        # The holes of the space (as ndi.binary_fill_holes finds them: the rest of the box not
-        # 4-connected to its edge) that no other space holds.
-        rest, _ = ndi.label(sub != k)
-        inside = (sub == 0) & ~np.isin(rest, border_labels(rest))
+        inside = fill_holes(sub == k) & (sub == 0)
         if not inside.any():
             continue
         pockets, n = ndi.label(inside, structure=EIGHT)
