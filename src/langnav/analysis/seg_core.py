@@ -361,10 +361,20 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
     clear_sum = np.bincount(lab_on, weights=clear_on, minlength=n)
     # First and second moments of each piece's cells (row, col): its long axis, to tell an
     # opening across a corridor (it continues) from one in its side wall (a door off it).
-    rows_i, cols_i = np.divmod(on_flat, labels.shape[1])
-    rf, cf = rows_i.astype(float), cols_i.astype(float)
-    mom = [np.bincount(lab_on, weights=w, minlength=n).tolist()
-           for w in (rf, cf, rf * rf, cf * cf, rf * cf)]
+    # Rarely needed: worked out on first use, replaying the joins made until then in order.
+    mom: list[list[float]] = []
+    joins_before_mom: list[tuple[int, int]] = []
+
+    def moments() -> list[list[float]]:
+        if not mom:
+            rows_i, cols_i = np.divmod(on_flat, labels.shape[1])
+            rf, cf = rows_i.astype(float), cols_i.astype(float)
+            mom.extend(np.bincount(lab_on, weights=w, minlength=n).tolist()
+                       for w in (rf, cf, rf * rf, cf * cf, rf * cf))
+            for ra, rb in joins_before_mom:
+                for m in mom:
+                    m[ra] += m[rb]
+        return mom
     a_arr, b_arr, s_arr, loc_arr = adjacent_pairs(labels, clearance_m)
     width = labels.shape[1]
     # A doorway's saddle clearance is about half its width (cell centres: + half a cell).
@@ -386,16 +396,20 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
         area_l[ra] += area_l[rb]
         csum_l[ra] += csum_l[rb]
         cells_l[ra] += cells_l[rb]
-        for m in mom:
-            m[ra] += m[rb]
+        if mom:
+            for m in mom:
+                m[ra] += m[rb]
+        else:
+            joins_before_mom.append((ra, rb))
 
     def axis_cos(r: int, tangent: tuple[float, float]) -> float:
         """|cos| of the angle between ``tangent`` (unit, row/col) and piece ``r``'s long axis:
         near 1 for an opening in its side wall, near 0 for a cut across it."""
         k = max(cells_l[r], 1.0)
-        mr, mc = mom[0][r] / k, mom[1][r] / k
-        vrr, vcc = mom[2][r] / k - mr * mr, mom[3][r] / k - mc * mc
-        vrc = mom[4][r] / k - mr * mc
+        mo = moments()
+        mr, mc = mo[0][r] / k, mo[1][r] / k
+        vrr, vcc = mo[2][r] / k - mr * mr, mo[3][r] / k - mc * mc
+        vrc = mo[4][r] / k - mr * mc
         # Long axis: the covariance's main eigenvector (angle from the row axis).
         theta = 0.5 * math.atan2(2.0 * vrc, vrr - vcc)
         return abs(math.cos(theta) * tangent[0] + math.sin(theta) * tangent[1])
