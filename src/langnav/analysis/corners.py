@@ -53,6 +53,10 @@ APPROACH_MAX_M: Final = 0.9
 #: ... and otherwise is the nearest clear cell within this: a corner under an unscanned patch
 #: has none close by, and the nearest reachable spot is the best a robot can do.
 APPROACH_SEARCH_M: Final = 2.0
+#: Up to this many cells, the approach points read one truncated clearance table of the grid
+#: (a few ns a cell) rather than a distance transform per corner window (about 0.15 ms each): a
+#: building's worth of corners covers at least this much. Both give the same points.
+APPROACH_TABLE_MAX_CELLS: Final = 500_000
 
 
 def _dist(a: tuple[float, float], b: tuple[float, float]) -> float:
@@ -223,26 +227,48 @@ def find_corners(grid: OccupancyGrid, params: AnalysisParams, walls: tuple[Wall,
                 near_end = 0 if _dist(x, e[0]) < _dist(x, e[1]) else 1
                 e[near_end] = x
     corners: list[Corner] = []
+    # One clearance table of the whole grid for all the approach windows on a small grid; on a
+    # large one a transform per window costs less.
+    use_table = bool(found) and grid.cells.size <= APPROACH_TABLE_MAX_CELLS
+    clear_sq = free_clearance_sq(grid, params, layers.free) if use_table else None
     for k, (room, x, a, b) in enumerate(found, start=1):
         label = room_labels.get(room, 0) if room is not None else 0
         corners.append(Corner(id=f"corner_{k}", point=x, room=room, walls=(a.id, b.id),
-                              approach=approach_point(grid, params, x, labels, label, free=layers.free)))
+                              approach=approach_point(grid, params, x, labels, label, free=layers.free,
+                                                      clear_sq=clear_sq)))
     new_walls = tuple(dataclasses.replace(w, start=ends[w.id][0], end=ends[w.id][1]) for w in walls)
     return tuple(corners), new_walls
 
 
+def _approach_margin_cells(grid: OccupancyGrid, params: AnalysisParams) -> int:
+    """How far (cells) clearances must be exact for the approach test: the goal clearance and
+    two cells more."""
+    return math.ceil(params.goal_clearance_m / grid.resolution_m) + 2
+
+
+def free_clearance_sq(grid: OccupancyGrid, params: AnalysisParams,
+                      free: npt.NDArray[np.bool_] | None = None) -> npt.NDArray[np.signedinteger]:
+    """Squared distance (cells²) of every cell to the nearest non-free cell (cells beyond the
+    grid count as unknown), exact up to what :func:`approach_point` tests (see
+    :func:`truncated_sq_edt`); one table for all the corners of a grid."""
+    m = _approach_margin_cells(grid, params)
+    f = grid.free if free is None else free
+    return truncated_sq_edt(np.pad(f, 1), m)[1:-1, 1:-1]
+
+
 def approach_point(grid: OccupancyGrid, params: AnalysisParams, point: tuple[float, float],
                    labels: npt.NDArray[np.int32], label: int,
-                   free: npt.NDArray[np.bool_] | None = None) -> tuple[float, float]:
+                   free: npt.NDArray[np.bool_] | None = None,
+                   clear_sq: npt.NDArray[np.signedinteger] | None = None) -> tuple[float, float]:
     """The free cell of space ``label`` nearest ``point`` with the goal clearance (world metres):
     its centre is at least ``params.goal_clearance_m`` from every occupied or unknown cell's edge.
-    ``free`` is ``grid.free`` when the caller has it.
+    ``free`` is ``grid.free`` and ``clear_sq`` :func:`free_clearance_sq` when the caller has them.
 
     Within ``APPROACH_MAX_M`` when such a cell is there, or the clearest cell there when the
     robot fits in it; else the nearest with the clearance within ``APPROACH_SEARCH_M``; else the
     clearest free cell of the space within ``APPROACH_MAX_M``.
     """
-    near = _window(grid, params, point, labels, label, free, APPROACH_MAX_M)
+    near = _window(grid, params, point, labels, label, free, APPROACH_MAX_M, clear_sq)
     if near is None:
         return point
     xs, ys, d, inside, clear = near
@@ -253,7 +279,7 @@ def approach_point(grid: OccupancyGrid, params: AnalysisParams, point: tuple[flo
     if inside.any() and np.where(inside, clear, -np.inf).max() >= params.robot_radius_m:
         i = np.argmax(np.where(inside, clear, -np.inf))  # close to the corner, and the robot fits
         return (float(xs.flat[i]), float(ys.flat[i]))
-    far = _window(grid, params, point, labels, label, free, APPROACH_SEARCH_M)
+    far = _window(grid, params, point, labels, label, free, APPROACH_SEARCH_M, clear_sq)
     if far is not None:
         fxs, fys, fd, finside, fclear = far
         fok = finside & (fclear >= params.goal_clearance_m)
@@ -267,12 +293,12 @@ def approach_point(grid: OccupancyGrid, params: AnalysisParams, point: tuple[flo
 
 
 def _window(grid: OccupancyGrid, params: AnalysisParams, point: tuple[float, float],
-            labels: npt.NDArray[np.int32], label: int, free: npt.NDArray[np.bool_] | None, reach_m: float
-            ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64],
+            labels: npt.NDArray[np.int32], label: int, free: npt.NDArray[np.bool_] | None, reach_m: float,
+            clear_sq: npt.NDArray[np.signedinteger] | None = None) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64],
                        npt.NDArray[np.bool_], npt.NDArray[np.float64]] | None:
     """Around ``point``, out to ``reach_m``: cell centres (x, y), their distance to the point,
     which are free cells of space ``label`` within reach, and their clearance (m); ``None`` off
-    the grid."""
+    the grid. ``clear_sq``: :func:`free_clearance_sq` of the grid, when the caller has it."""
     r, c = grid.world_to_index(point[0], point[1])
     res = grid.resolution_m
     rad = math.ceil(reach_m / res)
@@ -283,17 +309,17 @@ def _window(grid: OccupancyGrid, params: AnalysisParams, point: tuple[float, flo
     win_lab = labels[r0:r1, c0:c1]
     # Clearance in a window grown by the clearance itself: exact up to that distance, which is
     # all the test needs (cells beyond the grid count as unknown).
-    m = math.ceil(params.goal_clearance_m / res) + 2
+    m = _approach_margin_cells(grid, params)
     padded = np.zeros((r1 - r0 + 2 * m, c1 - c0 + 2 * m), dtype=bool)
     pr0, pc0 = max(0, r0 - m), max(0, c0 - m)
     pr1, pc1 = min(grid.height, r1 + m), min(grid.width, c1 + m)
     padded[pr0 - (r0 - m):pr1 - (r0 - m), pc0 - (c0 - m):pc1 - (c0 - m)] = (grid.free if free is None else free)[pr0:pr1, pc0:pc1]
-    if padded.all():  # no edge in reach (the transform's own answer then)
-        edt = np.asarray(ndi.distance_transform_edt(padded), dtype=np.float64)[m:-m, m:-m]
+    if clear_sq is not None and not padded.all():
+        # The same values up to m cells (what the tests below compare exactly), and above m
+        # beyond that, as in the window (sqrt of integer squares: bit for bit the transform's).
+        edt = np.sqrt(clear_sq[r0:r1, c0:c1].astype(np.float64))
     else:
-        # Exact up to m cells, above m beyond (all the tests below tell apart), in small
-        # integers: sqrt of those squares is bit for bit the transform's value.
-        edt = np.sqrt(truncated_sq_edt(padded, m)[m:-m, m:-m].astype(np.float64))
+        edt = np.asarray(ndi.distance_transform_edt(padded), dtype=np.float64)[m:-m, m:-m]
     clear = np.maximum(edt * res - res / 2, 0.0)
     xs, ys = grid.cell_to_world(np.arange(r0, r1)[:, None], np.arange(c0, c1)[None, :])
     d = np.hypot(xs - point[0], ys - point[1])

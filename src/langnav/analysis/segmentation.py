@@ -282,16 +282,19 @@ def _close_unknown_gaps(labels: npt.NDArray[np.int32], unknown: npt.NDArray[np.b
     pw = w + 2 * r
     base = (rows + r) * pw + (cols + r)
     value = np.zeros(rows.size, dtype=np.int32)  # what each cell gets (0: nothing yet)
+    steps = np.arange(1, r + 1)
+    every = np.arange(rows.size)
+
+    def first_met(offsets: npt.NDArray[np.intp]) -> npt.NDArray[np.int32]:
+        """Per cell, the first non-zero value met along its line (a space, or -1: a wall, the
+        edge), 0 if none within r."""
+        seq = flat_seen[base[:, None] + offsets[None, :]]
+        return seq[every, np.argmax(seq != 0, axis=1)]
+
     for dr, dc in ((0, 1), (1, 0), (1, 1), (1, -1)):
-        step_off = dr * pw + dc
-        ahead = np.zeros(rows.size, dtype=np.int32)
-        behind = np.zeros(rows.size, dtype=np.int32)
-        for step in range(1, r + 1):
-            # The first non-zero value met along the line (a space, or -1: a wall, the edge).
-            fwd = flat_seen[base + step * step_off]
-            bwd = flat_seen[base - step * step_off]
-            np.copyto(ahead, fwd, where=ahead == 0)
-            np.copyto(behind, bwd, where=behind == 0)
+        step_off = steps * (dr * pw + dc)
+        ahead = first_met(step_off)
+        behind = first_met(-step_off)
         fill = (ahead == behind) & (ahead > 0) & (value == 0)
         value[fill] = ahead[fill]
     out = labels.copy()
