@@ -373,16 +373,6 @@ def test_demo_world_door_off_the_hallway_stays_a_door() -> None:
     assert len(exits) == 1 and exits[0].center[0] == pytest.approx(14.075, abs=POS_TOL_M)
 
 
-def test_shifting_by_the_grid_size_or_more_leaves_only_the_fill() -> None:
-    from langnav.analysis.segmentation import _shifted
-
-    a = np.arange(21, dtype=np.int32).reshape(3, 7)
-    for dr, dc in ((0, 8), (0, -7), (3, 0), (-5, 2), (4, -9)):
-        assert (_shifted(a, dr, dc, -1) == -1).all()
-    moved = _shifted(a, 1, -2, -1)
-    assert moved[0, 2] == a[1, 0] and (moved[:, :2] == -1).all() and (moved[2] == -1).all()
-
-
 def test_a_small_random_grid_is_segmented() -> None:
     rng = np.random.default_rng(2)
     cells = rng.choice(np.array([0, 100, -1]), size=(21, 7), p=[0.6, 0.25, 0.15]).astype(np.int8)

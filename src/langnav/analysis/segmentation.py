@@ -249,17 +249,6 @@ def _fill_enclosed(labels: npt.NDArray[np.int32], max_cells: float) -> npt.NDArr
     return out
 
 
-def _shifted(a: npt.NDArray[np.int32], dr: int, dc: int, fill: int) -> npt.NDArray[np.int32]:
-    """``a`` moved so that out[r, c] = a[r + dr, c + dc] (``fill`` outside)."""
-    out = np.full_like(a, fill)
-    h, w = a.shape
-    if abs(dr) >= h or abs(dc) >= w:  # moved wholly off the grid: nothing of ``a`` is left
-        return out
-    out[max(0, -dr):h - max(0, dr), max(0, -dc):w - max(0, dc)] = \
-        a[max(0, dr):h - max(0, -dr), max(0, dc):w - max(0, -dc)]
-    return out
-
-
 def _close_unknown_gaps(labels: npt.NDArray[np.int32], unknown: npt.NDArray[np.bool_],
                         occupied: npt.NDArray[np.bool_], radius_cells: float) -> npt.NDArray[np.int32]:
     """Give each space the unknown cells in its narrow notches (the unscanned wedges between

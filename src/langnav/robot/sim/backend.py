@@ -73,7 +73,7 @@ from langnav.robot.sim.controller import (
     stopping_speed,
     wrap_angle,
 )
-from langnav.robot.sim.costmap import Costmap, InflationParams, inflate
+from langnav.robot.sim.costmap import InflationParams, inflate
 from langnav.robot.sim.lidar import Lidar, LidarSpec
 from langnav.robot.sim.mapping import LogOddsMap
 from langnav.robot.sim.planner import (
@@ -91,8 +91,6 @@ log = logging.getLogger(__name__)
 CONTROL_DT_S: Final = 0.05
 #: Lidar rate: an RPLIDAR A1 spins at 5.5-10 Hz.
 SCAN_PERIOD_S: Final = 0.2
-#: Global costmap update rate (Nav2's global_costmap update_frequency is 1 Hz).
-COSTMAP_PERIOD_S: Final = 1.0
 #: Replan this often while the map keeps changing (paths through unknown space get better).
 REPLAN_PERIOD_S: Final = 3.0
 #: Plan in a window reaching this far beyond start and goal (a detour through a neighbouring
@@ -142,7 +140,6 @@ class SimConfig:
     robot_radius_m: float = ROBOT_RADIUS_M
     control_dt_s: float = CONTROL_DT_S
     scan_period_s: float = SCAN_PERIOD_S
-    costmap_period_s: float = COSTMAP_PERIOD_S
     replan_period_s: float = REPLAN_PERIOD_S
     limits: Limits = field(default_factory=Limits)
     lidar: LidarSpec = field(default_factory=LidarSpec)
@@ -468,9 +465,6 @@ class SimBackend:
         self._next_scan_s = 0.0
         self._occupied = self._map.cells() == OCCUPIED
         self.map_cells_version = 0
-        self._costmap: Costmap | None = None
-        self._costmap_version = -1
-        self._costmap_s = -math.inf
         self.collisions = 0
         self._thread: threading.Thread | None = None
         self._halt = threading.Event()
@@ -636,16 +630,6 @@ class SimBackend:
         self._next_scan_s = self._t + self.config.scan_period_s
 
     # -- perception helpers used by tasks -------------------------------------------------------------
-    def costmap(self, fresh: bool = False) -> Costmap:
-        """The global costmap; rebuilt at most once per costmap period unless ``fresh``."""
-        stale = self._costmap is None or self._costmap_version != self.map_cells_version
-        if stale and (fresh or self._costmap is None or self._t - self._costmap_s >= self.config.costmap_period_s):
-            self._costmap = inflate(self._map.grid(), self.config.inflation)
-            self._costmap_version = self.map_cells_version
-            self._costmap_s = self._t
-        assert self._costmap is not None
-        return self._costmap
-
     def plan_path(self, start_xy: tuple[float, float], goal_xy: tuple[float, float]) -> list[tuple[float, float]]:
         """A path on the robot's map, planned in a window around start and goal (PLAN_MARGIN_M
         around them, grown PLAN_GROWTH times while the goal is walled off in it, up to the whole
