@@ -62,7 +62,9 @@ class WebSettings(BaseModel):
     port: int = Field(default=DEFAULT_PORT, ge=0, le=65535)
     token: str | None = Field(default=None, min_length=16,
                               description="required for robot-moving requests when host is not loopback")
-    known_map: bool = Field(default=False, description="the robot starts with the world map as its own")
+    known_map: bool | None = Field(
+        default=None, description="the robot starts with the world map as its own; None = the world's "
+                                  "default (the bundled demo floor was mapped before, any other world starts unknown)")
     start_pose: tuple[float, float, float] | None = Field(
         default=None, description="x_m, y_m, yaw_deg; None = the world's default start")
     db_path: Path = Field(default=Path("langnav.db"), description="SQLite file of the conversation")
