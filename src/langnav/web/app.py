@@ -92,6 +92,21 @@ class GotoIn(_Body):
                                   description="heading to stop in, degrees counter-clockwise from +x")
 
 
+class PlaceIn(_Body):
+    name: str = Field(min_length=1, max_length=60, description="what to call the spot")
+    x: float = Field(allow_inf_nan=False, description="map-frame x, metres")
+    y: float = Field(allow_inf_nan=False, description="map-frame y, metres")
+
+
+class RenameIn(_Body):
+    name: str = Field(min_length=1, max_length=60)
+    new_name: str = Field(min_length=1, max_length=60)
+
+
+class ForgetIn(_Body):
+    name: str = Field(min_length=1, max_length=60)
+
+
 class TranslatorIn(_Body):
     name: str = Field(max_length=40)
 
@@ -305,6 +320,22 @@ def create_app(settings: WebSettings, session_factory: Callable[[WebSettings], R
         if not (math.isfinite(x) and math.isfinite(y)):
             raise HTTPException(422, "x and y must be finite numbers (map-frame metres).")
         return session_of(request).spot(x, y)
+
+    @app.get("/api/places")
+    def places(request: Request) -> dict[str, Any]:
+        return {"places": session_of(request).places()}
+
+    @app.post("/api/places", dependencies=moving)
+    def name_place(body: PlaceIn, request: Request) -> dict[str, Any]:
+        return session_of(request).name_place(body.name, body.x, body.y)
+
+    @app.post("/api/places/rename", dependencies=moving)
+    def rename_place(body: RenameIn, request: Request) -> dict[str, Any]:
+        return session_of(request).rename_place(body.name, body.new_name)
+
+    @app.post("/api/places/forget", dependencies=moving)
+    def forget_place(body: ForgetIn, request: Request) -> dict[str, Any]:
+        return session_of(request).forget_place(body.name)
 
     @app.get("/api/map.png")
     def map_png(request: Request) -> Response:

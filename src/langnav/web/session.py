@@ -376,6 +376,47 @@ class RobotSession:
         msg = self.say("system", "info", {"text": "Resuming the plan."})
         return {"ok": True, "plan": self.plan_state(), "message": msg.to_json()}
 
+    # -- named places (pins on the map) ---------------------------------------------------------
+    # The planner's ``named_places`` (name -> (x, y)) is what prompts read ("go to the kitchen");
+    # the pins show and edit that same table.
+    def places(self) -> list[dict[str, Any]]:
+        return [{"name": n, "x": round(xy[0], 2), "y": round(xy[1], 2)}
+                for n, xy in sorted(self._planner.named_places.items())]
+
+    def name_place(self, name: str, x_m: float, y_m: float) -> dict[str, Any]:
+        spot = self.spot(x_m, y_m)
+        if spot["cell"] != "free":
+            raise LangnavError(f"a named place must be on free floor: {spot['reason']}")
+        clean = " ".join(name.split()).lower()
+        if not clean:
+            raise LangnavError("a place needs a name, e.g. “kitchen”")
+        self._planner.name_place(clean, (x_m, y_m))
+        self.say("system", "info", {"text": f"I'll remember this spot as “{clean}” ({spot.get('where') or 'here'}). "
+                                            f"Say e.g. “go to the {clean}”."})
+        self.broadcaster.publish_event({"type": "places", "places": self.places()})
+        return {"ok": True, "places": self.places()}
+
+    def rename_place(self, old: str, new: str) -> dict[str, Any]:
+        table = self._planner.named_places
+        key, clean = " ".join(old.split()).lower(), " ".join(new.split()).lower()
+        if key not in table:
+            raise LangnavError(f"I know no place called “{old}”; I know: {', '.join(sorted(table)) or 'none yet'}")
+        if not clean:
+            raise LangnavError("a place needs a name, e.g. “kitchen”")
+        table[clean] = table.pop(key)
+        self.say("system", "info", {"text": f"“{key}” is now called “{clean}”."})
+        self.broadcaster.publish_event({"type": "places", "places": self.places()})
+        return {"ok": True, "places": self.places()}
+
+    def forget_place(self, name: str) -> dict[str, Any]:
+        table = self._planner.named_places
+        key = " ".join(name.split()).lower()
+        if table.pop(key, None) is None:
+            raise LangnavError(f"I know no place called “{name}”; I know: {', '.join(sorted(table)) or 'none yet'}")
+        self.say("system", "info", {"text": f"I forgot the place “{key}”."})
+        self.broadcaster.publish_event({"type": "places", "places": self.places()})
+        return {"ok": True, "places": self.places()}
+
     def set_translator(self, name: str) -> dict[str, Any]:
         names = translator_names()
         if name not in names:
