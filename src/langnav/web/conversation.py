@@ -56,7 +56,7 @@ KIND_WORDS: Final[dict[str, tuple[ElementKind, ...]]] = {
 _KINDS_RE: Final = "|".join(sorted((re.escape(k) for k in KIND_WORDS), key=len, reverse=True))
 _HOW_MANY: Final = re.compile(rf"\bhow many ({_KINDS_RE})\b", re.I)
 _WHERE: Final = re.compile(
-    rf"^\s*(where|which way)\s+(is|'s|are)\s+(the\s+)?(?P<kind>{_KINDS_RE})\s*(?P<number>\d+)\s*\??\s*$", re.I)
+    rf"^\s*(where|which way)(\s+is|\s+are|'s|’s)\s+(the\s+)?(?P<kind>{_KINDS_RE})\s*(?P<number>\d+)\s*\??\s*$", re.I)
 #: Words for the kinds in answers.
 _NOUN: Final = {ElementKind.ROOM: "room", ElementKind.HALLWAY: "hallway", ElementKind.DOOR: "door",
                 ElementKind.OBSTACLE: "obstacle", ElementKind.CORNER: "corner", ElementKind.WALL: "wall",
@@ -239,7 +239,10 @@ def candidate_examples(analysis: MapAnalysis | None, pose: Pose2D) -> list[str]:
     out += [f"go to {label(r.id)}" for r in others[:2]]
     if any(u.interior for u in analysis.unexplored):
         out += ["explore", "go to the nearest unexplored area, then come back here"]
-    out += ["how many rooms are there?", "move forward 1 metre, then turn left"]
+    if analysis.obstacles:
+        nearest = min(analysis.obstacles, key=lambda o: math.dist(o.centroid, (pose.x_m, pose.y_m)))
+        out.append(f"go to {label(nearest.id)}")
+    out += ["how many rooms are there?", "move forward 1 metre, then turn left", "turn around"]
     return out
 
 

@@ -647,6 +647,8 @@ class PlanView:
         message = event.message
         if kind == EventKind.SUCCEEDED and event.text == "Explore":
             message = s.feedback.exploration_left(message)
+        elif kind == EventKind.SUCCEEDED and (event.command or {}).get("command") not in QUERY_NAMES:
+            message = "done"  # the backend's own words carry coordinates ("reached (2.98, 4.53)")
         s.say("robot", "step", {"index": event.index, "status": status, "text": message,
                                 "command_text": event.text}, plan_id=self.plan_id)
         if kind == EventKind.SUCCEEDED and event.command and event.command.get("command") in QUERY_NAMES:
