@@ -353,3 +353,17 @@ def test_a_translator_that_cannot_be_used_is_refused_and_the_one_in_use_stays(ma
         r = client.post("/api/translator", json={"name": "gemini"})
         assert r.status_code == 400 and "GEMINI_API_KEY" in r.json()["error"]["message"]
         assert client.get("/api/status").json()["translator"] == "offline"
+
+
+def test_a_map_name_in_a_prompt_is_where_the_plan_goes_or_nothing_moves(make_client: AppFactory) -> None:
+    """"go through door 5" never drives through another door (a reading that lost the number)."""
+    with make_client() as client:
+        msgs = _prompt(client, "go through door 5").json()["messages"]
+        last = msgs[-1]
+        if last["kind"] == "plan":
+            poses = [p for c in last["commands"] for p in c["command"].get("poses", [])]
+            assert any(abs(p[0] - 4.0) < 1.5 and abs(p[1] - 5.85) < 1.5 for p in poses), poses
+            client.post("/api/stop")
+        else:
+            assert last["kind"] == "clarification" and "door 5" in last["text"]
+            assert client.get("/api/status").json()["plan"]["state"] == "idle"

@@ -114,3 +114,14 @@ def test_known_bounds_frame_the_mapped_cells() -> None:
     assert (x1 - x0, y1 - y0) == pytest.approx((40 * g.resolution_m, 20 * g.resolution_m), abs=1e-6)
     g.cells[:] = -1
     assert known_bounds(g) is None
+
+
+def test_named_elements_and_plan_reaches() -> None:
+    a = demo()
+    assert cv.named_elements("go past door 2 into room 3", a) == ["door_2", "room_3"]
+    assert cv.named_elements("go to door 42", a) == []
+    door5 = a.by_id("door_5")
+    near = (door5.center[0], door5.center[1] + 0.6)  # type: ignore[union-attr]
+    assert cv.plan_reaches([near], a, "door_5")
+    assert not cv.plan_reaches([(3.0, 4.5)], a, "door_5")
+    assert cv.plan_reaches([(3.0, 2.0)], a, "room_3") and not cv.plan_reaches([(3.0, 7.0)], a, "room_3")

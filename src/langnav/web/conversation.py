@@ -207,6 +207,46 @@ def element_card(e: Element) -> dict[str, object]:
     return {"id": e.id, "name": name, "kind": _NOUN.get(kind, kind.value), "size": size, "actions": actions}
 
 
+#: A plan "reaches" a named doorway, passage, piece of furniture or unexplored area when one of its
+#: goals is this close to it, beyond the element's own half-size (goals stand clear of walls and
+#: furniture, and a way through a doorway stops on either side of it).
+REACH_MARGIN_M: Final = 1.0
+
+
+def plan_reaches(goals: Sequence[tuple[float, float]], analysis: MapAnalysis, element_id: str) -> bool:
+    """Whether a plan whose navigation goals are ``goals`` goes to the element ``element_id``:
+    a goal in the room, or next to the doorway / passage / furniture / unexplored area."""
+    try:
+        e = analysis.by_id(element_id)
+    except KeyError:
+        return False
+    if isinstance(e, Room):
+        return any(analysis.room_at(x, y) is e for x, y in goals)
+    size = 0.0
+    if isinstance(e, Door | NarrowPassage):
+        size = e.width_m / 2
+    elif isinstance(e, Obstacle):
+        size = math.hypot(*e.extent_m) / 2
+    elif isinstance(e, UnexploredArea):
+        size = math.sqrt(e.area_m2 / math.pi)
+    pt = reference_point(e)
+    return any(math.dist(pt, g) <= size + REACH_MARGIN_M for g in goals)
+
+
+_NAMED: Final = re.compile(rf"\b(?P<kind>{_KINDS_RE})\s+(?P<number>\d+)\b", re.I)
+
+
+def named_elements(text: str, analysis: MapAnalysis) -> list[str]:
+    """Ids of the map elements a text names by their label ("door 2", "room 3")."""
+    out: list[str] = []
+    for m in _NAMED.finditer(text):
+        kinds = KIND_WORDS.get(m.group("kind").lower(), ())
+        for e in _elements(analysis, kinds):
+            if e.id.rsplit("_", 1)[-1] == m.group("number"):
+                out.append(e.id)
+    return out
+
+
 def help_answer(examples: Sequence[str]) -> str:
     shown = "\n".join(f"• {e}" for e in examples)
     return ("Tell me what to do in your own words: where to go (by the names on the map, like "
@@ -262,5 +302,17 @@ def starter_examples(analysis: MapAnalysis | None, pose: Pose2D, plan_ok: Callab
     return out
 
 
-__all__ = ["answer", "candidate_examples", "count_answer", "element_at", "element_card", "help_answer", "is_help", "relative_words",
-           "starter_examples", "where_answer"]
+__all__ = [
+    "answer",
+    "candidate_examples",
+    "count_answer",
+    "element_at",
+    "element_card",
+    "help_answer",
+    "is_help",
+    "named_elements",
+    "plan_reaches",
+    "relative_words",
+    "starter_examples",
+    "where_answer",
+]

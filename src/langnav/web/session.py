@@ -30,7 +30,7 @@ from typing import Any, Final
 import numpy as np
 
 from langnav.analysis.elements import MapAnalysis
-from langnav.analysis.identity import StableAnalyzer
+from langnav.analysis.identity import StableAnalyzer, label
 from langnav.errors import LangnavError
 from langnav.language.translator import available as translator_names
 from langnav.language.translator import clean_prompt, get_translator
@@ -111,6 +111,12 @@ def _moves(result: PlanResult) -> bool:
     if flat and isinstance(flat[0], Stop):
         return False
     return any(not isinstance(c, QUERY_COMMANDS) for c in flat)
+
+
+def _goals(result: PlanResult) -> list[tuple[float, float]]:
+    """Every navigation goal of a plan, in order."""
+    return [(float(p[0]), float(p[1])) for it in result.items for c in it.commands
+            if isinstance(c, NavigateThroughPoses) for p in c.poses]
 
 
 class SessionBusy(LangnavError):
@@ -262,8 +268,21 @@ class RobotSession:
                 out.append(self.say("robot", "answer", {"text": reply}))
                 return out
             source: MapAnalysis | OccupancyGrid = analysis or self.robot.get_map()
+            places_before = self.places()
             # The planner never raises for a user's mistake: the reason comes back as clarification.
             result = self._planner.plan(text, source, (pose.x_m, pose.y_m, math.degrees(pose.yaw_rad)))
+            if analysis is not None and not result.clarification:
+                # a name from the map ("door 5") must be where the plan goes: a reading that lost the
+                # number would send the robot to another door
+                missed = [e for e in conversation.named_elements(text, analysis)
+                          if not conversation.plan_reaches(_goals(result), analysis, e)]
+                if missed and _moves(result):
+                    names = ", ".join(label(e) for e in missed)
+                    out.append(self.say("robot", "clarification", {
+                        "text": f"My plan for that would not take me to {names}, so nothing moved. "
+                                f"Try e.g. “go to the nearest door” or click {names} on the map.",
+                        "translator": result.translator}))
+                    return out
             running = self._run
             if (not replace and running is not None and not running.done and not result.clarification
                     and _moves(result)):
@@ -273,6 +292,8 @@ class RobotSession:
                     "prompt": text}))
                 return out
             out.extend(self._show_and_run(result, source="prompt"))
+            if self.places() != places_before:
+                self._places_changed()  # the prompt named or forgot a place: the pins follow
             return out
         finally:
             self._plan_lock.release()
@@ -287,7 +308,12 @@ class RobotSession:
             if conversation.answer(prompt, analysis, pose, list) is not None:
                 return True
             result = self._planner.plan(prompt, analysis or self.robot.get_map(), xyz)
-            return not result.clarification and any(it.commands or it.explore for it in result.items)
+            if result.clarification or not any(it.commands or it.explore for it in result.items):
+                return False
+            # an example that names an element ("go to room 4") must go there
+            named = conversation.named_elements(prompt, analysis) if analysis is not None else []
+            goals = _goals(result)
+            return all(conversation.plan_reaches(goals, analysis, e) for e in named if analysis is not None)
 
         return conversation.starter_examples(analysis, pose, plan_ok)
 
@@ -377,44 +403,67 @@ class RobotSession:
         return {"ok": True, "plan": self.plan_state(), "message": msg.to_json()}
 
     # -- named places (pins on the map) ---------------------------------------------------------
-    # The planner's ``named_places`` (name -> (x, y)) is what prompts read ("go to the kitchen");
-    # the pins show and edit that same table.
+    # The planner's named places are what prompts read ("go to the kitchen"); the pins show and
+    # edit that same table: the planner's place store when it has one (``planner.places``), else
+    # its ``named_places`` dict (name -> (x, y)).
+    def _place_table(self) -> dict[str, tuple[float, float]]:
+        store = getattr(self._planner, "places", None)
+        if store is not None and hasattr(store, "all"):
+            return {p.name: (float(p.xy[0]), float(p.xy[1])) for p in store.all()}
+        table: dict[str, tuple[float, float]] = dict(getattr(self._planner, "named_places", {}))
+        return table
+
     def places(self) -> list[dict[str, Any]]:
         return [{"name": n, "x": round(xy[0], 2), "y": round(xy[1], 2)}
-                for n, xy in sorted(self._planner.named_places.items())]
+                for n, xy in sorted(self._place_table().items())]
+
+    def _places_changed(self) -> None:
+        self.broadcaster.publish_event({"type": "places", "places": self.places()})
 
     def name_place(self, name: str, x_m: float, y_m: float) -> dict[str, Any]:
         spot = self.spot(x_m, y_m)
         if spot["cell"] != "free":
             raise LangnavError(f"a named place must be on free floor: {spot['reason']}")
-        clean = " ".join(name.split()).lower()
+        clean = " ".join(name.split())
         if not clean:
             raise LangnavError("a place needs a name, e.g. “kitchen”")
         self._planner.name_place(clean, (x_m, y_m))
         self.say("system", "info", {"text": f"I'll remember this spot as “{clean}” ({spot.get('where') or 'here'}). "
                                             f"Say e.g. “go to the {clean}”."})
-        self.broadcaster.publish_event({"type": "places", "places": self.places()})
+        self._places_changed()
         return {"ok": True, "places": self.places()}
 
+    def _known_place(self, name: str) -> str:
+        table = self._place_table()
+        wanted = " ".join(name.split()).lower()
+        for key in table:
+            if key.lower() == wanted:
+                return key
+        raise LangnavError(f"I know no place called “{name}”; I know: {', '.join(sorted(table)) or 'none yet'}")
+
     def rename_place(self, old: str, new: str) -> dict[str, Any]:
-        table = self._planner.named_places
-        key, clean = " ".join(old.split()).lower(), " ".join(new.split()).lower()
-        if key not in table:
-            raise LangnavError(f"I know no place called “{old}”; I know: {', '.join(sorted(table)) or 'none yet'}")
+        key, clean = self._known_place(old), " ".join(new.split())
         if not clean:
             raise LangnavError("a place needs a name, e.g. “kitchen”")
-        table[clean] = table.pop(key)
+        store = getattr(self._planner, "places", None)
+        if store is not None and hasattr(store, "rename"):
+            store.rename(key, clean)
+        else:
+            table = self._planner.named_places
+            table[clean.lower()] = table.pop(key)
         self.say("system", "info", {"text": f"“{key}” is now called “{clean}”."})
-        self.broadcaster.publish_event({"type": "places", "places": self.places()})
+        self._places_changed()
         return {"ok": True, "places": self.places()}
 
     def forget_place(self, name: str) -> dict[str, Any]:
-        table = self._planner.named_places
-        key = " ".join(name.split()).lower()
-        if table.pop(key, None) is None:
-            raise LangnavError(f"I know no place called “{name}”; I know: {', '.join(sorted(table)) or 'none yet'}")
+        key = self._known_place(name)
+        store = getattr(self._planner, "places", None)
+        if store is not None and hasattr(store, "remove"):
+            store.remove(key)
+        else:
+            self._planner.named_places.pop(key)
         self.say("system", "info", {"text": f"I forgot the place “{key}”."})
-        self.broadcaster.publish_event({"type": "places", "places": self.places()})
+        self._places_changed()
         return {"ok": True, "places": self.places()}
 
     def set_translator(self, name: str) -> dict[str, Any]:
@@ -432,8 +481,11 @@ class RobotSession:
     def _make_planner(self, translator: str) -> Planner:
         planner = Planner(get_translator(translator), analyzer=self.identity)
         old = getattr(self, "_planner", None)
-        if old is not None:
-            planner.named_places = old.named_places  # names given before survive a translator change
+        if old is not None:  # names given before survive a translator change
+            if hasattr(old, "places"):
+                setattr(planner, "places", old.places)  # noqa: B010 (the place store, when the planner has one)
+            else:
+                planner.named_places = old.named_places
         return planner
 
     def _validate(self, commands: Sequence[Command]) -> CheckedPlan:
