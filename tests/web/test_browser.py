@@ -145,26 +145,26 @@ def _labels_apart(page: Any) -> list[dict[str, Any]]:
 
 # -- the first screen ------------------------------------------------------------------------------
 def test_every_starter_example_works_on_the_first_screen(browser: Any, tmp_path: Path) -> None:
-    """`make run`'s first screen (the demo world, its default start): click each example, send it,
-    and it does what it says."""
+    """`make run`'s first screen (the demo world, its default start): each example, clicked and
+    sent on a fresh first screen, does what it says."""
     with serving(db_path=tmp_path / "first.db") as url, opened(browser, url) as page:
         page.wait_for_selector("#examples .chip", timeout=SHORT_MS)
         examples = page.locator("#examples .chip").all_inner_texts()
         assert len(examples) == 5 and examples[0] == "where are you?"
         assert page.locator("#empty-hint li.example").count() == 5
         page.screenshot(path=str(ARTIFACTS / "web-first-screen.png"))
-        for i, text in enumerate(examples):
-            page.wait_for_function("!window.langnav.state.busy", timeout=SHORT_MS)
-            n_out, n_ans = page.locator(".msg.outcome").count(), page.locator(".msg.answer").count()
-            page.locator("#examples .chip").nth(i).click()
+    for i, text in enumerate(examples):
+        with serving(db_path=tmp_path / f"first-{i}.db") as url, opened(browser, url) as page:
+            page.wait_for_selector("#examples .chip", timeout=SHORT_MS)
+            chip = page.locator("#examples .chip").nth(i)
+            assert chip.inner_text() == text  # the same first screen every time
+            chip.click()
             assert page.input_value("#prompt") == text
             page.click("#send")
-            page.wait_for_function(
-                f"document.querySelectorAll('.msg.answer').length > {n_ans} || "
-                f"document.querySelectorAll('.plan-card').length > 0 && "
-                f"document.querySelectorAll('.msg.outcome').length > {n_out} || "
-                "document.querySelector('.plan-card:last-of-type .cmd.running') !== null", timeout=SHORT_MS)
-            if page.locator(".msg.answer").count() > n_ans:
+            page.wait_for_selector(".msg.answer, .plan-card, .msg.clarification, .msg.rejected", timeout=SHORT_MS)
+            assert page.locator(".msg.clarification, .msg.rejected").count() == 0, (
+                text, page.locator(".msg.clarification, .msg.rejected").all_inner_texts())
+            if page.locator(".msg.answer").count():
                 assert page.locator(".msg.answer").last.inner_text().startswith(("I'm in ", "I see "))
                 continue
             if text == "explore":  # runs until the floor is mapped: check that it drives, then stop it
@@ -174,7 +174,7 @@ def test_every_starter_example_works_on_the_first_screen(browser: Any, tmp_path:
                     timeout=DRIVE_MS)
                 page.click("#stop")
                 continue
-            page.wait_for_function(f"document.querySelectorAll('.msg.outcome').length > {n_out}", timeout=DRIVE_MS)
+            page.locator(".msg.outcome").last.wait_for(timeout=DRIVE_MS)
             outcome = page.locator(".msg.outcome").last
             assert "succeeded" in (outcome.get_attribute("class") or ""), (text, outcome.inner_text())
             page.screenshot(path=str(ARTIFACTS / f"web-example-{i + 1}.png"))

@@ -92,6 +92,10 @@ CANCEL_WAIT_S: Final = 3.0
 #: Wait this long for the sampler thread to end when closing.
 THREAD_JOIN_S: Final = 3.0
 QUERY_COMMANDS: Final = (GetRobotPoseLast, GetCurrentPath, GetMap)
+#: The starter examples are planned again when the robot has moved this far or turned this much
+#: ("the door on your left" changes with the heading) or the map's analysis changed.
+EXAMPLES_CELL_M: Final = 0.5
+EXAMPLES_TURN_DEG: Final = 30.0
 QUERY_NAMES: Final = ("GetRobotPoseLast", "GetCurrentPath", "GetMap")
 
 
@@ -189,6 +193,7 @@ class RobotSession:
         self.feedback = FeedbackManager(lambda: self._analysis)
         self._halt = threading.Event()
         self._exact = False  # the last prompt asked for coordinates
+        self._examples: tuple[Any, list[str]] | None = None
         self._sampler: threading.Thread | None = None
         self.frames_published = 0
 
@@ -299,9 +304,21 @@ class RobotSession:
             self._plan_lock.release()
 
     def examples(self) -> list[str]:
-        """Prompts that would run on this map from where the robot is (each one planned)."""
+        """Prompts that would run on this map from where the robot is (each one planned; kept
+        while the map analysis and the robot's spot stay the same, so many pages opening at once
+        do not plan them again and again)."""
         pose = self.robot.get_robot_pose()
         analysis = self._analysis or self._current_analysis()
+        key = (analysis, round(pose.x_m / EXAMPLES_CELL_M), round(pose.y_m / EXAMPLES_CELL_M),
+               round(math.degrees(pose.yaw_rad) / EXAMPLES_TURN_DEG), self.translator)
+        cached = self._examples
+        if cached is not None and cached[0] == key:
+            return list(cached[1])
+        out = self._plan_examples(pose, analysis)
+        self._examples = (key, out)
+        return list(out)
+
+    def _plan_examples(self, pose: Pose2D, analysis: MapAnalysis | None) -> list[str]:
         xyz = (pose.x_m, pose.y_m, math.degrees(pose.yaw_rad))
 
         def plan_ok(prompt: str) -> bool:
@@ -327,7 +344,7 @@ class RobotSession:
         out: dict[str, Any] = {"x": round(x_m, 2), "y": round(y_m, 2),
                                "element": conversation.element_card(element) if element is not None else None}
         if not grid.in_bounds(int(r), int(c)):
-            out.update(cell="outside", go=False, reason="That is outside my map.")
+            out.update(cell="outside", go=False, reason="That is outside the map.")
             return out
         value = int(grid.cells[int(r), int(c)])
         if value == FREE:
@@ -355,7 +372,7 @@ class RobotSession:
             out = [self.say("user", "prompt", {"text": f"Go to the spot I clicked ({where}){facing}"})]
             if not spot["go"]:
                 out.append(self.say("robot", "rejected", {"text": spot["reason"] + " Nothing moved.",
-                                                           "reasons": []}))
+                                                           "reasons": [spot["reason"]]}))
                 return out
             pose_cmd: list[float] = [x_m, y_m] if yaw_deg is None else [x_m, y_m, yaw_deg]
             cmd = NavigateThroughPoses(poses=[pose_cmd], note="the point you clicked")
@@ -731,3 +748,7 @@ class PlanView:
             s.say("robot", "outcome", {"status": status, "text": text}, plan_id=self.plan_id)
         finally:
             self._finished.set()
+            try:  # the robot is somewhere else now: the examples (and the plan state) with it
+                s.broadcaster.publish_event({"type": "status", "status": s.status()})
+            except LangnavError as exc:
+                log.warning("status after the plan: %s", exc)
