@@ -138,7 +138,8 @@ def robot_options(args: argparse.Namespace, environ: Mapping[str, str] | None = 
     flags to the simulator are refused; from the environment they are ignored (the variables may
     be set for a real robot while someone tries the simulator)."""
     env = os.environ if environ is None else environ
-    backend = args.backend or env.get(ENV_BACKEND) or DEFAULT_BACKEND
+    # getattr: a Namespace built by hand (a test, another tool) may leave the robot options out
+    backend = getattr(args, "backend", None) or env.get(ENV_BACKEND) or DEFAULT_BACKEND
     if backend not in BACKENDS:
         raise RobotError(f"{ENV_BACKEND}={backend!r} is not a backend; choose one of: {', '.join(BACKENDS)}")
     flags: dict[str, Any] = {}
@@ -159,7 +160,7 @@ def robot_options(args: argparse.Namespace, environ: Mapping[str, str] | None = 
         except argparse.ArgumentTypeError as exc:
             raise RobotError(f"{ENV_ROBOT_OPTIONS}: {exc}") from None
         from_env.setdefault(key, value)
-    url = args.rosbridge_url
+    url = getattr(args, "rosbridge_url", None)
     if url is not None:
         flags["rosbridge_url"] = url
     elif env.get(ENV_ROSBRIDGE_URL, "").strip():
