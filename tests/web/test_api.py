@@ -329,7 +329,7 @@ def test_spot_names_what_is_clicked_and_goto_refuses_obstacles_up_front(make_cli
     with make_client() as client:
         door = client.get("/api/spot", params={"x": 4.0, "y": 5.85}).json()
         assert door["element"]["name"] == "door 5" and door["element"]["kind"] == "door"
-        assert [a["prompt"] for a in door["element"]["actions"]] == ["go to door 5", "go through door 5"]
+        assert [a["prompt"] for a in door["element"]["actions"] if "prompt" in a] == ["go to door 5", "go through door 5"]
         table = client.get("/api/spot", params={"x": 2.8, "y": 7.5}).json()
         assert table["cell"] == "obstacle" and table["go"] is False
         assert table["element"]["kind"] == "obstacle" and table["element"]["size"] == "1.6 × 0.8 m"
@@ -367,3 +367,21 @@ def test_a_map_name_in_a_prompt_is_where_the_plan_goes_or_nothing_moves(make_cli
         else:
             assert last["kind"] == "clarification" and "door 5" in last["text"]
             assert client.get("/api/status").json()["plan"]["state"] == "idle"
+
+
+def test_places_named_from_the_map_are_listed_renamed_and_forgotten(make_client: AppFactory) -> None:
+    with make_client() as client:
+        r = client.post("/api/places", json={"name": "Front door", "x": 4.0, "y": 5.85, "element_id": "door_5"})
+        assert r.status_code == 200
+        (front,) = r.json()["places"]
+        assert abs(front["x"] - 4.0) < 0.1 and abs(front["y"] - 5.85) < 0.1
+        bad = client.post("/api/places", json={"name": "desk", "x": 2.8, "y": 7.5})  # on the table
+        assert bad.status_code == 400 and "free floor" in bad.json()["error"]["message"]
+        client.post("/api/places", json={"name": "kitchen", "x": 2.0, "y": 3.0})
+        names = [p["name"].lower() for p in client.get("/api/places").json()["places"]]
+        assert names == ["front door", "kitchen"]
+        client.post("/api/places/rename", json={"name": "kitchen", "new_name": "pantry"})
+        client.post("/api/places/forget", json={"name": "front door"})
+        assert [p["name"].lower() for p in client.get("/api/places").json()["places"]] == ["pantry"]
+        missing = client.post("/api/places/forget", json={"name": "garage"})
+        assert missing.status_code == 400 and "pantry" in missing.json()["error"]["message"]

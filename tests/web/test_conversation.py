@@ -72,7 +72,7 @@ def test_a_click_points_at_the_thin_things_first() -> None:
     assert card["kind"] == "obstacle" and card["size"] == "1.6 × 0.8 m"
     room = cv.element_at(a, 3.0, 2.0)
     assert room is not None and room.id == "room_3"
-    assert [x["prompt"] for x in cv.element_card(door)["actions"]] == ["go to door 5", "go through door 5"]
+    assert [x["prompt"] for x in cv.element_card(door)["actions"] if "prompt" in x] == ["go to door 5", "go through door 5"]
 
 
 def test_starter_examples_are_the_ones_that_plan() -> None:

@@ -96,6 +96,7 @@ class PlaceIn(_Body):
     name: str = Field(min_length=1, max_length=60, description="what to call the spot")
     x: float = Field(allow_inf_nan=False, description="map-frame x, metres")
     y: float = Field(allow_inf_nan=False, description="map-frame y, metres")
+    element_id: str | None = Field(default=None, max_length=60, description="name this map element instead")
 
 
 class RenameIn(_Body):
@@ -327,7 +328,7 @@ def create_app(settings: WebSettings, session_factory: Callable[[WebSettings], R
 
     @app.post("/api/places", dependencies=moving)
     def name_place(body: PlaceIn, request: Request) -> dict[str, Any]:
-        return session_of(request).name_place(body.name, body.x, body.y)
+        return session_of(request).name_place(body.name, body.x, body.y, body.element_id)
 
     @app.post("/api/places/rename", dependencies=moving)
     def rename_place(body: RenameIn, request: Request) -> dict[str, Any]:

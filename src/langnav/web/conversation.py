@@ -204,6 +204,7 @@ def element_card(e: Element) -> dict[str, object]:
     elif isinstance(e, UnexploredArea):
         size = f"about {e.area_m2:.0f} m²"
         actions.append({"label": "Explore", "prompt": "explore"})
+    actions.append({"label": "Name it…", "name": e.id})
     return {"id": e.id, "name": name, "kind": _NOUN.get(kind, kind.value), "size": size, "actions": actions}
 
 

@@ -29,7 +29,7 @@ from typing import Any, Final
 
 import numpy as np
 
-from langnav.analysis.elements import MapAnalysis
+from langnav.analysis.elements import MapAnalysis, reference_point
 from langnav.analysis.identity import StableAnalyzer, label
 from langnav.errors import LangnavError
 from langnav.language.translator import available as translator_names
@@ -437,9 +437,20 @@ class RobotSession:
     def _places_changed(self) -> None:
         self.broadcaster.publish_event({"type": "places", "places": self.places()})
 
-    def name_place(self, name: str, x_m: float, y_m: float) -> dict[str, Any]:
+    def name_place(self, name: str, x_m: float, y_m: float, element_id: str | None = None) -> dict[str, Any]:
+        """Name a spot of free floor, or a map element (at its reference point: "front door")."""
         spot = self.spot(x_m, y_m)
-        if spot["cell"] != "free":
+        if element_id is not None:
+            analysis = self._analysis or self._current_analysis()
+            try:
+                element = analysis.by_id(element_id) if analysis is not None else None
+            except KeyError:
+                element = None
+            if element is None:
+                raise LangnavError(f"there is no {label(element_id)} on the map now; click it again")
+            x_m, y_m = reference_point(element)
+            spot["where"] = label(element_id)
+        elif spot["cell"] != "free":
             raise LangnavError(f"a named place must be on free floor: {spot['reason']}")
         clean = " ".join(name.split())
         if not clean:

@@ -783,7 +783,8 @@
     if (e) {
       for (const a of e.actions) {
         const b = el("button", "btn", a.label); b.type = "button";
-        b.addEventListener("click", () => { p.hidden = true; sendPrompt(a.prompt); });
+        if (a.prompt) b.addEventListener("click", () => { p.hidden = true; sendPrompt(a.prompt); });
+        else b.addEventListener("click", () => namePlace(spot.x, spot.y, a.name));
         acts.append(b);
       }
     }
@@ -810,11 +811,14 @@
     try { (await api("/api/prompt", { text })).messages.forEach(render); }
     catch (e) { showError(e.message); }
   }
-  async function namePlace(x, y) {
-    const name = window.prompt("Name this spot (e.g. kitchen, charging dock):");
+  async function namePlace(x, y, elementId) {
+    const name = window.prompt(elementId ? `A name for ${nice(elementId)} (e.g. front door):`
+      : "Name this spot (e.g. kitchen, charging dock):");
     if (!name || !name.trim()) return;
     $("popup").hidden = true;
-    try { places = (await api("/api/places", { name: name.trim(), x, y })).places; dirty = true; }
+    const body = { name: name.trim(), x, y };
+    if (elementId) body.element_id = elementId;
+    try { places = (await api("/api/places", body)).places; dirty = true; }
     catch (e) { showError(e.message); }
   }
   async function loadPlaces() {
