@@ -42,8 +42,11 @@ class HistoryView:
 
     @property
     def session_start(self) -> Pose | None:
-        """Where the robot was when the session's first trip began."""
-        return self.trips[0] if self.trips else None
+        """Where the robot was when the session's first trip began (or, before any trip, where it was
+        first seen)."""
+        if self.trips:
+            return self.trips[0]
+        return Pose(self.trail[0][0], self.trail[0][1], 0.0) if self.trail else None
 
     def last_trip_start_away_from(self, xy: Point) -> Pose | None:
         """The start of the latest trip that began somewhere else than ``xy`` ("where you were")."""

@@ -45,7 +45,7 @@ PlaceKind = Literal["spot", "room", "hallway", "door", "corner", "wall", "obstac
 PLACE_KINDS: Final[tuple[str, ...]] = ("spot", "room", "hallway", "door", "corner", "wall", "obstacle",
                                        "narrow_passage", "unexplored_area")
 
-_ARTICLES_RE: Final = re.compile(r"^(?:(?:the|a|an|my|our|your)\s+)+")
+_ARTICLES_RE: Final = re.compile(r"^(?:(?:the|a|an|my|our|your)(?:\s+|$))+")
 _EDGE_JUNK_RE: Final = re.compile(r"^[\s\"'`“”‘’.,;:!?()\[\]]+|[\s\"'`“”‘’.,;:!?()\[\]]+$")
 _CONTROL_RE: Final = re.compile(r"[\x00-\x1f\x7f]")
 #: Labels drawn on the map ("door 2", "room 3"): names a prompt already uses for that element.
@@ -74,7 +74,7 @@ def clean_name(name: str) -> str:
     if _CONTROL_RE.search(name):
         raise BadPlaceName("a place name cannot hold control characters (tabs, new lines)")
     shown = _EDGE_JUNK_RE.sub("", " ".join(name.split()))
-    shown = re.sub(r"^(?:(?:the|a|an|my|our|your)\s+)+", "", shown, flags=re.IGNORECASE)
+    shown = re.sub(r"^(?:(?:the|a|an|my|our|your)(?:\s+|$))+", "", shown, flags=re.IGNORECASE)
     shown = _EDGE_JUNK_RE.sub("", shown)
     key = place_key(shown)
     if not key:
