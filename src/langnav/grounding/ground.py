@@ -257,7 +257,7 @@ def ground_step(step: Step, ctx: GroundingContext, pose: Pose, index: int = 0) -
     if m in (Movement.NAME_PLACE, Movement.FORGET_PLACE) or (m == Movement.QUERY and step.query == Query.PLACES):
         return _place_step(step, ctx, pose, index)
     step = _resolved(step, ctx, pose)
-    if m == Movement.ROTATE and (step.target is not None or step.heading_deg is not None):
+    if m == Movement.ROTATE and step.target is not None and step.heading_deg is None:
         return _face(step, ctx, pose, index)
     if m == Movement.STOP:
         return GroundedStep(index, step, (Stop(note="stop now"),), pose, pose, "stop now")
@@ -281,6 +281,8 @@ def ground_step(step: Step, ctx: GroundingContext, pose: Pose, index: int = 0) -
 
 # ------------------------------------------------------------------------------ rotate / move
 def _rotate(step: Step, pose: Pose, index: int) -> GroundedStep:
+    if step.heading_deg is not None:
+        return _face_heading(step, pose, index)
     d = step.direction
     direction: Literal["left", "right"]
     if d == Direction.AROUND:
@@ -302,6 +304,21 @@ def _rotate(step: Step, pose: Pose, index: int) -> GroundedStep:
     sign = 1.0 if direction == "left" else -1.0
     end = Pose(pose.x_m, pose.y_m, pose.yaw_rad + sign * math.radians(n * ROTATE_STEP_DEG))
     note = "turn around" if d == Direction.AROUND else f"turn {direction} {angle:g}°"
+    return GroundedStep(index, step, (Rotate(direction=direction, repeat=n, note=note),), pose, end, note)
+
+
+def _face_heading(step: Step, pose: Pose, index: int) -> GroundedStep:
+    """'face north': one turn the shorter way from the heading the robot has now (README "Compass";
+    exactly 180 degrees may go either way, left is used); nothing when it already faces that way."""
+    heading = float(step.heading_deg or 0.0)
+    delta = (heading - pose.yaw_deg + 180.0) % 360.0 - 180.0  # in [-180, 180)
+    note = f"turn to face heading {heading:g}°"
+    if abs(delta) < ROTATE_STEP_DEG / 2:
+        return GroundedStep(index, step, (), pose, pose, f"already facing heading {heading:g}°")
+    direction: Literal["left", "right"] = "left" if delta > 0 or abs(delta) >= 180.0 - 1e-9 else "right"
+    n = steps_for_angle(abs(delta))
+    sign = 1.0 if direction == "left" else -1.0
+    end = Pose(pose.x_m, pose.y_m, pose.yaw_rad + sign * math.radians(n * ROTATE_STEP_DEG))
     return GroundedStep(index, step, (Rotate(direction=direction, repeat=n, note=note),), pose, end, note)
 
 
@@ -521,25 +538,21 @@ def _resolved(step: Step, ctx: GroundingContext, pose: Pose) -> Step:
 
 
 def _face(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> GroundedStep:
-    """'Turn to face the door', 'face north': one rotation the shorter way."""
+    """'Turn to face the door': one rotation the shorter way ('face north' is ``_face_heading``)."""
     ids: tuple[str, ...] = ()
-    if step.heading_deg is not None:
-        what = compose.compass_word(step.heading_deg)
-        yaw = math.radians(step.heading_deg)
+    ref = step.target
+    assert ref is not None
+    if ref.name or ref.place is not None or ref.kind == Kind.WALL:
+        point, what, ids = _point_of(ref, ctx, pose, step.text)
+    elif ref.kind == Kind.NONE:
+        raise GroundingError("Which way should I face? Name a place, e.g. 'face the door' or 'face north'.")
     else:
-        ref = step.target
-        assert ref is not None
-        if ref.name or ref.place is not None or ref.kind == Kind.WALL:
-            point, what, ids = _point_of(ref, ctx, pose, step.text)
-        elif ref.kind == Kind.NONE:
-            raise GroundingError("Which way should I face? Name a place, e.g. 'face the door' or 'face north'.")
-        else:
-            e = select(ref, ctx.analysis, pose, step.text)
-            point = compose.facing_point(e, pose, space_of(ctx.analysis, pose.xy), ctx.analysis.doors)
-            what, ids = describe_ref(ref), (e.id,)
-        if math.dist(point, pose.xy) < compose.MIN_OFFSET_RUN_M:
-            raise GroundingError(f"I am at {what}, so there is no way to turn to face it.")
-        yaw = math.atan2(point[1] - pose.y_m, point[0] - pose.x_m)
+        e = select(ref, ctx.analysis, pose, step.text)
+        point = compose.facing_point(e, pose, space_of(ctx.analysis, pose.xy), ctx.analysis.doors)
+        what, ids = describe_ref(ref), (e.id,)
+    if math.dist(point, pose.xy) < compose.MIN_OFFSET_RUN_M:
+        raise GroundingError(f"I am at {what}, so there is no way to turn to face it.")
+    yaw = math.atan2(point[1] - pose.y_m, point[0] - pose.x_m)
     cmd, end, note = compose.facing_turn(pose, yaw, what)
     if cmd is None:
         return GroundedStep(index, step, (), pose, pose, note, ids, messages=(note + ".",))

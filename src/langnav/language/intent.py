@@ -170,6 +170,10 @@ class Step(_Model):
     direction: Direction | None = None
     distance_m: Annotated[float, Field(ge=0, le=100)] | None = None
     angle_deg: Annotated[float, Field(ge=0, le=3600)] | None = None
+    heading_deg: Annotated[float, Field(ge=0, lt=360)] | None = Field(
+        default=None, description="with movement 'rotate': turn to face this compass heading of the map, "
+        "degrees counter-clockwise from east (east 0, north 90, west 180, south 270), the shorter way; "
+        "'go north 3 m' is this turn, then a move forward")
     amount: Amount | None = None
     query: Query | None = None
     # -- composition (issue 9 items 3-5) ---------------------------------------------------------
@@ -180,9 +184,6 @@ class Step(_Model):
     fraction: Annotated[float, Field(gt=0, le=1)] | None = Field(
         default=None, description="part of the way to the target or along it: 'halfway down the corridor' "
         "-> 0.5")
-    heading_deg: Annotated[float, Field(ge=0, lt=360)] | None = Field(
-        default=None, description="rotate to face a compass heading in the map frame: east 0, north 90, "
-        "west 180, south 270 ('face north')")
     place_name: Annotated[str, Field(min_length=1, max_length=80)] | None = Field(
         default=None, description="name_place / forget_place: the user's name for the place ('kitchen'); "
         "name_place with a target names that element, without one the robot's spot")

@@ -10,7 +10,6 @@ It reads, around the clause reader (``read_clause``), the words that attach to a
   are in / to room 3" (``ElementRef.relation``);
 * returns: "back to where you were" (``Place.PREVIOUS``), "come back here", "the door you just
   passed" (``ElementRef.passed``);
-* facing a compass heading: "face north", "turn to face south-east" (``Step.heading_deg``);
 * named places: "call this spot the kitchen", "this is the charging dock", "remember this place as
   X", "name this room X", "call door 2 the lab", "forget X", "what places do you know?".
 
@@ -93,16 +92,6 @@ _ADJACENT_RE: Final = re.compile(
     r"(?:next\s+to|beside|adjacent\s+to|next\s+door\s+to|alongside|neighbou?ring)\s+"
     r"(?:(?P<this>" + _THIS_SPACE + r")|(?P<lnoun>room|hallway|corridor)\s+(?P<label>\d{1,4}|" + _NUMBER_WORDS
     + r"))\b|\b(?P<noun2>room)\s+next\s+door\b")
-_COMPASS: Final[dict[str, float]] = {
-    "east": 0.0, "north east": 45.0, "northeast": 45.0, "north": 90.0, "north west": 135.0, "northwest": 135.0,
-    "west": 180.0, "south west": 225.0, "southwest": 225.0, "south": 270.0, "south east": 315.0,
-    "southeast": 315.0}
-_FACE_HEADING_RE: Final = re.compile(
-    r"^(?:(?:please|now|ok|okay)\s+)*(?:(?:turn|rotate|spin|pivot)\s+(?:(?:around|round)\s+)?(?:so\s+(?:that\s+)?you\s+)?"
-    r"(?:to\s+)?(?:face|facing|point|look)?|face|point|look)\s+(?:to\s+(?:the\s+)?|towards?\s+(?:the\s+)?|the\s+)?"
-    r"(?P<dir>north[\s-]*east|north[\s-]*west|south[\s-]*east|south[\s-]*west|north|south|east|west)(?:wards?)?"
-    r"(?:\s+please)?\s*$")
-
 # -- named places --------------------------------------------------------------------------------
 _NAME_TAIL: Final = r"(?P<name>[^,;]+?)(?:\s+(?:please|for\s+me|now|from\s+now\s+on))*\s*$"
 _SPOT: Final = (r"(?:this\s+(?:spot|place|position|point|location|pose)|here|where\s+(?:you|we)\s+are(?:\s+now)?|"
@@ -424,10 +413,6 @@ def read_composed(text: str, previous: Step | None = None, known_names: Sequence
                   previous_target: ElementRef | None = None, reader: ClauseReader = read_clause) -> Reading:
     """Read one clause with the composition words taken out and attached (see the module docstring)."""
     norm = normalize(text)
-    m = _FACE_HEADING_RE.match(norm)
-    if m is not None:
-        heading = _COMPASS[" ".join(m.group("dir").replace("-", " ").split())]
-        return Reading(steps=(Step(movement=Movement.ROTATE, heading_deg=heading, text=text[:500]),))
     places = read_place_command(norm, text, previous, known_names, previous_target, reader)
     if places is not None:
         return Reading(steps=places)
