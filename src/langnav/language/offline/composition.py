@@ -469,24 +469,23 @@ def _named_back(step: Step, stand_ins: dict[str, str]) -> Step:
 # ------------------------------------------------------------------------------ ask, don't guess
 def _place_word_re() -> re.Pattern[str]:
     from langnav.language.offline import lexicon as lx
-    from langnav.language.offline.numbers import ANGLE_UNITS_DEG, LENGTH_UNITS_M
-
     # superlatives proper ("nearest", "last"), not the plain adjectives beside them ("small", "big"): an
     # unread adjective describes the element the other words chose; an unread superlative chooses
     superlatives = {w for w in lx.SUPERLATIVES if w.endswith("est") or w in ("last", "final", "opposite")}
+    # units without a number are no amount ("mm" is a hesitation); a number is caught by itself
     words = {*lx.ELEMENT_NOUNS, *lx.ORDINALS, *superlatives, *lx.SIDE_ADJECTIVES, *lx.FRONT_BACK_ADJECTIVES,
-             *(w for w in LENGTH_UNITS_M if w.isalpha() and len(w) > 1), *(w for w in ANGLE_UNITS_DEG if w.isalpha()),
              *(w for w in ONES if ONES[w] > 0), *COMPOSITION_WORDS}
     alternation = "|".join(sorted((re.escape(w) for w in words), key=len, reverse=True))
     return re.compile(r"\d|\b(?:" + alternation + r")\b", re.IGNORECASE)
 
 
-#: Words of where and how far that are not element nouns, sides, orders, numbers or units.
+#: Words of where and how far that are not element nouns, sides, orders or numbers: each names a place
+#: or a distance relative to one. (Words that also work as fillers or that only say how to go, "after",
+#: "back", "around", "through", are left out: unread, they seldom change the goal.)
 COMPOSITION_WORDS: Final = frozenset({
-    "past", "beyond", "before", "after", "halfway", "half", "third", "quarter", "across", "opposite", "next",
-    "until", "till", "between", "near", "far", "further", "farther", "back", "left", "right", "ahead", "behind",
-    "north", "south", "east", "west", "clockwise", "counterclockwise", "anticlockwise", "passed", "through",
-    "along", "around", "beside", "inside", "outside", "into", "toward", "towards"})
+    "past", "beyond", "before", "halfway", "half", "third", "quarter", "across", "opposite", "next", "until",
+    "till", "between", "near", "far", "further", "farther", "left", "right", "ahead", "behind", "north", "south",
+    "east", "west", "clockwise", "counterclockwise", "anticlockwise", "passed", "beside"})
 _PLACE_WORD_RE: re.Pattern[str] | None = None
 
 
