@@ -110,13 +110,14 @@ _NAME_ELEMENT_RES: Final = (
                r"\s+is\s+(?:called\s+|named\s+)?" + _NAME_TAIL),
 )
 _FORGET_RE: Final = re.compile(
-    r"^(?:please\s+)?(?:forget(?:\s+about)?|delete|remove|drop|unname|erase)\s+(?:the\s+)?(?:(?:place|spot|name)\s+"
-    r"(?:called\s+|named\s+)?)?" + _NAME_TAIL)
+    r"^(?:please\s+)?(?:(?:forget(?:\s+about)?|unname)\s+(?:the\s+)?(?:(?:place|spot|name)\s+(?:called\s+|named\s+)?)?|"
+    r"(?:delete|remove|drop|erase)\s+(?:the\s+)?(?:named\s+|saved\s+)?(?:place|spot|name)\s+(?:called\s+|named\s+)?)"
+    + _NAME_TAIL)
 _LIST_RE: Final = re.compile(
-    r"^(?:(?:please|so|ok|okay)\s+)*(?:(?:what|which)\s+(?:places|spots|names|locations)\s+(?:do\s+you\s+(?:know|remember|have)|"
-    r"have\s+(?:you|i|we)\s+(?:named|saved|got)|are\s+(?:there|named|saved|known))|"
+    r"^(?:(?:please|so|ok|okay)\s+)*(?:(?:what|which)\s+(?:named\s+|saved\s+)?(?:places|spots|locations)"
+    r"(?:\s+(?:do|did|have|are|can|you)\b.*)?$|"
     r"(?:list|show(?:\s+me)?|tell\s+me)\s+(?:the\s+|my\s+|your\s+|all\s+(?:the\s+)?)?(?:named\s+|saved\s+|known\s+)?"
-    r"(?:places|spots|locations)(?:\s+you\s+know)?|(?:what|which)\s+places\s+have\s+names)\b")
+    r"(?:places|spots|locations)(?:\s+you\s+know)?\s*$|(?:what|which)\s+places\s+have\s+names)")
 _FORGET_NOT_PLACES: Final = re.compile(r"^(?:that|it|this|everything|all|the\s+map|map|what\s+i\s+said)$")
 
 
@@ -423,7 +424,7 @@ def read_composed(text: str, previous: Step | None = None, known_names: Sequence
     rewritten, stand_ins = _stand_in_names(rewritten, known_names)
     if not marks.any and not stand_ins:
         return reader(text, previous, known_names, previous_target)
-    reading = reader(rewritten, previous, (*known_names, *stand_ins), previous_target)
+    reading = _words_back(reader(rewritten, previous, (*known_names, *stand_ins), previous_target), stand_ins)
     if not reading.steps:
         return reading
     steps, left = attach(reading.steps, marks)
@@ -454,6 +455,20 @@ def _stand_in_names(norm: str, known_names: Sequence[str]) -> tuple[str, dict[st
         if len(stand_ins) >= 20:
             break
     return norm, stand_ins
+
+
+def _words_back(reading: Reading, stand_ins: dict[str, str]) -> Reading:
+    """The user's names instead of the stand-ins in what a reading reports (unread words, a name)."""
+    if not stand_ins:
+        return reading
+
+    def back(text: str) -> str:
+        for token, original in stand_ins.items():
+            text = text.replace(token, original)
+        return text
+
+    return replace(reading, unread=tuple(back(u) for u in reading.unread),
+                   name=back(reading.name) if reading.name else reading.name)
 
 
 def _named_back(step: Step, stand_ins: dict[str, str]) -> Step:
