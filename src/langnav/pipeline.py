@@ -36,7 +36,7 @@ from langnav.grounding.ground import (
 from langnav.grounding.history import PoseHistory
 from langnav.language.errors import TranslationError
 from langnav.language.intent import Intent, Step
-from langnav.language.offline.composition import could_change_where
+from langnav.language.offline.ask import spatial
 from langnav.language.translator import Context, Translator, clean_prompt
 from langnav.maps.grid import OccupancyGrid
 from langnav.places.errors import PlaceError
@@ -200,7 +200,7 @@ class Planner:
             return self._refusal(prompt, intent, "I will not run that: " + "; ".join(exc.reasons) + ".", name)
         except GroundingError as exc:
             return self._refusal(prompt, intent, str(exc), name)
-        doubtful = [u for u in intent.unread if could_change_where(u)]
+        doubtful = [u for u in intent.unread if spatial(u)]
         if doubtful:
             # ask, don't guess: words not read that could change where or how far the robot goes
             return self._refusal(prompt, intent, unread_question(grounded, doubtful), name)

@@ -479,36 +479,3 @@ def _named_back(step: Step, stand_ins: dict[str, str]) -> Step:
         if ref.name is not None and ref.name in stand_ins:
             update[key] = ref.model_copy(update={"name": stand_ins[ref.name][:80]})
     return step.model_copy(update=update) if update else step
-
-
-# ------------------------------------------------------------------------------ ask, don't guess
-def _place_word_re() -> re.Pattern[str]:
-    from langnav.language.offline import lexicon as lx
-    # superlatives proper ("nearest", "last"), not the plain adjectives beside them ("small", "big"): an
-    # unread adjective describes the element the other words chose; an unread superlative chooses
-    superlatives = {w for w in lx.SUPERLATIVES if w.endswith("est") or w in ("last", "final", "opposite")}
-    # units without a number are no amount ("mm" is a hesitation); a number is caught by itself
-    words = {*lx.ELEMENT_NOUNS, *lx.ORDINALS, *superlatives, *lx.SIDE_ADJECTIVES, *lx.FRONT_BACK_ADJECTIVES,
-             *(w for w in ONES if ONES[w] > 0), *COMPOSITION_WORDS}
-    alternation = "|".join(sorted((re.escape(w) for w in words), key=len, reverse=True))
-    return re.compile(r"\d|\b(?:" + alternation + r")\b", re.IGNORECASE)
-
-
-#: Words of where and how far that are not element nouns, sides, orders or numbers: each names a place
-#: or a distance relative to one. (Words that also work as fillers or that only say how to go, "after",
-#: "back", "around", "through", are left out: unread, they seldom change the goal.)
-COMPOSITION_WORDS: Final = frozenset({
-    "past", "beyond", "before", "halfway", "half", "third", "quarter", "across", "opposite", "next", "until",
-    "till", "between", "near", "far", "further", "farther", "left", "right", "ahead", "behind", "north", "south",
-    "east", "west", "clockwise", "counterclockwise", "anticlockwise", "passed", "beside"})
-_PLACE_WORD_RE: re.Pattern[str] | None = None
-
-
-def could_change_where(unread: str) -> bool:
-    """Whether words left unread could change where or how far the robot goes: they hold a number,
-    a unit, an element noun, a side, an order, a superlative or a word of place ('past', 'halfway',
-    'across'). Such words are never dropped: the robot asks instead of running without them."""
-    global _PLACE_WORD_RE
-    if _PLACE_WORD_RE is None:
-        _PLACE_WORD_RE = _place_word_re()
-    return _PLACE_WORD_RE.search(unread) is not None
