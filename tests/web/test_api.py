@@ -385,3 +385,27 @@ def test_places_named_from_the_map_are_listed_renamed_and_forgotten(make_client:
         assert [p["name"].lower() for p in client.get("/api/places").json()["places"]] == ["pantry"]
         missing = client.post("/api/places/forget", json={"name": "garage"})
         assert missing.status_code == 400 and "pantry" in missing.json()["error"]["message"]
+
+
+def test_places_named_in_words_show_as_pins_and_answers_are_plain(make_client: AppFactory) -> None:
+    with make_client() as client:
+        r = _prompt(client, "call this spot the kitchen").json()["messages"]
+        assert r[-1]["kind"] == "answer"
+        assert "kitchen" in r[-1]["text"] and "hallway 2" in r[-1]["text"] and "1.5," not in r[-1]["text"]
+        assert [p["name"].lower() for p in client.get("/api/places").json()["places"]] == ["kitchen"]
+        known = _prompt(client, "what places do you know?").json()["messages"][-1]
+        assert known["kind"] == "answer" and "kitchen" in known["text"]
+        _prompt(client, "move forward 1 metre")
+        _wait_idle(client, 30.0)
+        back = _prompt(client, "go to the kitchen").json()["messages"][-1]
+        assert back["kind"] == "plan"
+        _wait_idle(client, 30.0)
+        x, y, _ = client.get("/api/status").json()["pose"]
+        assert abs(x - 1.5) < 0.3 and abs(y - 4.95) < 0.3
+
+
+def test_named_places_survive_a_restart(make_client: AppFactory) -> None:
+    with make_client() as client:
+        assert client.post("/api/places", json={"name": "dock", "x": 2.0, "y": 3.0}).status_code == 200
+    with make_client() as client:  # the same database directory: the same places file
+        assert [p["name"] for p in client.get("/api/places").json()["places"]] == ["dock"]

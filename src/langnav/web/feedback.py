@@ -113,6 +113,9 @@ def describe_path(path: Sequence[tuple[float, float]], analysis: MapAnalysis | N
 _NUMBER_WORDS: Final = re.compile(r"\b(coordinates?|exact(ly)?|precise(ly)?|x\s*(and|,)\s*y|numbers?)\b", re.I)
 
 
+_COORDS: Final = re.compile(r"\((-?\d+(?:\.\d+)?),\s*(-?\d+(?:\.\d+)?)\)")
+
+
 def asks_for_numbers(prompt: str) -> bool:
     """Whether a question asks for coordinates ("where exactly are you?", "your coordinates?")."""
     return bool(_NUMBER_WORDS.search(prompt))
@@ -259,6 +262,17 @@ class FeedbackManager:
                                          if where_words(analysis, *u.centroid) else "") for u in left[:3])
         more = f" and {len(left) - 3} more" if len(left) > 3 else ""
         return f"{message}. Still unexplored on the map: {names}{more}"
+
+    def placed(self, text: str) -> str:
+        """A reply with map coordinates "(x, y)" in it, with the place's name in their stead when
+        the map names the spot (coordinates only when nothing does)."""
+        analysis = self._analysis()
+
+        def name(m: re.Match[str]) -> str:
+            where = where_words(analysis, float(m.group(1)), float(m.group(2)))
+            return f"({where})" if where else m.group(0)
+
+        return _COORDS.sub(name, text)
 
     def command(self, cmd: Command) -> str:
         return plain_command(cmd, self._analysis())

@@ -29,7 +29,7 @@ from typing import Any, Final
 
 import numpy as np
 
-from langnav.analysis.elements import MapAnalysis, reference_point
+from langnav.analysis.elements import MapAnalysis, element_kind, reference_point
 from langnav.analysis.identity import StableAnalyzer, label
 from langnav.errors import LangnavError
 from langnav.language.translator import available as translator_names
@@ -37,6 +37,7 @@ from langnav.language.translator import clean_prompt, get_translator
 from langnav.maps.demo import DEMO_KNOWN_MAP, DEMO_START
 from langnav.maps.grid import FREE, OccupancyGrid
 from langnav.pipeline import Planner, PlanResult, default_analyzer
+from langnav.places import JsonPlaceStore, NamedPlace, PlaceError, PlaceStore
 from langnav.plan.commands import (
     Command,
     GetCurrentPath,
@@ -177,6 +178,11 @@ class RobotSession:
         # every analysis of this robot's map (the sampler's and the planner's re-grounding ones)
         # keeps the element ids of the ones before: "door 2" stays door 2 while the map grows
         self.identity = StableAnalyzer(default_analyzer)
+        try:
+            self.place_store: PlaceStore = JsonPlaceStore(settings.places_file)
+        except PlaceError:
+            self.store.close()
+            raise
         self._planner = self._make_planner(self.translator)
         self._plan_lock = threading.Lock()   # one prompt planned at a time
         self._state_lock = threading.Lock()
@@ -420,26 +426,17 @@ class RobotSession:
         return {"ok": True, "plan": self.plan_state(), "message": msg.to_json()}
 
     # -- named places (pins on the map) ---------------------------------------------------------
-    # The planner's named places are what prompts read ("go to the kitchen"); the pins show and
-    # edit that same table: the planner's place store when it has one (``planner.places``), else
-    # its ``named_places`` dict (name -> (x, y)).
-    def _place_table(self) -> dict[str, tuple[float, float]]:
-        store = getattr(self._planner, "places", None)
-        if store is not None and hasattr(store, "all"):
-            return {p.name: (float(p.xy[0]), float(p.xy[1])) for p in store.all()}
-        table: dict[str, tuple[float, float]] = dict(getattr(self._planner, "named_places", {}))
-        return table
-
+    # The session's place store (a JSON file kept across restarts) is the one the planner reads
+    # ("go to the kitchen", "call this spot the kitchen"); the pins show and edit it.
     def places(self) -> list[dict[str, Any]]:
-        return [{"name": n, "x": round(xy[0], 2), "y": round(xy[1], 2)}
-                for n, xy in sorted(self._place_table().items())]
+        return [{"name": p.name, "x": round(p.xy[0], 2), "y": round(p.xy[1], 2)}
+                for p in sorted(self.place_store.all(), key=lambda p: p.key)]
 
     def _places_changed(self) -> None:
         self.broadcaster.publish_event({"type": "places", "places": self.places()})
 
     def name_place(self, name: str, x_m: float, y_m: float, element_id: str | None = None) -> dict[str, Any]:
-        """Name a spot of free floor, or a map element (at its reference point: "front door")."""
-        spot = self.spot(x_m, y_m)
+        """Name a spot of free floor, or a map element ("front door", kept at the element)."""
         if element_id is not None:
             analysis = self._analysis or self._current_analysis()
             try:
@@ -448,49 +445,29 @@ class RobotSession:
                 element = None
             if element is None:
                 raise LangnavError(f"there is no {label(element_id)} on the map now; click it again")
-            x_m, y_m = reference_point(element)
-            spot["where"] = label(element_id)
-        elif spot["cell"] != "free":
-            raise LangnavError(f"a named place must be on free floor: {spot['reason']}")
-        clean = " ".join(name.split())
-        if not clean:
-            raise LangnavError("a place needs a name, e.g. “kitchen”")
-        self._planner.name_place(clean, (x_m, y_m))
-        self.say("system", "info", {"text": f"I'll remember this spot as “{clean}” ({spot.get('where') or 'here'}). "
-                                            f"Say e.g. “go to the {clean}”."})
+            x, y = reference_point(element)
+            place = self.place_store.put(NamedPlace.element(name, element_kind(element).value, element_id, x, y))
+            where = label(element_id)
+        else:
+            spot = self.spot(x_m, y_m)
+            if spot["cell"] != "free":
+                raise LangnavError(f"a named place must be on free floor: {spot['reason']}")
+            place = self.place_store.put(NamedPlace.spot(name, x_m, y_m))
+            where = spot.get("where") or "here"
+        self.say("system", "info", {"text": f"I'll remember {where} as “{place.name}”. "
+                                            f"Say e.g. “go to the {place.name}”."})
         self._places_changed()
         return {"ok": True, "places": self.places()}
 
-    def _known_place(self, name: str) -> str:
-        table = self._place_table()
-        wanted = " ".join(name.split()).lower()
-        for key in table:
-            if key.lower() == wanted:
-                return key
-        raise LangnavError(f"I know no place called “{name}”; I know: {', '.join(sorted(table)) or 'none yet'}")
-
     def rename_place(self, old: str, new: str) -> dict[str, Any]:
-        key, clean = self._known_place(old), " ".join(new.split())
-        if not clean:
-            raise LangnavError("a place needs a name, e.g. “kitchen”")
-        store = getattr(self._planner, "places", None)
-        if store is not None and hasattr(store, "rename"):
-            store.rename(key, clean)
-        else:
-            table = self._planner.named_places
-            table[clean.lower()] = table.pop(key)
-        self.say("system", "info", {"text": f"“{key}” is now called “{clean}”."})
+        place = self.place_store.rename(old, new)
+        self.say("system", "info", {"text": f"“{old.strip()}” is now called “{place.name}”."})
         self._places_changed()
         return {"ok": True, "places": self.places()}
 
     def forget_place(self, name: str) -> dict[str, Any]:
-        key = self._known_place(name)
-        store = getattr(self._planner, "places", None)
-        if store is not None and hasattr(store, "remove"):
-            store.remove(key)
-        else:
-            self._planner.named_places.pop(key)
-        self.say("system", "info", {"text": f"I forgot the place “{key}”."})
+        place = self.place_store.remove(name)
+        self.say("system", "info", {"text": f"I forgot the place “{place.name}”."})
         self._places_changed()
         return {"ok": True, "places": self.places()}
 
@@ -507,14 +484,10 @@ class RobotSession:
 
     # -- planning internals -----------------------------------------------------------------------
     def _make_planner(self, translator: str) -> Planner:
-        planner = Planner(get_translator(translator), analyzer=self.identity)
+        # one place store and one pose history for the session: they survive a translator change
         old = getattr(self, "_planner", None)
-        if old is not None:  # names given before survive a translator change
-            if hasattr(old, "places"):
-                setattr(planner, "places", old.places)  # noqa: B010 (the place store, when the planner has one)
-            else:
-                planner.named_places = old.named_places
-        return planner
+        return Planner(get_translator(translator), analyzer=self.identity, places=self.place_store,
+                       history=old.history if old is not None else None)
 
     def _validate(self, commands: Sequence[Command]) -> CheckedPlan:
         """Commands made here (a map click) go through the same validator as a prompt's."""
@@ -530,6 +503,10 @@ class RobotSession:
             if result.intent is not None and result.intent.steps:
                 payload["intent_text"] = describe_intent(result.intent)
             return [self.say("robot", "clarification", payload)]
+        if not any(item.commands or item.explore for item in result.items) and result.messages:
+            # done without moving (a place named or forgotten, "I am already there"): say so
+            text = " ".join(self.feedback.placed(m) for m in result.messages)
+            return [self.say("robot", "answer", {"text": text, "translator": result.translator})]
         if not any(item.commands or item.explore for item in result.items):
             return [self.say("robot", "clarification", {
                 "text": "I did not find anything to do in that. Try e.g. “go to the nearest door”."})]
