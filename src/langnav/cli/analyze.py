@@ -17,7 +17,7 @@ import numpy as np
 
 from langnav.analysis.elements import ElementKind, MapAnalysis
 from langnav.analysis.pipeline import analyze
-from langnav.analysis.render import save_png
+from langnav.analysis.render import save_png, save_svg
 from langnav.errors import LangnavError
 from langnav.maps.demo import DEMO_NAME, demo_map_path
 from langnav.maps.io import load_map
@@ -30,7 +30,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="metres per cell for a bare image (default 0.05; a YAML gives its own)")
     parser.add_argument("--json", type=Path, default=None, metavar="OUT", help="write the elements as JSON")
     parser.add_argument("--png", type=Path, default=None, metavar="OUT",
-                        help="write the map with every element drawn and labelled")
+                        help="write the map with every element drawn and labelled (PNG)")
+    parser.add_argument("--svg", type=Path, default=None, metavar="OUT",
+                        help="write the same picture as a zoomable SVG (the way to read a large map)")
     parser.add_argument("--labels", type=Path, default=None, metavar="OUT.npy",
                         help="write int32 room labels in image orientation (row 0 = top; 0 = no room)")
 
@@ -68,6 +70,10 @@ def run(args: argparse.Namespace) -> int:
     if args.png is not None:
         with _writing(args.png, "--png"):
             written = save_png(result, args.png)
+        print(f"  wrote {written}")
+    if args.svg is not None:
+        with _writing(args.svg, "--svg"):
+            written = save_svg(result, args.svg)
         print(f"  wrote {written}")
     if args.labels is not None:
         with _writing(args.labels, "--labels"):
