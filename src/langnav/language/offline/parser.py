@@ -36,6 +36,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
+from typing import Final
 
 from langnav.language.intent import (
     Amount,
@@ -46,6 +47,7 @@ from langnav.language.intent import (
     Step,
 )
 from langnav.language.offline import lexicon as lx
+from langnav.language.offline.compass import compass_steps
 from langnav.language.offline.details import assign_details
 from langnav.language.offline.moves import move_steps
 from langnav.language.offline.names import named, unknown_destination
@@ -120,6 +122,9 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
     back = read_return(c)
     if back is not None:
         return back
+    compass = compass_steps(c)
+    if compass is not None:
+        return _compass_reading(c, *compass)
     start_place = c.s.find(START_PLACE_RE)
     if start_place is not None:
         c.s.use(start_place.start(), start_place.end())
@@ -189,7 +194,36 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
     confidence *= UNREAD_WORD_FACTOR ** len(unread)
     return Reading(steps=tuple(steps), unread=(" ".join(unread),) if unread else (),
                    confidence=max(MIN_CONFIDENCE, round(confidence, 3)), amends_previous=c.amends,
-                   through_previous=c.through_previous)
+                   through_previous=c.through_previous, open=_is_open(steps, norm))
+
+
+#: Words that give the side of a move or a turn.
+_SIDE_WORD_RE: Final = re.compile(r"\b(?:left|right|forwards?|ahead|straight|back|backwards?|reverse|around|round|"
+                                  r"clockwise|counter\s*clockwise|anti\s*clockwise|sideways)\b")
+
+
+def _is_open(steps: list[Step], norm: str) -> bool:
+    """The last step is a move or turn with no amount said, or no side said: a fragment that
+    follows may complete it ("rotate, ninety degrees left")."""
+    if not steps:
+        return False
+    last = steps[-1]
+    if last.movement not in (Movement.MOVE, Movement.ROTATE) or last.target is not None \
+            or last.heading_deg is not None:
+        return False
+    return last.amount == Amount.DEFAULT or _SIDE_WORD_RE.search(norm) is None
+
+
+def _compass_reading(c: Clause, steps: list[Step], open_: bool) -> Reading:
+    if c.out_of_range:
+        return Reading(unread=(c.text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.OUT_OF_RANGE)
+    leftovers = [w for w in c.s.leftover_words() if w not in lx.STOPWORDS]
+    unread = [*leftovers, *c.lost]
+    confidence = UNREAD_WORD_FACTOR ** len(unread)
+    for f in c.factors:
+        confidence *= f
+    return Reading(steps=tuple(steps), unread=(" ".join(unread),) if unread else (),
+                   confidence=max(MIN_CONFIDENCE, round(confidence, 3)), open=open_)
 
 
 def _previous_target(previous: Step | None) -> ElementRef | None:

@@ -82,3 +82,6 @@ class Reading:
     referent: ElementRef | None = None
     #: "... and stop just after you pass through it": the previous step goes through its element
     through_previous: bool = False
+    #: the last step misses an amount or a side that a following fragment may give ("rotate" then
+    #: ", ninety degrees left"; "turn thirty degrees" then ", to the left"; "head west" then ", ten feet")
+    open: bool = False
