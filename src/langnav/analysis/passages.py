@@ -32,6 +32,7 @@ from langnav.analysis.precompute import (
     GridLayers,
     component_boxes,
     cov2,
+    dilate8,
     label8_cells,
     median,
     truncated_sq_edt,
@@ -49,6 +50,9 @@ CORE_WIDTH_TOL_M: Final = 0.15
 MIN_BOUNDED_FRACTION: Final = 0.7
 #: "Close" for a side: within the half-width plus this.
 SIDE_TOL_M: Final = 0.15
+#: The middle line of a strip: the distance to its sides falls by at least this (cells) two
+#: steps away on both sides (about two across it; half a cell along a stair-stepped wall).
+CREST_DROP_CELLS: Final = 1.0
 #: A passage axis within this (degrees) of a grid axis is taken as that axis: pixel noise tilts
 #: the fitted axis of a straight passage by a degree or two.
 AXIS_SNAP_DEG: Final = 3.0
@@ -114,9 +118,11 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     width_of = 2.0 * dist_of - res
     band_of = (width_of > 2.0 * params.robot_radius_m) & (width_of <= params.passage_max_width_m)
     band = sub & band_of[d2]
-    # The medial axis within the band: ridge cells of the distance map (a local maximum across
-    # some direction), thinned to one cell. Cheaper than skeletonising all free space.
-    skel = skeletonize(band & _ridge(d2))
+    # The medial axis within the band: crest cells of the distance map (clearly higher than the
+    # cells two steps away on both sides, across some direction), a cell thicker (to bridge the
+    # sideways step of the crest where a side has a bump), thinned to one cell. Cheaper than
+    # skeletonising all free space.
+    skel = skeletonize(band & dilate8(_crest(d2)))
     # Chains of the skeleton (8-connected), labelled from its few cells, not the whole window.
     idx = np.flatnonzero(skel)
     cid, n = label8_cells(idx, skel.shape)
@@ -193,23 +199,26 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 continue
             # Width: across the passage between its two sides (exact for axis-aligned sides).
             width_m = (median(sides[bounded].sum(axis=1)) - 0.5) * res
+            # It runs where it has two sides: not on into its flaring mouths.
+            lo, hi = float(proj[bounded].min()), float(proj[bounded].max())
+            length_m = (hi - lo + 1.0) * res
             if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * width_m:
                 continue
-            # Wide enough for the robot to pass (the band's test used the skeleton's width, up to
-            # a cell off).
-            if width_m < 2.0 * (params.robot_radius_m + PASSAGE_SIDE_MARGIN_M):
+            # Wide enough for the robot to pass, and narrow (the band's test used the skeleton's
+            # width, up to a cell off).
+            if width_m < 2.0 * (params.robot_radius_m + PASSAGE_SIDE_MARGIN_M) or width_m > params.passage_max_width_m:
                 continue
             # Between two things: both sides solid along most of it, not laser-ray stripes.
             normal = np.array([-axis[1], axis[0]])
             solid = _solid_sides(sub, occupied[r0:r1, c0:c1], exterior[r0:r1, c0:c1], pts, normal, sides, SOLID_UNKNOWN_DEPTH_M / res)
             if solid.mean() < MIN_BOUNDED_FRACTION:
                 continue
-            ends_g = [mean + proj.min() * axis, mean + proj.max() * axis]
+            ends_g = [mean + lo * axis, mean + hi * axis]
             # It leads somewhere: both mouths open into free space wider than any passage.
             if not all(_opens_into_space(sub, e, sign * axis, res, params)
                        for sign, e in zip((-1.0, 1.0), ends_g, strict=True)):
                 continue
-            centre_g = mean + 0.5 * (proj.min() + proj.max()) * axis
+            centre_g = mean + 0.5 * (lo + hi) * axis
             cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
             centre = (float(cx), float(cy))
             if any(math.dist(centre, d.center) <= d.width_m / 2 + params.door_max_depth_m for d in doors):
@@ -235,6 +244,23 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             two_r, two_c = _two_sided(sub, long_r, long_c, dist_of[d2[long_r, long_c]] / res, SIDE_TOL_M / res)
             pieces = [(pr, pc, None) for pr, pc in _pieces(two_r, two_c, sub.shape, min_cells)]
     return tuple(passages)
+
+
+def _crest(d2: npt.NDArray[np.integer]) -> BoolArray:
+    """Cells whose distance (square root of ``d2``, in cells) exceeds that of both cells two
+    steps away along one of the four directions by ``CREST_DROP_CELLS``: the middle line of a
+    strip between two sides (the distance falls by about a cell a step on both sides of it),
+    not a plateau along one wall, nor the ripples of a stair-stepped slanted wall (half a cell)."""
+    d = np.sqrt(d2.astype(np.float32))
+    h, w = d.shape
+    p = np.pad(d, 2, mode="constant", constant_values=0)
+    # Two steps along each direction: rows (dr), columns (dc).
+    highest = np.full(d.shape, np.inf, dtype=np.float32)
+    for dr, dc in ((2, 0), (0, 2), (2, 2), (2, -2)):
+        a = p[2 + dr:2 + dr + h, 2 + dc:2 + dc + w]
+        b = p[2 - dr:2 - dr + h, 2 - dc:2 - dc + w]
+        np.minimum(highest, np.maximum(a, b), out=highest)
+    return (d - highest >= CREST_DROP_CELLS) & (d > 0)
 
 
 def _ridge(d: npt.NDArray[np.integer] | npt.NDArray[np.floating]) -> BoolArray:
