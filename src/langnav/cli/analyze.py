@@ -28,6 +28,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help=f"map_server .yaml, a bare map image, or '{DEMO_NAME}' for the bundled demo world")
     parser.add_argument("--resolution", type=float, default=None, metavar="R",
                         help="metres per cell for a bare image (default 0.05; a YAML gives its own)")
+    parser.add_argument("--unknown-grey", action="store_true",
+                        help="read the map image's grey 205 as unknown even where the YAML's thresholds "
+                             "read it as free or occupied (a warning says when they do)")
     parser.add_argument("--json", type=Path, default=None, metavar="OUT", help="write the elements as JSON")
     parser.add_argument("--png", type=Path, default=None, metavar="OUT",
                         help="write the map with every element drawn and labelled (PNG)")
@@ -57,7 +60,7 @@ def summary(a: MapAnalysis, seconds: float) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
-    grid = load_map(resolve_map_path(args.map), resolution_m=args.resolution)
+    grid = load_map(resolve_map_path(args.map), resolution_m=args.resolution, unknown_grey=args.unknown_grey)
     t0 = time.perf_counter()
     result = analyze(grid)
     seconds = time.perf_counter() - t0
