@@ -12,7 +12,7 @@ from langnav.analysis.passages import find_passages
 from langnav.analysis.pipeline import analyze, labels_for_free_components
 from langnav.analysis.precompute import GridLayers
 from langnav.maps.draw import MapBuilder
-from langnav.maps.grid import UNKNOWN, OccupancyGrid
+from langnav.maps.grid import OCCUPIED, UNKNOWN, OccupancyGrid
 
 P = DEFAULT_PARAMS
 #: Shelf-row warehouse: rows of shelves 0.4 m deep and 4 m long, 0.8 m apart, x from 2 to 6.
@@ -161,3 +161,31 @@ def test_unknown_inside_furniture_bounds_a_passage_but_the_outside_does_not() ->
     cells[r0:, c0] = UNKNOWN
     opened = OccupancyGrid(cells, grid.resolution_m, grid.origin_x_m, grid.origin_y_m, 0.0, "opened")
     assert passages_of(opened) == ()
+
+
+def passage_with_doorway() -> OccupancyGrid:
+    """Two 3 x 4 m halls joined by a wall-bounded passage 0.9 m wide and 2.5 m long (x 3 to 5.5,
+    y 1.0 to 1.9); its south wall has a 1 m doorway (x 3.75 to 4.75) into a closet."""
+    b = MapBuilder(11.0, 8.0, origin=(-1.0, -2.5))
+    b.rect(-0.15, -1.65, 8.65, 4.15, OCCUPIED)
+    b.free(0.0, 0.0, 3.0, 4.0).free(5.5, 0.0, 8.5, 4.0)
+    b.free(2.9, 1.0, 5.6, 1.9)
+    b.free(3.5, -1.5, 5.0, 0.85).free(3.75, 0.8, 4.75, 1.05)
+    return b.build(source="passage_with_doorway")
+
+
+def test_passage_with_a_doorway_in_its_side_wall() -> None:
+    (p,) = passages_of(passage_with_doorway())
+    assert p.center == pytest.approx((4.25, 1.45), abs=0.06)
+    assert p.width_m == pytest.approx(0.9, abs=0.051)
+    assert p.length_m == pytest.approx(2.5, abs=0.15)
+
+
+def test_strip_beside_a_row_of_separate_boxes_is_no_passage() -> None:
+    # A 0.8 m strip between a room's north wall and a row of 0.5 m boxes 0.5 m apart: the
+    # strip's south side is a row of gaps, no wall with a doorway.
+    b = MapBuilder(10.0, 7.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 8.0, 5.0)
+    for x in np.arange(1.0, 7.0, 1.0):
+        b.box(float(x), 3.7, float(x) + 0.5, 4.2)
+    assert passages_of(b.build(source="box_row")) == ()

@@ -6,9 +6,10 @@ width is between the robot's diameter and ``params.passage_max_width_m`` form ca
 A chain's *core* is where the width stays close to its narrowest (the stretch between two
 parallel sides, without the flaring mouths). A core is a passage when it is longer than
 ``params.passage_min_length_m`` and clearly longer than wide (a short gap beside a chair is a
-gap, not a passage), wide enough for the robot with a margin, has solid sides along most of its
-length (walls, furniture, a shelf's unscanned inside: not laser-ray stripes of unknown, nor the
-unscanned world beyond a sliver outside a wall), leads somewhere (both mouths open into free
+gap, not a passage), wide enough for the robot with a margin, has sides along most of its
+length (or a wall along one side and a single doorway in the other: a passage with a door off
+it), solid ones (walls, furniture, a shelf's unscanned inside: not laser-ray stripes of unknown,
+nor the unscanned world beyond a sliver outside a wall), leads somewhere (both mouths open into free
 space wider than any passage: a dead-end slot does not), and it is not a doorway. A passage
 along a wall (between the wall and a long shelf) shares its skeleton line with the one-sided
 strip along the rest of the room's walls: a core without sides along most of its length is
@@ -48,6 +49,10 @@ CORE_WIDTH_TOL_M: Final = 0.15
 #: A passage has sides: at this share of its core, blocking cells lie close on both sides (a
 #: strip along a wall whose other side is a row of separate objects is not a passage).
 MIN_BOUNDED_FRACTION: Final = 0.7
+#: ... or, walled on one side along this share, with one doorway in the other side.
+DOORWAY_WALL_FRACTION: Final = 0.9
+#: Open stretches of a side up to this long (cells) are scan noise, not a doorway.
+DOORWAY_MIN_GAP_CELLS: Final = 3
 #: "Close" for a side: within the half-width plus this.
 SIDE_TOL_M: Final = 0.15
 #: The middle line of a strip: the distance to its sides falls by at least this (cells) two
@@ -192,7 +197,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                                          [np.array([-m[5][1], m[5][0]]) for m in measured], SIDE_TOL_M / res)
         for (rr, cc, across, pts, mean, axis, proj, length_m), sides in zip(measured, side_sets, strict=True):
             bounded = np.isfinite(sides).all(axis=1)
-            if bounded.mean() < MIN_BOUNDED_FRACTION:
+            if not _sides_hold(sides, proj, params.door_max_width_m / res):
                 if across is not None and len(rr) * math.sqrt(2) >= min_cells:
                     retry_r.append(rr[across])
                     retry_c.append(cc[across])
@@ -208,10 +213,11 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             # width, up to a cell off).
             if width_m < 2.0 * (params.robot_radius_m + PASSAGE_SIDE_MARGIN_M) or width_m > params.passage_max_width_m:
                 continue
-            # Between two things: both sides solid along most of it, not laser-ray stripes.
+            # Between two things: both sides solid along most of its two-sided length, not
+            # laser-ray stripes.
             normal = np.array([-axis[1], axis[0]])
             solid = _solid_sides(sub, occupied[r0:r1, c0:c1], exterior[r0:r1, c0:c1], pts, normal, sides, SOLID_UNKNOWN_DEPTH_M / res)
-            if solid.mean() < MIN_BOUNDED_FRACTION:
+            if np.count_nonzero(solid) < MIN_BOUNDED_FRACTION * np.count_nonzero(bounded):
                 continue
             ends_g = [mean + lo * axis, mean + hi * axis]
             # It leads somewhere: both mouths open into free space wider than any passage.
@@ -398,6 +404,35 @@ def _side_distances_each(open_: BoolArray, pts: Sequence[npt.NDArray[np.float64]
         out.extend(np.split(sides, np.cumsum(sizes)[:-1]))
         i = j
     return out
+
+
+def _sides_hold(sides: npt.NDArray[np.float64], proj: npt.NDArray[np.float64], door_cells: float) -> bool:
+    """Has a piece sides along it (``sides``: per point, the distances to either side, ``inf``
+    where open; ``proj``: the points' positions along the axis, cells)? Between its first and
+    last two-sided points (not in its flaring mouths): two-sided along ``MIN_BOUNDED_FRACTION``
+    of it, or walled on one side along ``DOORWAY_WALL_FRACTION`` with the other side open in a
+    single doorway (at most ``door_cells`` long; a passage with a door off it), not in a row of
+    gaps (a strip along a wall beside separate objects)."""
+    both = np.isfinite(sides).all(axis=1)
+    if not both.any():
+        return False
+    inside = (proj >= proj[both].min()) & (proj <= proj[both].max())
+    s, p = sides[inside], proj[inside]
+    if np.isfinite(s).all(axis=1).mean() >= MIN_BOUNDED_FRACTION:
+        return True
+    order = np.argsort(p, kind="stable")
+    p = p[order]
+    for j in (0, 1):
+        wall, other = np.isfinite(s[order, j]), np.isfinite(s[order, 1 - j])
+        if wall.mean() < DOORWAY_WALL_FRACTION or other.mean() < 0.5:
+            continue
+        # The open stretches of the other side, by their extent along the axis.
+        edges = np.flatnonzero(np.diff(np.concatenate(([1], other.astype(np.int8), [1]))))
+        gaps = [float(p[b - 1] - p[a]) + 1.0 for a, b in zip(edges[::2], edges[1::2], strict=True)]
+        real = [g for g in gaps if g > DOORWAY_MIN_GAP_CELLS]
+        if len(real) == 1 and real[0] <= door_cells:
+            return True
+    return False
 
 
 def _solid_sides(open_: BoolArray, occupied: BoolArray, outside: BoolArray, pts: npt.NDArray[np.float64],
