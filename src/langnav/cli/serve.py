@@ -39,7 +39,7 @@ def settings_from_args(args: argparse.Namespace) -> WebSettings:
     settings = WebSettings.from_env(world=args.world, backend=backend, translator=args.translator,
                                     host=args.host, port=args.port, known_map=args.known_map or None,
                                     start_pose=args.pose, db_path=args.db, backend_options=options or None,
-                                    places_path=places_path(args.places))
+                                    places_path=places_path(getattr(args, "places", None)))
     if settings.requires_token and not settings.token:
         settings = settings.model_copy(update={"token": make_token()})
     return settings.checked()

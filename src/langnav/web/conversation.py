@@ -248,10 +248,13 @@ def named_elements(text: str, analysis: MapAnalysis) -> list[str]:
     return out
 
 
-def help_answer(examples: Sequence[str]) -> str:
+def help_answer(examples: Sequence[str], analysis: MapAnalysis | None = None) -> str:
     shown = "\n".join(f"• {e}" for e in examples)
-    return ("Tell me what to do in your own words: where to go (by the names on the map, like "
-            "“door 2” or “room 3”, or by what you see: “the nearest door”, “the room on your left”), "
+    names = [label(e.id) for group in ((analysis.doors, analysis.rooms) if analysis is not None else ())
+             for e in group[:1]]
+    by_name = f"by the names on the map, like {' or '.join(f'“{n}”' for n in names)}, " if names else ""
+    return ("Tell me what to do in your own words: where to go (" + by_name +
+            "or by what you see: “the nearest door”, “the room on your left”), "
             "how far to move or turn, or to explore. On this map, for example:\n" + shown +
             "\nYou can also ask me about the map (“how many rooms are there?”), click the map to send me "
             "somewhere, and press STOP (or Esc) to halt me at once.")
@@ -260,7 +263,7 @@ def help_answer(examples: Sequence[str]) -> str:
 def answer(text: str, analysis: MapAnalysis | None, pose: Pose2D, examples: Callable[[], Sequence[str]]) -> str | None:
     """The chat's own answer to ``text``, or None when it is for the translator."""
     if is_help(text):
-        return help_answer(examples())
+        return help_answer(examples(), analysis)
     if analysis is None:
         return None
     return count_answer(text, analysis) or where_answer(text, analysis, pose)
