@@ -238,31 +238,24 @@ def _edge_adjacent(lab: IntArray, pairs: npt.NDArray[np.int64]) -> BoolArray:
 
 def _robot_reaches(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers,
                    cells: npt.NDArray[np.int64]) -> BoolArray:
-    """Per free cell (flat index): can the robot come up to it, i.e. is it near a free cell where
-    the robot fits, a free square of a robot's diameter round it (the square holds the robot's
-    disc: a slightly strict test)?"""
+    """Per free cell (flat index): can the robot come up to it, i.e. does it touch (8-neighbours)
+    a cell that the robot's footprint covers somewhere, the footprint a free square of a robot's
+    diameter (it holds the robot's disc: a slightly strict test)?"""
     out = np.zeros(len(cells), dtype=bool)
     if len(cells) == 0:
         return out
     half = max(1, math.ceil(params.robot_radius_m / grid.resolution_m))
-    # Up to the square's corner (and a cell): a frontier along a diagonal edge is that far from
-    # the nearest centre whose square fits, as one along an axis is half a side away.
-    near = math.ceil(half * math.sqrt(2.0)) + 1
+    near = half + 1
     rr, cc = np.divmod(cells, grid.width)
-    # Where the robot fits, over the window that the tests read (the window's edge blocks).
+    # Over the window that the tests read (its edge blocks): where the robot's centre fits (the
+    # free cells eroded by the square), then the cells within ``near`` of those (the footprint
+    # and its neighbours), by separable minimum and maximum filters.
     pad = near + half
     r0, r1 = max(0, int(rr.min()) - pad), min(grid.height, int(rr.max()) + pad + 1)
     c0, c1 = max(0, int(cc.min()) - pad), min(grid.width, int(cc.max()) + pad + 1)
-    side = 2 * half + 1
-    fits = ndi.minimum_filter1d(layers.free[r0:r1, c0:c1], side, axis=0, mode="constant", cval=False)
-    fits = ndi.minimum_filter1d(fits, side, axis=1, mode="constant", cval=False)
-    h, w = fits.shape
-    lr, lc = rr - r0, cc - c0
-    for dr in range(-near, near + 1):
-        for dc in range(-near, near + 1):
-            if dr * dr + dc * dc > near * near:
-                continue
-            pr, pc = lr + dr, lc + dc
-            ok = (pr >= 0) & (pr < h) & (pc >= 0) & (pc < w)
-            out[ok] |= fits[pr[ok], pc[ok]]
-    return out
+    m = layers.free[r0:r1, c0:c1]
+    for axis in (0, 1):
+        m = ndi.minimum_filter1d(m, 2 * half + 1, axis=axis, mode="constant", cval=False)
+    for axis in (0, 1):
+        m = ndi.maximum_filter1d(m, 2 * near + 1, axis=axis, mode="constant", cval=False)
+    return np.asarray(m[rr - r0, cc - c0], dtype=bool)
