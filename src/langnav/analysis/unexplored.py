@@ -5,9 +5,8 @@ area, ``interior=False``, and counts only where an opening the robot can reach l
 An unknown region inside the map is an area when it is worth a trip: at least
 ``params.unexplored_worth_area_m2`` large, with at least ``params.unexplored_min_frontier_m`` of
 frontier the robot can come up to in one opening (a door, a room's open side: not the gaps in the
-scanned outline of a shelf, a cabinet or a pallet whose inside is unknown, nor laser holes), and
-with at most ``params.unexplored_max_frontier_share`` of its edge frontier (an island of unknown
-seen from every side is an object the laser did not see into). Unknown specks smaller than
+scanned outline of a shelf, a cabinet or a pallet whose inside is unknown, nor laser holes).
+Unknown specks smaller than
 ``params.unexplored_min_area_m2`` are scanner noise (navigable for clearance purposes); unknown
 cells inside a wall (touching no free cell) and the other pockets are no areas.
 """
@@ -180,18 +179,13 @@ def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayer
                   sizes: npt.NDArray[np.int64], pairs: npt.NDArray[np.int64]) -> BoolArray:
     """Per unknown component (index = label): would a person send the robot to look at it? For
     the outside world (all its components together): does the robot reach enough of its
-    frontier? For a region inside the map: also big enough, and seen through an opening rather
-    than wrapped in a scanned outline (see the module docstring)."""
+    frontier? For a region inside the map: big enough, and seen through an opening the robot
+    can reach rather than through gaps in a scanned outline (see the module docstring)."""
     outside = layers.unknown_outside
     inside = ~outside
     inside[0] = False
-    # The edge of each region: how many free and occupied cells border it.
-    free_edge = np.bincount(pairs[:, 1], minlength=n + 1)
-    occ_edge = np.bincount(adjacent_pairs(layers.occupied, lab)[:, 1], minlength=n + 1)
-    share = free_edge / np.maximum(free_edge + occ_edge, 1)
     candidate = np.zeros(n + 1, dtype=bool)
-    candidate[inside] = ((sizes[inside] * grid.cell_area_m2 >= params.unexplored_worth_area_m2)
-                         & (share[inside] <= params.unexplored_max_frontier_share))
+    candidate[inside] = sizes[inside] * grid.cell_area_m2 >= params.unexplored_worth_area_m2
     res = grid.resolution_m
     need = math.ceil(params.unexplored_min_frontier_m / res - 1e-9)
     worth = np.zeros(n + 1, dtype=bool)
