@@ -21,6 +21,7 @@ SUBCOMMANDS: Final[dict[str, tuple[str, str]]] = {
     "run": ("langnav.cli.run", "translate, validate and execute a prompt on a robot"),
     "sim": ("langnav.cli.sim", "run the simulated robot (optionally served over rosbridge)"),
     "serve": ("langnav.cli.serve", "the web app: chat + live map"),
+    "places": ("langnav.cli.places", "list, add, forget or rename the places you named"),
 }
 
 
@@ -48,7 +49,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                         format="%(levelname)s %(name)s: %(message)s")
     try:
         return int(args._run(args))
-    except LangnavError as exc:
+    except (LangnavError, argparse.ArgumentTypeError) as exc:
         print(f"langnav {args.command}: {exc}", file=sys.stderr)
         return 2
     except OSError as exc:  # a file or socket the OS refused: say which and why, without a traceback

@@ -8,6 +8,7 @@ from typing import Final
 
 from langnav.language.intent import Amount, Detail, Direction, ElementRef, Intent, Movement, Step
 from langnav.language.offline.ask import ask_message, spatial
+from langnav.language.offline.composition import read_composed
 from langnav.language.offline.corrections import apply_corrections, join_fragments
 from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
@@ -81,7 +82,7 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     questions: list[str] = []   # what the reading would have to guess
     blocking: list[str] = []    # words left unread that could change where or how far
     for clause in clauses:
-        reading = read_clause(clause, previous, known_names, previous_target)
+        reading = read_composed(clause, previous, known_names, previous_target)
         if reading.problem == Problem.QUESTION and reading.referent is not None:
             asked = (reading.problem, clause, reading)
             previous_target = reading.referent
@@ -194,9 +195,9 @@ def _amend(previous: Step, fragment: Step, clause: str) -> Step:
 
 
 def _name_message(name: str) -> str:
-    return (f"I don't know where '{name}' is: my map has no names or labels for places. Tell me what it "
-            "is and where (e.g. 'the second door on your left', 'the biggest room'), or stand there and "
-            "name the place first.")
+    return (f"I don't know a place called '{name}'; name it first: stand there and say 'call this spot the "
+            f"{name}'. Or tell me where it is by what the map shows, e.g. 'the second door on your left' or "
+            "'room 3'.")
 
 
 def _unknowable_message(name: str) -> str:
