@@ -14,24 +14,13 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 from pathlib import Path
 from typing import Final
 
 from langnav.cli.options import pose_arg
-from langnav.places import DEFAULT_PLACES_PATH, JsonPlaceStore, NamedPlace
+from langnav.places import DEFAULT_PLACES_PATH, PLACES_ENV, JsonPlaceStore, NamedPlace, places_path
 
-#: The environment variable that moves the places file (one file per building or map, say).
-PLACES_ENV: Final = "LANGNAV_PLACES"
 ACTIONS: Final = ("list", "add", "forget", "rename")
-
-
-def places_path(given: Path | None) -> Path:
-    """``--places`` / ``--file`` if given, else $LANGNAV_PLACES, else ~/.langnav/places.json."""
-    if given is not None:
-        return given.expanduser()
-    env = os.environ.get(PLACES_ENV, "").strip()
-    return Path(env).expanduser() if env else DEFAULT_PLACES_PATH.expanduser()
 
 
 def add_places_option(p: argparse.ArgumentParser) -> None:

@@ -548,7 +548,11 @@ def _face(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> Grounded
         raise GroundingError("Which way should I face? Name a place, e.g. 'face the door' or 'face north'.")
     else:
         e = select(ref, ctx.analysis, pose, step.text)
-        point = compose.facing_point(e, pose, space_of(ctx.analysis, pose.xy), ctx.analysis.doors)
+        here = space_of(ctx.analysis, pose.xy)
+        if e is here:
+            raise GroundingError(f"I am in {label_of(e)} already, so I cannot turn to face it; tell me what to face "
+                                 "in it, e.g. 'face the door' or 'face north'.")
+        point = compose.facing_point(e, pose, here, ctx.analysis.doors)
         what, ids = describe_ref(ref), (e.id,)
     if math.dist(point, pose.xy) < compose.MIN_OFFSET_RUN_M:
         raise GroundingError(f"I am at {what}, so there is no way to turn to face it.")

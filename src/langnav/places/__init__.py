@@ -12,12 +12,14 @@
 from langnav.places.errors import BadPlaceName, PlaceError, UnknownPlace
 from langnav.places.store import (
     DEFAULT_PLACES_PATH,
+    PLACES_ENV,
     JsonPlaceStore,
     MemoryPlaceStore,
     NamedPlace,
     PlaceStore,
     place_key,
+    places_path,
 )
 
-__all__ = ["DEFAULT_PLACES_PATH", "BadPlaceName", "JsonPlaceStore", "MemoryPlaceStore", "NamedPlace", "PlaceError",
-           "PlaceStore", "UnknownPlace", "place_key"]
+__all__ = ["DEFAULT_PLACES_PATH", "PLACES_ENV", "BadPlaceName", "JsonPlaceStore", "MemoryPlaceStore", "NamedPlace",
+           "PlaceError", "PlaceStore", "UnknownPlace", "place_key", "places_path"]

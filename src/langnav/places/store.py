@@ -33,6 +33,8 @@ log = logging.getLogger(__name__)
 
 #: Where ``langnav run`` and ``langnav serve`` keep named places unless told otherwise.
 DEFAULT_PLACES_PATH: Final = Path("~/.langnav/places.json")
+#: The environment variable that moves the places file (one file per building or map, say).
+PLACES_ENV: Final = "LANGNAV_PLACES"
 #: A name is a short phrase a person says ("the charging dock"), not a sentence.
 MAX_NAME_CHARS: Final = 80
 #: A store holds at most this many places: a floor's worth of names, and a bound on the file a
@@ -57,6 +59,14 @@ ELEMENT_WORDS: Final = frozenset({"door", "doorway", "room", "hallway", "corrido
 #: Words that already mean a place in a prompt: naming a place so would hide that meaning.
 RESERVED_NAMES: Final = frozenset({"here", "there", "this", "that", "it", "me", "you", "start", "the start",
                                    "where you started", "where you were"})
+
+
+def places_path(given: str | os.PathLike[str] | None = None) -> Path:
+    """The places file: ``given`` if any, else $LANGNAV_PLACES, else ~/.langnav/places.json (expanded)."""
+    if given is not None:
+        return Path(given).expanduser()
+    env = os.environ.get(PLACES_ENV, "").strip()
+    return Path(env).expanduser() if env else DEFAULT_PLACES_PATH.expanduser()
 
 
 def place_key(name: str) -> str:

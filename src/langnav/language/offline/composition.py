@@ -67,7 +67,9 @@ _FRACTIONS: Final[dict[str, float]] = {"halfway": 0.5, "half way": 0.5, "half th
                                        "a third of the way": 1 / 3, "one third of the way": 1 / 3,
                                        "third of the way": 1 / 3, "two thirds of the way": 2 / 3,
                                        "a quarter of the way": 0.25, "one quarter of the way": 0.25,
-                                       "quarter of the way": 0.25, "three quarters of the way": 0.75}
+                                       "quarter of the way": 0.25, "three quarters of the way": 0.75,
+                                       # the normaliser makes plurals singular ("quarters" -> "quarter")
+                                       "three quarter of the way": 0.75, "two third of the way": 2 / 3}
 _FRACTION_RE: Final = re.compile(
     r"\b(?P<f>" + "|".join(re.escape(k).replace(r"\ ", r"\s+") for k in sorted(_FRACTIONS, key=len, reverse=True))
     + r")\s+(?P<prep>down|along|up|through|across|into|to|towards|toward|in)\b(?!\s+between)")
