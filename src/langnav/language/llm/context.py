@@ -80,6 +80,28 @@ furniture -> obstacle; unknown / unmapped / unexplored space, frontier -> unexpl
 - One step per instruction, in the order given ("then", "and", "after that", commas). Leave out every \
 field the words do not give."""
 
+SPOKEN: Final = """\
+Spoken requests (people talk to the robot as to a person):
+- Units: 1 ft = 0.3048 m, 1 in = 0.0254 m, 1 yd = 0.9144 m; distance_m is always metres. Spoken numbers \
+count: "one eighty" = 180, "two twenty five" = 225, "a foot and a half" = 0.4572 m. "two more feet", \
+"another ten feet", "a further metre" are that amount (0.6096 m, 3.048 m, 1 m), never more; "three or four \
+feet" is the smaller (0.9144 m).
+- Compass: "face north", "turn to the east", "pivot due west" -> rotate with heading_deg (map frame: east 0, \
+north 90, west 180, south 270; northeast 45, northwest 135, southwest 225, southeast 315) and no direction; \
+"go east ten feet" -> that rotate, then move forward 3.048 m.
+- Clockwise is right, counter-clockwise is left. "move two feet to your left" -> move, direction left.
+- Fillers ("uh", "um", "like", "maybe"), cut-off words ("nin-", "deg-"), repeated words and politeness or \
+questions around a command ("can you", "could you please") mean nothing. Commas do not split an instruction: \
+"rotate, ninety degrees left" and "turn thirty degrees, to the left" are one turn each.
+- Self-corrections: only the last version counts ("ninety degrees right, actually left" -> left 90; "turn \
+left, sorry, turn right" -> right); "never mind" takes back the instruction before it.
+- No camera: leave out "take a picture", "send me a photo", "what do you see?". Alone: no steps and a \
+clarification saying there is no camera. With motions: the motions, and a clarification saying no picture \
+was taken. "take a picture to your left" -> rotate left (the turn is the part the robot can do).
+- Ask, don't guess: when the side of a turn ("rotate 45 degrees"), the unit of a distance ("move forward 3") \
+or any word about where or how far is unclear, give no steps; in clarification say what you understood and \
+ask about the rest."""
+
 # -- composition (issue 9 items 3-5): places with amounts, labels, relations, returns and names ----
 COMPOSITION: Final = """\
 Places with amounts, labels, relations, returns and names (fill only what the words give):
@@ -150,6 +172,14 @@ EXAMPLES: Final[tuple[tuple[str, dict[str, Any]], ...]] = (
      {"steps": [{"movement": "follow", "detail": "along", "target": {"kind": "wall", "side": "left"}},
                 {"movement": "navigate", "detail": "stop_at",
                  "target": {"kind": "corner", "superlative": "farthest", "in_current_room": True}}]}),
+    ("uh rotate, ninety degrees, to the uh right, actually left",
+     {"steps": [{"movement": "rotate", "direction": "left", "angle_deg": 90}]}),
+    ("can you go north about two more feet and then take a picture",
+     {"steps": [{"movement": "rotate", "heading_deg": 90},
+                {"movement": "move", "direction": "forward", "distance_m": 0.6096}],
+      "clarification": "I did the motion but took no picture: I have no camera."}),
+    ("move forward five",
+     {"steps": [], "clarification": "I understood: move forward 5. Five what: metres or feet? Nothing was run."}),
     ("Where are you right now?",
      {"steps": [{"movement": "query", "query": "pose"}]}),
     ("Bring me a coffee from the kitchen.",
@@ -306,6 +336,7 @@ def system_prompt(schema: dict[str, Any] | None = None, *, include_schema: bool 
         "their intent as JSON.",
         COMMANDS,
         VOCABULARY,
+        SPOKEN,
         COMPOSITION,
         RULES,
         *(("JSON schema of your answer:\n" + json.dumps(schema, separators=(",", ":")),) if include_schema else ()),
