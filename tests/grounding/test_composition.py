@@ -345,6 +345,17 @@ def test_naming_a_room_and_an_element(hall: MapAnalysis) -> None:
     assert poses[-1][1] > door.center[1] + 0.3  # through it, into the room above
 
 
+def test_a_place_for_an_element_keeps_its_kind_id_and_point(hall: MapAnalysis) -> None:
+    from langnav.grounding.compose import place_for_element
+
+    door = door_at(hall, 7.5, 5.0)
+    p = place_for_element("the lab door", door)
+    assert (p.name, p.kind, p.element_id, p.xy) == ("lab door", "door", door.id, door.center)
+    room = room_at(hall, 3.0, 3.0)
+    q = place_for_element("office", room)
+    assert q.kind == "room" and hall.room_at(*q.xy) is room
+
+
 def test_naming_after_a_move_names_where_the_move_ends(hall: MapAnalysis) -> None:
     planner = Planner(get_translator("offline"))
     r = plan("move forward 2 m and call this spot the dock", hall, (7.5, 6.0, 0.0), planner)

@@ -371,6 +371,18 @@ def named_element(place: NamedPlace, analysis: MapAnalysis) -> Element | None:
     return e if near <= NAMED_ELEMENT_MOVED_MAX_M else None
 
 
+def place_for_element(name: str, e: Element) -> NamedPlace:
+    """A named place for an element of the map ("name it" on a door in the web app): its kind, id and
+    point. Raises BadPlaceName for a name that cannot be a place's name."""
+    if isinstance(e, Room):
+        kind = "hallway" if e.kind == ElementKind.HALLWAY else "room"
+    else:
+        kind = {Door: "door", Wall: "wall", Corner: "corner", Obstacle: "obstacle", NarrowPassage: "narrow_passage",
+                UnexploredArea: "unexplored_area"}[type(e)]
+    x, y = element_point(e)
+    return NamedPlace.element(name, kind, e.id, x, y)
+
+
 def element_point(e: Element) -> Point:
     """The point stored for a named element: its reference point; for a room, a free cell near its
     centroid (the centroid of an L-shaped room may lie outside it)."""
