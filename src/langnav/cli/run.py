@@ -39,7 +39,7 @@ from langnav.errors import LangnavError
 from langnav.plan.events import EventKind, ExecEvent, PlanStatus, pose_tuple
 from langnav.plan.executor import DEFAULT_EXPLORE_TIMEOUT_S, PlanExecutor
 from langnav.robot.errors import RobotError, RobotTimeout
-from langnav.robot.protocol import RobotBackend, create_backend
+from langnav.robot.protocol import RobotBackend, StopConfirmable, create_backend
 
 log = logging.getLogger(__name__)
 
@@ -155,11 +155,10 @@ def run(args: argparse.Namespace) -> int:
 def _confirm_stop(out: _Printer, robot: RobotBackend) -> None:
     """After a cancel: say so loudly when the robot did not confirm that it stopped (a backend
     that can tell: the rosbridge backend's ``wait_stopped``)."""
-    wait_stopped = getattr(robot, "wait_stopped", None)
-    if not callable(wait_stopped):
+    if not isinstance(robot, StopConfirmable):
         return
     try:
-        wait_stopped()
+        robot.wait_stopped()
     except RobotError as exc:
         out.line({"event": "stop_unconfirmed", "message": str(exc)}, f"WARNING: {exc}")
 
