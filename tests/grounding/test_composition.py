@@ -230,6 +230,15 @@ def test_back_to_the_door_you_just_passed(hall: MapAnalysis) -> None:
     assert math.dist(g, passed.center) <= 0.75
 
 
+def test_two_doors_passed_side_by_side_are_asked_about(hall: MapAnalysis) -> None:
+    # driving east along the hallway past x = 7.5, where a door opens on either side
+    r = plan("move forward 8 m, then go back to the door you just passed", hall, (1.6, 6.0, 0.0))
+    msg = r.clarification or ""
+    assert not r.ok and r.commands == () and "at about the same point" in msg
+    lower, upper = door_at(hall, 7.5, 5.0), door_at(hall, 7.5, 7.0)
+    assert label_of(lower) in msg and label_of(upper) in msg
+
+
 def test_no_door_passed_yet_is_asked_about(hall: MapAnalysis) -> None:
     r = plan("go back to the door you just passed", hall, (1.6, 6.0, 0.0))
     msg = r.clarification or ""
@@ -343,6 +352,17 @@ def test_naming_a_room_and_an_element(hall: MapAnalysis) -> None:
     assert plan(f"call {label_of(door)} the lab door", hall, (1.6, 6.0, 0.0), planner).ok
     poses = goals(plan("go through the lab door", hall, (7.5, 6.0, 0.0), planner))
     assert poses[-1][1] > door.center[1] + 0.3  # through it, into the room above
+
+
+def test_a_place_for_an_element_keeps_its_kind_id_and_point(hall: MapAnalysis) -> None:
+    from langnav.grounding.compose import place_for_element
+
+    door = door_at(hall, 7.5, 5.0)
+    p = place_for_element("the lab door", door)
+    assert (p.name, p.kind, p.element_id, p.xy) == ("lab door", "door", door.id, door.center)
+    room = room_at(hall, 3.0, 3.0)
+    q = place_for_element("office", room)
+    assert q.kind == "room" and hall.room_at(*q.xy) is room
 
 
 def test_naming_after_a_move_names_where_the_move_ends(hall: MapAnalysis) -> None:

@@ -615,10 +615,7 @@ def _place_step(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> Gr
             what, ids = describe_ref(ref), line.ids
         else:
             e = select(ref, ctx.analysis, pose, step.text)
-            kind = "hallway" if isinstance(e, Room) and e.kind == ElementKind.HALLWAY else ref.kind.value
-            if isinstance(e, Room):
-                kind = "hallway" if e.kind == ElementKind.HALLWAY else "room"
-            new = NamedPlace.element(name, kind, e.id, *compose.element_point(e))
+            new = compose.place_for_element(name, e)
             what = describe_ref(ref) if ref.label is not None else f"{describe_ref(ref)} ({label_of(e)})"
             ids = (e.id,)
     except PlaceError as exc:
