@@ -16,15 +16,15 @@ P = DEFAULT_PARAMS
 
 def furnished_room() -> OccupancyGrid:
     """A closed 8 x 6 m room with furniture the scan never saw into: a 2 x 1 m cabinet (its
-    outline scanned, a 0.3 m gap in it, unknown inside), a 2 x 1 m rack seen only as unknown
-    (free all round it), a 0.6 x 0.6 m table top of unknown, and a 1.2 x 0.8 m pallet of unknown
-    with part of its outline scanned."""
+    outline scanned, a 0.3 m gap in it, unknown inside), a 3 x 0.8 m shelf whose outline has
+    three 0.2 m gaps, and a 0.6 x 0.6 m table top seen only as unknown."""
     b = MapBuilder(10.0, 8.0, origin=(-1.0, -1.0))
     b.room(0.0, 0.0, 8.0, 6.0)
     b.box(1.0, 1.0, 3.0, 2.0).unknown(1.05, 1.05, 2.95, 1.95).free(1.8, 1.0, 2.1, 1.05)
-    b.unknown(5.0, 1.0, 7.0, 2.0)
+    b.box(4.0, 3.5, 7.0, 4.3).unknown(4.05, 3.55, 6.95, 4.25)
+    for x in (4.5, 5.4, 6.3):
+        b.free(x, 3.5, x + 0.2, 3.55)
     b.unknown(1.5, 4.0, 2.1, 4.6)
-    b.unknown(4.5, 3.8, 5.7, 4.6).box(4.5, 3.8, 5.7, 3.85).box(4.5, 3.8, 4.55, 4.6)
     return b.build(source="furnished_room")
 
 

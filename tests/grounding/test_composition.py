@@ -230,6 +230,15 @@ def test_back_to_the_door_you_just_passed(hall: MapAnalysis) -> None:
     assert math.dist(g, passed.center) <= 0.75
 
 
+def test_two_doors_passed_side_by_side_are_asked_about(hall: MapAnalysis) -> None:
+    # driving east along the hallway past x = 7.5, where a door opens on either side
+    r = plan("move forward 8 m, then go back to the door you just passed", hall, (1.6, 6.0, 0.0))
+    msg = r.clarification or ""
+    assert not r.ok and r.commands == () and "at about the same point" in msg
+    lower, upper = door_at(hall, 7.5, 5.0), door_at(hall, 7.5, 7.0)
+    assert label_of(lower) in msg and label_of(upper) in msg
+
+
 def test_no_door_passed_yet_is_asked_about(hall: MapAnalysis) -> None:
     r = plan("go back to the door you just passed", hall, (1.6, 6.0, 0.0))
     msg = r.clarification or ""

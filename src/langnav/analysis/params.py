@@ -110,9 +110,10 @@ class AnalysisParams:
     #: Segmentation: clearance (m) below which a free cell cannot start a space (about a robot radius).
     seg_min_peak_m: float = 0.15
     # -- unexplored areas a person would send the robot to look at (not furniture insides) --
-    #: An unknown region is worth a trip from this size (m2): about the smallest room worth
-    #: naming (room_min_area_m2); smaller pockets are unscanned corners of furniture and clutter.
-    unexplored_worth_area_m2: float = 1.0
+    #: An unknown region is worth a trip from this size (m2): a square about two robot widths
+    #: across (0.7 m), room for the robot to drive in and turn; smaller pockets are the shadows
+    #: of table legs and clutter (the bench README's 0.05 m2 specks are noise in any case).
+    unexplored_worth_area_m2: float = 0.5
     #: ... and when the robot can come up to this much of its frontier in one opening (m of a
     #: connected run of frontier cells within a robot radius of where the robot fits): an opening
     #: it can look or drive through, as wide as the robot plus a margin (explore.py's smallest
@@ -120,10 +121,6 @@ class AnalysisParams:
     #: shelf or a cabinet whose inside is unknown, are narrower. (The outside world: this much
     #: frontier within reach in all.)
     unexplored_min_frontier_m: float = 0.4
-    #: ... and at most this share: a region whose edge is all free space is an island the robot
-    #: has seen from every side and never into (a rack or a table top seen only as unknown); an
-    #: unscanned part of the building is bounded somewhere by the walls beyond it.
-    unexplored_max_frontier_share: float = 0.9
     #: Straight wall segments shorter than this are not reported.
     wall_min_length_m: float = 0.5
     #: Maximum deviation of wall points from their fitted segment.

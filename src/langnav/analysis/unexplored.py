@@ -5,9 +5,8 @@ area, ``interior=False``, and counts only where an opening the robot can reach l
 An unknown region inside the map is an area when it is worth a trip: at least
 ``params.unexplored_worth_area_m2`` large, with at least ``params.unexplored_min_frontier_m`` of
 frontier the robot can come up to in one opening (a door, a room's open side: not the gaps in the
-scanned outline of a shelf, a cabinet or a pallet whose inside is unknown, nor laser holes), and
-with at most ``params.unexplored_max_frontier_share`` of its edge frontier (an island of unknown
-seen from every side is an object the laser did not see into). Unknown specks smaller than
+scanned outline of a shelf, a cabinet or a pallet whose inside is unknown, nor laser holes).
+Unknown specks smaller than
 ``params.unexplored_min_area_m2`` are scanner noise (navigable for clearance purposes); unknown
 cells inside a wall (touching no free cell) and the other pockets are no areas.
 """
@@ -180,18 +179,13 @@ def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayer
                   sizes: npt.NDArray[np.int64], pairs: npt.NDArray[np.int64]) -> BoolArray:
     """Per unknown component (index = label): would a person send the robot to look at it? For
     the outside world (all its components together): does the robot reach enough of its
-    frontier? For a region inside the map: also big enough, and seen through an opening rather
-    than wrapped in a scanned outline (see the module docstring)."""
+    frontier? For a region inside the map: big enough, and seen through an opening the robot
+    can reach rather than through gaps in a scanned outline (see the module docstring)."""
     outside = layers.unknown_outside
     inside = ~outside
     inside[0] = False
-    # The edge of each region: how many free and occupied cells border it.
-    free_edge = np.bincount(pairs[:, 1], minlength=n + 1)
-    occ_edge = np.bincount(adjacent_pairs(layers.occupied, lab)[:, 1], minlength=n + 1)
-    share = free_edge / np.maximum(free_edge + occ_edge, 1)
     candidate = np.zeros(n + 1, dtype=bool)
-    candidate[inside] = ((sizes[inside] * grid.cell_area_m2 >= params.unexplored_worth_area_m2)
-                         & (share[inside] <= params.unexplored_max_frontier_share))
+    candidate[inside] = sizes[inside] * grid.cell_area_m2 >= params.unexplored_worth_area_m2
     res = grid.resolution_m
     need = math.ceil(params.unexplored_min_frontier_m / res - 1e-9)
     worth = np.zeros(n + 1, dtype=bool)
@@ -238,31 +232,24 @@ def _edge_adjacent(lab: IntArray, pairs: npt.NDArray[np.int64]) -> BoolArray:
 
 def _robot_reaches(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers,
                    cells: npt.NDArray[np.int64]) -> BoolArray:
-    """Per free cell (flat index): can the robot come up to it, i.e. is it near a free cell where
-    the robot fits, a free square of a robot's diameter round it (the square holds the robot's
-    disc: a slightly strict test)?"""
+    """Per free cell (flat index): can the robot come up to it, i.e. does it touch (8-neighbours)
+    a cell that the robot's footprint covers somewhere, the footprint a free square of a robot's
+    diameter (it holds the robot's disc: a slightly strict test)?"""
     out = np.zeros(len(cells), dtype=bool)
     if len(cells) == 0:
         return out
     half = max(1, math.ceil(params.robot_radius_m / grid.resolution_m))
-    # Up to the square's corner (and a cell): a frontier along a diagonal edge is that far from
-    # the nearest centre whose square fits, as one along an axis is half a side away.
-    near = math.ceil(half * math.sqrt(2.0)) + 1
+    near = half + 1
     rr, cc = np.divmod(cells, grid.width)
-    # Where the robot fits, over the window that the tests read (the window's edge blocks).
+    # Over the window that the tests read (its edge blocks): where the robot's centre fits (the
+    # free cells eroded by the square), then the cells within ``near`` of those (the footprint
+    # and its neighbours), by separable minimum and maximum filters.
     pad = near + half
     r0, r1 = max(0, int(rr.min()) - pad), min(grid.height, int(rr.max()) + pad + 1)
     c0, c1 = max(0, int(cc.min()) - pad), min(grid.width, int(cc.max()) + pad + 1)
-    side = 2 * half + 1
-    fits = ndi.minimum_filter1d(layers.free[r0:r1, c0:c1], side, axis=0, mode="constant", cval=False)
-    fits = ndi.minimum_filter1d(fits, side, axis=1, mode="constant", cval=False)
-    h, w = fits.shape
-    lr, lc = rr - r0, cc - c0
-    for dr in range(-near, near + 1):
-        for dc in range(-near, near + 1):
-            if dr * dr + dc * dc > near * near:
-                continue
-            pr, pc = lr + dr, lc + dc
-            ok = (pr >= 0) & (pr < h) & (pc >= 0) & (pc < w)
-            out[ok] |= fits[pr[ok], pc[ok]]
-    return out
+    m = layers.free[r0:r1, c0:c1]
+    for axis in (0, 1):
+        m = ndi.minimum_filter1d(m, 2 * half + 1, axis=axis, mode="constant", cval=False)
+    for axis in (0, 1):
+        m = ndi.maximum_filter1d(m, 2 * near + 1, axis=axis, mode="constant", cval=False)
+    return np.asarray(m[rr - r0, cc - c0], dtype=bool)

@@ -87,6 +87,9 @@ FACING_DONE_DEG: Final = ROTATE_STEP_DEG / 2
 PASS_NEAR_M: Final = 2.0
 #: ... and went on at least this far past that point (standing at it is not having passed it).
 PASSED_BEYOND_M: Final = 0.5
+#: Two elements passed within this much of the way of each other were passed "at the same time" (a
+#: door's width): "the door you just passed" does not tell them apart.
+PASSED_TIE_M: Final = 0.75
 #: Named places: the goal lies within this distance of the remembered point.
 NAMED_PLACE_MAX_M: Final = 0.75
 #: An element counts as "of the hallway" when its point is within this of the hallway's cells.
@@ -307,17 +310,24 @@ def passed_element(ref: ElementRef, trail: list[Point], analysis_elements: list[
     if len(trail) < 2:
         raise GroundingError(f"I have not driven anywhere yet that I remember, so I don't know which {noun} "
                              "I passed; name it instead, e.g. by the label on the map ('door 2').")
-    best: tuple[float, Element] | None = None
+    passed: list[tuple[float, Element]] = []
     for e in analysis_elements:
         pts = element_extent(e)
         p = nearest_point(trail[-1], pts)[1] if len(pts) > 1 else (float(pts[0, 0]), float(pts[0, 1]))
         d, s, total = closest_approach(trail, p)
-        if d <= PASS_NEAR_M and total - s >= PASSED_BEYOND_M and (best is None or s > best[0]):
-            best = (s, e)
-    if best is None:
+        if d <= PASS_NEAR_M and total - s >= PASSED_BEYOND_M:
+            passed.append((s, e))
+    if not passed:
         raise GroundingError(f"I don't remember passing any {noun} on the way I drove; name it instead, "
                              "e.g. by the label on the map ('door 2').")
-    return best[1]
+    last = max(s for s, _ in passed)
+    tied = [e for s, e in passed if s >= last - PASSED_TIE_M]
+    if len(tied) > 1:
+        # two passed at about the same point of the way (facing doors of a corridor): ask which
+        names = " and ".join(e.id.replace("_", " ") for e in tied[:4])
+        raise GroundingError(f"I passed {names} at about the same point; which one do you mean? Say e.g. "
+                             f"'go back to {tied[0].id.replace('_', ' ')}'.")
+    return tied[0]
 
 
 def resolve_passed(ref: ElementRef, trail: list[Point], analysis: MapAnalysis) -> ElementRef:
