@@ -13,7 +13,7 @@ from langnav.cli import build_parser, main
 from langnav.cli.robot_options import ROBOT_OPTIONS, add_robot_arguments, robot_options
 from langnav.robot.errors import RobotError
 from langnav.robot.protocol import create_backend
-from langnav.robot.rosbridge_server import RosbridgeServer
+from langnav.robot.ros.rosbridge_server import RosbridgeServer
 
 
 def _parse(*argv: str) -> argparse.Namespace:

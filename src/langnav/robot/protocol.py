@@ -145,7 +145,7 @@ _REGISTRY: dict[str, BackendFactory] = {}
 #: roslibpy / rclpy are only loaded when that backend is asked for).
 _BUILTIN: dict[str, str] = {
     "sim": "langnav.robot.sim",
-    "rosbridge": "langnav.robot.rosbridge_backend",
+    "rosbridge": "langnav.robot.ros.rosbridge_backend",
     "ros2": "langnav.robot.ros2_backend",
 }
 
