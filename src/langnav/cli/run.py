@@ -104,8 +104,8 @@ class _Printer:
 
 
 def run(args: argparse.Namespace) -> int:
-    from langnav.language.translator import get_translator
     from langnav.analysis.identity import StableAnalyzer
+    from langnav.language.translator import get_translator
     from langnav.pipeline import Planner, default_analyzer
     from langnav.places import JsonPlaceStore
 
