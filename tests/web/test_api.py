@@ -430,3 +430,14 @@ def test_element_ids_stay_put_as_the_map_grows(make_client: AppFactory) -> None:
                         assert d.id == old_id, (d.id, old_id, d.center)
                 seen.setdefault(d.id, d.center)
         assert len(seen) >= 2
+
+
+def test_errors_shown_to_the_user_are_logged(make_client: AppFactory, caplog: Any) -> None:
+    import logging
+
+    with make_client() as client, caplog.at_level(logging.WARNING):
+        client.post("/api/goto", json={"x": 2.8, "y": 7.5})       # on the table: refused
+        client.post("/api/translator", json={"name": "nope"})     # an HTTP error
+    text = caplog.text
+    assert "told the user (rejected)" in text and "wall or an obstacle" in text
+    assert "/api/translator -> 400" in text

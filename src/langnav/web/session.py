@@ -261,6 +261,8 @@ class RobotSession:
             for key in ("reasons", "notes"):
                 if isinstance(payload.get(key), list):
                     payload[key] = [self.feedback.plain(str(v)) for v in payload[key]]
+        if kind in ("rejected", "error") or (kind == "outcome" and payload.get("status") == "failed"):
+            log.warning("told the user (%s): %s %s", kind, payload.get("text", ""), payload.get("reasons") or "")
         msg = self.store.add(role, kind, payload, plan_id)
         self.broadcaster.publish_event({"type": "message", "message": msg.to_json()})
         return msg
