@@ -54,15 +54,22 @@ LABEL_NOUNS: Final[dict[str, Element]] = {
     "unexplored": Element.UNEXPLORED_AREA, "obstacle": Element.OBSTACLE, "corner": Element.CORNER,
     "wall": Element.WALL}
 _NUMBER_WORDS: Final = "|".join(sorted((w for w, v in ONES.items() if v > 0), key=len, reverse=True))
+#: A number followed by a unit, or by a plural noun, is an amount or a count ("the room 2 doors down"),
+#: not the number of a label.
 _UNIT_AFTER: Final = (r"(?!\s*(?:m|cm|mm|metres?|meters?|feet|foot|ft|inch(?:es)?|in|yards?|yd|degrees?|deg|"
-                      r"times|steps?|x|%|more|rad|radians?|o\s*clock)\b)")
+                      r"times|steps?|x|%|more|rad|radians?|o\s*clock|doors|rooms|hallways|corridors|halls|walls|"
+                      r"corners|obstacles|passages|boxes|spaces|places|areas|of)\b)")
 _LABEL_RE: Final = re.compile(
     r"\b(?P<noun>narrow\s+passage|unexplored\s+area|" + "|".join(k for k in LABEL_NOUNS if " " not in k)
     + r")\s*(?:number\s+|no\.?\s+|#\s*)?(?P<n>\d{1,4}|" + _NUMBER_WORDS + r")\b" + _UNIT_AFTER)
 
+#: "2 m past / before" followed by what it is measured from: a determiner, a label or a place word
+#: ("before turning left" is a time, not a place).
 _OFFSET_PREP_RE: Final = re.compile(
     r"\s*(?:(?P<past>past|beyond|after|further\s+than|farther\s+than|on\s+from)|"
-    r"(?P<before>before|short\s+of|in\s+front\s+of|shy\s+of|away\s+from))\b")
+    r"(?P<before>before|short\s+of|in\s+front\s+of|shy\s+of|away\s+from))\b"
+    r"(?=\s+(?:the|a|an|this|that|my|our|your|it|there|door|doorway|room|hallway|corridor|hall|wall|corner|"
+    r"obstacle|passage|narrow|unexplored|box|where)\b)")
 _FRACTIONS: Final[dict[str, float]] = {"halfway": 0.5, "half way": 0.5, "half the way": 0.5,
                                        "a third of the way": 1 / 3, "one third of the way": 1 / 3,
                                        "third of the way": 1 / 3, "two thirds of the way": 2 / 3,
@@ -80,7 +87,9 @@ _PASSED_RE: Final = re.compile(
 _PREVIOUS_RE: Final = re.compile(
     r"\bwhere\s+(?:you|we|i)\s+(?:were|was)(?:\s+(?:just\s+)?(?:before|a\s+moment\s+ago|earlier|just\s+now|last))?"
     r"(?!\s+(?:at\s+the\s+start|at\s+first|originally|to\s+begin\s+with))\b")
-_HERE_RETURN_RE: Final = re.compile(r"\b(?P<verb>come|get|return|head|go|drive|move)\s+(?P<back>back\s+)?here\b")
+#: "Come back here" / "return here": back to where the prompt began ("come here" alone names no place
+#: the robot knows: it is left to the clause reader, which asks).
+_HERE_RETURN_RE: Final = re.compile(r"\b(?:(?P<verb>come|get|head|go|drive|move)\s+back|(?P<ret>return))\s+here\b")
 _SPACE_NOUN: Final = r"(?P<noun>room|office|hallway|corridor|space)"
 _ACROSS_RE: Final = re.compile(
     r"\b" + _SPACE_NOUN + r"\s+(?:(?:that|which)\s+is\s+|that\s*'s\s+)?(?:directly\s+|right\s+|just\s+|straight\s+)?"
@@ -194,7 +203,8 @@ def extract(norm: str) -> tuple[str, Marks]:
         text = _cut(text, m.start(), m.end(), "where you started")
     m = _HERE_RETURN_RE.search(text)
     if m is not None:
-        text = _cut(text, m.start(), m.end(), f"{'come' if m.group('verb') in ('come', 'get') else m.group('verb')} back")
+        verb = "return" if m.group("ret") else "come" if m.group("verb") in ("come", "get") else m.group("verb")
+        text = _cut(text, m.start(), m.end(), "return" if verb == "return" else f"{verb} back")
         marks.rewritten = True
     for m in reversed(list(_PASSED_RE.finditer(text))):
         marks.passed.insert(0, m.group(0).strip())
@@ -428,7 +438,9 @@ def read_composed(text: str, previous: Step | None = None, known_names: Sequence
         return reader(text, previous, known_names, previous_target)
     reading = _words_back(reader(rewritten, previous, (*known_names, *stand_ins), previous_target), stand_ins)
     if not reading.steps:
-        return reading
+        # what was not understood is reported in the user's words, not in the rewritten ones
+        return replace(reading, unread=tuple(text if u.strip() in (rewritten, _words_back_text(rewritten, stand_ins))
+                                             else u for u in reading.unread))
     steps, left = attach(reading.steps, marks)
     steps = tuple(_named_back(s, stand_ins).model_copy(update={"text": text[:500]}) for s in steps)
     confidence = reading.confidence * (LEFT_OVER_FACTOR if left else 1.0)
@@ -457,6 +469,12 @@ def _stand_in_names(norm: str, known_names: Sequence[str]) -> tuple[str, dict[st
         if len(stand_ins) >= 20:
             break
     return norm, stand_ins
+
+
+def _words_back_text(text: str, stand_ins: dict[str, str]) -> str:
+    for token, original in stand_ins.items():
+        text = text.replace(token, original)
+    return text
 
 
 def _words_back(reading: Reading, stand_ins: dict[str, str]) -> Reading:
