@@ -136,7 +136,7 @@ _REGISTRY: dict[str, BackendFactory] = {}
 _BUILTIN: dict[str, str] = {
     "sim": "langnav.robot.sim",
     "rosbridge": "langnav.robot.rosbridge_backend",
-    "ros2": "langnav.robot.ros2_backend",
+    "ros2": "langnav.robot.ros.backend",
 }
 
 
