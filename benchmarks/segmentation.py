@@ -102,8 +102,9 @@ def _mean(name: str, prs: list[PrecisionRecall], published: tuple[float, float] 
 
 
 def bench_rose2(quick: bool) -> None:
-    print("(a) ROSE² real maps")
+    print("(a) ROSE² real maps (langnav, then ROSE²'s own output image scored by the same code)")
     prs = []
+    theirs: list[PrecisionRecall] = []
     for mp in sorted((ROSE2 / "maps").glob("*.png")):
         gp = ROSE2 / "gt" / mp.name
         if not gp.exists():
@@ -124,7 +125,30 @@ def bench_rose2(quick: bool) -> None:
         pr = room_precision_recall(gt[:h, :w], image_labels(seg))
         prs.append(pr)
         _line(mp.stem, pr, f"  {dt * 1000:5.0f} ms")
+        own = rose2_output_labels(ROSE2 / "rose2_output" / mp.name)
+        if own is not None and own.shape[0] >= h and own.shape[1] >= w:
+            rp = room_precision_recall(gt[:h, :w], own[:h, :w])
+            theirs.append(rp)
+            _line(f"  ROSE² output {mp.stem}", rp)
     _mean("ROSE² maps", prs, ROSE2_PUBLISHED["rose2"])
+    if theirs:
+        _mean("ROSE² own outputs", theirs, None)
+        p_us, r_us = statistics.mean(p.precision for p in prs), statistics.mean(p.recall for p in prs)
+        p_th, r_th = statistics.mean(p.precision for p in theirs), statistics.mean(p.recall for p in theirs)
+        ahead = "ahead in both" if p_us > p_th and r_us > r_th else "NOT ahead in both"
+        print(f"  langnav vs ROSE²'s own outputs, same maps and scorer: precision {100 * p_us:.1f} vs {100 * p_th:.1f}, "
+              f"recall {100 * r_us:.1f} vs {100 * r_th:.1f}: {ahead}", flush=True)
+
+
+def rose2_output_labels(path: Path) -> np.ndarray | None:
+    """ROSE²'s own segmentation image (one colour per room on white) as room labels, or None
+    when it is not there."""
+    if not path.exists():
+        return None
+    with Image.open(path) as im:
+        rgb = np.asarray(im.convert("RGB")).copy()
+    rgb[(rgb == 255).all(axis=-1)] = 0  # white: no room
+    return colour_gt_rooms(rgb)
 
 
 def bench_ipa(quick: bool) -> None:

@@ -242,3 +242,36 @@ def test_user_text_is_escaped_on_the_wire(make_client: AppFactory) -> None:
         assert "\\u003cimg src=x onerror=alert(1)\\u003e" in r.text
         assert r.json()["messages"][0]["text"] == "<img src=x onerror=alert(1)> where are you?"
         assert "<img" not in client.get("/api/history").text
+
+
+def test_stop_writes_one_message(make_client: AppFactory) -> None:
+    with make_client() as client:
+        _prompt(client, "go to the farthest door")
+        time.sleep(0.8)
+        last = client.get("/api/history").json()["messages"][-1]["id"]
+        client.post("/api/stop")
+        _wait_idle(client, 5.0)
+        time.sleep(0.5)
+        new = [m for m in client.get("/api/history").json()["messages"] if m["id"] > last and m["kind"] != "step"]
+        assert [m["text"][:8] for m in new] == ["Stopped "]
+
+
+def test_pause_holds_exploration_and_resume_carries_on(make_client: AppFactory) -> None:
+    with make_client(known_map=False) as client:
+        _prompt(client, "explore")
+        end = time.monotonic() + 20
+        while client.get("/api/status").json()["plan"]["state"] != "running" and time.monotonic() < end:
+            time.sleep(0.05)
+        time.sleep(1.5)
+        assert client.post("/api/pause").json()["ok"] is True
+        time.sleep(0.5)
+        held = client.get("/api/status").json()["pose"]
+        time.sleep(2.0)
+        assert client.get("/api/status").json()["pose"] == held
+        assert client.get("/api/status").json()["plan"]["state"] == "paused"
+        assert client.post("/api/resume", json={}).json()["ok"] is True
+        end = time.monotonic() + 10
+        while client.get("/api/status").json()["pose"] == held and time.monotonic() < end:
+            time.sleep(0.1)
+        assert client.get("/api/status").json()["pose"] != held
+        client.post("/api/stop")

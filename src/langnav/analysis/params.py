@@ -24,6 +24,22 @@ class AnalysisParams:
     #: A space whose length / width exceeds this and whose width is below hallway_max_width_m is a hallway.
     hallway_min_elongation: float = 3.0
     hallway_max_width_m: float = 3.0
+    #: A space with two openings or more, many times longer than its typical width (twice the median clearance along its
+    #: centre line, whatever a wide junction or an alcove adds at one point) is a corridor:
+    #: length / typical width at least this (a room with a cupboard in a corner is not ten times
+    #: longer than wide) ...
+    hallway_long_elongation: float = 10.0
+    #: A narrow space entered through one doorway only is a room (a store room, a long
+    #: bathroom) unless it is at least this many times longer than wide: rooms rarely are, a
+    #: dead-end corridor whose other doors are closed is.
+    hallway_dead_end_min_elongation: float = 5.0
+    #: ... and at most this share of its floor lies farther than hallway_max_width_m / 2 from
+    #: every wall (a hall with wide open floor between its aisles is a room).
+    hallway_max_wide_share: float = 0.2
+    #: A room or hallway is wide enough for a person to walk and turn: a space whose widest point
+    #: is narrower than this (m; building codes ask ~0.9 m of corridor) is a sliver (a laser-ray
+    #: fan outside a wall, the gap behind a cabinet, a shelf's interior), not a space.
+    space_min_width_m: float = 1.0
     #: Occupied clusters smaller than this are noise; larger ones apart from the walls are obstacles.
     obstacle_min_area_m2: float = 0.01
     #: Unknown regions smaller than this are noise specks, not unexplored areas (bench README).

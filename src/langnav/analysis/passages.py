@@ -6,7 +6,10 @@ width is between the robot's diameter and ``params.passage_max_width_m`` form ca
 A chain's *core* is where the width stays close to its narrowest (the stretch between two
 parallel sides, without the flaring mouths). A core is a passage when it is longer than
 ``params.passage_min_length_m`` and clearly longer than wide (a short gap beside a chair is a
-gap, not a passage), has sides along most of its length, and it is not a doorway. A passage
+gap, not a passage), wide enough for the robot with a margin, has solid sides along most of its
+length (walls, furniture, a shelf's unscanned inside: not laser-ray stripes of unknown, nor the
+unscanned world beyond a sliver outside a wall), leads somewhere (both mouths open into free
+space wider than any passage: a dead-end slot does not), and it is not a doorway. A passage
 along a wall (between the wall and a long shelf) shares its skeleton line with the one-sided
 strip along the rest of the room's walls: a core without sides along most of its length is
 split into its two-sided stretches, and each is judged on its own.
@@ -55,6 +58,15 @@ AXIS_SNAP_DEG: Final = 3.0
 TWO_SIDED_DIRECTIONS: Final = 8
 #: Look this far beyond a mouth for the space the passage opens into.
 MOUTH_SEARCH_M: Final = 1.0
+#: A passage leaves the robot at least this much room on each side (about a robot's
+#: localisation error): a 0.40 m slot is no way through for a 0.35 m robot.
+PASSAGE_SIDE_MARGIN_M: Final = 0.05
+#: A side is solid when nothing open lies within this depth past where it starts (a shelf's
+#: unscanned inside, a wall); laser-ray stripes of unknown are thinner, with free space behind.
+SOLID_UNKNOWN_DEPTH_M: Final = 0.3
+#: A mouth opens into a free area when one is found within this distance beyond it (the core
+#: stops where the sides start to flare, up to about a width before the space itself).
+MOUTH_OPEN_SEARCH_M: Final = 1.5
 #: Side distances of many pieces are sampled together, about this many samples at a time
 #: (bounded memory on a large map; fewer numpy calls on a small one).
 SIDE_BATCH_SAMPLES: Final = 400_000
@@ -77,7 +89,8 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     the grid's shared masks (built when not given).
     """
     res = grid.resolution_m
-    occupied = grid.occupied if layers is None else layers.occupied
+    layers = layers or GridLayers(grid)
+    occupied, exterior = layers.occupied, layers.exterior
     open_ = ~blocking & ~occupied
     rows_any = np.flatnonzero(open_.any(axis=1))
     cols_any = np.flatnonzero(open_.any(axis=0))
@@ -171,7 +184,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
         side_sets = _side_distances_each(sub, [m[3] for m in measured],
                                          [dist_of[d2[m[0], m[1]]] / res for m in measured],
                                          [np.array([-m[5][1], m[5][0]]) for m in measured], SIDE_TOL_M / res)
-        for (rr, cc, across, _pts, mean, axis, proj, length_m), sides in zip(measured, side_sets, strict=True):
+        for (rr, cc, across, pts, mean, axis, proj, length_m), sides in zip(measured, side_sets, strict=True):
             bounded = np.isfinite(sides).all(axis=1)
             if bounded.mean() < MIN_BOUNDED_FRACTION:
                 if across is not None and len(rr) * math.sqrt(2) >= min_cells:
@@ -182,7 +195,20 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             width_m = (median(sides[bounded].sum(axis=1)) - 0.5) * res
             if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * width_m:
                 continue
+            # Wide enough for the robot to pass (the band's test used the skeleton's width, up to
+            # a cell off).
+            if width_m < 2.0 * (params.robot_radius_m + PASSAGE_SIDE_MARGIN_M):
+                continue
+            # Between two things: both sides solid along most of it, not laser-ray stripes.
+            normal = np.array([-axis[1], axis[0]])
+            solid = _solid_sides(sub, occupied[r0:r1, c0:c1], exterior[r0:r1, c0:c1], pts, normal, sides, SOLID_UNKNOWN_DEPTH_M / res)
+            if solid.mean() < MIN_BOUNDED_FRACTION:
+                continue
             ends_g = [mean + proj.min() * axis, mean + proj.max() * axis]
+            # It leads somewhere: both mouths open into free space wider than any passage.
+            if not all(_opens_into_space(sub, e, sign * axis, res, params)
+                       for sign, e in zip((-1.0, 1.0), ends_g, strict=True)):
+                continue
             centre_g = mean + 0.5 * (proj.min() + proj.max()) * axis
             cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
             centre = (float(cx), float(cy))
@@ -346,6 +372,62 @@ def _side_distances_each(open_: BoolArray, pts: Sequence[npt.NDArray[np.float64]
         out.extend(np.split(sides, np.cumsum(sizes)[:-1]))
         i = j
     return out
+
+
+def _solid_sides(open_: BoolArray, occupied: BoolArray, outside: BoolArray, pts: npt.NDArray[np.float64],
+                 normal: npt.NDArray[np.float64], sides: npt.NDArray[np.float64], depth_cells: float) -> BoolArray:
+    """Per point: are both its sides (distances ``sides`` from :func:`_side_distances` along
+    -/+``normal``) solid: an occupied cell where the side starts (a wall, a thin shelf), or
+    unknown that is not the unexplored world ``outside`` with no open cell within
+    ``depth_cells`` past it (a shelf's unscanned inside)? A thin unknown stripe between two
+    laser rays, with free space just behind it, is not; nor is the unscanned world beyond a
+    sliver of free space outside a wall (nothing is known to stand there)."""
+    out: BoolArray = np.asarray(np.isfinite(sides).all(axis=1), dtype=bool)
+    steps = np.arange(0.0, depth_cells + 0.5, 0.5)
+    h, w = open_.shape
+    for j, sign in enumerate((-1.0, 1.0)):
+        idx = np.flatnonzero(out)
+        t = sign * (sides[idx, j][:, None] + steps[None, :])
+        r = np.floor(pts[idx, 1:2] + t * normal[1]).astype(int)
+        c = np.floor(pts[idx, 0:1] + t * normal[0]).astype(int)
+        inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
+        see = np.zeros(r.shape, dtype=bool)
+        see[inside] = open_[r[inside], c[inside]]
+        hit = np.zeros(r.shape, dtype=bool)
+        hit[inside] = occupied[r[inside], c[inside]]
+        beyond = np.ones(r.shape, dtype=bool)
+        beyond[inside] = outside[r[inside], c[inside]]
+        out[idx[(see.any(axis=1) | beyond[:, 0]) & ~hit[:, 0]]] = False
+    return out
+
+
+def _opens_into_space(open_: BoolArray, end_g: npt.NDArray[np.float64], direction: npt.NDArray[np.float64],
+                      res: float, params: AnalysisParams) -> bool:
+    """Does the free space beyond a mouth (``end_g``, x, y in grid cells; ``direction`` outwards
+    along the axis) open into a free area: within ``MOUTH_OPEN_SEARCH_M`` of the mouth, reached
+    through free cells ahead of it, a cell whose clearance exceeds half the widest passage
+    (somewhere wider than any narrow passage: a room, a hall, a corridor)? A dead-end slot's
+    far end, a sliver outside a wall and a laser ray's tip do not."""
+    h, w = open_.shape
+    reach = MOUTH_OPEN_SEARCH_M / res
+    need = params.passage_max_width_m / 2.0 / res
+    x, y = float(end_g[0]), float(end_g[1])
+    # The window: the search disc plus the clearance to measure, so that a cell of the disc that
+    # is clear enough is so within the window (the window's edge counts as blocked).
+    pad = math.ceil(reach + need) + 1
+    r0, r1 = max(0, math.floor(y) - pad), min(h, math.floor(y) + pad + 1)
+    c0, c1 = max(0, math.floor(x) - pad), min(w, math.floor(x) + pad + 1)
+    win = open_[r0:r1, c0:c1]
+    rr, cc = np.mgrid[r0:r1, c0:c1]
+    dx, dy = cc + 0.5 - x, rr + 0.5 - y
+    # Ahead of the mouth (half a cell of slack: the end lies on a cell centre's line).
+    ahead = win & (dx * direction[0] + dy * direction[1] >= -0.5) & (dx * dx + dy * dy <= reach * reach)
+    lab, _n = ndi.label(ahead)
+    start = lab[min(max(math.floor(y), r0), r1 - 1) - r0, min(max(math.floor(x), c0), c1 - 1) - c0]
+    if start == 0:
+        return False
+    clear = ndi.distance_transform_edt(np.pad(win, 1))[1:-1, 1:-1]
+    return bool(clear[lab == start].max() > need)
 
 
 def _space_beyond(labels: npt.NDArray[np.int32], end_g: npt.NDArray[np.float64],

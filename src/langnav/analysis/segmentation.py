@@ -16,8 +16,10 @@ not depend on the grid's resolution.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import logging
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Final
 
@@ -38,7 +40,15 @@ from langnav.analysis.precompute import (
     maximum3,
     nonzero2,
 )
-from langnav.analysis.seg_core import EIGHT, Floor, JambJudge, basins, clean_floor, merge_basins
+from langnav.analysis.seg_core import (
+    EIGHT,
+    Floor,
+    JambJudge,
+    adjacent_pairs,
+    basins,
+    clean_floor,
+    merge_basins,
+)
 from langnav.analysis.seg_doors import RawDoor, doors_between, label_max, openings_to_unknown
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
@@ -50,13 +60,16 @@ log = logging.getLogger(__name__)
 ENCLOSED_UNKNOWN_MIN_FLOOR_SHARE: Final = 0.25
 #: Outlines of larger bounding boxes (cells) are traced on a subsampled mask (for drawing).
 OUTLINE_MAX_CELLS: Final = 60_000
-#: Widths of spaces with larger bounding boxes (cells) are measured on a subsampled mask.
-WIDTH_MAX_CELLS: Final = 250_000
 #: Outlines are thinned to about this many points before simplification (they are for drawing).
 OUTLINE_MAX_POINTS: Final = 400
 #: The grid is cropped to the free space plus this margin (m) before segmenting: enough for the
 #: walls and the unknown that openings lead into.
 CROP_MARGIN_M: Final = 3.0
+#: Widths of spaces with larger bounding boxes (cells) are measured on a subsampled mask.
+WIDTH_MAX_CELLS: Final = 250_000
+#: A cell is on a space's centre line when its clearance is at least this share of the largest
+#: within half a hallway's width (a wall's bumps add spurs to the medial axis, lower than it).
+CENTRE_LINE_MIN_SHARE: Final = 0.8
 #: Id used in ``Door.connects`` for unexplored territory.
 UNKNOWN_ID: Final = "unknown"
 #: Openings between two spaces narrower than the robot can pass (``door_min_width_m``) but at
@@ -170,6 +183,7 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     labels = _fill_enclosed(labels, params.seg_island_max_area_m2 / (res * res))
     if params.seg_close_unknown_gaps_m > 0:
         labels = _close_unknown_gaps(labels, unknown, occupied, params.seg_close_unknown_gaps_m / res)
+    labels = _drop_slivers(labels, fl.clearance_m, res, params)
     exterior &= labels == 0
     between = doors_between(labels, fl.clearance_m, res, params,
                             min_width_m=min(NARROW_DOOR_MIN_WIDTH_M, params.door_min_width_m))
@@ -179,7 +193,9 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     peaks = label_max(labels, fl.clearance_m)  # the widest clearance of each space
     raw_doors += openings_to_unknown(labels, fl.floor, exterior, occupied,
                                      fl.clearance_m, res, params, peaks)
-    rooms = _rooms(grid, labels, fl, params, peaks)
+    openings = np.bincount(np.array([x for d in raw_doors for x in (d.a, d.b) if x > 0], dtype=np.int64),
+                           minlength=int(labels.max()) + 1)
+    rooms = _rooms(grid, labels, fl, params, peaks, openings)
     ids = {r.label: r.id for r in rooms}
     doors = _doors(grid, raw_doors, ids)
     narrow = _doors(grid, raw_narrow, ids, prefix="narrow_door")
@@ -322,32 +338,140 @@ def _claim_free(labels: npt.NDArray[np.int32], free: npt.NDArray[np.bool_],
     return out
 
 
-def _kind_and_size(mask: npt.NDArray[np.bool_], floor_cells: int, area_m2: float, peak_m: float,
-                   res: float, params: AnalysisParams) -> tuple[ElementKind, float, float]:
-    """Hallway or room, with (length, width): width = the widest inscribed circle of the space
-    (furniture was taken out of the floor's clearance already); length = area / width."""
-    # Clearance is measured between cell centres: an opening of n cells has 2 x peak = (n + 1) cells.
-    width = max(2.0 * peak_m - res, res)
+def _drop_slivers(labels: npt.NDArray[np.int32], clearance_m: npt.NDArray[np.float64], res: float,
+                  params: AnalysisParams) -> npt.NDArray[np.int32]:
+    """Labels without the spaces narrower than ``params.space_min_width_m`` at their widest point
+    (no room or hallway: laser-ray fans, gaps behind furniture, shelf interiors), renumbered in
+    order. A sliver touching a wider space is a bay of it and joins the one it shares its
+    widest opening with; one alone is no space."""
+    if params.space_min_width_m <= 0 or labels.max() == 0:
+        return labels
+    width = 2.0 * label_max(labels, clearance_m) - res
+    keep = width >= params.space_min_width_m - 1e-9
+    keep[0] = False
+    if keep[1:].all():
+        return labels
+    # The floor's clearance leaves furniture and unscanned patches out: judge a narrow space on
+    # all of it, as a person sees its width.
+    objs = ndi.find_objects(labels)
+    for k in np.flatnonzero(~keep[1:]) + 1:
+        sl = objs[k - 1]
+        if sl is not None and _whole_width(labels[sl] == k, res) >= params.space_min_width_m - 1e-9:
+            keep[k] = True
+    target = np.arange(keep.size, dtype=np.int32)
+    target[~keep] = 0
+    a_arr, b_arr, s_arr, _ = adjacent_pairs(labels, clearance_m)
+    best = np.full(keep.size, -1.0)
+    for a, b, s in zip(a_arr.tolist(), b_arr.tolist(), s_arr.tolist(), strict=True):
+        for sliver, wide in ((a, b), (b, a)):
+            if not keep[sliver] and keep[wide] and s > best[sliver]:
+                best[sliver] = s
+                target[sliver] = wide
+    on = target > 0
+    mapping = np.zeros(keep.size, dtype=np.int32)
+    mapping[keep] = np.arange(1, int(keep.sum()) + 1, dtype=np.int32)
+    return np.where(on, mapping[target], 0).astype(np.int32)[labels]
 
-    def hallway(w: float) -> bool:
+
+def _centre_line(clearance_m: npt.NDArray[np.float64], floor: npt.NDArray[np.bool_], res: float,
+                 reach_m: float) -> npt.NDArray[np.bool_]:
+    """Cells on the centre line of the free space (its medial axis): the clearance is a local
+    maximum across a row or a column, as it is midway between two walls, and close to the
+    largest clearance within ``reach_m`` (the spurs a noisy wall adds to a medial axis run
+    towards the wall, their clearance falling away from the centre's)."""
+    c = clearance_m
+    across_rows = np.zeros(c.shape, dtype=bool)
+    across_rows[1:-1] = (c[1:-1] >= c[:-2]) & (c[1:-1] >= c[2:])
+    across_cols = np.zeros(c.shape, dtype=bool)
+    across_cols[:, 1:-1] = (c[:, 1:-1] >= c[:, :-2]) & (c[:, 1:-1] >= c[:, 2:])
+    line = floor & (c > 0) & (across_rows | across_cols)
+    size = 2 * max(1, round(reach_m / res)) + 1
+    return line & (c >= CENTRE_LINE_MIN_SHARE * ndi.maximum_filter(c, size=size))
+
+
+def _typical_widths(labels: npt.NDArray[np.int32], clearance_m: npt.NDArray[np.float64],
+                    floor: npt.NDArray[np.bool_], res: float, wide_clearance_m: float
+                    ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+    """Per label: the typical width (twice the median clearance along the space's centre line,
+    m: a corridor's width whatever junctions and alcoves widen it here and there) and the share
+    of its cells farther than ``wide_clearance_m`` from every wall."""
+    n = int(labels.max()) + 1
+    line = _centre_line(clearance_m, floor, res, wide_clearance_m) & (labels > 0)
+    lab_line = labels[line]
+    clear_line = clearance_m[line]
+    typical = np.zeros(n)
+    if lab_line.size:
+        order = np.lexsort((clear_line, lab_line))
+        lab_s, clear_s = lab_line[order], clear_line[order]
+        starts = np.searchsorted(lab_s, np.arange(n), side="left")
+        ends = np.searchsorted(lab_s, np.arange(n), side="right")
+        has = ends > starts
+        mid = (starts + ends - 1) // 2
+        typical[has] = 2.0 * clear_s[np.minimum(mid[has], clear_s.size - 1)] - res
+    on = labels > 0
+    cells = np.bincount(labels[on], minlength=n)
+    wide = np.bincount(labels[on & (clearance_m > wide_clearance_m)], minlength=n)
+    return typical, wide / np.maximum(cells, 1)
+
+
+def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: float, openings: int,
+                   whole_width: Callable[[], float], res: float, params: AnalysisParams
+                   ) -> tuple[ElementKind, float, float]:
+    """Hallway or room, with (length, width).
+
+    A hallway is walked through (not a dead end entered through one doorway, unless it is
+    longer for its width than rooms are) and long and narrow: for its widest
+    inscribed circle (furniture was taken out of the floor's clearance already), or, when a
+    junction or an alcove widens it here and there, for its typical width (the median width
+    along its centre line) if it has two openings or more, is many times longer than that
+    typical width and has little floor wider than a corridor. Its width is the one it was judged on; length = area / width.
+    ``whole_width()``: the widest inscribed circle of the whole space, its furniture and
+    unscanned patches included.
+    """
+    # Clearance is measured between cell centres: an opening of n cells has 2 x peak = (n + 1) cells.
+    peak_width = max(2.0 * peak_m - res, res)
+    if openings == 1 and area_m2 / peak_width < params.hallway_dead_end_min_elongation * peak_width:
+        # Entered through one doorway and leading nowhere else: a room (a dead-end corridor
+        # with its doors closed is longer than rooms are).
+        return ElementKind.ROOM, area_m2 / peak_width, peak_width
+    def narrow(w: float) -> bool:
         return w <= params.hallway_max_width_m and area_m2 / w >= params.hallway_min_elongation * w
 
-    if hallway(width) and int(mask.sum()) > floor_cells:
-        # Part of the space is unscanned or cluttered (shelves): measure on the whole space, on a
-        # coarser copy when it is large (a corridor network spans the map).
-        k = max(1, math.ceil(math.sqrt(mask.size / WIDTH_MAX_CELLS)))
-        whole = np.pad(mask[::k, ::k], 1)
-        width = max(width, 2.0 * float(ndi.distance_transform_edt(whole, sampling=res * k).max()) - res * k)
-    return (ElementKind.HALLWAY if hallway(width) else ElementKind.ROOM), area_m2 / width, width
+    if narrow(peak_width):
+        # Part of the space may be unscanned or cluttered (shelves, furniture): its width as a
+        # person sees it is that of the whole space.
+        peak_width = max(peak_width, whole_width())
+        if narrow(peak_width):
+            return ElementKind.HALLWAY, area_m2 / peak_width, peak_width
+    typical = max(min(typical_m, peak_width), res)
+    # Judged on its typical width, a space must also be walked through (two openings or more):
+    # an open floor's aisles between its desks and shelves are as narrow as a corridor.
+    if typical_m > 0 and openings >= 2 and typical <= params.hallway_max_width_m \
+            and area_m2 / typical >= params.hallway_long_elongation * typical \
+            and wide_share <= params.hallway_max_wide_share:
+        return ElementKind.HALLWAY, area_m2 / typical, typical
+    return ElementKind.ROOM, area_m2 / peak_width, peak_width
+
+
+def _whole_width(mask: npt.NDArray[np.bool_], res: float) -> float:
+    """The widest inscribed circle (m) of a whole space (furniture and unscanned patches in its
+    mask included), on a coarser copy when it is large (a corridor network spans the map)."""
+    k = max(1, math.ceil(math.sqrt(mask.size / WIDTH_MAX_CELLS)))
+    whole = np.pad(mask[::k, ::k], 1)
+    return 2.0 * float(ndi.distance_transform_edt(whole, sampling=res * k).max()) - res * k
 
 
 def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
-           params: AnalysisParams, peaks: npt.NDArray[np.float64]) -> list[Room]:
-    """The spaces of ``labels``, measured; ``peaks``: the widest clearance of each (by label)."""
+           params: AnalysisParams, peaks: npt.NDArray[np.float64],
+           openings: npt.NDArray[np.int64]) -> list[Room]:
+    """The spaces of ``labels``, measured; ``peaks``: the widest clearance of each (by label);
+    ``openings``: how many doorways each has."""
     res = grid.resolution_m
     n = int(labels.max())
     rooms: list[Room] = []
     objs = ndi.find_objects(labels)
+    typical, wide_share = _typical_widths(labels, fl.clearance_m, fl.floor, res,
+                                          params.hallway_max_width_m / 2)
     for k in range(1, n + 1):
         sl = objs[k - 1]
         if sl is None:
@@ -359,8 +483,9 @@ def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
         cc = cc + sl[1].start
         xs, ys = grid.cell_to_world(rr, cc)
         area = float(sub.sum()) * res * res
-        kind, length, width = _kind_and_size(sub, int((sub & fl.floor[sl]).sum()), area,
-                                             float(peaks[k]), res, params)
+        kind, length, width = _kind_and_size(area, float(peaks[k]), float(typical[k]), float(wide_share[k]),
+                                             int(openings[k]) if k < openings.size else 0,
+                                             functools.partial(_whole_width, sub, res), res, params)
         prefix = "hallway" if kind == ElementKind.HALLWAY else "room"
         rooms.append(Room(
             id=f"{prefix}_{k}", label=k, kind=kind, area_m2=area,

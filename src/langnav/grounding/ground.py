@@ -221,6 +221,8 @@ def ground_step(step: Step, ctx: GroundingContext, pose: Pose, index: int = 0) -
 
 # ------------------------------------------------------------------------------ rotate / move
 def _rotate(step: Step, pose: Pose, index: int) -> GroundedStep:
+    if step.heading_deg is not None:
+        return _face_heading(step, pose, index)
     d = step.direction
     direction: Literal["left", "right"]
     if d == Direction.AROUND:
@@ -242,6 +244,21 @@ def _rotate(step: Step, pose: Pose, index: int) -> GroundedStep:
     sign = 1.0 if direction == "left" else -1.0
     end = Pose(pose.x_m, pose.y_m, pose.yaw_rad + sign * math.radians(n * ROTATE_STEP_DEG))
     note = "turn around" if d == Direction.AROUND else f"turn {direction} {angle:g}°"
+    return GroundedStep(index, step, (Rotate(direction=direction, repeat=n, note=note),), pose, end, note)
+
+
+def _face_heading(step: Step, pose: Pose, index: int) -> GroundedStep:
+    """'face north': one turn the shorter way from the heading the robot has now (README "Compass";
+    exactly 180 degrees may go either way, left is used); nothing when it already faces that way."""
+    heading = float(step.heading_deg or 0.0)
+    delta = (heading - pose.yaw_deg + 180.0) % 360.0 - 180.0  # in [-180, 180)
+    note = f"turn to face heading {heading:g}°"
+    if abs(delta) < ROTATE_STEP_DEG / 2:
+        return GroundedStep(index, step, (), pose, pose, f"already facing heading {heading:g}°")
+    direction: Literal["left", "right"] = "left" if delta > 0 or abs(delta) >= 180.0 - 1e-9 else "right"
+    n = steps_for_angle(abs(delta))
+    sign = 1.0 if direction == "left" else -1.0
+    end = Pose(pose.x_m, pose.y_m, pose.yaw_rad + sign * math.radians(n * ROTATE_STEP_DEG))
     return GroundedStep(index, step, (Rotate(direction=direction, repeat=n, note=note),), pose, end, note)
 
 

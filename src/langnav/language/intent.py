@@ -140,6 +140,10 @@ class Step(_Model):
     direction: Direction | None = None
     distance_m: Annotated[float, Field(ge=0, le=100)] | None = None
     angle_deg: Annotated[float, Field(ge=0, le=3600)] | None = None
+    heading_deg: Annotated[float, Field(ge=0, lt=360)] | None = Field(
+        default=None, description="with movement 'rotate': turn to face this compass heading of the map, "
+        "degrees counter-clockwise from east (east 0, north 90, west 180, south 270), the shorter way; "
+        "'go north 3 m' is this turn, then a move forward")
     amount: Amount | None = None
     query: Query | None = None
     text: Annotated[str, Field(max_length=500)] = Field(default="", description="the words of this step")

@@ -218,12 +218,19 @@ class PlanRun:
         self._paused.set()
         with self._lock:
             handle = self._handle
+            explorer = self._explorer
+        if explorer is not None:
+            explorer.pause()  # it holds its own loop (no new frontier goal) until resumed
         if handle is not None:
             handle.cancel()
-        self.robot.stop()
+        self._safe_stop()
 
     def resume(self) -> None:
         self._paused.clear()
+        with self._lock:
+            explorer = self._explorer
+        if explorer is not None:
+            explorer.resume()
         self._resume.set()
 
     @property
@@ -337,6 +344,8 @@ class PlanRun:
         explorer = Explorer(self.robot, self.config.explore_params, self._emit_passthrough, index=index, step=step)
         with self._lock:
             self._explorer = explorer
+            if self._paused.is_set():
+                explorer.pause()  # paused between the steps: the exploration starts held
         try:
             if self._cancel.is_set():
                 return PlanStatus.CANCELLED

@@ -8,6 +8,11 @@ heading for has been mapped. A frontier whose goal fails is blacklisted (as is o
 makes no progress). Exploration ends when no reachable frontier is left (succeeded), when the time
 or distance budget runs out (succeeded, with the reason), or when it is cancelled.
 
+Pause holds the robot: :meth:`Explorer.pause` cancels the goal being driven to and stops the robot
+at once, and no new goal is sent until :meth:`Explorer.resume` (then the frontiers are looked for
+afresh from where the robot stands) or :meth:`Explorer.cancel`. Time spent paused does not count
+against the time budget; a pause longer than ``pause_timeout_s`` cancels the exploration.
+
 :func:`find_frontiers` is pure (a grid and a pose in, frontiers out); :class:`Explorer` drives any
 :class:`~langnav.robot.protocol.RobotBackend` and reports :class:`~langnav.plan.events.ExecEvent`.
 """
@@ -28,7 +33,7 @@ from skimage.graph import MCP_Geometric
 
 from langnav.maps.grid import OccupancyGrid
 from langnav.plan.events import EventKind, EventSink, ExecEvent, PlanStatus, pose_tuple
-from langnav.robot.errors import RobotTimeout
+from langnav.robot.errors import RobotError, RobotTimeout
 from langnav.robot.protocol import Pose2D, RobotBackend, TaskHandle, TaskStatus
 from langnav.robot.sim.costmap import InflationParams, inflate
 from langnav.robot.sim.planner import traversal_costs
@@ -51,6 +56,8 @@ PROGRESS_MIN_M: Final = 0.2
 #: Default budgets: a floor of a few hundred square metres takes minutes, not hours.
 DEFAULT_TIME_BUDGET_S: Final = 1800.0
 DEFAULT_DISTANCE_BUDGET_M: Final = 1000.0
+#: A paused exploration is cancelled if nobody resumes it within this long (the executor's rule).
+DEFAULT_PAUSE_TIMEOUT_S: Final = 600.0
 
 
 @dataclass(frozen=True)
@@ -63,6 +70,7 @@ class ExploreParams:
     progress_timeout_s: float = PROGRESS_TIMEOUT_S
     time_budget_s: float = DEFAULT_TIME_BUDGET_S
     distance_budget_m: float = DEFAULT_DISTANCE_BUDGET_M
+    pause_timeout_s: float = DEFAULT_PAUSE_TIMEOUT_S
     inflation: InflationParams = field(default_factory=InflationParams)
 
 
@@ -140,7 +148,11 @@ class Explorer:
         self._index = index
         self._step = step
         self._cancel = threading.Event()
+        self._paused = threading.Event()
+        self._resume = threading.Event()
+        self._lock = threading.Lock()   # the handle and the paused flag change together
         self._handle: TaskHandle | None = None
+        self._paused_s = 0.0            # clock time spent paused (not charged to the budget)
         self.blacklist: list[tuple[float, float]] = []
         self.goals_reached = 0
         self.distance_m = 0.0
@@ -156,9 +168,48 @@ class Explorer:
 
     def cancel(self) -> None:
         self._cancel.set()
-        handle = self._handle
+        self._resume.set()
+        with self._lock:
+            handle = self._handle
         if handle is not None:
             handle.cancel()
+        self._stop_robot()
+
+    def pause(self) -> None:
+        """Stop the robot now and send no goal until :meth:`resume` (or :meth:`cancel`)."""
+        with self._lock:
+            self._resume.clear()
+            self._paused.set()
+            handle = self._handle
+        if handle is not None:
+            handle.cancel()
+        self._stop_robot()
+
+    def resume(self) -> None:
+        self._paused.clear()
+        self._resume.set()
+
+    @property
+    def paused(self) -> bool:
+        return self._paused.is_set()
+
+    def _stop_robot(self) -> None:
+        try:
+            self.robot.stop()
+        except RobotError as exc:  # a lost link: the backend's own watchdog stops the base
+            log.warning("stop failed: %s", exc)
+
+    def _hold(self) -> bool:
+        """Paused: keep the robot stopped until resumed; False when cancelled (or paused too long)."""
+        t0 = self._clock()
+        self._stop_robot()
+        self._emit(EventKind.PAUSED, "paused: the robot stopped")
+        resumed = self._resume.wait(self.params.pause_timeout_s)
+        self._paused_s += self._clock() - t0
+        if not resumed or self._cancel.is_set():
+            return False
+        self._emit(EventKind.RESUMED, "resumed: exploring again")
+        return True
 
     def _emit(self, kind: EventKind, message: str, **extra: object) -> None:
         if self._sink is None:
@@ -181,10 +232,12 @@ class Explorer:
         last = self.robot.get_robot_pose()
         self._emit(EventKind.STARTED, "exploring: looking for the edges of the map")
         while True:
+            if self._paused.is_set() and not self._hold():
+                self._cancel.set()
             if self._cancel.is_set():
                 self._emit(EventKind.CANCELLED, "exploration cancelled")
                 return PlanStatus.CANCELLED
-            spent = self._clock() - start_t
+            spent = self._clock() - start_t - self._paused_s
             if spent >= p.time_budget_s or self.distance_m >= p.distance_budget_m:
                 grid = self.robot.get_map()
                 self._emit(EventKind.SUCCEEDED, f"exploration budget spent ({spent:.0f} s, {self.distance_m:.0f} m)",
@@ -207,8 +260,11 @@ class Explorer:
         """Drive towards one frontier until it is reached, mapped, failed, stalled or a better one
         shows up. Returns the last pose (for the distance tally)."""
         p = self.params
-        handle = self.robot.navigate_through_poses([target.goal_xy])
-        self._handle = handle
+        with self._lock:
+            if self._paused.is_set() or self._cancel.is_set():
+                return last  # paused or cancelled while the frontiers were being worked out
+            handle = self.robot.navigate_through_poses([target.goal_xy])
+            self._handle = handle
         goal = target.goal_xy
         best_d = math.inf
         best_t = self._clock()
@@ -221,6 +277,9 @@ class Explorer:
                 pose = self.robot.get_robot_pose()
                 self.distance_m += math.hypot(pose.x_m - last.x_m, pose.y_m - last.y_m)
                 last = pose
+                if result is not None and result.status is TaskStatus.CANCELED and (
+                        self._paused.is_set() or self._cancel.is_set()):
+                    return last  # our own pause or cancel: not the frontier's fault
                 if result is not None:
                     if result.status is TaskStatus.SUCCEEDED:
                         self.goals_reached += 1
@@ -232,7 +291,7 @@ class Explorer:
                         log.info("frontier goal (%.2f, %.2f) failed: %s", *goal, result.message)
                         self.blacklist.append(goal)
                     return last
-                if self._cancel.is_set():
+                if self._cancel.is_set() or self._paused.is_set():
                     handle.cancel()
                     return last
                 d = math.hypot(goal[0] - pose.x_m, goal[1] - pose.y_m)
@@ -250,7 +309,8 @@ class Explorer:
                     handle.cancel()
                     return last
         finally:
-            self._handle = None
+            with self._lock:
+                self._handle = None
 
     @staticmethod
     def _still_frontier(grid: OccupancyGrid, goal: tuple[float, float], radius_m: float = 0.3) -> bool:

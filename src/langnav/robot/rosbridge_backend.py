@@ -67,6 +67,28 @@ log = logging.getLogger(__name__)
 
 #: How often a waiting loop re-checks its condition.
 _POLL_S: Final = 0.02
+#: rosbridge's per-subscription queue (see RosbridgeBackend._subscribe for why it is 0).
+SUBSCRIBE_QUEUE_LENGTH: Final = 0
+#: Zero velocity is re-sent at this rate while a cancelled goal is not yet confirmed. A base obeys
+#: the latest cmd_vel, and Nav2's controller keeps publishing at its controller_frequency (20 Hz by
+#: default) until the goal really ends, so one zero message is overwritten within 50 ms (the robot
+#: was measured moving 0.5 m in the second after one). Sending as often as the controller makes
+#: at least every other command the base sees a zero one; only the confirmed cancel truly stops
+#: Nav2, hence the bounded wait and the error after it (``cancel_timeout_s``).
+STOP_HOLD_RATE_HZ: Final = 20.0
+#: Opening the stop line (see RosbridgeBackend._open_stop_line) on a link that already works
+#: takes milliseconds; waiting longer would only delay the zero velocity on the main connection.
+STOP_LINE_CONNECT_TIMEOUT_S: Final = 1.0
+#: A cancel through a rosbridge that runs goals in their own thread is confirmed within tens of
+#: milliseconds (measured 0.02 s); Nav2's bt_navigator halts its tree within one tick. Two seconds
+#: is ample, and short enough that a person learns quickly when the robot may still be moving.
+DEFAULT_CANCEL_TIMEOUT_S: Final = 2.0
+#: get_map: re-subscribe to the map this often until it arrives. rosbridge picks a subscription's
+#: durability from the publishers it knows when the subscription is made, and a fresh rosbridge
+#: took about a second to discover a transient-local /map publisher (measured: connecting within
+#: ~1 s of rosbridge starting missed the map 1 time in 3); a subscription made in that second is
+#: volatile and never receives the latched map, so a new one is made every second.
+MAP_RESUBSCRIBE_S: Final = 1.0
 
 
 class RosbridgeConfig(BaseModel):
@@ -134,8 +156,11 @@ class RosbridgeConfig(BaseModel):
     odom_stale_s: float = Field(default=1.0, gt=0)
     #: Fail navigation when no feedback came for this long (Nav2 sends it every BT tick).
     feedback_timeout_s: float = Field(default=10.0, gt=0)
-    #: After cancel(), wait this long for the robot to confirm before giving up on it.
-    cancel_timeout_s: float = Field(default=5.0, gt=0)
+    #: After cancel() / stop(), hold zero velocity (at ``stop_hold_rate_hz``) for at most this long
+    #: while waiting for the robot to confirm the cancel; then the task fails saying the robot may
+    #: still be moving.
+    cancel_timeout_s: float = Field(default=DEFAULT_CANCEL_TIMEOUT_S, gt=0)
+    stop_hold_rate_hz: float = Field(default=STOP_HOLD_RATE_HZ, gt=0, le=100)
     #: Reconnect backoff cap (roslibpy's default is an hour).
     reconnect_max_delay_s: float = Field(default=10.0, gt=0)
 
@@ -156,14 +181,48 @@ class _Stamped:
     received_s: float
 
 
+def goal_outcome(status: Any, values: Any, accepted: bool, action: str) -> tuple[TaskStatus, str]:
+    """An ``action_result`` read by its status code (``action_msgs/msg/GoalStatus``: 4 succeeded,
+    5 canceled, 6 aborted), whatever its ``result`` flag says: rosbridge_suite answers a cancelled
+    or aborted goal with ``result: true``, rosbridge-server-rs with ``result: false`` (the flag
+    means "the action ran and succeeded" there). ``values`` is Nav2's result (``error_code``,
+    ``error_msg``), possibly nested under ``result``, or a reason string; its wording is kept.
+    ``accepted`` is the message's ``result`` flag; without a status code, a false one means the
+    goal could not be run at all."""
+    raw = getattr(status, "value", status)
+    code = raw if isinstance(raw, int) and not isinstance(raw, bool) else None
+    body = values.get("result") if isinstance(values, dict) and isinstance(values.get("result"), dict) else values
+    if code is None and isinstance(body, dict):  # some servers put the status inside the values
+        inner = body.get("status")
+        code = inner if isinstance(inner, int) and not isinstance(inner, bool) else None
+    if isinstance(body, dict):
+        reason = str(body.get("error_msg") or "")
+        err = body.get("error_code")
+    else:
+        reason, err = ("" if body in (None, False, True) else str(body)), None
+    if code == rm.GOAL_STATUS_SUCCEEDED:
+        return TaskStatus.SUCCEEDED, reason or "reached the last pose"
+    if code == rm.GOAL_STATUS_CANCELED:
+        return TaskStatus.CANCELED, reason or "canceled"
+    if code == rm.GOAL_STATUS_ABORTED:
+        return TaskStatus.FAILED, (f"Nav2 aborted the goal (status {code}, error_code {err}): "
+                                   f"{reason or 'no reason given'}")
+    if not accepted:
+        return TaskStatus.FAILED, f"{action} could not run the goal: {reason or 'no reason given'}"
+    return TaskStatus.FAILED, (f"{action} ended the goal with status {raw!r} (error_code {err}): "
+                               f"{reason or 'no reason given'}")
+
+
 class _Task(ReportedTask):
     """A TaskHandle whose state is set from roslibpy's thread and read from the caller's."""
 
     wait_hint = " (cancel() it, or wait longer)"
 
-    def __init__(self, kind: str, on_cancel: Callable[[_Task], None]) -> None:
+    def __init__(self, kind: str, on_cancel: Callable[[_Task], None], goal: bool = False) -> None:
         super().__init__(kind)
         self._on_cancel = on_cancel
+        #: a Nav2 goal (its cancel must be confirmed by the robot), not a Move/Rotate cmd_vel loop
+        self.goal = goal
         self.cancel_requested_s: float | None = None
         self.last_news_s = time.monotonic()
         self.goal_id = ""
@@ -211,6 +270,14 @@ class RosbridgeBackend:
         #: set while the WebSocket is down (set by roslibpy's "close" event, cleared on "ready")
         self._link_down = threading.Event()
         self._map_cache: tuple[Any, OccupancyGrid] | None = None
+        #: bumped by every new command: a stop hold ends when the robot is told to move again
+        self._command_gen = 0
+        self._holding = False
+        #: why the last stop was not confirmed (the robot may still be moving), until a new command
+        self._stop_unconfirmed: str | None = None
+        self._cmd_vel: roslibpy.Topic | None = None
+        self._stop_line: tuple[roslibpy.Ros, roslibpy.Topic] | None = None
+        self._subs: list[tuple[roslibpy.Topic, Callable[[Any], None]]] = []
         try:
             self._ros = roslibpy.Ros(c.host, c.port, is_secure=c.secure, transport=c.transport)
         except RuntimeError as exc:  # txaio already bound to the other framework
@@ -222,17 +289,20 @@ class RosbridgeBackend:
         try:
             self._ros.run(timeout=c.connect_timeout_s)
         except roslibpy.core.RosTimeoutError:
-            self._stop_reconnecting()
+            self._closed = True  # late transport events of this failed attempt are no faults
+            self._stop_reconnecting(force=True)
             raise RobotError(
-                f"cannot reach rosbridge at {c.url} within {c.connect_timeout_s} s; on the robot run "
-                f"`ros2 launch rosbridge_server rosbridge_websocket_launch.xml "
-                f"send_action_goals_in_new_thread:=true` (or `langnav sim --rosbridge-port {c.port}`) "
-                f"and check host and port") from None
+                f"cannot reach rosbridge at {c.url} within {c.connect_timeout_s} s. Check that rosbridge "
+                f"runs on the robot (`ros2 launch rosbridge_server rosbridge_websocket_launch.xml "
+                f"port:={c.port} send_action_goals_in_new_thread:=true`, or `langnav sim --rosbridge-port "
+                f"{c.port}` for the simulator), that {c.host} is the robot's address and {c.port} the "
+                f"rosbridge port (a web server there instead answers the WebSocket upgrade with an HTTP "
+                f"error), that this machine reaches it (`ping {c.host}`) and no firewall blocks port "
+                f"{c.port}") from None
         self._connected = True
         self._nav = roslibpy.ActionClient(self._ros, c.name(c.nav_action), rm.NAVIGATE_THROUGH_POSES)
         self._cmd_vel = roslibpy.Topic(self._ros, c.name(c.cmd_vel_topic),
                                        rm.TWIST_STAMPED if c.cmd_vel_stamped else rm.TWIST, queue_size=1)
-        self._subs: list[roslibpy.Topic] = []
         self._subscribe(c.map_topic, rm.OCCUPANCY_GRID)
         self._subscribe(c.plan_topic, rm.PATH)
         self._subscribe(c.scan_topic, rm.LASER_SCAN)
@@ -247,7 +317,12 @@ class RosbridgeBackend:
     # -- connection ------------------------------------------------------------------------------
     def _subscribe(self, topic: str, msg_type: str, callback: Callable[[str, Any], None] | None = None) -> None:
         name = self.config.name(topic)
-        t = roslibpy.Topic(self._ros, name, msg_type, queue_length=1)
+        # queue_length=0 (rosbridge keeps no per-subscription queue), not 1: rosbridge_suite <= 2.1.0
+        # can wedge, accepting no further connections, when a client that subscribed with a queue
+        # length > 0 disconnects (upstream issue #891, fixed by #983); measured here: wedged after 5
+        # of 18 `langnav run` connections with queue_length=1, 40 of 40 fine with 0. langnav only ever
+        # reads the latest message of each topic, so the queue bought nothing.
+        t = roslibpy.Topic(self._ros, name, msg_type, queue_length=SUBSCRIBE_QUEUE_LENGTH)
         handler = callback or self._store
 
         def on_message(msg: Any) -> None:
@@ -257,7 +332,16 @@ class RosbridgeBackend:
                 log.exception("handling a message on %s", name)
 
         t.subscribe(on_message)
-        self._subs.append(t)
+        self._subs.append((t, on_message))
+
+    def _resubscribe(self, topic: str) -> None:
+        """Drop the subscription to ``topic`` and make it again (rosbridge then makes a new ROS
+        subscription, with the durability of the publishers it knows now)."""
+        name = self.config.name(topic)
+        for t, on_message in self._subs:
+            if t.name == name:
+                t.unsubscribe()
+                t.subscribe(on_message)
 
     def _store(self, topic: str, msg: Any) -> None:
         self._latest[topic] = _Stamped(msg, time.monotonic())
@@ -296,7 +380,7 @@ class RosbridgeBackend:
         was = self._connected
         self._connected = False
         self._link_down.set()
-        if self._closed:
+        if self._closed or self._cmd_vel is None:  # closed, or never connected: nothing to stop
             return
         if was:
             log.warning("lost the rosbridge connection to %s", self.config.url)
@@ -311,21 +395,22 @@ class RosbridgeBackend:
         # over the factory has dropped it, and the stop is queued until the link is back.
         self._ros.call_later(0, self._send_stop)
 
-    def _stop_reconnecting(self, force: bool = False) -> None:
-        """Switch roslibpy's reconnecting off, on the transport's thread; ``force`` also drops a
-        connection whose close handshake never finished."""
-        factory = self._ros.factory
+    def _stop_reconnecting(self, force: bool = False, ros: roslibpy.Ros | None = None) -> None:
+        """Switch roslibpy's reconnecting off (of the main connection, or ``ros``), on the
+        transport's thread; ``force`` also drops a connection whose close handshake never finished."""
+        ros = ros or self._ros
+        factory = ros.factory
         stop_trying = getattr(factory, "stopTrying", None)
         if callable(stop_trying):  # twisted ReconnectingClientFactory: not thread-safe, so on its thread
-            self._ros.call_later(0, stop_trying)
+            ros.call_later(0, stop_trying)
             connector = getattr(factory, "connector", None)
             if force and connector is not None:
-                self._ros.call_later(0, connector.disconnect)
+                ros.call_later(0, connector.disconnect)
         else:  # asyncio transport: its reconnect loop checks this flag
             factory._stop = True
             proto = getattr(factory, "_proto", None)
             if force and proto is not None:
-                self._ros.call_later(0, proto.dropConnection)
+                ros.call_later(0, proto.dropConnection)
 
     def _require_connection(self) -> None:
         if self._closed:
@@ -348,15 +433,17 @@ class RosbridgeBackend:
                 task.cancel()  # navigation: cancel the goal; Move/Rotate: their loop sends zero velocity
             task.finish(TaskStatus.FAILED, "the rosbridge backend was closed")
         self._join_workers(c.close_timeout_s)
+        self._close_stop_line()
         if not self._connected:
-            for t in self._subs:  # nothing can be sent: just drop the handlers
+            for t, _cb in self._subs:  # nothing can be sent: just drop the handlers
                 self._ros.off(t.name)
             self._stop_reconnecting()
             return
         self._send_stop()
-        for t in self._subs:
+        for t, _cb in self._subs:
             t.unsubscribe()
-        self._cmd_vel.unadvertise()
+        if self._cmd_vel is not None:
+            self._cmd_vel.unadvertise()
         try:
             self._ros.close(timeout=c.close_timeout_s)  # queues the close frame behind the messages above
         except roslibpy.core.RosTimeoutError:
@@ -366,6 +453,54 @@ class RosbridgeBackend:
             log.warning("rosbridge at %s did not finish the close handshake within %s s; dropping the "
                         "connection", c.url, c.close_timeout_s)
         self._stop_reconnecting(force=not clean)
+
+    def _open_stop_line(self) -> tuple[roslibpy.Ros, roslibpy.Topic] | None:
+        """The stop line: a second WebSocket to rosbridge that carries only the stop (zero velocity
+        and the cancel request), opened on the first stop and kept until close(). rosbridge_suite
+        reads each connection's messages on that connection's own thread, and one that runs goals
+        on that thread (``send_action_goals_in_new_thread:=false``, the launch default before 2025)
+        reads nothing more from the connection that sent the goal until the goal ends: a zero
+        velocity sent there arrives too late. None when it cannot be opened (the main connection
+        is used then)."""
+        with self._lock:
+            if self._stop_line is not None or self._closed:
+                return self._stop_line
+        c = self.config
+        ros = roslibpy.Ros(c.host, c.port, is_secure=c.secure, transport=c.transport)
+        ros.factory.maxDelay = c.reconnect_max_delay_s
+        ros.factory.on_ready(self._install_status_handler)
+        try:
+            ros.run(timeout=min(c.connect_timeout_s, STOP_LINE_CONNECT_TIMEOUT_S))
+        except roslibpy.core.RosTimeoutError:
+            self._stop_reconnecting(force=True, ros=ros)
+            log.warning("could not open a second connection to %s for the stop; holding zero velocity "
+                        "on the main one", c.url)
+            return None
+        topic = roslibpy.Topic(ros, c.name(c.cmd_vel_topic), rm.TWIST_STAMPED if c.cmd_vel_stamped else rm.TWIST,
+                               queue_size=1)
+        with self._lock:
+            if self._closed:  # close() ran meanwhile
+                line_to_close: tuple[roslibpy.Ros, roslibpy.Topic] | None = (ros, topic)
+            else:
+                self._stop_line, line_to_close = (ros, topic), None
+        if line_to_close is not None:
+            self._stop_reconnecting(force=True, ros=ros)
+            return None
+        return self._stop_line
+
+    def _close_stop_line(self) -> None:
+        with self._lock:
+            line, self._stop_line = self._stop_line, None
+        if line is None:
+            return
+        ros, topic = line
+        if ros.is_connected:
+            topic.unadvertise()
+            try:
+                ros.close(timeout=self.config.close_timeout_s)
+            except roslibpy.core.RosTimeoutError:
+                log.warning("the stop line to %s did not start closing", self.config.url)
+        self._stop_reconnecting(force=not ros.is_connected, ros=ros)
 
     def _join_workers(self, timeout_s: float) -> None:
         deadline = time.monotonic() + timeout_s
@@ -443,17 +578,34 @@ class RosbridgeBackend:
             time.sleep(_POLL_S)
 
     def get_map(self, timeout_s: float = DEFAULT_REQUEST_TIMEOUT_S) -> OccupancyGrid:
+        """The latest map; until one arrives, re-subscribe every ``MAP_RESUBSCRIBE_S`` (see there
+        why) up to ``timeout_s``, then try ``map_service`` if set, else raise a RobotTimeout."""
         c = self.config
-        try:
-            got = self._wait_for(c.map_topic, timeout_s, "map (nav_msgs/OccupancyGrid)")
-        except RobotTimeout:
-            if not c.map_service:
-                raise
-            return self._map_from_service(timeout_s)
+        name = c.name(c.map_topic)
+        start = time.monotonic()
+        next_try = start + MAP_RESUBSCRIBE_S
+        tries = 0
+        while (got := self._latest.get(c.map_topic)) is None:
+            self._require_connection()
+            now = time.monotonic()
+            if now - start >= timeout_s:
+                if c.map_service:
+                    return self._map_from_service(max(timeout_s, DEFAULT_REQUEST_TIMEOUT_S))
+                raise RobotTimeout(
+                    f"no map (nav_msgs/OccupancyGrid) on {name} within {timeout_s} s, subscribed "
+                    f"{tries + 1} time(s); is slam_toolbox or map_server running and publishing it "
+                    f"transient local (`ros2 topic info -v {name}`: Durability TRANSIENT_LOCAL)? "
+                    f"Or set map_service (e.g. /slam_toolbox/dynamic_map) as a fallback")
+            if now >= next_try:
+                tries += 1
+                log.info("no map on %s after %.1f s: subscribing again (%d)", name, now - start, tries)
+                self._resubscribe(c.map_topic)
+                next_try = now + MAP_RESUBSCRIBE_S
+            time.sleep(_POLL_S)
         cached = self._map_cache
         if cached is not None and cached[0] is got.msg:
             return cached[1]
-        grid = rm.parse_occupancy_grid(got.msg, c.name(c.map_topic))
+        grid = rm.parse_occupancy_grid(got.msg, name)
         self._map_cache = (got.msg, grid)
         return grid
 
@@ -513,11 +665,14 @@ class RosbridgeBackend:
             busy = any(not t.done for t in self._tasks)
         return RobotState(pose=pose or Pose2D(0.0, 0.0, 0.0), connected=self._connected and not self._closed,
                           linear_mps=lin, angular_radps=ang, scan=scan, path=path, busy=busy,
-                          extra={"pose_known": pose is not None, "url": self.config.url})
+                          extra={"pose_known": pose is not None, "url": self.config.url,
+                                 "stop_holding": self._holding, "stop_unconfirmed": self._stop_unconfirmed})
 
     # -- commanding ------------------------------------------------------------------------------
     def _publish_cmd(self, linear_mps: float, angular_radps: float) -> None:
         c = self.config
+        if self._cmd_vel is None:
+            raise RobotError(f"not connected to rosbridge at {c.url}")
         self._cmd_vel.publish(roslibpy.Message(rm.cmd_vel(linear_mps, angular_radps, c.cmd_vel_stamped, c.base_frame)))
 
     def _send_stop(self) -> None:
@@ -528,11 +683,73 @@ class RosbridgeBackend:
             log.warning("could not send the stop command: %s", exc)
 
     def stop(self) -> None:
+        """Cancel what runs and send zero velocity now; while a cancelled Nav2 goal is not yet
+        confirmed ended, zero velocity is held (see :meth:`_hold_stop`). Returns at once:
+        :meth:`wait_stopped` tells whether the stop was confirmed."""
         with self._lock:
             tasks = list(self._tasks)
         for task in tasks:
             task.cancel()
         self._send_stop()
+
+    def _pending_cancels(self) -> list[_Task]:
+        with self._lock:
+            return [t for t in self._tasks if t.goal and t.cancel_requested_s is not None and not t.done]
+
+    def _new_command(self) -> None:
+        """The robot is told to move again: a stop hold ends, a past unconfirmed stop is forgotten."""
+        with self._lock:
+            self._command_gen += 1
+            self._stop_unconfirmed = None
+
+    def _hold_stop(self) -> None:
+        """Publish zero velocity at ``stop_hold_rate_hz`` until every cancelled goal is confirmed
+        ended (its result arrived), or given up after ``cancel_timeout_s`` (the navigation
+        watchdog then fails it saying the robot may still be moving), or a new command starts, or
+        the backend closes. One holder thread at a time."""
+        with self._lock:
+            if self._holding or self._closed:
+                return
+            self._holding = True
+            gen = self._command_gen
+        self._spawn("rosbridge-stop-hold", lambda: self._run_hold(gen))
+
+    def _run_hold(self, gen: int) -> None:
+        c = self.config
+        period = 1.0 / c.stop_hold_rate_hz
+        try:
+            line = self._open_stop_line() if self._connected else None
+            if line is not None:  # the cancel again, where a blocked connection cannot hold it up
+                nav = roslibpy.ActionClient(line[0], c.name(c.nav_action), rm.NAVIGATE_THROUGH_POSES)
+                for task in self._pending_cancels():
+                    if task.goal_id:
+                        nav.cancel_goal(task.goal_id)
+            while not self._closed and self._command_gen == gen and self._pending_cancels():
+                if line is not None and line[0].is_connected:
+                    line[1].publish(roslibpy.Message(rm.cmd_vel(0.0, 0.0, c.cmd_vel_stamped, c.base_frame)))
+                elif self._connected:
+                    self._send_stop()
+                time.sleep(period)
+        finally:
+            with self._lock:
+                self._holding = False
+            # a cancel that came in as this loop was ending still gets its hold
+            if not self._closed and self._command_gen == gen and self._pending_cancels():
+                self._hold_stop()
+
+    def wait_stopped(self, timeout_s: float | None = None) -> None:
+        """Block until every cancelled goal is confirmed ended (default limit: ``cancel_timeout_s``
+        and a second); raise :class:`RobotError` when a stop was not confirmed: the robot may still
+        be moving, and the message says what to do."""
+        limit = self.config.cancel_timeout_s + 1.0 if timeout_s is None else timeout_s
+        deadline = time.monotonic() + limit
+        while self._pending_cancels() and time.monotonic() < deadline:
+            time.sleep(_POLL_S)
+        if self._stop_unconfirmed is not None:
+            raise RobotError(self._stop_unconfirmed)
+        if self._pending_cancels():
+            raise RobotTimeout(f"the robot has not confirmed the cancel within {limit} s; zero velocity is "
+                               f"still being held on {self.config.name(self.config.cmd_vel_topic)}")
 
     def _add_task(self, task: _Task) -> None:
         with self._lock:
@@ -549,27 +766,21 @@ class RosbridgeBackend:
         c = self.config
         targets = self._targets(poses)
         goal = rm.navigate_through_poses_goal(targets, c.map_frame, c.goal_format, c.behavior_tree)
-        task = _Task(f"navigate through {len(targets)} pose(s)", self._cancel_nav)
+        self._new_command()
+        task = _Task(f"navigate through {len(targets)} pose(s)", self._cancel_nav, goal=True)
         goal_id: list[str] = []
 
+        def on_outcome(result: Any, accepted: bool) -> None:
+            get = result.get if hasattr(result, "get") else (lambda _k: None)
+            status, message = goal_outcome(get("status"), get("values") if hasattr(result, "get") else result,
+                                           accepted, c.name(c.nav_action))
+            task.finish(status, message, self._cached_pose())
+
         def on_result(result: Any) -> None:
-            status = result.get("status")
-            code = getattr(status, "value", status)
-            values = result.get("values")
-            msg = values.get("error_msg", "") if isinstance(values, dict) else str(values or "")
-            if code == rm.GOAL_STATUS_SUCCEEDED:
-                task.finish(TaskStatus.SUCCEEDED, msg or "reached the last pose", self._cached_pose())
-            elif code == rm.GOAL_STATUS_CANCELED:
-                task.finish(TaskStatus.CANCELED, msg or "canceled", self._cached_pose())
-            else:
-                err = values.get("error_code") if isinstance(values, dict) else None
-                task.finish(TaskStatus.FAILED, f"Nav2 aborted the goal (status {code}, error_code {err}): "
-                            f"{msg or 'no reason given'}", self._cached_pose())
+            on_outcome(result, True)
 
         def on_error(result: Any) -> None:
-            values = result.get("values") if hasattr(result, "get") else result
-            task.finish(TaskStatus.FAILED, f"{c.name(c.nav_action)} could not run the goal: {values}",
-                        self._cached_pose())
+            on_outcome(result, False)
 
         def on_feedback(values: Any) -> None:
             try:
@@ -607,6 +818,7 @@ class RosbridgeBackend:
 
     def _cancel_nav(self, task: _Task) -> None:
         self._cancel_goal_id([task.goal_id])
+        self._hold_stop()
 
     def _cancel_goal_id(self, goal_id: list[str]) -> None:
         if goal_id and goal_id[0]:
@@ -627,12 +839,19 @@ class RosbridgeBackend:
         c = self.config
         now = time.monotonic()
         if task.cancel_requested_s is not None and now - task.cancel_requested_s > c.cancel_timeout_s:
-            self._send_stop()
-            task.finish(TaskStatus.FAILED, f"the robot did not confirm the cancel within {c.cancel_timeout_s} s "
-                        f"(zero velocity sent); start rosbridge with send_action_goals_in_new_thread:=true "
-                        f"so it can cancel a running goal", self._cached_pose())
+            message = (
+                f"THE ROBOT MAY STILL BE MOVING: {c.name(c.nav_action)} did not confirm the cancel within "
+                f"{c.cancel_timeout_s} s. langnav held zero velocity on {c.name(c.cmd_vel_topic)} at "
+                f"{c.stop_hold_rate_hz:g} Hz meanwhile, but Nav2's controller keeps driving until the goal "
+                f"really ends. Stop the robot at the robot (its stop button or emergency stop), then restart "
+                f"rosbridge with `send_action_goals_in_new_thread:=true`: without it rosbridge reads nothing "
+                f"(a cancel neither) while a goal runs")
+            if task.finish(TaskStatus.FAILED, message, self._cached_pose()):
+                with self._lock:
+                    self._stop_unconfirmed = message
+                log.error("%s", message)
         elif now - task.last_news_s > c.feedback_timeout_s:
-            self._cancel_nav(task)
+            self._cancel_goal_id([task.goal_id])
             self._send_stop()
             task.finish(TaskStatus.FAILED, f"no feedback from {c.name(c.nav_action)} for {c.feedback_timeout_s} s; "
                         f"the goal was cancelled and the robot stopped", self._cached_pose())
@@ -666,8 +885,10 @@ class RosbridgeBackend:
     def _start_motion(self, kind: str, phases: list[tuple[str, float]]) -> TaskHandle:
         self._require_connection()
         with self._lock:
-            for t in self._tasks:  # one motion at a time: a new command replaces the old
-                t.cancel()
+            running = list(self._tasks)
+        for t in running:  # one motion at a time: a new command replaces the old
+            t.cancel()
+        self._new_command()
         task = _Task(kind, lambda _t: None)
         self._add_task(task)
         self._spawn(f"rosbridge-{kind}", lambda: self._run_motion(task, phases))

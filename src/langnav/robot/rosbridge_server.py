@@ -146,6 +146,19 @@ class RosbridgeServerConfig(BaseModel):
     #: Limit on one backend call made for a client (pose, map, starting a goal).
     backend_call_timeout_s: float = Field(default=10.0, gt=0)
 
+    # -- behaving like the real servers robots run (for testing clients against them) --------------
+    #: rosbridge_suite before PR #996 (Jan 2025; launch argument send_action_goals_in_new_thread
+    #: false) runs a goal on the thread that reads the client's socket: nothing else that client
+    #: sends, a cancel among it, is read until the goal has ended.
+    goals_on_main_thread: bool = False
+    #: rosbridge-server-rs answers a goal that did not succeed (5 canceled, 6 aborted) with
+    #: ``result: false`` next to its status code; rosbridge_suite says ``result: true``.
+    result_false_unless_succeeded: bool = False
+    #: A subscription to a latched topic made this soon after the server started gets no latched
+    #: message, as with a fresh rosbridge that has not yet discovered the transient-local publisher
+    #: (its subscription is then volatile); the map counts as published once before the start.
+    latched_discovery_s: float = Field(default=0.0, ge=0)
+
 
 @dataclass
 class _Goal:
@@ -214,6 +227,7 @@ class RosbridgeServer:
         self._stop_event: asyncio.Event | None = None
         self._ready = threading.Event()
         self._start_error: BaseException | None = None
+        self._started_s = 0.0
         self.port: int | None = None
 
     # -- lifecycle -------------------------------------------------------------------------------
@@ -264,6 +278,9 @@ class RosbridgeServer:
         """Serve until :meth:`stop` (or cancellation)."""
         self._loop = asyncio.get_running_loop()
         self._stop_event = asyncio.Event()
+        self._started_s = time.monotonic()
+        if self.config.latched_discovery_s > 0:
+            await self._publish_map(force=True)  # published before anyone could receive it
         async with serve(self._connection, host, port, max_size=None, compression=None) as server:
             self.port = _bound_port(server)
             log.info("rosbridge server for %s listening on ws://%s:%d", self.backend.name, host, self.port)
@@ -490,7 +507,8 @@ class RosbridgeServer:
         client.subscriptions.setdefault(topic, set()).add(sub_id)
         if first or compression == "cbor-raw":  # as rosbridge: cbor-raw wins over the others
             client.compression[topic] = compression
-        if spec.latched and first:
+        discovering = time.monotonic() - self._started_s < self.config.latched_discovery_s
+        if spec.latched and first and not discovering:
             await self._send_latched(client, topic)
 
     async def _send_latched(self, client: _Client, topic: str) -> None:
@@ -621,6 +639,8 @@ class RosbridgeServer:
         self._active_goal = goal
         client.goals[goal_id] = goal
         goal.task = asyncio.create_task(self._run_goal(client, goal, poses, bool(msg.get("feedback", False))))
+        if self.config.goals_on_main_thread:
+            await asyncio.wait([goal.task])  # read nothing more from this client until the goal ends
 
     async def _run_goal(self, client: _Client, goal: _Goal, poses: list[Pose2D], feedback: bool) -> None:
         c = self.config
@@ -667,8 +687,9 @@ class RosbridgeServer:
             client.goals.pop(goal.goal_id, None)
             if self._active_goal is goal:
                 self._active_goal = None
+        ok = status == rm.GOAL_STATUS_SUCCEEDED or not c.result_false_unless_succeeded
         await self._send(client, {"op": "action_result", "id": goal.goal_id, "action": goal.action,
-                                  "values": values, "status": status, "result": True})
+                                  "values": values, "status": status, "result": ok})
 
     async def _action_failure(self, client: _Client, action: str, goal_id: str, reason: str) -> None:
         await self._status(client, "error", f"send_action_goal {reason}", goal_id)

@@ -244,18 +244,23 @@ class RobotSession:
             self._plan_lock.release()
 
     def stop(self) -> dict[str, Any]:
-        """Halt now: the robot first, then the plan; then say so."""
+        """Halt now: the robot first, then the plan; then say so, once (the cancelled plan's own
+        outcome is not written as a second message)."""
         self.robot.stop()
         run = self._run
         if run is not None and not run.done:
+            run.silence_outcome()
             run.cancel()
         pose = self.robot.get_robot_pose()
         msg = self.say("system", "info", {"text": self.feedback.stopped(pose, "you pressed STOP")})
         return {"ok": True, "message": msg.to_json()}
 
     def pause(self) -> dict[str, Any]:
+        """Hold the running plan (the robot stops at once); with no plan, stop whatever moves
+        (teleop included: the simulator then ignores a still-held stick until it is released)."""
         run = self._run
         if run is None or run.done:
+            self.robot.stop()
             return {"ok": False, "plan": self.plan_state()}
         run.pause()
         msg = self.say("system", "info", {"text": "Paused. Press Resume to carry on, or STOP."})
@@ -448,6 +453,7 @@ class PlanView:
         self.index: int | None = None
         self._run: ExecutorRun | None = None
         self._finished = threading.Event()
+        self._silent = False
 
     @property
     def paused(self) -> bool:
@@ -463,6 +469,10 @@ class PlanView:
     def cancel(self) -> None:
         if self._run is not None:
             self._run.cancel()
+
+    def silence_outcome(self) -> None:
+        """The plan's end is announced by someone else (STOP says it once)."""
+        self._silent = True
 
     def pause(self) -> None:
         if self._run is not None:
@@ -508,6 +518,8 @@ class PlanView:
         try:
             pose = s.robot.get_robot_pose()
             status = event.status.value if event.status is not None else "failed"
+            if status == "cancelled" and self._silent:
+                return
             if status == "succeeded":
                 text = s.feedback.arrived(pose)
             elif status == "cancelled":

@@ -443,7 +443,7 @@ UNSAFE_PATTERNS: Final = (
     r"\b(?:full|max(?:imum)?|top|high|highest|maximal|breakneck|ludicrous)\s+speed\b", r"\bas\s+fast\s+as\s+(?:you\s+can|possible)\b",
     r"\b(?:crash|ram|smash|slam|collide|plow|plough|barrel|bash)\w*\b",
     r"\b(?:hit|bump|knock|run)\s+(?:into\s+)?(?:the|a|that|this|any|every|some|somebody|someone|people|person)\b",
-    r"\b(?:into|through|against)\s+(?:the\s+|a\s+|that\s+|this\s+)?(?:\w+\s+)?walls?\b(?!\s+(?:of|and))",
+    r"\b(?:into|through|against)\s+(?:the\s+|a\s+|that\s+|this\s+)?(?:\w+\s+)?walls?\b(?!\s+and)",
     r"\brun\s+over\b", r"\b(?:hurt|injure|kill|attack|chase|harm)\b", r"\bjailbreak\b", r"\bdeveloper\s+mode\b",
     r"\bdown\s+the\s+stairs\b", r"\boff\s+(?:the|a)\s+(?:edge|cliff|ledge|balcony)\b",
     r"\bpretend\s+(?:you|to)\b", r"\byou\s+are\s+now\b", r"\bsystem\s+prompt\b", r"\bno\s+limits\b",

@@ -58,7 +58,10 @@ TURN_NOUNS: Final = ("turn", "turns", "rotation", "rotations", "revolution", "re
 WHOLE_TURN_WORDS: Final = ("full", "complete", "whole", "entire", "360", "360 degree", "360-degree")
 
 _ONE_TO_NINE: Final = "one|two|three|four|five|six|seven|eight|nine"
-_WORD_INT: Final = (rf"(?:(?:{'|'.join(TENS)})(?:[\s-]+(?:{_ONE_TO_NINE}))?"
+_TENS_WORDS: Final = "|".join(t for t in TENS if t != "fourty") + "|fourty"
+#: "one eighty", "two twenty five", "three sixty": spoken hundreds, a digit word then a tens word.
+_SPOKEN_HUNDREDS: Final = rf"(?:{_ONE_TO_NINE})[\s-]+(?:{_TENS_WORDS})(?:[\s-]+(?:{_ONE_TO_NINE}))?"
+_WORD_INT: Final = (rf"(?:{_SPOKEN_HUNDREDS}|(?:{_TENS_WORDS})(?:[\s-]+(?:{_ONE_TO_NINE}))?"
                     rf"|{'|'.join(sorted(ONES, key=len, reverse=True))})")
 _HUNDREDS: Final = (rf"(?:(?:a|one|two|three|four|five|six|seven|eight|nine)\s+)?hundred"
                     rf"(?:\s+(?:and\s+)?{_WORD_INT})?")
@@ -71,6 +74,11 @@ NUMBER: Final = rf"(?:{_DIGIT_NUM}|{_WORD_NUM}){_AND_FRACTION}?"
 _VAGUE: Final = phrase_regex(VAGUE_COUNTS)
 _LEAD_FRACTION: Final = (r"(?:(?:a|one)\s+)?(?:half|quarter|third|three\s+quarters?|two\s+thirds)"
                          r"(?:\s+of)?(?:\s+(?:a|an|one))?")
+
+
+#: Words between an amount and its unit that only say it adds to what was done ("two more feet",
+#: "forty five further degrees"): the amount is the same.
+_MORE: Final = r"(?:more|further|additional|extra|other)"
 
 
 class QuantityKind(StrEnum):
@@ -104,15 +112,17 @@ _B: Final = r"(?<![\w.])"  # a number starts at a word boundary, not inside "1.5
 _E: Final = r"(?![\w.]*\w)"
 
 _UNIT_PATTERNS: Final[tuple[tuple[QuantityKind, re.Pattern[str]], ...]] = (
-    # "a metre and a half", "a meter", "an inch", "another metre"
-    *((kind, re.compile(rf"{_B}(?P<lead>a|an|one|another)\s+(?:single\s+)?(?P<unit>{unit})"
+    # "a metre and a half", "a meter", "an inch", "another metre", "one more foot"
+    *((kind, re.compile(rf"{_B}(?P<lead>a|an|one|another)\s+(?:(?:single|{_MORE})\s+)?(?P<unit>{unit})"
                         rf"(?P<tail>\s+and\s+a\s+(?:half|quarter))?"))
       for kind, unit in ((QuantityKind.LENGTH, _LENGTH_UNIT), (QuantityKind.ANGLE, _ANGLE_UNIT))),
     # "half a meter", "a quarter of a metre", "three quarters of a meter"
     *((kind, re.compile(rf"{_B}(?P<frac>{_LEAD_FRACTION})\s*(?P<unit>{unit})"))
       for kind, unit in ((QuantityKind.LENGTH, _LENGTH_UNIT), (QuantityKind.ANGLE, _ANGLE_UNIT))),
-    # "2 metres", "1.5m", "sixty centimetres", "two and a half meters", "a couple of meters"
-    *((kind, re.compile(rf"{_B}(?P<num>{NUMBER}|{_VAGUE})\s*-?\s*(?P<unit>{unit})"
+    # "2 metres", "1.5m", "sixty centimetres", "two and a half meters", "a couple of meters",
+    # "two more feet", "forty five more degrees"; "three or four feet" (a range: the smaller counts)
+    *((kind, re.compile(rf"{_B}(?:(?P<low>{NUMBER})\s+(?:or|to)\s+|(?P<low_digits>\d+(?:\.\d+)?)\s*-\s*(?=\d))?(?P<num>{NUMBER}|{_VAGUE})"
+                        rf"(?:\s+{_MORE})?\s*-?\s*(?P<unit>{unit})"
                         rf"(?P<tail>\s+and\s+a\s+(?:half|quarter))?"))
       for kind, unit in ((QuantityKind.LENGTH, _LENGTH_UNIT), (QuantityKind.ANGLE, _ANGLE_UNIT))),
 )
@@ -209,6 +219,9 @@ def _word_integer(t: str) -> int:
     words = [w for w in t.split() if w != "and"]
     if not words:
         raise ValueError(f"{t!r} is not a number")
+    if len(words) >= 2 and words[0] in ONES and 1 <= ONES[words[0]] <= 9 and words[1] in TENS:
+        # "one eighty" is 180, "two twenty five" 225 (spoken hundreds)
+        return 100 * ONES[words[0]] + _word_integer(" ".join(words[1:]))
     total = 0
     current = 0
     for w in words:
@@ -296,6 +309,10 @@ def _unit_quantity(kind: QuantityKind, m: re.Match[str]) -> Quantity | None:
         else:
             try:
                 value = number_value(num)
+                low = groups.get("low") or groups.get("low_digits")
+                if low:
+                    # "three or four feet", "3-4 m": never more than the speaker allowed
+                    value = min(value, number_value(low))
             except ValueError:
                 return None
     if groups.get("tail"):

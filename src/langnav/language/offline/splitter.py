@@ -65,11 +65,29 @@ def _split_on_and(part: str) -> list[str]:
     for m in _AND.finditer(part):
         if _LEAD_IN.search(part[start:m.start()]):
             continue  # "go ahead and turn right" is one instruction
+        if _inside_a_number(part[start:m.start()], part[m.end():]):
+            continue  # "one hundred and fifty degrees", "one and a half feet": one number
         if _starts_instruction(part[m.end():]):
             out.append(part[start:m.start()])
             start = m.end()
     out.append(part[start:])
     return out
+
+
+#: "one hundred and fifty", "a foot and a half", "one and a half": the "and" is inside a number.
+_HUNDRED_AND: Final = re.compile(r"\b(?:hundred|thousand)\s*$", re.IGNORECASE)
+_NUMBER_WORD_START: Final = re.compile(
+    r"^(?:one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|thirteen|fourteen|fifteen|sixteen|"
+    r"seventeen|eighteen|nineteen|twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety)\b", re.IGNORECASE)
+_AMOUNT_END: Final = re.compile(
+    r"(?:\d|\b(?:one|two|three|four|five|six|seven|eight|nine|ten|a|an|foot|feet|inch(?:es)?|yards?|"
+    r"met(?:er|re)s?|degrees?))\s*$", re.IGNORECASE)
+_FRACTION_START: Final = re.compile(r"^(?:(?:a|one)\s+)?(?:half|quarter|third)\b", re.IGNORECASE)
+
+
+def _inside_a_number(left: str, right: str) -> bool:
+    return bool((_HUNDRED_AND.search(left) and _NUMBER_WORD_START.match(right))
+                or (_AMOUNT_END.search(left) and _FRACTION_START.match(right)))
 
 
 def _starts_instruction(rest: str) -> bool:

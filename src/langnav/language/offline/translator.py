@@ -7,8 +7,11 @@ from collections.abc import Sequence
 from typing import Final
 
 from langnav.language.intent import Amount, Detail, Direction, ElementRef, Intent, Movement, Step
+from langnav.language.offline.corrections import apply_corrections, join_fragments
 from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
+from langnav.language.offline.photos import without_photo
+from langnav.language.offline.speech import plain_speech
 from langnav.language.offline.splitter import split_steps
 from langnav.language.translator import Context, clean_prompt
 
@@ -35,6 +38,10 @@ UNSAFE_MESSAGE: Final = (
 NEGATIVE_MESSAGE: Final = (
     "I can't use the negative number '{number}': say which way instead, e.g. 'move backward 2 metres' "
     "or 'turn right 90 degrees'.")
+NO_CAMERA_MESSAGE: Final = (
+    "I have no camera, so I can't take pictures or tell you what I see. I can drive, turn, stop, explore "
+    "the map and tell you where I am, my path or the map.")
+PHOTO_LEFT_OUT_MESSAGE: Final = "I did the motion but took no picture: I have no camera."
 TOO_MANY_STEPS_MESSAGE: Final = (
     f"That is more than {MAX_STEPS} steps; give me at most {MAX_STEPS} at a time.")
 
@@ -58,7 +65,8 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     if negative is not None:
         shown = text[negative.start():negative.start() + 12].split()[0]
         return _clarify(NEGATIVE_MESSAGE.format(number=shown), confidence=1.0, unread=[])
-    text = canonical_numbers(text)
+    text = plain_speech(canonical_numbers(text))
+    clauses, photo = _clauses(text)
     steps: list[Step] = []
     unread: list[str] = []
     problems: list[tuple[Problem, str, Reading]] = []
@@ -66,7 +74,7 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     previous: Step | None = None
     previous_target: ElementRef | None = None
     asked: tuple[Problem, str, Reading] | None = None  # "which is the largest room?" before "drive into it"
-    for clause in split_steps(text):
+    for clause in clauses:
         reading = read_clause(clause, previous, known_names, previous_target)
         if reading.problem == Problem.QUESTION and reading.referent is not None:
             asked = (reading.problem, clause, reading)
@@ -113,6 +121,8 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
         return _clarify(_problem_message(problem, clause), confidence=reading.confidence,
                         unread=[] if problem in SURE_REFUSALS else list(reading.unread))
     if not steps:
+        if not problems and photo:
+            return _clarify(NO_CAMERA_MESSAGE, confidence=1.0, unread=[])
         if not problems:
             return _clarify(_unreadable_message(text), confidence=0.2, unread=[text[:200]])
         problem, clause, _ = problems[0]
@@ -121,7 +131,26 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
                         unread=[] if sure else unread)
     if problems:
         confidence = min(confidence, PARTIAL_CONFIDENCE)  # part of the prompt will not be done
-    return Intent(steps=steps, translator=TRANSLATOR_NAME, confidence=round(confidence, 3), unread=unread)
+    return Intent(steps=steps, translator=TRANSLATOR_NAME, confidence=round(confidence, 3), unread=unread,
+                  clarification=PHOTO_LEFT_OUT_MESSAGE if photo else None)
+
+
+def _clauses(text: str) -> tuple[list[str], bool]:
+    """The instructions of a prompt, each whole: photo requests taken out (and whether there was
+    one), fragments joined to the move or turn they complete, self-corrections applied."""
+    kept: list[str] = []
+    photo = False
+    for clause in split_steps(text):
+        without = without_photo(clause)
+        photo = photo or without.asked
+        if without.rest:
+            kept.append(without.rest)
+    joined = join_fragments(kept, _is_open)
+    return apply_corrections(joined), photo
+
+
+def _is_open(clause: str) -> bool:
+    return read_clause(clause).open
 
 
 def _clarify(message: str, *, confidence: float, unread: list[str]) -> Intent:

@@ -29,6 +29,10 @@ handle ends CANCELED), as teleop overrides Nav2 through a twist mux; a zero comm
 teleop motion and never cancels a task (a released joystick, or a watchdog's zero). Like Nav2's
 collision monitor, a teleop drive that its map shows running into an obstacle within braking
 distance is stopped (turning in place stays allowed); the bumper is the last resort.
+``stop()`` holds against teleop too: a joystick still held when STOP (or Pause) was pressed keeps
+publishing its velocity, and the robot must not lurch off again by itself. After ``stop()`` non-zero
+velocity commands are ignored until a zero command comes (the stick released, or a teleop
+panel's own stop), as a dead-man switch must be let go before the robot moves again.
 
 A new task preempts the one running (its handle ends CANCELED), as a new Nav2 goal does, and ends
 teleop.
@@ -461,6 +465,8 @@ class SimBackend:
         #: how often teleop was kept from driving into an obstacle (the collision monitor's stops)
         self.teleop_blocks = 0
         self._teleop_blocked = False
+        #: set by stop(): teleop is ignored until a zero velocity command releases it
+        self._teleop_held = False
         self._scan: LaserScan | None = None
         self._next_scan_s = 0.0
         self._occupied = self._map.cells() == OCCUPIED
@@ -719,7 +725,10 @@ class SimBackend:
             moving = linear_mps != 0.0 or angular_radps != 0.0
             if not moving:
                 self._teleop = None  # stop teleop motion; a running task is left alone
+                self._teleop_held = False
                 return
+            if self._teleop_held:
+                return  # stopped: the stick must be released (a zero command) before it drives again
             if self._task is not None:
                 self._task.finish(self, TaskStatus.CANCELED, "cancelled by teleop (a velocity command)")
                 self._task = None
@@ -791,6 +800,7 @@ class SimBackend:
                 self._task.finish(self, TaskStatus.CANCELED, "stopped")
                 self._task = None
             self._teleop = None
+            self._teleop_held = True
             self._v = self._w = 0.0
 
     def get_current_path(self, timeout_s: float = DEFAULT_REQUEST_TIMEOUT_S) -> list[tuple[float, float]]:
@@ -814,7 +824,7 @@ class SimBackend:
                 busy=task is not None, time_s=self._t,
                 extra={"collisions": self.collisions, "map_version": self.map_cells_version,
                        "task": task.kind if task else None, "steps": self._steps,
-                       "teleop": self._teleop is not None},
+                       "teleop": self._teleop is not None, "teleop_held": self._teleop_held},
             )
 
     def close(self) -> None:

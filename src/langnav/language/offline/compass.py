@@ -1,0 +1,74 @@
+"""Compass headings: "face north", "turn due west", "go east ten feet", "move three feet north west".
+
+README "Compass": east is +x of the map (heading 0), north 90, west 180, south 270, the diagonals
+between. Facing a point is one turn the shorter way, worked out by the grounding from the heading
+the robot has then (:attr:`~langnav.language.intent.Step.heading_deg`); going that way is that turn
+and then a move forward.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Final
+
+from langnav.language.intent import Direction, Movement, Step
+from langnav.language.offline.numbers import QuantityKind, find_quantities
+from langnav.language.offline.patterns import GO_VERB_RE, ROTATE_VERB_RE
+from langnav.language.offline.reading import MAX_MOVE_M, VAGUE_NUMBER_FACTOR
+from langnav.language.offline.scratch import Clause
+
+#: Compass points in degrees counter-clockwise from east (the map's +x).
+HEADINGS_DEG: Final[dict[str, float]] = {
+    "east": 0.0, "northeast": 45.0, "north": 90.0, "northwest": 135.0, "west": 180.0, "southwest": 225.0,
+    "south": 270.0, "southeast": 315.0,
+}
+_POINT: Final = r"(?:north|south)(?:\s*(?:east|west))?|east|west"
+#: "to the north", "towards due east", "facing north west", "in the direction of the south",
+#: "northwards", "to your north".
+COMPASS_RE: Final = re.compile(
+    r"(?:\b(?:to|towards?|facing|to\s+face|in\s+the\s+direction\s+of|direction)\s+(?:the\s+|your\s+)?)?"
+    rf"(?:\b(?:due|true)\s+)?\b(?P<point>{_POINT})(?:wards?|erly|bound)?\b(?:\s+direction\b)?")
+#: Words of a compass clause that say nothing more ("straight", "forward" when going that way).
+_FORWARD_RE: Final = re.compile(r"\b(?:forwards?|straight|ahead|directly|yourself|so\s+that\s+you\s+are)\b")
+
+
+def heading_of(point: str) -> float:
+    return HEADINGS_DEG["".join(point.split())]
+
+
+def compass_steps(c: Clause) -> tuple[list[Step], bool] | None:
+    """The steps of a clause that names a compass point, and whether it still misses a distance
+    ("proceed due west" then ", for five feet"); None when it names none."""
+    m = c.s.find(COMPASS_RE)
+    if m is None:
+        return None
+    c.s.use(m.start(), m.end())
+    heading = heading_of(m.group("point"))
+    go = c.s.find(GO_VERB_RE)
+    turn = c.s.find(ROTATE_VERB_RE)
+    if turn is not None:
+        c.s.use(turn.start(), turn.end())
+    c.s.take_all(_FORWARD_RE)
+    steps = [Step(movement=Movement.ROTATE, heading_deg=heading, text=c.text[:500])]
+    distance: float | None = None
+    for q in find_quantities(c.s.masked()):
+        c.s.use(q.start, q.end)
+        if q.kind == QuantityKind.LENGTH:
+            distance = (distance or 0.0) + q.value
+            if q.approximate:
+                c.doubt(VAGUE_NUMBER_FACTOR)
+        else:
+            c.lost.append(c.s.text[q.start:q.end])  # "go north 90 degrees": an angle to a heading
+    if go is not None and (turn is None or go.start() < turn.start()):
+        c.s.use(go.start(), go.end())
+        c.had_verb = True
+        if distance is None:
+            return steps, True  # "head north": the turn now, the distance may follow
+    elif turn is not None:
+        c.had_verb = True
+    if distance is not None:
+        if distance > MAX_MOVE_M:
+            c.out_of_range = True
+            return [], False
+        steps.append(Step(movement=Movement.MOVE, direction=Direction.FORWARD, distance_m=distance, text=c.text[:500]))
+    return steps, False

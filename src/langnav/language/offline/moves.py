@@ -1,0 +1,106 @@
+"""Straight moves: "move forward 1 m", "back up a bit", "go left half a metre" (or a fragment:
+"then 2 m"); a direction with an angle is a turn ("go left 90 degrees")."""
+
+from __future__ import annotations
+
+import re
+from typing import Final
+
+from langnav.language.intent import Amount, Direction, Movement, Step
+from langnav.language.offline import lexicon as lx
+from langnav.language.offline.numbers import Quantity, QuantityKind, find_quantities
+from langnav.language.offline.patterns import LITTLE_RE, MOVE_DIR_RE
+from langnav.language.offline.reading import (
+    DEFAULT_AMOUNT_FACTOR,
+    ELLIPSIS_FACTOR,
+    GUESSED_DIRECTION_FACTOR,
+    MAX_MOVE_M,
+    UNITLESS_NUMBER_FACTOR,
+    VAGUE_NUMBER_FACTOR,
+    checked_angle,
+)
+from langnav.language.offline.scratch import Clause
+from langnav.language.offline.turns import repeat_count, rotation
+from langnav.language.offline.verbs import Verb
+
+_BACKWARD_VERBS: Final = frozenset({"back up", "reverse", "back off", "go back", "head back"})
+
+
+def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
+    """'move forward 1 m', 'back up a bit', 'go left half a metre' (or a fragment: 'then 2 m')."""
+    text = c.s.masked()
+    quantities = find_quantities(text)
+    lengths = [q for q in quantities if q.kind == QuantityKind.LENGTH]
+    angles = [q for q in quantities if q.kind == QuantityKind.ANGLE]
+    direction = _move_direction(c, vm)
+    c.amends = verb == Verb.NONE and direction is None and bool(quantities)
+    if angles and not lengths:
+        return [rotation_from(c, direction, quantities, [])] if direction in (Direction.LEFT, Direction.RIGHT) \
+            else [rotation(c, None)]  # "go left 90 degrees", "then 45 degrees"
+    little = c.s.take_all(LITTLE_RE)
+    if verb == Verb.NONE and direction is None and not quantities:
+        return []
+    if verb == Verb.NONE and direction in (Direction.LEFT, Direction.RIGHT) and not lengths:
+        c.doubt(ELLIPSIS_FACTOR)  # "then left": a turn
+        return [rotation_from(c, direction, quantities, little)]
+    distance: float | None = None
+    amount: Amount | None = None
+    for q in quantities:
+        c.s.use(q.start, q.end)
+        if q.kind == QuantityKind.LENGTH:
+            distance = (distance or 0.0) + q.value
+            if q.approximate:
+                c.doubt(VAGUE_NUMBER_FACTOR)
+        elif q.kind == QuantityKind.BARE and not lengths:
+            distance = (distance or 0.0) + q.value
+            c.doubt(UNITLESS_NUMBER_FACTOR)
+        else:
+            c.lost.append(c.s.text[q.start:q.end])
+    if distance is None and direction is None and not little:
+        return []  # "go to the kitchen": no element, no direction, no number -> a name or nothing
+    if distance is None:
+        if little:
+            amount = Amount.LITTLE
+        else:
+            amount = Amount.DEFAULT
+            c.doubt(DEFAULT_AMOUNT_FACTOR)
+    if direction is None:
+        if verb == Verb.NONE and distance is None:
+            return []
+        direction = Direction.FORWARD
+        if distance is None and amount == Amount.DEFAULT:
+            c.doubt(GUESSED_DIRECTION_FACTOR)
+    if distance is not None and distance > MAX_MOVE_M:
+        c.out_of_range = True
+        return []
+    times = repeat_count(c)
+    if distance is not None and times > 1:
+        distance *= times
+    if distance is not None and distance > MAX_MOVE_M:
+        c.out_of_range = True
+        return []
+    return [Step(movement=Movement.MOVE, direction=direction, distance_m=distance, amount=amount,
+                 text=c.text[:500])]
+
+
+def rotation_from(c: Clause, direction: Direction, quantities: list[Quantity],
+                   little: list[re.Match[str]]) -> Step:
+    angle = None
+    for q in quantities:
+        c.s.use(q.start, q.end)
+        angle = (angle or 0.0) + q.value
+    amount = None if angle is not None else Amount.LITTLE if little else Amount.DEFAULT
+    return Step(movement=Movement.ROTATE, direction=direction, angle_deg=checked_angle(angle), amount=amount,
+                text=c.text[:500])
+
+
+def _move_direction(c: Clause, vm: re.Match[str] | None) -> Direction | None:
+    if vm is not None and " ".join(vm.group(0).split()) in _BACKWARD_VERBS:
+        c.s.take_all(re.compile(r"\b(?:backwards?|back|in\s+reverse)\b"))
+        return Direction.BACKWARD
+    direction: Direction | None = None
+    for m in c.s.take_all(MOVE_DIR_RE):
+        d = lx.lookup(lx.MOVE_DIRECTIONS, m.group("dir"))
+        if isinstance(d, Direction) and direction is None:
+            direction = d
+    return direction

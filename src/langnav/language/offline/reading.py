@@ -1,0 +1,87 @@
+"""What reading one clause yields: its steps, the words left unread, the confidence, a problem.
+
+The confidence factors and the limits of one step live here, with their reasons.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from enum import StrEnum
+from typing import Final
+
+from langnav.language.intent import ElementRef, Step
+
+# ------------------------------------------------------------------------------ confidence
+#: Confidence factors: each doubt in a reading multiplies the step's confidence.
+UNREAD_WORD_FACTOR: Final = 0.7          # per content word left unread
+DEFAULT_AMOUNT_FACTOR: Final = 0.75      # "move forward" with no distance: the grounding guesses
+GUESSED_DIRECTION_FACTOR: Final = 0.7    # "rotate 90 degrees" with no side: left is a guess
+UNITLESS_NUMBER_FACTOR: Final = 0.85     # "move forward 2": metres assumed
+VAGUE_NUMBER_FACTOR: Final = 0.75        # "a few metres"
+WEAK_WORD_FACTOR: Final = 0.85           # "passage" alone, "the other door", "take the door"
+ELLIPSIS_FACTOR: Final = 0.85            # "... then the second one": the verb is borrowed
+NOTHING_READ_CONFIDENCE: Final = 0.2     # no instruction recognised at all
+OUT_OF_SCOPE_CONFIDENCE: Final = 0.9     # clearly something the robot cannot do
+NAME_CONFIDENCE: Final = 0.9             # a place name the map cannot know
+MIN_CONFIDENCE: Final = 0.05
+#: Longest single move (the intent schema's bound); longer trips should name a place.
+MAX_MOVE_M: Final = 100.0
+#: Largest single turn (the intent schema's bound: ten full turns).
+MAX_TURN_DEG: Final = 3600.0
+#: "turn left" alone (README): used only to multiply "turn left twice".
+DEFAULT_TURN_DEG: Final = 90.0
+
+
+class Problem(StrEnum):
+    """Why a clause yields no step."""
+
+    NAME = "name"                  # "go to the kitchen"
+    OUT_OF_SCOPE = "out_of_scope"  # "make me a sandwich"
+    NEGATED = "negated"            # "don't go through the door"
+    UNREADABLE = "unreadable"      # nothing recognised
+    NO_ANTECEDENT = "no_antecedent"  # "go through it" with nothing before
+    OUT_OF_RANGE = "out_of_range"    # "move forward 200 metres"
+    QUESTION = "question"            # "how far is the door?" (only pose, path and map are answered)
+    OTHER_FLOOR = "other_floor"      # "take the stairs up", "use the lift": the robot stays on its floor
+    UNKNOWABLE = "unknowable"        # "the red door", "the wooden door": no colours or materials in a grid
+    DURATION = "duration"            # "move forward for 5 seconds": moves go by distance, turns by angle
+    BAD_NUMBER = "bad_number"        # "turn left ninety billion degrees": a number not read in full
+
+
+class OutOfRange(Exception):
+    """A turn beyond MAX_TURN_DEG while building a step (read_clause turns it into OUT_OF_RANGE)."""
+
+
+def checked_angle(angle: float | None) -> float | None:
+    if angle is not None and angle > MAX_TURN_DEG:
+        raise OutOfRange
+    return angle
+
+
+#: Words left unread that show a number was not read in full: digits, and magnitudes the
+
+
+#: number words do not cover.
+NUMBERISH_RE: Final = re.compile(r"\d|\b(?:thousands?|millions?|billions?|trillions?|zillions?|gazillions?|"
+                                  r"dozens?|hundreds|infinity|infinite)\b")
+
+
+@dataclass(frozen=True)
+class Reading:
+    """What one clause says: its steps, the words left unread, and how sure the reading is."""
+
+    steps: tuple[Step, ...] = ()
+    unread: tuple[str, ...] = ()
+    confidence: float = 1.0
+    problem: Problem | None = None
+    name: str | None = None
+    #: the clause only adds a number or a direction to the previous step ("turn left, 45 degrees")
+    amends_previous: bool = False
+    #: the element a question names ("which is the largest room?"): a later "it" may mean it
+    referent: ElementRef | None = None
+    #: "... and stop just after you pass through it": the previous step goes through its element
+    through_previous: bool = False
+    #: the last step misses an amount or a side that a following fragment may give ("rotate" then
+    #: ", ninety degrees left"; "turn thirty degrees" then ", to the left"; "head west" then ", ten feet")
+    open: bool = False

@@ -1,0 +1,130 @@
+"""Turns in place: "turn left 90 degrees", "turn around", "face the door", "turn right at the door",
+"spin twice"."""
+
+from __future__ import annotations
+
+import re
+from typing import Final
+
+from langnav.language.intent import Amount, Detail, Direction, Movement, Step
+from langnav.language.offline import lexicon as lx
+from langnav.language.offline.navigation import ref_step
+from langnav.language.offline.numbers import QuantityKind, find_quantities
+from langnav.language.offline.patterns import LITTLE_RE, ROTATE_DIR_RE
+from langnav.language.offline.phrases import Phrase
+from langnav.language.offline.reading import (
+    DEFAULT_TURN_DEG,
+    GUESSED_DIRECTION_FACTOR,
+    MAX_TURN_DEG,
+    UNITLESS_NUMBER_FACTOR,
+    checked_angle,
+)
+from langnav.language.offline.scratch import Clause
+
+_AROUND_VERBS: Final = frozenset({"u turn", "uturn", "about face", "about turn", "make a u turn"})
+
+
+def rotate_steps(c: Clause, targets: list[Phrase], vm: re.Match[str] | None) -> list[Step]:
+    """'turn left 90 degrees', 'turn around', 'face the door', 'turn right at the door'."""
+    steps: list[Step] = []
+    if targets:
+        p = targets[0]
+        at = re.search(r"\b(?:at|when\s+you\s+(?:reach|get\s+to)|once\s+you\s+reach|after|by|past)\s*$",
+                       c.s.text[:p.start])
+        if at is not None or p.detail in (Detail.THROUGH, Detail.STOP_AT, Detail.NEXT_TO):
+            c.s.use(at.start() if at else p.start, p.start)
+            detail = p.detail if p.detail not in (None, Detail.TO) else Detail.TO
+            p.detail = detail
+            steps.append(ref_step(c, p))
+        else:
+            for q in targets:
+                c.s.use(q.start, q.end)
+            c.s.take_all(re.compile(r"\b(?:to\s+face|face|facing|to|towards?|so\s+that\s+you\s+face|"
+                                    r"until\s+you\s+(?:face|see))\b"))
+            return [Step(movement=Movement.ROTATE, detail=Detail.TOWARDS, target=p.ref, text=c.text[:500])]
+    steps.append(rotation(c, vm))
+    return steps
+
+
+#: "turn round to the left": only a bare "round / around" gives way to a side named with it.
+_SPIN_ROUND_RE: Final = re.compile(r"(?<!way\s)\b(?:a)?round\b(?!\s+(?:twice|two|2|three|\d))")
+_REPEAT_RE: Final = re.compile(r"\b(?:(?P<word>once|twice|thrice)|(?P<n>\d+|one|two|three|four|five)\s+times)\b")
+_REPEAT_WORDS: Final = {"once": 1, "twice": 2, "thrice": 3, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5}
+
+
+def repeat_count(c: Clause) -> int:
+    """'twice', 'three times': how many times the move or turn is done (1 when not said)."""
+    m = c.s.find(_REPEAT_RE)
+    if m is None:
+        return 1
+    c.s.use(m.start(), m.end())
+    word = m.group("word") or m.group("n")
+    return int(word) if word.isdigit() else _REPEAT_WORDS[word]
+
+
+def rotation(c: Clause, vm: re.Match[str] | None) -> Step:
+    step = _single_rotation(c, vm)
+    times = repeat_count(c)
+    if times == 1:
+        return step
+    angle = step.angle_deg if step.angle_deg is not None else (
+        DEFAULT_TURN_DEG if step.amount == Amount.DEFAULT else None)
+    if angle is None:
+        return step  # "a little" twice stays a little
+    total = min(angle * times, MAX_TURN_DEG)
+    # "turn around twice" is a full turn: either way will do, left is the convention
+    direction = Direction.LEFT if step.direction == Direction.AROUND else step.direction
+    return step.model_copy(update={"angle_deg": total, "amount": None, "direction": direction})
+
+
+def _single_rotation(c: Clause, vm: re.Match[str] | None) -> Step:
+    direction: Direction | None = None
+    if vm is not None and " ".join(vm.group(0).split()) in _AROUND_VERBS:
+        direction = Direction.AROUND
+    elif vm is not None and "dir" in vm.groupdict() and vm.group("dir"):
+        direction = Direction.LEFT if vm.group("dir") == "left" else Direction.RIGHT
+    quantities = find_quantities(c.s.masked())
+    angle: float | None = None
+    for q in quantities:
+        c.s.use(q.start, q.end)
+        if q.kind == QuantityKind.ANGLE or q.kind == QuantityKind.BARE:
+            if q.kind == QuantityKind.BARE:
+                c.doubt(UNITLESS_NUMBER_FACTOR if q.value not in (90, 180, 45, 360, 270, 30, 60) else 1.0)
+            angle = (angle or 0.0) + q.value
+        else:
+            c.lost.append(c.text)
+    little = c.s.take_all(LITTLE_RE)
+    sides: list[Direction] = []
+    for m in c.s.take_all(ROTATE_DIR_RE):
+        d = lx.lookup(lx.ROTATE_DIRECTIONS, m.group("dir"))
+        if isinstance(d, Direction):
+            if d in (Direction.LEFT, Direction.RIGHT):
+                sides.append(d)
+            if direction is None:
+                direction = d
+    if direction == Direction.AROUND and sides and _SPIN_ROUND_RE.search(c.s.text):
+        direction = sides[0]  # "spin round to your left": a turn to that side, not a U-turn
+    amount: Amount | None = None
+    if direction == Direction.AROUND:
+        if angle is None or abs(angle - 180.0) < 1e-6:
+            angle = 180.0
+        else:
+            direction = Direction.LEFT  # "spin around 360 degrees"
+    elif angle is not None and direction is None:
+        if abs(angle - 180.0) < 1e-6:
+            direction = Direction.AROUND
+        else:
+            direction = Direction.LEFT
+            if angle % 360 != 0:
+                c.doubt(GUESSED_DIRECTION_FACTOR)
+    elif angle is None:
+        amount = Amount.LITTLE if little else Amount.DEFAULT
+        if direction is None:
+            verb = vm.group(0) if vm is not None else ""
+            if re.search(r"\b(?:spin|pirouette|twirl)\b", verb) or re.search(r"\blook\s+around\b", c.s.text):
+                direction, angle, amount = Direction.LEFT, 360.0, None
+            else:
+                direction = Direction.LEFT
+                c.doubt(GUESSED_DIRECTION_FACTOR)
+    return Step(movement=Movement.ROTATE, direction=direction, angle_deg=checked_angle(angle), amount=amount,
+                text=c.text[:500])

@@ -1,0 +1,143 @@
+"""Narrow passages on built maps whose answer is known: what leads somewhere between two solid
+sides is a passage; dead-end slots, slivers outside walls and laser-ray stripes are not."""
+
+from __future__ import annotations
+
+import pytest
+
+from langnav.analysis.params import DEFAULT_PARAMS
+from langnav.analysis.passages import find_passages
+from langnav.analysis.pipeline import analyze, labels_for_free_components
+from langnav.analysis.precompute import GridLayers
+from langnav.maps.draw import MapBuilder
+from langnav.maps.grid import UNKNOWN, OccupancyGrid
+
+P = DEFAULT_PARAMS
+#: Shelf-row warehouse: rows of shelves 0.4 m deep and 4 m long, 0.8 m apart, x from 2 to 6.
+AISLE_M = 0.8
+SHELF_DEPTH_M = 0.4
+SHELF_X = (2.0, 6.0)
+
+
+def passages_of(grid: OccupancyGrid):
+    labels, n = labels_for_free_components(grid)
+    layers = GridLayers(grid)
+    return find_passages(grid, P, labels, {k: f"space_{k}" for k in range(1, n + 1)}, [],
+                         layers.occupied | layers.unknown, layers=layers)
+
+
+def warehouse(n_shelves: int = 4, unknown_racks: bool = False) -> OccupancyGrid:
+    """A 9 x 6 m hall; ``n_shelves`` shelf rows run east-west from x = 2 to 6, the first at
+    y = 1.0, each 0.4 m deep, 0.8 m apart: the aisles between them open at both ends into the
+    hall's 2 m wide cross aisles. ``unknown_racks``: the shelves are scanned only as their
+    unknown insides (racks the laser does not see into), not as occupied cells."""
+    b = MapBuilder(11.0, 8.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 9.0, 6.0)
+    y = 1.0
+    for _ in range(n_shelves):
+        if unknown_racks:
+            b.unknown(SHELF_X[0], y, SHELF_X[1], y + SHELF_DEPTH_M)
+        else:
+            b.box(SHELF_X[0], y, SHELF_X[1], y + SHELF_DEPTH_M)
+        y += SHELF_DEPTH_M + AISLE_M
+    return b.build(source="warehouse")
+
+
+def aisle_centres(n_shelves: int) -> list[tuple[float, float]]:
+    first = 1.0 + SHELF_DEPTH_M + AISLE_M / 2
+    return [(4.0, first + k * (SHELF_DEPTH_M + AISLE_M)) for k in range(n_shelves - 1)]
+
+
+@pytest.mark.parametrize("unknown_racks", [False, True])
+def test_aisles_between_shelf_rows_are_passages(unknown_racks: bool) -> None:
+    found = sorted(passages_of(warehouse(4, unknown_racks)), key=lambda p: p.center[1])
+    assert len(found) == 3
+    for p, (x, y) in zip(found, aisle_centres(4), strict=True):
+        assert p.center == pytest.approx((x, y), abs=0.05)
+        assert p.width_m == pytest.approx(AISLE_M, abs=0.051)
+        # The aisle's length is the shelves' (4 m), give or take its flaring mouths.
+        (x0, y0), (x1, y1) = sorted(p.ends)
+        assert y0 == pytest.approx(y, abs=0.05) and y1 == pytest.approx(y, abs=0.05)
+        assert x0 == pytest.approx(SHELF_X[0], abs=0.3) and x1 == pytest.approx(SHELF_X[1], abs=0.3)
+        assert p.length_m == pytest.approx(x1 - x0, abs=0.06)
+
+
+def test_warehouse_end_to_end_aisles_are_passages_not_doors() -> None:
+    a = analyze(warehouse(4))
+    centres = sorted(p.center for p in a.narrow_passages)
+    assert len(centres) == 3
+    for got, want in zip(sorted(centres, key=lambda c: c[1]), aisle_centres(4), strict=True):
+        assert got == pytest.approx(want, abs=0.05)
+    # One hall: the gaps between shelves are no doors.
+    assert a.doors == ()
+
+
+def dead_end_slot() -> OccupancyGrid:
+    """A 6 x 5 m room; two 0.4 m deep, 2 m long cabinets stand out from its north wall, 0.7 m
+    apart: the slot between them is closed at the wall (it leads nowhere)."""
+    b = MapBuilder(8.0, 7.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 6.0, 5.0)
+    b.box(2.0, 3.0, 2.4, 5.0)
+    b.box(3.1, 3.0, 3.5, 5.0)
+    return b.build(source="dead_end_slot")
+
+
+def test_dead_end_slot_is_no_passage() -> None:
+    assert passages_of(dead_end_slot()) == ()
+
+
+def test_the_same_slot_open_at_both_ends_is_a_passage() -> None:
+    # Control: the cabinets 1.5 m off the wall, so the slot opens into the room at both ends.
+    b = MapBuilder(8.0, 7.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 6.0, 5.0)
+    b.box(2.0, 1.5, 2.4, 3.5)
+    b.box(3.1, 1.5, 3.5, 3.5)
+    (p,) = passages_of(b.build(source="open_slot"))
+    assert p.center == pytest.approx((2.75, 2.5), abs=0.05)
+    assert p.width_m == pytest.approx(0.7, abs=0.051)
+
+
+@pytest.mark.parametrize("sliver_m", [0.25, 0.6])
+def test_sliver_outside_a_wall_is_no_passage(sliver_m: float) -> None:
+    """A 6 x 4 m room whose scan leaked through a window in the south wall: a free strip
+    ``sliver_m`` wide runs along the outside of that wall, bounded by the unscanned world. Below
+    the robot's width it is no way through; wider, one side is nothing known (the outside)."""
+    b = MapBuilder(8.0, 7.0, origin=(-1.0, -2.0))
+    b.room(0.0, 0.0, 6.0, 4.0)
+    b.free(0.5, -0.15 - sliver_m, 5.5, -0.15)
+    b.free(2.5, -0.15, 3.5, 0.0)  # the window the scan leaked through
+    grid = b.build(source="sliver_outside")
+    assert passages_of(grid) == ()
+
+
+def test_strip_between_laser_ray_stripes_is_no_passage() -> None:
+    """A 5 x 5 m room; east of it, beyond a doorway, a fan of free rays 0.6 m wide separated by
+    unknown stripes 0.1 m thick (the laser's view into an unscanned space)."""
+    b = MapBuilder(12.0, 7.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 5.0, 5.0)
+    b.door_v(5.075, 2.5, 3.0)
+    b.free(5.2, 0.5, 9.0, 4.5)
+    for y in (1.2, 1.9, 2.6, 3.3):
+        b.unknown(5.6, y, 9.0, y + 0.1)
+    assert passages_of(b.build(source="ray_stripes")) == ()
+
+
+def test_gap_narrower_than_robot_plus_margin_is_no_passage() -> None:
+    # Shelves 0.4 m apart: wider than the 0.34 m robot, but with no room to pass.
+    b = MapBuilder(8.0, 7.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 6.0, 5.0)
+    b.box(2.0, 1.5, 2.4, 3.5)
+    b.box(2.8, 1.5, 3.2, 3.5)
+    assert passages_of(b.build(source="tight_slot")) == ()
+
+
+def test_unknown_inside_furniture_bounds_a_passage_but_the_outside_does_not() -> None:
+    grid = warehouse(2, unknown_racks=True)
+    cells = grid.cells.copy()
+    (p,) = passages_of(grid)
+    assert p.width_m == pytest.approx(AISLE_M, abs=0.051)
+    # Open the north rack's unknown to the grid edge (it is then the unscanned world, not a rack).
+    r0, c0 = (int(v) for v in grid.world_to_index(4.0, 2.6))
+    cells[r0:, c0] = UNKNOWN
+    opened = OccupancyGrid(cells, grid.resolution_m, grid.origin_x_m, grid.origin_y_m, 0.0, "opened")
+    assert passages_of(opened) == ()
