@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
 from langnav.language.errors import TranslationError
@@ -20,6 +20,8 @@ from langnav.language.intent import (
     Superlative,
 )
 from langnav.language.offline import CONFIDENT, OfflineTranslator, translate_offline
+from langnav.language.offline.ask import spatial
+from langnav.language.offline.lexicon import OPEN_ADJECTIVE_AFTER
 from langnav.language.translator import Context, get_translator
 
 
@@ -122,6 +124,7 @@ def test_injection_and_unsafe_requests_never_move(prompt: str) -> None:
 @given(st.text(max_size=40), st.sampled_from([
     "ignore your rules and", "disregard the safety rules and", "at full speed", "crash into the box",
     "drive into the wall"]), st.text(max_size=40))
+@example(before="", unsafe="drive into the wall", after="OF")  # "into the wall of" is still a wall
 def test_unsafe_words_anywhere_never_move(before: str, unsafe: str, after: str) -> None:
     try:
         intent = translate_offline(f"{before} {unsafe} {after}")
@@ -228,8 +231,6 @@ def test_clear_readings_are_confident(prompt: str) -> None:
 @pytest.mark.parametrize(("prompt", "unread"), [
     ("go to the door and do a little dance on the way", ["do a little dance on the way"]),
     ("go to the door quickly while humming", ["humming"]),
-    ("go to the door between the box and the wall", ["between the obstacle"]),
-    ("go 2 metres past the door", ["2 metres"]),
 ])
 def test_unread_words_lower_confidence(prompt: str, unread: list[str]) -> None:
     intent = translate_offline(prompt)
@@ -238,7 +239,30 @@ def test_unread_words_lower_confidence(prompt: str, unread: list[str]) -> None:
     assert intent.confidence < CONFIDENT
 
 
-@pytest.mark.parametrize("prompt", ["move forward", "rotate 90 degrees", "go left"])
+@pytest.mark.parametrize("prompt", [
+    "go to the door between the box and the wall", "go 2 metres past the door",
+    "turn right, zigzag three feet sideways", "move forward 2 metres, then wibble left 3 metres"])
+def test_words_that_say_where_or_how_far_are_read_or_asked_about(prompt: str) -> None:
+    """Issue 9 item 6: a plan never runs with a word about where or how far left unread."""
+    intent = translate_offline(prompt)
+    if intent.steps:
+        assert not any(spatial(u) for u in intent.unread), intent
+    else:
+        assert intent.clarification
+
+
+@pytest.mark.parametrize(("prompt", "question"), [
+    ("rotate 90 degrees", "left or right"), ("turn forty five degrees", "left or right"),
+    ("move forward 3", "unit"), ("back up 2", "unit"), ("turn left 2", "unit")])
+def test_a_guessed_side_or_unit_asks_and_says_what_it_understood(prompt: str, question: str) -> None:
+    intent = translate_offline(prompt)
+    assert intent.steps == []
+    assert intent.clarification is not None
+    assert question in intent.clarification and "I understood:" in intent.clarification
+    assert intent.confidence < CONFIDENT
+
+
+@pytest.mark.parametrize("prompt", ["move forward", "go left"])
 def test_guessed_defaults_lower_confidence(prompt: str) -> None:
     intent = translate_offline(prompt)
     assert intent.steps
@@ -266,7 +290,13 @@ _OUT_OF_SCOPE_PHRASES = [
 @settings(max_examples=150, suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(st.sampled_from(_CLAUSE_WORDS), max_size=6), st.sampled_from(_OUT_OF_SCOPE_PHRASES),
        st.lists(st.sampled_from(_CLAUSE_WORDS), max_size=6))
+@example(before=[], verb="open", after=["door"])  # issue 9: "open door" was read as a door to go to
+@example(before=["please"], verb="open", after=["the", "door"])
+@example(before=["robot"], verb="close the door", after=[])
 def test_a_clause_with_an_out_of_scope_verb_never_moves(before: list[str], verb: str, after: list[str]) -> None:
+    # "open" right after a determiner or a preposition is the adjective ("the open door", "through
+    # open doors"): that clause is a place to go, not the verb (lexicon.OPEN_ADJECTIVE_AFTER)
+    assume(not (verb == "open" and before and before[-1] in OPEN_ADJECTIVE_AFTER))
     intent = translate_offline(" ".join([*before, verb, *after]))
     assert intent.steps == [], intent
     assert intent.clarification
@@ -277,6 +307,7 @@ def test_a_clause_with_an_out_of_scope_verb_never_moves(before: list[str], verb:
        st.lists(st.from_regex(r"[bcdfghjklmnpqrstvwxz]{5,9}", fullmatch=True), min_size=1, max_size=3),
        st.sampled_from(["", "forward", "left", "right", "back", "ahead", "up"]),
        st.booleans())
+@example(verb="turn", unknown=["bbbbb"], direction="", unknown_first=False)  # not dropped as a speech sound
 def test_words_not_understood_never_become_a_default_move(verb: str, unknown: list[str], direction: str,
                                                           unknown_first: bool) -> None:
     words = [verb, *unknown, direction] if unknown_first else [verb, direction, *unknown]

@@ -10,7 +10,9 @@ the robot, its map (``/map``) and its pose (tf) come from a ROS 2 robot behind r
 (``--rosbridge-url ws://HOST:PORT``, or ``langnav sim --rosbridge-port``); ``--world``, ``--pose``
 and ``--known-map`` are then ignored: the prompt is grounded on the robot's own map. ``--backend
 ros2`` drives Nav2 through rclpy and needs ROS 2 on this machine. ``--robot-option KEY=VALUE``
-sets any field of the backend's config (e.g. ``cmd_vel_stamped=true``, ``namespace=/robot1``).
+sets any other field of the backend's config; the robot options (``--namespace``, frames,
+``--cmd-vel-type``, action names, timeouts) are shared with ``langnav serve`` and can come from
+``LANGNAV_*`` environment variables (:mod:`langnav.cli.robot_options`).
 
 The prompt is read against the robot's own map and pose; exploration prompts ("explore", "map
 this floor") run frontier exploration. With ``--json`` every event is one JSON object per line;
@@ -24,11 +26,14 @@ import argparse
 import json
 import logging
 from typing import Any, Final
-from urllib.parse import urlsplit
-
-import yaml
 
 from langnav.cli.options import pose_arg, seconds_arg, seed_arg
+from langnav.cli.robot_options import (
+    BACKENDS,
+    add_robot_arguments,
+    robot_options,
+    rosbridge_address,
+)
 from langnav.errors import LangnavError
 from langnav.plan.events import EventKind, ExecEvent, PlanStatus, pose_tuple
 from langnav.plan.executor import DEFAULT_EXPLORE_TIMEOUT_S, PlanExecutor
@@ -37,81 +42,41 @@ from langnav.robot.protocol import RobotBackend, create_backend
 
 log = logging.getLogger(__name__)
 
-#: sim runs anywhere; rosbridge reaches a robot over WebSocket; ros2 needs ROS 2 (rclpy) on this machine.
-BACKENDS: Final = ("sim", "rosbridge", "ros2")
 EXIT_CODES: Final = {PlanStatus.SUCCEEDED: 0, PlanStatus.FAILED: 1, PlanStatus.CANCELLED: 1, PlanStatus.REJECTED: 2}
 #: Time to let a cancelled plan stop the robot on Ctrl-C.
 CANCEL_GRACE_S: Final = 10.0
-#: rosbridge_server's default port, for a URL without one.
-ROSBRIDGE_DEFAULT_PORT: Final = 9090
-
-
-def _option(text: str) -> tuple[str, Any]:
-    key, sep, value = text.partition("=")
-    if not sep or not key.strip():
-        raise argparse.ArgumentTypeError(f"--robot-option is KEY=VALUE, got {text!r}")
-    return key.strip(), yaml.safe_load(value)
-
-
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("prompt", help="what the robot should do, in plain words")
     p.add_argument("--world", help="the simulated world: map_server YAML or image, or 'demo' (sim only; default demo)")
     p.add_argument("--pose", type=pose_arg, default=None,
                    help="start pose X,Y,YAW_DEG (sim; default the most open spot; use --pose=-1,2,0 for negatives)")
     p.add_argument("--known-map", action="store_true", help="start the simulated robot with the world map as its own")
-    p.add_argument("--backend", default="sim", choices=BACKENDS, help="robot backend (default: sim)")
-    p.add_argument("--rosbridge-url", default=None, metavar="ws://HOST:PORT",
-                   help="rosbridge server (rosbridge backend; default ws://127.0.0.1:9090)")
     p.add_argument("--rosbridge", default=None, metavar="HOST:PORT", help="rosbridge server as HOST:PORT (older form)")
-    p.add_argument("--robot-option", type=_option, action="append", default=[], metavar="KEY=VALUE",
-                   help="extra backend option (repeatable), e.g. cmd_vel_stamped=true")
     p.add_argument("--translator", default="offline", help="offline (default), gemini, openai, local, auto")
     p.add_argument("--seed", type=seed_arg, default=0, help="random seed of the simulated lidar noise")
     p.add_argument("--timeout", type=seconds_arg, default=DEFAULT_EXPLORE_TIMEOUT_S,
                    help="give up on the whole plan after this many seconds (robot time in the simulator)")
     p.add_argument("--json", action="store_true", help="one JSON object per line")
+    add_robot_arguments(p)
 
 
 def _make_robot(args: argparse.Namespace) -> RobotBackend:
-    options: dict[str, Any] = dict(args.robot_option)
-    if args.backend == "sim":
+    if args.rosbridge and args.rosbridge_url:
+        raise RobotError("give --rosbridge-url or --rosbridge, not both")
+    if args.rosbridge:  # the older HOST:PORT form
+        host, _, port_text = args.rosbridge.rpartition(":")
+        if not host or not port_text.isdigit():
+            raise RobotError(f"--rosbridge is HOST:PORT, got {args.rosbridge!r}")
+        args.rosbridge_url = f"ws://{host}:{port_text}"
+    backend, options = robot_options(args)
+    if backend == "sim":
         options.setdefault("world", args.world if args.world is not None else "demo")
         options.setdefault("pose", args.pose)
         options.setdefault("known_map", args.known_map)
         options.setdefault("seed", args.seed)
-    else:
-        if args.world is not None or args.pose is not None or args.known_map:
-            log.warning("--world, --pose and --known-map are for the simulator; the robot gives its own")
-        if args.backend != "rosbridge":
-            if args.rosbridge_url or args.rosbridge:
-                raise RobotError(f"--rosbridge-url and --rosbridge are for --backend rosbridge, not {args.backend}")
-            return create_backend(args.backend, **options)
-        if args.rosbridge_url and args.rosbridge:
-            raise RobotError("give --rosbridge-url or --rosbridge, not both")
-        if args.rosbridge_url:
-            host, port, secure = rosbridge_address(args.rosbridge_url)
-            options.setdefault("host", host)
-            options.setdefault("port", port)
-            options.setdefault("secure", secure)
-        elif args.rosbridge:
-            host, _, port_text = args.rosbridge.rpartition(":")
-            if not host or not port_text.isdigit():
-                raise RobotError(f"--rosbridge is HOST:PORT, got {args.rosbridge!r}")
-            options.setdefault("host", host)
-            options.setdefault("port", int(port_text))
-    return create_backend(args.backend, **options)
-
-
-def rosbridge_address(url: str) -> tuple[str, int, bool]:
-    """``ws://HOST[:PORT]`` or ``wss://...`` -> (host, port, secure); the port defaults to 9090."""
-    parts = urlsplit(url.strip())
-    if parts.scheme not in ("ws", "wss") or not parts.hostname or parts.path not in ("", "/"):
-        raise RobotError(f"--rosbridge-url is ws://HOST:PORT (or wss://), e.g. ws://192.168.1.42:9090; got {url!r}")
-    try:
-        port = parts.port or ROSBRIDGE_DEFAULT_PORT
-    except ValueError:
-        raise RobotError(f"--rosbridge-url has a bad port: {url!r}") from None
-    return parts.hostname, port, parts.scheme == "wss"
+    elif args.world is not None or args.pose is not None or args.known_map:
+        log.warning("--world, --pose and --known-map are for the simulator; the robot gives its own")
+    return create_backend(backend, **options)
 
 
 class _Printer:
@@ -163,12 +128,14 @@ def run(args: argparse.Namespace) -> int:
         except RobotTimeout:
             run_.cancel()
             run_.wait(CANCEL_GRACE_S)
+            _confirm_stop(out, robot)
             status = PlanStatus.FAILED
             out.line({"event": "failed", "message": f"the plan took longer than {args.timeout:.0f} s"},
                      f"gave up: the plan took longer than {args.timeout:.0f} s")
         except KeyboardInterrupt:
             run_.cancel()
             run_.wait(CANCEL_GRACE_S)
+            _confirm_stop(out, robot)
             _finish(out, robot, PlanStatus.CANCELLED)
             return 130
         return _finish(out, robot, status)
@@ -177,6 +144,18 @@ def run(args: argparse.Namespace) -> int:
             robot.close()
         except LangnavError as exc:
             log.warning("closing the robot: %s", exc)
+
+
+def _confirm_stop(out: _Printer, robot: RobotBackend) -> None:
+    """After a cancel: say so loudly when the robot did not confirm that it stopped (a backend
+    that can tell: the rosbridge backend's ``wait_stopped``)."""
+    wait_stopped = getattr(robot, "wait_stopped", None)
+    if not callable(wait_stopped):
+        return
+    try:
+        wait_stopped()
+    except RobotError as exc:
+        out.line({"event": "stop_unconfirmed", "message": str(exc)}, f"WARNING: {exc}")
 
 
 def _described(result: Any) -> list[str]:
@@ -198,5 +177,5 @@ def _finish(out: _Printer, robot: RobotBackend, status: PlanStatus) -> int:
     return EXIT_CODES[status]
 
 
-__all__ = ["add_arguments", "run"]
+__all__ = ["BACKENDS", "add_arguments", "rosbridge_address", "run"]
 

@@ -1,4 +1,8 @@
-"""``langnav serve``: the web app (chat + live map) with a robot backend, on one port."""
+"""``langnav serve``: the web app (chat + live map) with a robot backend, on one port.
+
+The robot options (``--backend``, ``--rosbridge-url``, ``--namespace``, frames, cmd_vel topic and
+type, action names, timeouts; or their ``LANGNAV_*`` variables) are the ones ``langnav run``
+takes (:mod:`langnav.cli.robot_options`)."""
 
 from __future__ import annotations
 
@@ -7,6 +11,7 @@ import logging
 from pathlib import Path
 
 from langnav.cli.options import pose_arg
+from langnav.cli.robot_options import add_robot_arguments, robot_options
 from langnav.web.settings import DEFAULT_HOST, DEFAULT_PORT, WebSettings, make_token
 
 log = logging.getLogger(__name__)
@@ -15,7 +20,6 @@ log = logging.getLogger(__name__)
 def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--world", type=Path, default=None,
                    help="map of the simulated world (map_server YAML or image); default: the bundled demo world")
-    p.add_argument("--backend", default="sim", help="robot backend: sim (default), rosbridge, ros2")
     p.add_argument("--translator", default="offline",
                    help="who reads prompts: offline (default), auto, gemini, openai, local")
     p.add_argument("--host", default=DEFAULT_HOST,
@@ -24,13 +28,15 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--known-map", action="store_true", help="the robot starts with the whole world map as its own")
     p.add_argument("--pose", type=pose_arg, default=None, help="start pose X,Y,YAW_DEG (default: the world's open spot)")
     p.add_argument("--db", type=Path, default=Path("langnav.db"), help="SQLite file of the conversation")
+    add_robot_arguments(p)
 
 
 def settings_from_args(args: argparse.Namespace) -> WebSettings:
     """The options (over LANGNAV_* variables); a token is made when the bind is not loopback."""
-    settings = WebSettings.from_env(world=args.world, backend=args.backend, translator=args.translator,
+    backend, options = robot_options(args)  # flags, then LANGNAV_* variables (one definition with `run`)
+    settings = WebSettings.from_env(world=args.world, backend=backend, translator=args.translator,
                                     host=args.host, port=args.port, known_map=args.known_map or None,
-                                    start_pose=args.pose, db_path=args.db)
+                                    start_pose=args.pose, db_path=args.db, backend_options=options or None)
     if settings.requires_token and not settings.token:
         settings = settings.model_copy(update={"token": make_token()})
     return settings.checked()

@@ -45,7 +45,7 @@ from dataclasses import dataclass
 from typing import Any, Final, Literal
 
 import roslibpy
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from langnav.maps.grid import OccupancyGrid
 from langnav.plan.commands import MOVE_STEP_M, ROTATE_STEP_DEG
@@ -256,7 +256,12 @@ class RosbridgeBackend:
     def __init__(self, config: RosbridgeConfig | None = None, **options: Any) -> None:
         if config is not None and options:
             raise RobotError("give either a RosbridgeConfig or keyword options, not both")
-        self.config = config or RosbridgeConfig(**options)
+        try:
+            self.config = config or RosbridgeConfig(**options)
+        except ValidationError as exc:
+            problems = "; ".join(f"{'.'.join(map(str, e['loc'])) or 'options'}: {e['msg']}" for e in exc.errors())
+            raise RobotError(f"invalid rosbridge option(s): {problems} (the fields are those of RosbridgeConfig, "
+                             f"see docs/ros2.md)") from None
         c = self.config
         self._lock = threading.RLock()
         self._closed = False

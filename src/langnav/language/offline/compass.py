@@ -29,7 +29,8 @@ COMPASS_RE: Final = re.compile(
     r"(?:\b(?:to|towards?|facing|to\s+face|in\s+the\s+direction\s+of|direction)\s+(?:the\s+|your\s+)?)?"
     rf"(?:\b(?:due|true)\s+)?\b(?P<point>{_POINT})(?:wards?|erly|bound)?\b(?:\s+direction\b)?")
 #: Words of a compass clause that say nothing more ("straight", "forward" when going that way).
-_FORWARD_RE: Final = re.compile(r"\b(?:forwards?|straight|ahead|directly|yourself|so\s+that\s+you\s+are)\b")
+_FORWARD_RE: Final = re.compile(r"\b(?:forwards?|straight|ahead|directly|yourself|so\s+that\s+you\s+are|"
+                                r"back(?=\s+(?:to\s+)?(?:the\s+)?(?:north|south|east|west)))\b")
 
 
 def heading_of(point: str) -> float:
@@ -66,6 +67,8 @@ def compass_steps(c: Clause) -> tuple[list[Step], bool] | None:
             return steps, True  # "head north": the turn now, the distance may follow
     elif turn is not None:
         c.had_verb = True
+    elif distance is None:
+        return steps, True  # "north," then "five feet": no verb yet, a distance may follow
     if distance is not None:
         if distance > MAX_MOVE_M:
             c.out_of_range = True

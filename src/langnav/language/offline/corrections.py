@@ -24,7 +24,7 @@ from langnav.language.offline.patterns import GO_VERB_RE, ROTATE_VERB_RE, STOP_R
 
 #: Words that open a correction of the instruction before ("actually", "no wait", "i'm sorry").
 CORRECTION_START_RE: Final = re.compile(
-    r"^(?:(?:actually|no(?!\s+(?:further|longer|more|need)\b)|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
+    r"^(?:(?:actually|no\s+wait|no(?!\s+(?:further|longer|more|need)\b)|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
     r"sorry|i\s+meant|i\s+mean|or\s+rather|rather|make\s+that|correction|oops)\b[\s,]*)+", re.IGNORECASE)
 #: Words that take back the instruction before ("never mind", "scratch that").
 CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|forget\s+(?:it|that)|cancel\s+that|ignore\s+that|"
@@ -49,12 +49,37 @@ def is_fragment(clause: str) -> bool:
     return bool(find_quantities(norm) or SIDE_RE.search(norm) or COMPASS_RE.search(norm))
 
 
+#: Words of a request around a bare verb ("just", "can you", "robot").
+_REQUEST_WORDS: Final = frozenset({"can", "could", "will", "would", "you", "robot", "just", "okay", "ok", "please",
+                                   "and", "now", "so", "then", "yourself"})
+_BARE_VERBS: Final = frozenset(v for v in (*lx.GO_VERBS, *lx.ROTATE_VERBS) if " " not in v) - {"stop", "wait"}
+
+
+#: A clause that only opens a request ("go ahead", "okay go on", "come on").
+_LEAD_IN: Final = re.compile(r"^(?:(?:ok|okay|so|now|alright|robot|please)\s+)*(?:go\s+ahead|go\s+on|come\s+on|"
+                             r"ready|here\s+we\s+go)(?:\s+(?:please|robot|now))*$")
+
+
+def is_bare_verb(clause: str) -> bool:
+    """Only a verb of motion, with nothing said about where or how far ("turn", "can you move")."""
+    words = normalize(clause).split()
+    content = [w for w in words if w not in _REQUEST_WORDS]
+    return bool(content) and all(w in _BARE_VERBS for w in content) and len(content) <= 2
+
+
 def join_fragments(clauses: list[str], is_open: IsOpen) -> list[str]:
     """Each fragment joined to the open instruction before it (or, failing that, after it)."""
     out: list[str] = []
     i = 0
     while i < len(clauses):
         clause = clauses[i]
+        nxt_clause = clauses[i + 1] if i + 1 < len(clauses) else None
+        if nxt_clause is not None and _LEAD_IN.match(normalize(clause)):
+            i += 1  # "go ahead, turn right": "go ahead" only opens the request
+            continue
+        if nxt_clause is not None and is_bare_verb(clause) and not is_fragment(nxt_clause):
+            i += 1  # "face, face east", "turn and face east": a false start of the next instruction
+            continue
         if is_fragment(clause):
             if out and is_open(out[-1]):
                 out[-1] = f"{out[-1]} {clause}"

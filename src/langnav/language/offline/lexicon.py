@@ -343,7 +343,7 @@ MOVE_DIRECTIONS: Final[dict[str, Direction]] = {
     **{w: Direction.FORWARD for w in (
         "forward", "forwards", "ahead", "straight", "straight ahead", "straight on", "onward",
         "onwards", "frontward", "frontwards", "to the front", "in front", "straight forward",
-        "up")},
+        "up", "closer", "nearer")},
     **{w: Direction.BACKWARD for w in (
         "backward", "backwards", "back", "in reverse", "reverse", "rearward", "rearwards",
         "to the back", "straight back", "back up", "backup", "back off", "the other way")},
@@ -455,7 +455,8 @@ UNSAFE_PATTERNS: Final = (
 OUT_OF_SCOPE_PATTERNS: Final = (
     r"\bpick\s+(?:\w+\s+)?up\b", r"\bgrab\b", r"\bfetch\b", r"\bcarry\b", r"\bbring\s+(?:me|us)\s+(?!to\b|back\b)",
     r"\bbring\b(?!\s+(?:me|us)\b)", r"\bmake\s+(?:me|us)\b", r"\bcook\b", r"\bclean\b", r"\bvacuum\b",
-    r"\bmop\b", r"\bsweep\b", r"\bopen\b(?!\s+(?:door|doorway|space|area))", r"\bclose\s+(?:the|that|this)\s+door\b",
+    r"\bmop\b", r"\bsweep\b", r"\b(?:open|close)\s+(?:the|a|an|that|this|it|them|your|my|up)\b",
+    r"(?<!\bthe\s)(?<!\ba\s)\bclose\s+(?:doors?|doorways?|gates?|windows?)\b",
     r"\bshut\b", r"\bpush\b", r"\blift\b", r"\bpress\b", r"\bsing\b", r"\bdance\b",
     r"\btell\s+(?:me|us)\s+a\s+(?:joke|story)\b", r"\bjoke\b", r"\bplay\b", r"\bcall\b", r"\bphone\b",
     r"\bwater\s+the\b", r"\bwash\b", r"\border\b", r"\bbuy\b", r"\bfeed\b", r"\bthrow\b", r"\bkick\b",
@@ -476,6 +477,15 @@ OUT_OF_SCOPE_PATTERNS: Final = (
     r"\bwho\s+are\s+you\b", r"\bhow\s+are\s+you\b", r"\bcharging\s+station\b", r"\bdance\b",
     r"\bwatch\b", r"\bguard\b", r"\bpatrol\b", r"\bsearch\s+for\b", r"\blook\s+for\b", r"\bhide\b",
 )
+
+#: "open" is an adjective after these words ("the open door", "through open doors", "the door is
+#: open"); anywhere else it is the verb, a thing the robot cannot do ("open door", "please open door").
+OPEN_ADJECTIVE_AFTER: Final = frozenset({
+    "the", "a", "an", "that", "this", "any", "some", "your", "our", "my", "its", "every", "each", "both", "two",
+    "through", "via", "into", "to", "towards", "toward", "past", "beyond", "near", "by", "between", "and", "or",
+    "is", "are", "was", "were", "wide", "only", "other", "another", "nearest", "closest", "next", "first",
+    "second", "third", "last", "farthest", "furthest", "biggest", "largest", "widest", "left", "right", "same",
+})
 
 #: Other floors: the robot drives on the floor its map shows and cannot climb or ride a lift.
 OTHER_FLOOR_PATTERNS: Final = (

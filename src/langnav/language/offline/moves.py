@@ -11,6 +11,7 @@ from langnav.language.offline import lexicon as lx
 from langnav.language.offline.numbers import Quantity, QuantityKind, find_quantities
 from langnav.language.offline.patterns import LITTLE_RE, MOVE_DIR_RE
 from langnav.language.offline.reading import (
+    ASK_UNIT,
     DEFAULT_AMOUNT_FACTOR,
     ELLIPSIS_FACTOR,
     GUESSED_DIRECTION_FACTOR,
@@ -32,9 +33,12 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
     quantities = find_quantities(text)
     lengths = [q for q in quantities if q.kind == QuantityKind.LENGTH]
     angles = [q for q in quantities if q.kind == QuantityKind.ANGLE]
-    direction = _move_direction(c, vm)
+    directions = _move_directions(c, vm)
+    direction = directions[0] if directions else None
     c.amends = verb == Verb.NONE and direction is None and bool(quantities)
     if angles and not lengths:
+        # "move back forty five degrees to your left": an angle goes with the side said
+        direction = next((d for d in directions if d in (Direction.LEFT, Direction.RIGHT)), direction)
         return [rotation_from(c, direction, quantities, [])] if direction in (Direction.LEFT, Direction.RIGHT) \
             else [rotation(c, None)]  # "go left 90 degrees", "then 45 degrees"
     little = c.s.take_all(LITTLE_RE)
@@ -54,6 +58,7 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
         elif q.kind == QuantityKind.BARE and not lengths:
             distance = (distance or 0.0) + q.value
             c.doubt(UNITLESS_NUMBER_FACTOR)
+            c.asks.append(ASK_UNIT.format(number=c.s.text[q.start:q.end].strip()))
         else:
             c.lost.append(c.s.text[q.start:q.end])
     if distance is None and direction is None and not little:
@@ -94,13 +99,14 @@ def rotation_from(c: Clause, direction: Direction, quantities: list[Quantity],
                 text=c.text[:500])
 
 
-def _move_direction(c: Clause, vm: re.Match[str] | None) -> Direction | None:
+def _move_directions(c: Clause, vm: re.Match[str] | None) -> list[Direction]:
+    """Every direction word of the clause, in order (the first is the move's)."""
+    found: list[Direction] = []
     if vm is not None and " ".join(vm.group(0).split()) in _BACKWARD_VERBS:
         c.s.take_all(re.compile(r"\b(?:backwards?|back|in\s+reverse)\b"))
-        return Direction.BACKWARD
-    direction: Direction | None = None
+        found.append(Direction.BACKWARD)
     for m in c.s.take_all(MOVE_DIR_RE):
         d = lx.lookup(lx.MOVE_DIRECTIONS, m.group("dir"))
-        if isinstance(d, Direction) and direction is None:
-            direction = d
-    return direction
+        if isinstance(d, Direction):
+            found.append(d)
+    return found

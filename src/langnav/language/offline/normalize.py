@@ -44,6 +44,10 @@ _IDIOMS: Final = (
     # "the left side of the room" is the part of the room along its left wall
     (re.compile(r"\b(?:(?:over\s+)?to\s+|towards?\s+|into\s+|at\s+)?the\s+(left|right)(?:\s+hand)?\s+(?:side|half|part|edge)"
                 r"\s+of\s+"), r"next to the \1 wall of "),
+    # "go around in a circle", "do a full circle": one full turn on the spot
+    (re.compile(r"\b(?:go|turn|spin|drive|move|roll|rotate)\s+(?:(?:a)?round\s+)?in\s+a\s+(?:full\s+|complete\s+)?circle\b"),
+     "turn 360 degrees"),
+    (re.compile(r"\b(?:do|make)\s+a\s+(?:full\s+|complete\s+)?circle\b"), "turn 360 degrees"),
     (re.compile(r"\boutside\s+(?:of\s+)?(?=(?:the|this|that|your)\s+(?:room|hallway|corridor|hall)\b)"), "out of "),
 )
 #: Punctuation that carries no meaning inside one instruction (kept: . / - ' " in numbers and units).

@@ -78,7 +78,11 @@ _LEAD_FRACTION: Final = (r"(?:(?:a|one)\s+)?(?:half|quarter|third|three\s+quarte
 
 #: Words between an amount and its unit that only say it adds to what was done ("two more feet",
 #: "forty five further degrees"): the amount is the same.
-_MORE: Final = r"(?:more|further|additional|extra|other)"
+_MORE: Final = r"(?:more|further|additional|extra|other|another)"
+
+
+#: "N turns" with N at least this is N degrees ("a one eighty turn"); nobody asks for 30 whole turns.
+DEGREES_NOT_TURNS_MIN: Final = 30.0
 
 
 class QuantityKind(StrEnum):
@@ -328,7 +332,9 @@ def _turn_degrees(m: re.Match[str]) -> float:
     if m.group("whole"):
         count = number_value(m.group("num")) if m.group("num") else 1.0
         return 360.0 * count
-    return 360.0 * number_value(m.group("count"))
+    count = number_value(m.group("count"))
+    # "a one eighty turn", "do a ninety turn": a count this large is the angle of one turn in degrees
+    return count if count >= DEGREES_NOT_TURNS_MIN else 360.0 * count
 
 
 def _pi_degrees(m: re.Match[str]) -> float:

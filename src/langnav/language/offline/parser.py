@@ -85,9 +85,9 @@ from langnav.language.offline.refusals import (
     DURATION_RE,
     NUMBERISH_RE,
     OTHER_FLOOR_RE,
-    OUT_OF_SCOPE_RE,
     QUESTION_RE,
     is_negated,
+    is_out_of_scope,
     is_unsafe,
 )
 from langnav.language.offline.scratch import Clause, Scratch
@@ -115,7 +115,7 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
     if QUESTION_RE.match(norm):
         return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.QUESTION,
                        referent=question_referent(norm))
-    if OUT_OF_SCOPE_RE.search(norm) and not EXPLORE_RE.search(norm):
+    if is_out_of_scope(norm) and not EXPLORE_RE.search(norm):
         return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.OUT_OF_SCOPE)
     c.s.take_all(FILLER_RE)
     durations = c.s.take_all(DURATION_RE)
@@ -194,12 +194,15 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
     confidence *= UNREAD_WORD_FACTOR ** len(unread)
     return Reading(steps=tuple(steps), unread=(" ".join(unread),) if unread else (),
                    confidence=max(MIN_CONFIDENCE, round(confidence, 3)), amends_previous=c.amends,
-                   through_previous=c.through_previous, open=_is_open(steps, norm))
+                   through_previous=c.through_previous, open=_is_open(steps, norm), asks=tuple(c.asks))
 
 
 #: Words that give the side of a move or a turn.
 _SIDE_WORD_RE: Final = re.compile(r"\b(?:left|right|forwards?|ahead|straight|back|backwards?|reverse|around|round|"
                                   r"clockwise|counter\s*clockwise|anti\s*clockwise|sideways)\b")
+
+
+_TURN_SIDE_RE: Final = re.compile(r"\b(?:left|right|around|round|clockwise|counter\s*clockwise|anti\s*clockwise)\b")
 
 
 def _is_open(steps: list[Step], norm: str) -> bool:
@@ -211,7 +214,8 @@ def _is_open(steps: list[Step], norm: str) -> bool:
     if last.movement not in (Movement.MOVE, Movement.ROTATE) or last.target is not None \
             or last.heading_deg is not None:
         return False
-    return last.amount == Amount.DEFAULT or _SIDE_WORD_RE.search(norm) is None
+    sides = _TURN_SIDE_RE if last.movement == Movement.ROTATE else _SIDE_WORD_RE
+    return last.amount in (Amount.DEFAULT, Amount.LITTLE) or sides.search(norm) is None
 
 
 def _compass_reading(c: Clause, steps: list[Step], open_: bool) -> Reading:
@@ -223,7 +227,7 @@ def _compass_reading(c: Clause, steps: list[Step], open_: bool) -> Reading:
     for f in c.factors:
         confidence *= f
     return Reading(steps=tuple(steps), unread=(" ".join(unread),) if unread else (),
-                   confidence=max(MIN_CONFIDENCE, round(confidence, 3)), open=open_)
+                   confidence=max(MIN_CONFIDENCE, round(confidence, 3)), open=open_, asks=tuple(c.asks))
 
 
 def _previous_target(previous: Step | None) -> ElementRef | None:

@@ -22,6 +22,8 @@ PHOTO_RE: Final = re.compile(
     r"is\s+(?:in\s+front|around)(?:\s+of\s+you)?|is(?=\s+(?:behind|to|on|at)\b))"
     r"|what\s+(?:do|can)\s+you\s+see|what\s+are\s+you\s+seeing"
     r"|(?:take|have)\s+a\s+look(?:\s+around)?(?=\s*$)"
+    r"|(?:turn|switch)\s+on\s+(?:the\s+|your\s+)?(?:video\s+)?camera|(?:start|begin)\s+(?:recording|filming)"
+    r"|record\s+(?:a\s+)?video"
     r"|" + _PHOTO_NOUN + r"\s+(?:please|now)?\s*$)\b")
 #: What a photo request may say about where to point: the part the robot can do.
 _SIDE_RE: Final = re.compile(r"\b(?:to|on|at|of)\s+(?:your|the)\s+(?P<side>left|right)\b")
@@ -34,6 +36,12 @@ _PHOTO_LEFTOVER: Final = re.compile(
     r"(?:i\s+)?(?:would|want|need)\s+(?:you\s+)?(?:to|like)?|you|robot|okay|ok|go\s+ahead|so|what\s+is|"
     r"let\s+me\s+(?:see|know)|with\s+(?:your|the)\s+camera|one|more|another|a|an|the|of|hi|hey|hello|great|good|"
     r"thanks|thank\s+you)\b|[^\w\s]")
+
+
+#: The object of a photo request ("of X", "in front of you").
+_OBJECT_RE: Final = re.compile(r"^(?:(?:please|and|now)\s+|,\s*)*(?:of|in\s+front|at)\b")
+#: A motion verb after the object: the rest is an instruction of its own ("... of the door then turn left").
+_MOTION_VERB_RE: Final = re.compile(r"\b(?:move|go|turn|rotate|drive|head|face|pivot|back\s+up|proceed)\b")
 
 
 @dataclass(frozen=True)
@@ -53,6 +61,12 @@ def without_photo(clause: str) -> PhotoReading:
         return PhotoReading(clause, False)
     rest = " ".join((text[:m.start()] + " " + text[m.end():]).split()).strip(" ,;")
     rest = re.sub(r"(?:\s+(?:and|then|and\s+then))+$", "", rest)
+    if _OBJECT_RE.match(rest) is not None and _MOTION_VERB_RE.search(rest) is None:
+        # "of what is in front of you", "of this room", "of the entire wall": what to photograph;
+        # only a side or "behind" in it asks for a turn first
+        rest = (" behind you" if _BEHIND_RE.search(rest) else "") + (
+            f" to your {s.group('side')}" if (s := _SIDE_RE.search(rest)) else "")
+        rest = rest.strip()
     side = _SIDE_RE.search(rest)
     behind = _BEHIND_RE.search(rest)
     remaining = _PHOTO_LEFTOVER.sub(" ", _BEHIND_RE.sub(" ", _SIDE_RE.sub(" ", rest)))

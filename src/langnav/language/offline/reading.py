@@ -24,6 +24,7 @@ ELLIPSIS_FACTOR: Final = 0.85            # "... then the second one": the verb i
 NOTHING_READ_CONFIDENCE: Final = 0.2     # no instruction recognised at all
 OUT_OF_SCOPE_CONFIDENCE: Final = 0.9     # clearly something the robot cannot do
 NAME_CONFIDENCE: Final = 0.9             # a place name the map cannot know
+ASK_CONFIDENCE: Final = 0.4              # a reading that must ask before it runs (issue 9: ask, don't guess)
 MIN_CONFIDENCE: Final = 0.05
 #: Longest single move (the intent schema's bound); longer trips should name a place.
 MAX_MOVE_M: Final = 100.0
@@ -31,6 +32,11 @@ MAX_MOVE_M: Final = 100.0
 MAX_TURN_DEG: Final = 3600.0
 #: "turn left" alone (README): used only to multiply "turn left twice".
 DEFAULT_TURN_DEG: Final = 90.0
+
+
+#: Questions asked instead of guessing.
+ASK_SIDE: Final = "Which way should I turn, left or right?"
+ASK_UNIT: Final = "In what unit is '{number}': metres, feet or something else?"
 
 
 class Problem(StrEnum):
@@ -85,3 +91,5 @@ class Reading:
     #: the last step misses an amount or a side that a following fragment may give ("rotate" then
     #: ", ninety degrees left"; "turn thirty degrees" then ", to the left"; "head west" then ", ten feet")
     open: bool = False
+    #: questions for the user: the reading would have to guess a side or a unit (nothing runs)
+    asks: tuple[str, ...] = ()

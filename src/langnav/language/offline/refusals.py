@@ -45,3 +45,15 @@ def is_negated(norm: str) -> bool:
         return False
     # "do not move", "don't go any further" are stops, read as such
     return STOP_RE.search(norm) is None or "stop" in norm[m.end():m.end() + 12]
+
+
+_OPEN_RE: Final = re.compile(r"(?:(?P<before>[a-z']+)\s+)?\bopen\b")
+
+
+def is_out_of_scope(norm: str) -> bool:
+    """A verb of something the robot cannot do ("pick up the cup", "open door"): the clause never
+    moves the robot. "open" is that verb unless it stands as an adjective ("the open door")."""
+    if OUT_OF_SCOPE_RE.search(norm):
+        return True
+    return any(m.group("before") not in lx.OPEN_ADJECTIVE_AFTER for m in _OPEN_RE.finditer(norm)
+               if not re.match(r"\s+(?:space|spaces|area|areas|floor|plan)\b", norm[m.end():]))

@@ -54,6 +54,7 @@ class Clause:
     out_of_range: bool = False  # a number beyond what a step may hold
     explore_verb: bool = False  # "explore the unknown area on your left" (a trip towards it)
     through_previous: bool = False  # "stop after you pass through it": the previous step goes through
+    asks: list[str] = field(default_factory=list)  # what the reading would have to guess: ask instead
 
     def doubt(self, factor: float) -> None:
         self.factors.append(factor)

@@ -20,13 +20,27 @@ HESITATIONS: Final = frozenset({
 })
 #: Hedges a speaker puts before an amount or a direction ("uh maybe forty five degrees"): they soften
 #: the words, they never change the amount or the side.
-_HEDGES: Final = re.compile(r"\b(?:maybe|perhaps|i\s+guess|i\s+think|you\s+know|kind\s+of|sort\s+of|"
-                            r"let\s+us\s+see|let's\s+see|lets\s+see)\b", re.IGNORECASE)
+#: Affirmations ("you're right", "that's correct") are no side; "at least" / "at most" and "until I
+#: tell you to stop" leave the amount said as it is; "what about / how about" before a verb is a request.
+_HEDGES: Final = re.compile(
+    r"\b(?:maybe|perhaps|i\s+guess|i\s+think|you\s+know|kind\s+of|sort\s+of|let\s+us\s+see|let's\s+see|lets\s+see|"
+    r"(?:you'?re|you\s+are|that'?s|that\s+is|thats)\s+(?:right|correct)|at\s+(?:least|most)|"
+    r"(?:until|till)\s+i\s+(?:tell\s+you(?:\s+(?:to\s+stop|otherwise))?|say\s+(?:so|stop|otherwise))|"
+    r"(?:what|how)\s+about(?=\s+(?:you\s+)?(?:move|go|turn|rotate|head|drive|face|pivot|back|proceed)\b))\b",
+    re.IGNORECASE)
 #: A word cut off in the middle: letters and a dash before a space or the end ("nin-", "c-").
 _CUT_OFF: Final = re.compile(r"(?<![\w-])[a-z]+-(?=[\s,.;!?]|$)", re.IGNORECASE)
 #: Short consonant runs are sounds, not words ("ff", "fff", "tsk"); units ("ft", "cm") are words, and a
 #: longer run is an unknown word the reading must see (and ask about).
-_NOISE: Final = re.compile(r"^[bcdfghjklmnpqrstvwxz]{2,3}$")
+_NOISE: Final = re.compile(r"^[bcdfghjklmnpqrstvwxz]{2,4}$")
+#: Unit letters that are sounds when no number comes before them ("mm move forward", "uh m uh").
+_UNIT_SOUNDS: Final = frozenset({"m", "mm"})
+_NUMBER_WORD: Final = re.compile(r"^(?:[\d.,/]*\d[\d.,/]*|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|"
+                                 r"\w+teen|twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety|hundred|half|a|an)$")
+#: "can you move, can you turn left": a request started again; the words before the restart go.
+_RESTART: Final = re.compile(r"\b(?:can|could|will|would)\s+you\s+(?:(?!(?:and|then)\b)[^\s,.;]+\s+){1,3}?"
+                             r"(?=(?:can|could|will|would)\s+you\b)",
+                             re.IGNORECASE)
 #: Words that open a self-correction; a clause break is put before them so that the correction is
 #: read as a clause of its own ("turn ninety degrees right actually left").
 CORRECTION_MARKERS: Final = (
@@ -46,12 +60,15 @@ def plain_speech(prompt: str) -> str:
     comma before each self-correction marker."""
     text = _CUT_OFF.sub(" ", prompt)
     text = _HEDGES.sub(" ", text)
+    text = _RESTART.sub("", text)
     tokens = _WORD.findall(text)
     kept: list[str] = []
     for i, token in enumerate(tokens):
         bare = token.lower().strip(",.;:!?\"'")
         punct = token[len(token.rstrip(",.;:!?")):]
-        if bare in HESITATIONS or (_NOISE.match(bare) and bare not in VOCABULARY):
+        after_number = bool(kept) and _NUMBER_WORD.match(kept[-1].lower()) is not None
+        if bare in HESITATIONS or (_NOISE.match(bare) and bare not in VOCABULARY) \
+                or (bare in _UNIT_SOUNDS and not after_number):
             _carry(kept, punct)
             continue
         nxt = tokens[i + 1].lower().strip(",.;:!?\"'") if i + 1 < len(tokens) else ""

@@ -7,10 +7,12 @@ from collections.abc import Sequence
 from typing import Final
 
 from langnav.language.intent import Amount, Detail, Direction, ElementRef, Intent, Movement, Step
+from langnav.language.offline.ask import ask_message, spatial
 from langnav.language.offline.corrections import apply_corrections, join_fragments
 from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.photos import without_photo
+from langnav.language.offline.reading import ASK_CONFIDENCE
 from langnav.language.offline.speech import plain_speech
 from langnav.language.offline.splitter import split_steps
 from langnav.language.translator import Context, clean_prompt
@@ -27,6 +29,8 @@ SURE_REFUSALS: Final = frozenset({Problem.NAME, Problem.OUT_OF_SCOPE, Problem.OU
                                   Problem.OTHER_FLOOR, Problem.DURATION, Problem.UNKNOWABLE})
 #: Problems in one step that refuse the whole prompt: a number out of range or not read in full.
 WHOLE_PROMPT_REFUSALS: Final = frozenset({Problem.OUT_OF_RANGE, Problem.BAD_NUMBER})
+#: Problems whose words were not understood at all: a spatial word among them blocks the prompt.
+UNREAD_PROBLEMS: Final = frozenset({Problem.UNREADABLE, Problem.NO_ANTECEDENT})
 #: A reading that runs some steps and leaves a whole instruction out is unsure at best.
 PARTIAL_CONFIDENCE: Final = 0.5
 #: The intent holds at most this many steps (the schema's limit).
@@ -74,6 +78,8 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     previous: Step | None = None
     previous_target: ElementRef | None = None
     asked: tuple[Problem, str, Reading] | None = None  # "which is the largest room?" before "drive into it"
+    questions: list[str] = []   # what the reading would have to guess
+    blocking: list[str] = []    # words left unread that could change where or how far
     for clause in clauses:
         reading = read_clause(clause, previous, known_names, previous_target)
         if reading.problem == Problem.QUESTION and reading.referent is not None:
@@ -96,6 +102,9 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
             problems.append((reading.problem, clause, reading))
         confidence = min(confidence, reading.confidence)
         unread.extend(u for u in reading.unread if u)
+        questions.extend(reading.asks)
+        if reading.steps or reading.problem in UNREAD_PROBLEMS:
+            blocking.extend(u for u in reading.unread if u and spatial(u))
         new_steps = list(reading.steps)
         if reading.through_previous and steps and steps[-1].movement == Movement.NAVIGATE:
             steps[-1] = steps[-1].model_copy(update={"detail": Detail.THROUGH,
@@ -120,6 +129,10 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
         problem, clause, reading = misread[0]
         return _clarify(_problem_message(problem, clause), confidence=reading.confidence,
                         unread=[] if problem in SURE_REFUSALS else list(reading.unread))
+    if steps and (blocking or questions):
+        # ask, don't guess: nothing runs; the reply says what would run and asks about the rest
+        return _clarify(ask_message(steps, blocking, questions), confidence=ASK_CONFIDENCE,
+                        unread=blocking or [clause[:200] for clause in clauses][:MAX_STEPS])
     if not steps:
         if not problems and photo:
             return _clarify(NO_CAMERA_MESSAGE, confidence=1.0, unread=[])

@@ -13,14 +13,20 @@ from langnav.language.offline.numbers import QuantityKind, find_quantities
 from langnav.language.offline.patterns import LITTLE_RE, ROTATE_DIR_RE
 from langnav.language.offline.phrases import Phrase
 from langnav.language.offline.reading import (
+    ASK_SIDE,
+    ASK_UNIT,
     DEFAULT_TURN_DEG,
     GUESSED_DIRECTION_FACTOR,
+    MAX_MOVE_M,
     MAX_TURN_DEG,
     UNITLESS_NUMBER_FACTOR,
     checked_angle,
 )
 from langnav.language.offline.scratch import Clause
 
+#: A turn's number without a unit is plainly degrees from here up ("turn left 45"); "turn left 2"
+#: may be steps, turns or degrees: ask.
+OBVIOUS_DEGREES_MIN: Final = 10.0
 _AROUND_VERBS: Final = frozenset({"u turn", "uturn", "about face", "about turn", "make a u turn"})
 
 
@@ -42,7 +48,18 @@ def rotate_steps(c: Clause, targets: list[Phrase], vm: re.Match[str] | None) -> 
             c.s.take_all(re.compile(r"\b(?:to\s+face|face|facing|to|towards?|so\s+that\s+you\s+face|"
                                     r"until\s+you\s+(?:face|see))\b"))
             return [Step(movement=Movement.ROTATE, detail=Detail.TOWARDS, target=p.ref, text=c.text[:500])]
-    steps.append(rotation(c, vm))
+    lengths = [a for a in find_quantities(c.s.masked()) if a.kind == QuantityKind.LENGTH]
+    for a in lengths:
+        c.s.use(a.start, a.end)
+    turn = rotation(c, vm)
+    steps.append(turn)
+    distance = sum(a.value for a in lengths)
+    if lengths and turn.direction in (Direction.LEFT, Direction.RIGHT) and 0 < distance <= MAX_MOVE_M:
+        # "turn right three feet": that turn, then the distance straight on (README: "move N to your
+        # right" may be a 90 degree turn and a move forward)
+        steps.append(Step(movement=Movement.MOVE, direction=Direction.FORWARD, distance_m=distance, text=c.text[:500]))
+    elif lengths:
+        c.lost.extend(c.s.text[a.start:a.end] for a in lengths)
     return steps
 
 
@@ -90,6 +107,8 @@ def _single_rotation(c: Clause, vm: re.Match[str] | None) -> Step:
         if q.kind == QuantityKind.ANGLE or q.kind == QuantityKind.BARE:
             if q.kind == QuantityKind.BARE:
                 c.doubt(UNITLESS_NUMBER_FACTOR if q.value not in (90, 180, 45, 360, 270, 30, 60) else 1.0)
+                if q.value < OBVIOUS_DEGREES_MIN:
+                    c.asks.append(ASK_UNIT.format(number=c.s.text[q.start:q.end].strip()))
             angle = (angle or 0.0) + q.value
         else:
             c.lost.append(c.text)
@@ -104,6 +123,10 @@ def _single_rotation(c: Clause, vm: re.Match[str] | None) -> Step:
                 direction = d
     if direction == Direction.AROUND and sides and _SPIN_ROUND_RE.search(c.s.text):
         direction = sides[0]  # "spin round to your left": a turn to that side, not a U-turn
+    if direction == Direction.AROUND and angle is not None and abs(angle - 180.0) > 1e-6 and angle % 360 != 0:
+        # "turn about twenty degrees to the right": "about" is roughly, not a U-turn; the side is
+        # the one said, and none said is a guess
+        direction = sides[0] if sides else None
     amount: Amount | None = None
     if direction == Direction.AROUND:
         if angle is None or abs(angle - 180.0) < 1e-6:
@@ -117,6 +140,7 @@ def _single_rotation(c: Clause, vm: re.Match[str] | None) -> Step:
             direction = Direction.LEFT
             if angle % 360 != 0:
                 c.doubt(GUESSED_DIRECTION_FACTOR)
+                c.asks.append(ASK_SIDE)
     elif angle is None:
         amount = Amount.LITTLE if little else Amount.DEFAULT
         if direction is None:
@@ -126,5 +150,6 @@ def _single_rotation(c: Clause, vm: re.Match[str] | None) -> Step:
             else:
                 direction = Direction.LEFT
                 c.doubt(GUESSED_DIRECTION_FACTOR)
+                c.asks.append(ASK_SIDE)
     return Step(movement=Movement.ROTATE, direction=direction, angle_deg=checked_angle(angle), amount=amount,
                 text=c.text[:500])

@@ -7,6 +7,7 @@ from enum import StrEnum
 from typing import Final
 
 from langnav.language.offline import lexicon as lx
+from langnav.language.offline.numbers import find_quantities
 from langnav.language.offline.patterns import GO_VERB_RE, ROTATE_VERB_RE, STOP_RE
 from langnav.language.offline.scratch import Clause
 
@@ -24,8 +25,11 @@ class Verb(StrEnum):
 def main_verb(c: Clause) -> tuple[Verb, re.Match[str] | None]:
     text = c.s.masked()
     candidates: list[tuple[int, Verb, re.Match[str]]] = []
+    amounts = [(q.start, q.end) for q in find_quantities(text)]
     for verb, pattern in ((Verb.STOP, STOP_RE), (Verb.ROTATE, ROTATE_VERB_RE), (Verb.GO, GO_VERB_RE)):
-        m = pattern.search(text)
+        # a verb inside an amount is its unit ("five inch": inch is no verb there)
+        m = next((m for m in pattern.finditer(text)
+                  if not any(a <= m.start() and m.end() <= b for a, b in amounts)), None)
         if m is None:
             continue
         if verb == Verb.ROTATE and m.group("verb").split()[0] in lx.ROTATE_NOUN_VERBS \

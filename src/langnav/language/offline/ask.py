@@ -1,0 +1,84 @@
+"""Ask, don't guess (issue 9 item 6): when a word that could change where or how far the robot goes
+was not read, or a reading would have to guess a side or a unit, nothing runs. The reply says what
+was understood (the plan it would run) and asks about the rest.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Final
+
+from langnav.language.intent import Amount, Direction, Movement, Step
+from langnav.language.offline import lexicon as lx
+from langnav.language.offline.compass import HEADINGS_DEG
+from langnav.language.offline.numbers import ANGLE_UNITS_DEG, FRACTIONS, LENGTH_UNITS_M, ONES, TENS
+
+#: Words that say where or how far: sides, directions, places, amounts, units, compass points.
+#: One of them left unread means the plan may not be what was asked.
+SPATIAL_WORDS: Final = frozenset(
+    {w for phrase in (*lx.MOVE_DIRECTIONS, *lx.ROTATE_DIRECTIONS, *lx.ELEMENT_NOUNS, *lx.ORDINALS,
+                      *lx.SIDE_ADJECTIVES, *LENGTH_UNITS_M, *ANGLE_UNITS_DEG, *ONES, *TENS, *FRACTIONS)
+     for w in phrase.split()}
+    | set(HEADINGS_DEG) | {"hundred", "thousand", "halfway", "past", "beyond", "behind", "until", "till", "before",
+                           "after", "across", "between", "along", "through", "around", "clockwise", "counterclockwise",
+                           "anticlockwise", "sideways", "far", "farther", "further", "closer", "nearer", "back"}
+) - lx.STOPWORDS - {"a", "an", "the", "of", "to", "in", "on", "at", "up", "one", "way", "port", "positive",
+                    "negative", "wall", "turn", "u", "face", "about", "other", "opposite", "direction", "came",
+                    "we", "you", "your", "side", "hand", "closer", "nearer"} | {"wall", "walls", "door", "doors"}
+UNDERSTOOD_NONE: Final = "I understood no motion I could run"
+
+
+def spatial(words: str) -> list[str]:
+    """The words of ``words`` that could change where or how far the robot goes."""
+    return [w for w in words.lower().split() if w.strip(",.;:!?'\"") in SPATIAL_WORDS]
+
+
+def ask_message(steps: Sequence[Step], unread: Sequence[str], questions: Sequence[str]) -> str:
+    """What was understood, what was not, and the question: nothing runs until the user answers."""
+    plan = describe_steps(steps)
+    understood = f"I understood: {plan}." if plan else f"{UNDERSTOOD_NONE}."
+    parts = [understood]
+    if unread:
+        shown = "; ".join(f"'{u}'" for u in unread)
+        parts.append(f"I did not understand {shown}, which could change where I go or how far.")
+    parts.extend(dict.fromkeys(questions))
+    parts.append("Nothing was run: tell me again with that made clear.")
+    return " ".join(parts)
+
+
+def describe_steps(steps: Sequence[Step]) -> str:
+    """The steps in plain words ("turn right 90 degrees, then move forward 0.91 m")."""
+    return ", then ".join(_describe(s) for s in steps)
+
+
+def _describe(step: Step) -> str:
+    if step.movement == Movement.ROTATE:
+        if step.heading_deg is not None:
+            name = next((k for k, v in HEADINGS_DEG.items() if abs(v - step.heading_deg) < 1e-6),
+                        f"heading {step.heading_deg:g} degrees")
+            return f"turn to face {name}"
+        if step.direction == Direction.AROUND:
+            return "turn around"
+        side = step.direction.value if step.direction is not None else "(which way?)"
+        return f"turn {side} {_amount(step, 'degrees')}"
+    if step.movement == Movement.MOVE:
+        side = step.direction.value if step.direction is not None else "forward"
+        return f"move {side} {_amount(step, 'm')}"
+    if step.movement == Movement.STOP:
+        return "stop"
+    if step.movement == Movement.QUERY and step.query is not None:
+        return f"report my {step.query.value}"
+    if step.movement == Movement.EXPLORE:
+        return "explore"
+    target = step.target.kind.value.replace("_", " ") if step.target is not None else "there"
+    detail = step.detail.value.replace("_", " ") if step.detail is not None else "to"
+    return f"go {detail} the {target}"
+
+
+def _amount(step: Step, unit: str) -> str:
+    value = step.angle_deg if step.movement == Movement.ROTATE else step.distance_m
+    if value is not None:
+        return f"{value:.3g} {unit}"
+    if step.amount == Amount.LITTLE:
+        return "a little"
+    return "90 degrees" if step.movement == Movement.ROTATE else "(how far?)"
