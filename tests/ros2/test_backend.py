@@ -236,7 +236,7 @@ def test_a_missing_behavior_server_is_an_error_that_names_it(demo_robot: Callabl
 def test_without_nav2_creation_fails_naming_the_server_and_returns(ros2_backend: Callable[..., Any]) -> None:
     t0 = time.monotonic()
     with pytest.raises(RobotError, match=r"/navigate_through_poses action server did not appear within 1.0 s"):
-        ros2_backend(server_timeout_s=1.0)
+        ros2_backend(connect_timeout_s=1.0)
     assert time.monotonic() - t0 < 4.0
 
 
@@ -301,7 +301,7 @@ def test_langnav_sim_serves_a_ros2_graph_and_a_vanished_robot_is_lost(ros2_backe
                              "--ros2", "--no-rosbridge", "--duration", "120"],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=os.environ)
     try:
-        robot = ros2_backend(server_timeout_s=30.0, feedback_timeout_s=2.0)
+        robot = ros2_backend(connect_timeout_s=30.0, feedback_timeout_s=2.0)
         pose = robot.get_robot_pose(5.0)
         assert (pose.x_m, pose.y_m) == pytest.approx((12.2, 1.8), abs=0.05)
         result = robot.move("forward", 10).wait(30.0)

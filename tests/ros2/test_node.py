@@ -136,3 +136,24 @@ def test_the_map_analysis_is_published_as_labelled_markers(langnav_node: tuple[A
     door = next(m for m in markers if m.text == "door 1")
     assert (door.pose.position.x, door.pose.position.y) == pytest.approx((6.05, 1.0), abs=0.1)
     assert node.markers_published >= 1
+
+
+def test_langnav_node_command_serves_the_action(demo_robot: Callable[..., Any], closer: Callable[[Any], Any]) -> None:
+    """`langnav node` in its own process, driving the robot through the ros2 backend."""
+    import os
+    import subprocess
+    import sys
+
+    sim, _ = demo_robot(speed=2.0)
+    langnav = os.path.join(os.path.dirname(sys.executable), "langnav")
+    proc = subprocess.Popen([langnav, "node", "--duration", "90"], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, env=os.environ)
+    try:
+        client = closer(Client())
+        response = _wait(client.send("turn left 90 degrees").get_result_async(), 60.0)
+        assert response.result.outcome == "succeeded", response.result.reply
+        assert math.cos(sim.get_robot_pose().yaw_rad - math.radians(270)) > 0.99
+    finally:
+        proc.terminate()
+        _out, err = proc.communicate(timeout=30)
+    assert "terminate called" not in err

@@ -5,7 +5,7 @@
 #     pyproject.toml change;
 #  2. langnav's interface packages (tools/ros2/interfaces: the Nav2 and tf2 interfaces langnav uses,
 #     and langnav_interfaces) built with rosidl + cmake into that venv -- redone when a file under
-#     tools/ros2/interfaces or this script changes (a stamp named by their hash).
+#     tools/ros2/interfaces, the requirements or this script change (a stamp named by their hash).
 # Prints the venv path on its last line. Recipe: ../shared/notes/ros2-wheels.md.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -37,15 +37,15 @@ if [ ! -f "$REQ_STAMP" ]; then
   # The wheels' exported CMake targets name the wheel builder's Python and numpy include dirs.
   PYINC="$("$VENV/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["include"])')"
   NPINC="$("$VENV/bin/python" -c 'import numpy; print(numpy.get_include())')"
-  grep -rl '/opt/python/cp311-cp311' "$VENV/share" --include='*.cmake' 2>/dev/null | while read -r f; do
+  { grep -rl '/opt/python/cp311-cp311' "$VENV/share" --include='*.cmake' 2>/dev/null || true; } | while read -r f; do
     sed -i -e "s#/opt/python/cp311-cp311/include/python3.11#$PYINC#g" \
            -e "s#/opt/python/cp311-cp311/lib/python3.11/site-packages/numpy/[a-z_/]*include#$NPINC#g" "$f"
   done
-  rm -f "$VENV"/.ros2-req-* "$VENV"/.ros2-interfaces-*
+  rm -f "$VENV"/.ros2-req-*
   touch "$REQ_STAMP"
 fi
 
-IF_STAMP="$VENV/.ros2-interfaces-$(cd "$ROOT" && hash_of "tools/ros2/setup.sh" $(find tools/ros2/interfaces -type f | sort))"
+IF_STAMP="$VENV/.ros2-interfaces-$(cd "$ROOT" && hash_of tools/ros2/setup.sh tools/ros2/requirements.txt $(find tools/ros2/interfaces -type f | sort))"
 if [ ! -f "$IF_STAMP" ]; then
   need_tool
   export AMENT_PREFIX_PATH="$VENV" CMAKE_PREFIX_PATH="$VENV" LD_LIBRARY_PATH="$VENV/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"

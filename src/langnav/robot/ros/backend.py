@@ -84,6 +84,8 @@ class Ros2Config(BaseModel):
     namespace: str = ""
     node_name: str = "langnav"
     map_frame: str = "map"
+    #: named in errors only: the pose is map -> base_link through whatever frames tf holds
+    odom_frame: str = "odom"
     base_frame: str = "base_link"
     map_topic: str = "map"
     plan_topic: str = "plan"
@@ -107,8 +109,9 @@ class Ros2Config(BaseModel):
     #: Behavior time allowance = nominal duration x this + slack.
     time_allowance_factor: float = Field(default=3.0, ge=1.0)
     time_allowance_slack_s: float = Field(default=5.0, ge=0.0)
-    #: Waiting for the navigate_through_poses server when the backend is created.
-    server_timeout_s: float = Field(default=10.0, gt=0)
+    #: Waiting for the navigate_through_poses server when the backend is created (the shared robot
+    #: option --connect-timeout).
+    connect_timeout_s: float = Field(default=10.0, gt=0)
     #: Waiting for a behavior server (spin, backup, drive_on_heading) when a Move/Rotate needs it.
     behavior_server_timeout_s: float = Field(default=3.0, gt=0)
     #: Waiting for a server to accept or reject a goal.
@@ -208,9 +211,9 @@ class Ros2Backend:
             self._cmd_pubs: dict[bool, Any] = {}
             self._clients: dict[str, tuple[Any, Any]] = {}
             nav, _ = self._client("nav_action", NAVIGATE_THROUGH_POSES)
-            if not self._wait_for_server(nav, c.server_timeout_s):
+            if not self._wait_for_server(nav, c.connect_timeout_s):
                 raise RobotError(f"Nav2's {self._resolved(c.nav_action)} action server did not appear within "
-                                 f"{c.server_timeout_s} s (namespace {c.namespace!r}, ROS_DOMAIN_ID "
+                                 f"{c.connect_timeout_s} s (namespace {c.namespace!r}, ROS_DOMAIN_ID "
                                  f"{_domain_id()}): is Nav2 running and active, on this ROS domain?")
         except BaseException:
             self._rt.close(c.close_timeout_s)
@@ -286,7 +289,7 @@ class Ros2Backend:
             if time.monotonic() >= deadline:
                 raise RobotTimeout(f"no transform {c.map_frame} -> {c.base_frame} on {self._resolved(c.tf_topic)} "
                                    f"within {timeout_s} s (frames seen: {', '.join(frames) or 'none'}); is "
-                                   f"slam_toolbox or AMCL publishing map -> odom?")
+                                   f"slam_toolbox or AMCL publishing {c.map_frame} -> {c.odom_frame}?")
             time.sleep(_POLL_S)
 
     def get_map(self, timeout_s: float = DEFAULT_REQUEST_TIMEOUT_S) -> OccupancyGrid:
@@ -428,7 +431,7 @@ class Ros2Backend:
             task.finish(TaskStatus.CANCELED, f"{task.kind} canceled", self._pose_or_none())
             return False
         client, action_type = self._client(phase.action, phase.type_name)
-        wait_s = c.server_timeout_s if phase.action == "nav_action" else c.behavior_server_timeout_s
+        wait_s = c.connect_timeout_s if phase.action == "nav_action" else c.behavior_server_timeout_s
         if not self._wait_for_server(client, wait_s):
             task.finish(TaskStatus.FAILED, f"{task.kind}: the {name} action server ({phase.type_name}) is not "
                         f"available (waited {wait_s} s); is Nav2's "
