@@ -1,4 +1,7 @@
-"""Speed of prompt -> validated commands.
+"""Accuracy and speed of prompt -> validated commands.
+
+* the bench's figures (prompt accuracy, command F1, pose validity; as ``score.py`` counts them) for
+  the dev prompts and the SCOUT dev cases (real spoken commands), with the time per prompt;
 
 * per prompt on env2 with the analysis cached: the translator alone, grounding + validation alone,
   and the whole Planner.plan (target < 50 ms per prompt);
@@ -18,9 +21,11 @@ import sys
 import time
 from contextlib import redirect_stdout
 from pathlib import Path
+from typing import Final
 
 from langnav.errors import LangnavError
 from langnav.eval.cases import MapCache, load_cases
+from langnav.eval.metrics import CaseResult, ValidityMap, score_case, summarise
 from langnav.grounding import ground
 from langnav.language.translator import Context, get_translator
 from langnav.pipeline import Planner
@@ -28,6 +33,35 @@ from langnav.plan.validator import validate_plan
 
 BENCH = Path(__file__).resolve().parents[2] / "shared" / "bench"
 REPEATS = 20
+#: Case files scored by ``make bench`` (relative to the bench folder).
+SCORED: Final = ("prompts_dev.jsonl", "scout/cases_dev.jsonl")
+
+
+def score_file(cases_path: Path, translator: str) -> None:
+    """The bench's figures for one case file, each prompt planned (translated, grounded, validated)
+    and timed as ``langnav eval`` does it."""
+    cases = load_cases(cases_path)
+    maps = MapCache(cases_path.resolve().parent)
+    planner = Planner(get_translator(translator))
+    validity: dict[int, ValidityMap] = {}
+    results: list[CaseResult] = []
+    times: list[float] = []
+    for case in cases:
+        grid = maps.get(case)
+        planner.analysis_for(grid)  # analysed once per map, not timed as a prompt
+        t0 = time.perf_counter()
+        out = planner.plan(case.prompt, grid, case.pose).to_bench(case.id)
+        times.append(time.perf_counter() - t0)
+        results.append(score_case(case.model_dump(), out, validity.setdefault(id(grid), ValidityMap(grid))))
+    s = summarise(results)
+    ntp = "n/a" if s.ntp_validity is None else f"{s.ntp_validity:.4f}"
+    move = "n/a" if s.move_validity is None else f"{s.move_validity:.4f}"
+    ms = sorted(1000 * x for x in times)
+    print(f"{cases_path.relative_to(BENCH)}: {len(cases)} cases, prompt accuracy {s.prompt_accuracy:.4f}, "
+          f"command F1 {s.overall.f1:.4f} (P {s.overall.precision:.4f} R {s.overall.recall:.4f}), "
+          f"pose validity NTP {ntp} Move {move}")
+    print(f"  per prompt: median {statistics.median(ms):.2f} ms, p95 {ms[int(0.95 * (len(ms) - 1))]:.2f} ms, "
+          f"max {ms[-1]:.2f} ms   (target: median < 50 ms)")
 
 
 def main() -> int:
@@ -38,6 +72,12 @@ def main() -> int:
     if not args.cases.exists():
         print(f"skipped: {args.cases} not found (../shared/bench is not on this machine)")
         return 0
+    for name in SCORED:
+        path = BENCH / name
+        if path.exists():
+            score_file(path, args.translator)
+        else:
+            print(f"skipped: {path} not found")
     cases = load_cases(args.cases)
     maps = MapCache(args.cases.resolve().parent)
     translator = get_translator(args.translator)

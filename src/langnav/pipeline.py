@@ -33,11 +33,15 @@ from langnav.grounding.ground import (
     ground,
     ground_step,
 )
+from langnav.grounding.history import PoseHistory
 from langnav.language.errors import TranslationError
 from langnav.language.intent import Intent, Step
+from langnav.language.offline.ask import spatial
 from langnav.language.translator import Context, Translator, clean_prompt
 from langnav.maps.grid import OccupancyGrid
-from langnav.plan.commands import Command, to_bench
+from langnav.places.errors import PlaceError
+from langnav.places.store import MemoryPlaceStore, NamedPlace, PlaceStore
+from langnav.plan.commands import Command, NavigateThroughPoses, to_bench
 from langnav.plan.errors import PlanRejected
 from langnav.plan.validator import validate_plan
 
@@ -67,11 +71,16 @@ class PlanItem:
     _planner: Planner = field(repr=False, compare=False)
     #: the pose the whole prompt started from ("go back to where you started" goes there)
     origin: Pose | None = None
+    #: where the earlier steps of the prompt that moved the robot began ("back to where you were")
+    moved_from: tuple[Pose, ...] = ()
+    #: the prompt's way up to this step, as planned ("the door you just passed")
+    route: tuple[Point, ...] = ()
 
     def reground(self, pose: Pose | tuple[float, float, float], grid: OccupancyGrid | MapAnalysis) -> list[Command]:
         """This step's commands from the robot's pose ((x, y, yaw_deg) or Pose) and map of now.
         Raises GroundingError or PlanRejected with a readable reason."""
-        return self._planner.reground_step(self.step, pose, grid, self.index, origin=self.origin)
+        return self._planner.reground_step(self.step, pose, grid, self.index, origin=self.origin,
+                                           moved_from=self.moved_from, route=self.route)
 
 
 @dataclass(frozen=True)
@@ -107,16 +116,23 @@ class PlanResult:
 
 
 class Planner:
-    """Translator + map analysis (cached per grid object) + grounding + validation."""
+    """Translator + map analysis (cached per grid object) + grounding + validation.
+
+    ``places`` holds the places the user named ("call this spot the kitchen"; default: in memory,
+    give a ``JsonPlaceStore`` to keep them across restarts); ``history`` the way the robot drove this
+    session ("back to where you were", "the door you just passed"). Both may be shared by several
+    planners (the web app makes a new one when the translator changes)."""
 
     def __init__(self, translator: Translator, params: AnalysisParams = DEFAULT_PARAMS, *,
-                 analyzer: Analyzer = default_analyzer) -> None:
+                 analyzer: Analyzer = default_analyzer, places: PlaceStore | None = None,
+                 history: PoseHistory | None = None) -> None:
         self.translator = translator
         self.params = params
         self._analyzer = analyzer
         self._cache: weakref.WeakKeyDictionary[OccupancyGrid, MapAnalysis] = weakref.WeakKeyDictionary()
         self._lock = threading.Lock()
-        self.named_places: dict[str, Point] = {}
+        self.places: PlaceStore = places if places is not None else MemoryPlaceStore()
+        self.history: PoseHistory = history if history is not None else PoseHistory()
 
     # -- analysis ------------------------------------------------------------------------------
     def analysis_for(self, grid_or_analysis: OccupancyGrid | MapAnalysis) -> MapAnalysis:
@@ -133,11 +149,17 @@ class Planner:
             self._cache[grid_or_analysis] = analysis
         return analysis
 
-    def name_place(self, name: str, xy: Point) -> None:
-        """Remember a user's name for a place ("call this the kitchen")."""
-        if not name.strip() or not all(math.isfinite(v) for v in xy):
-            raise GroundingError("a place needs a name and a finite position")
-        self.named_places[name.strip().lower()] = (float(xy[0]), float(xy[1]))
+    @property
+    def named_places(self) -> dict[str, NamedPlace]:
+        """The named places now, by name as shown."""
+        return {p.name: p for p in self.places.all()}
+
+    def name_place(self, name: str, xy: Point, yaw_deg: float | None = None) -> NamedPlace:
+        """Remember a user's name for a spot ("call this the kitchen"). Raises PlaceError (a
+        LangnavError) for a bad name or position, saying why."""
+        if not all(math.isfinite(v) for v in xy):
+            raise PlaceError(f"a place needs a finite position, not {tuple(xy)}")
+        return self.places.put(NamedPlace.spot(name, float(xy[0]), float(xy[1]), yaw_deg))
 
     # -- planning ------------------------------------------------------------------------------
     def plan(self, prompt: str, grid_or_analysis: OccupancyGrid | MapAnalysis,
@@ -157,10 +179,12 @@ class Planner:
         name = getattr(self.translator, "name", "unknown")
         try:
             start = as_pose(pose)
+            self.history.observe(start)
             analysis = self.analysis_for(grid_or_analysis)
             text = clean_prompt(prompt)
+            named = {p.key: p for p in self.places.all()}
             ctx = Context(analysis=analysis, pose=(start.x_m, start.y_m, start.yaw_deg),
-                          known_names=tuple(self.named_places))
+                          known_names=tuple(p.name for p in named.values()))
             intent = self.translator.translate(text, ctx)
         except LangnavError as exc:
             return self._refusal(prompt, None, str(exc), name)
@@ -168,29 +192,60 @@ class Planner:
         if intent.clarification and not intent.steps:
             return self._refusal(prompt, intent, intent.clarification, name)
         try:
-            grounded = ground(intent, analysis, start, params=self.params, named_places=self.named_places)
+            grounded = ground(intent, analysis, start, params=self.params, named_places=named,
+                              history=self.history.view())
             checked = validate_plan(grounded.commands, analysis.grid, start, params=self.params,
                                     space=free_space_for(analysis.grid, self.params))
         except PlanRejected as exc:
             return self._refusal(prompt, intent, "I will not run that: " + "; ".join(exc.reasons) + ".", name)
         except GroundingError as exc:
             return self._refusal(prompt, intent, str(exc), name)
-        messages = [m for s in grounded.steps for m in s.messages]
+        doubtful = [u for u in intent.unread if spatial(u)]
+        if doubtful:
+            # ask, don't guess: words not read that could change where or how far the robot goes
+            return self._refusal(prompt, intent, unread_question(grounded, doubtful), name)
+        try:
+            messages = self._apply_place_changes(grounded)
+        except PlaceError as exc:
+            return self._refusal(prompt, intent, f"I could not change the named places: {exc}", name)
+        messages.extend(m for s in grounded.steps for m in s.messages)
         messages.extend(checked.repairs)
         if intent.clarification:
             messages.append(intent.clarification)
         if intent.unread:
             messages.append("I did not understand: " + "; ".join(f"'{u}'" for u in intent.unread))
         items = self._items(grounded, checked.commands)
+        if any(s.moves for s in grounded.steps):
+            self.history.planned(start, [p for it in items for p in _route_of(it.commands)])
         return PlanResult(prompt, intent, tuple(checked.commands), items, tuple(messages), None, name)
+
+    def _apply_place_changes(self, grounded: GroundedPlan) -> list[str]:
+        """Remember / forget the places the plan names, in order; what was done, in words."""
+        said: list[str] = []
+        for s in grounded.steps:
+            if s.name_place is not None:
+                place = self.places.put(s.name_place)
+                said.append(f"I will remember {s.note.removeprefix('remember ').rsplit(' as ', 1)[0]} as "
+                            f"'{place.name}'.")
+            elif s.forget_place is not None:
+                gone = self.places.remove(s.forget_place)
+                said.append(f"I forgot '{gone.name}'.")
+            elif s.list_places:
+                said.append(s.note[0].upper() + s.note[1:] + ".")
+        return said
 
     def _items(self, grounded: GroundedPlan, commands: tuple[Command, ...]) -> tuple[PlanItem, ...]:
         items: list[PlanItem] = []
         k = 0
+        moved_from: list[Pose] = []
+        route: list[Point] = [grounded.start_pose.xy]
         for s in grounded.steps:
             n = len(s.commands)
             items.append(PlanItem(s.index, s.step, tuple(commands[k:k + n]), s.note, s.explore, self,
-                                  grounded.start_pose))
+                                  grounded.start_pose, tuple(moved_from), tuple(route)))
+            if s.moves and math.dist(s.start_pose.xy, s.end_pose.xy) > 1e-3:
+                moved_from.append(s.start_pose)
+            route.extend(_route_of(s.commands) or [s.end_pose.xy])
             k += n
         return tuple(items)
 
@@ -200,16 +255,32 @@ class Planner:
 
     def reground_step(self, step: Step, pose: Pose | tuple[float, float, float],
                       grid_or_analysis: OccupancyGrid | MapAnalysis, index: int = 0, *,
-                      origin: Pose | None = None) -> list[Command]:
+                      origin: Pose | None = None, moved_from: tuple[Pose, ...] = (),
+                      route: tuple[Point, ...] = ()) -> list[Command]:
         """One step's commands from ``pose`` on the map of now, validated. ``origin`` is the pose the
-        prompt started from (for "go back"). Raises GroundingError / PlanRejected with a readable reason."""
+        prompt started from (for "go back"), ``moved_from`` where its earlier moving steps began and
+        ``route`` its way so far. Raises GroundingError / PlanRejected with a readable reason."""
         analysis = self.analysis_for(grid_or_analysis)
         start = as_pose(pose)
         ctx = GroundingContext(analysis, free_space_for(analysis.grid, self.params), self.params,
-                               dict(self.named_places), origin=origin)
+                               {p.key: p for p in self.places.all()}, origin=origin, history=self.history.view(),
+                               route=list(route), moved_from=list(moved_from))
         gs: GroundedStep = ground_step(step, ctx, start, index)
         checked = validate_plan(list(gs.commands), analysis.grid, start, params=self.params, space=ctx.space)
         return list(checked.commands)
+
+
+def _route_of(commands: tuple[Command, ...] | list[Command]) -> list[Point]:
+    return [(float(p[0]), float(p[1])) for c in commands if isinstance(c, NavigateThroughPoses) for p in c.poses]
+
+
+def unread_question(grounded: GroundedPlan, unread: list[str]) -> str:
+    """What was understood and what was not, as a question: nothing runs on a partial reading."""
+    notes = [s.note for s in grounded.steps if s.note]
+    understood = "; then ".join(notes) if notes else "nothing I can do"
+    words = "; ".join(f"'{u}'" for u in unread)
+    return (f"I understood: {understood}. But I did not understand {words}, which could change where I go or "
+            "how far, so I have not moved. Could you say it another way?")
 
 
 def bench_line(case_id: str, result: PlanResult) -> dict[str, Any]:

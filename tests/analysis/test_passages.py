@@ -3,14 +3,16 @@ sides is a passage; dead-end slots, slivers outside walls and laser-ray stripes 
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
+from scipy import ndimage as ndi
 
 from langnav.analysis.params import DEFAULT_PARAMS
 from langnav.analysis.passages import find_passages
 from langnav.analysis.pipeline import analyze, labels_for_free_components
 from langnav.analysis.precompute import GridLayers
 from langnav.maps.draw import MapBuilder
-from langnav.maps.grid import UNKNOWN, OccupancyGrid
+from langnav.maps.grid import OCCUPIED, UNKNOWN, OccupancyGrid
 
 P = DEFAULT_PARAMS
 #: Shelf-row warehouse: rows of shelves 0.4 m deep and 4 m long, 0.8 m apart, x from 2 to 6.
@@ -27,13 +29,13 @@ def passages_of(grid: OccupancyGrid):
 
 
 def warehouse(n_shelves: int = 4, unknown_racks: bool = False) -> OccupancyGrid:
-    """A 9 x 6 m hall; ``n_shelves`` shelf rows run east-west from x = 2 to 6, the first at
-    y = 1.0, each 0.4 m deep, 0.8 m apart: the aisles between them open at both ends into the
-    hall's 2 m wide cross aisles. ``unknown_racks``: the shelves are scanned only as their
+    """A 9 x 7 m hall; ``n_shelves`` shelf rows run east-west from x = 2 to 6, the first at
+    y = 1.5, each 0.4 m deep, 0.8 m apart: the aisles between them open at both ends into the
+    hall's 2 m wide cross aisles (and the hall is 1.5 m wide or more beside the outer rows). ``unknown_racks``: the shelves are scanned only as their
     unknown insides (racks the laser does not see into), not as occupied cells."""
-    b = MapBuilder(11.0, 8.0, origin=(-1.0, -1.0))
-    b.room(0.0, 0.0, 9.0, 6.0)
-    y = 1.0
+    b = MapBuilder(11.0, 9.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 9.0, 7.0)
+    y = 1.5
     for _ in range(n_shelves):
         if unknown_racks:
             b.unknown(SHELF_X[0], y, SHELF_X[1], y + SHELF_DEPTH_M)
@@ -44,7 +46,7 @@ def warehouse(n_shelves: int = 4, unknown_racks: bool = False) -> OccupancyGrid:
 
 
 def aisle_centres(n_shelves: int) -> list[tuple[float, float]]:
-    first = 1.0 + SHELF_DEPTH_M + AISLE_M / 2
+    first = 1.5 + SHELF_DEPTH_M + AISLE_M / 2
     return [(4.0, first + k * (SHELF_DEPTH_M + AISLE_M)) for k in range(n_shelves - 1)]
 
 
@@ -60,6 +62,24 @@ def test_aisles_between_shelf_rows_are_passages(unknown_racks: bool) -> None:
         assert y0 == pytest.approx(y, abs=0.05) and y1 == pytest.approx(y, abs=0.05)
         assert x0 == pytest.approx(SHELF_X[0], abs=0.3) and x1 == pytest.approx(SHELF_X[1], abs=0.3)
         assert p.length_m == pytest.approx(x1 - x0, abs=0.06)
+
+
+def rotated(grid: OccupancyGrid, degrees: float) -> OccupancyGrid:
+    """The grid turned by ``degrees`` about its centre, cell by cell (nearest cell; the corners
+    it uncovers are unknown): walls become stair-stepped lines, as in a real map at an angle."""
+    cells = ndi.rotate(grid.cells.astype(np.int16) + 1, degrees, order=0, reshape=True, cval=0) - 1
+    return OccupancyGrid(cells.astype(np.int8), grid.resolution_m, source=f"{grid.source}_rotated")
+
+
+@pytest.mark.parametrize("degrees", [5.0, 10.0, 23.0, 45.0, 80.0])
+def test_aisles_of_a_rotated_warehouse_are_passages(degrees: float) -> None:
+    # The same three aisles, whatever the angle: stair-stepped walls leave no comb of false
+    # crests that would cut an aisle's line short.
+    found = passages_of(rotated(warehouse(4), degrees))
+    assert len(found) == 3
+    for p in found:
+        assert p.width_m == pytest.approx(AISLE_M, abs=0.051)
+        assert p.length_m == pytest.approx(SHELF_X[1] - SHELF_X[0], abs=0.15)
 
 
 def test_warehouse_end_to_end_aisles_are_passages_not_doors() -> None:
@@ -137,7 +157,35 @@ def test_unknown_inside_furniture_bounds_a_passage_but_the_outside_does_not() ->
     (p,) = passages_of(grid)
     assert p.width_m == pytest.approx(AISLE_M, abs=0.051)
     # Open the north rack's unknown to the grid edge (it is then the unscanned world, not a rack).
-    r0, c0 = (int(v) for v in grid.world_to_index(4.0, 2.6))
+    r0, c0 = (int(v) for v in grid.world_to_index(4.0, 3.1))
     cells[r0:, c0] = UNKNOWN
     opened = OccupancyGrid(cells, grid.resolution_m, grid.origin_x_m, grid.origin_y_m, 0.0, "opened")
     assert passages_of(opened) == ()
+
+
+def passage_with_doorway() -> OccupancyGrid:
+    """Two 3 x 4 m halls joined by a wall-bounded passage 0.9 m wide and 2.5 m long (x 3 to 5.5,
+    y 1.0 to 1.9); its south wall has a 1 m doorway (x 3.75 to 4.75) into a closet."""
+    b = MapBuilder(11.0, 8.0, origin=(-1.0, -2.5))
+    b.rect(-0.15, -1.65, 8.65, 4.15, OCCUPIED)
+    b.free(0.0, 0.0, 3.0, 4.0).free(5.5, 0.0, 8.5, 4.0)
+    b.free(2.9, 1.0, 5.6, 1.9)
+    b.free(3.5, -1.5, 5.0, 0.85).free(3.75, 0.8, 4.75, 1.05)
+    return b.build(source="passage_with_doorway")
+
+
+def test_passage_with_a_doorway_in_its_side_wall() -> None:
+    (p,) = passages_of(passage_with_doorway())
+    assert p.center == pytest.approx((4.25, 1.45), abs=0.06)
+    assert p.width_m == pytest.approx(0.9, abs=0.051)
+    assert p.length_m == pytest.approx(2.5, abs=0.15)
+
+
+def test_strip_beside_a_row_of_separate_boxes_is_no_passage() -> None:
+    # A 0.8 m strip between a room's north wall and a row of 0.5 m boxes 0.5 m apart: the
+    # strip's south side is a row of gaps, no wall with a doorway.
+    b = MapBuilder(10.0, 7.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 8.0, 5.0)
+    for x in np.arange(1.0, 7.0, 1.0):
+        b.box(float(x), 3.7, float(x) + 0.5, 4.2)
+    assert passages_of(b.build(source="box_row")) == ()

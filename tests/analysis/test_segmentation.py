@@ -330,7 +330,8 @@ def test_an_opening_too_narrow_for_the_robot_is_a_narrow_door() -> None:
 
 def test_a_wide_gap_in_a_straight_wall_separates_two_rooms() -> None:
     """Two 6 x 6 m rooms whose shared wall has a 2.2 m opening (wider than any door): the wall
-    runs on straight past both ends of the gap, so they are two rooms joined by that opening."""
+    runs on straight past both ends of the gap, so they are two rooms joined by that opening,
+    which is an opening between them, not a door a person would count."""
     b = MapBuilder(13.5, 7.0)
     b.room(0.5, 0.5, 6.5, 6.5).room(6.65, 0.5, 12.65, 6.5).door_v(6.575, 3.5, 2.2)
     grid = b.build()
@@ -338,8 +339,10 @@ def test_a_wide_gap_in_a_straight_wall_separates_two_rooms() -> None:
     west, east = room_by_point(seg, grid, 3.0, 3.5), room_by_point(seg, grid, 10.0, 3.5)
     assert west.id != east.id
     assert west.area_m2 == pytest.approx(36.0, rel=0.03)
-    assert len(seg.doors) == 1
-    d = seg.doors[0]
+    assert seg.doors == ()
+    assert len(seg.openings) == 1
+    d = seg.openings[0]
+    assert d.id == "opening_1"
     assert set(d.connects) == {west.id, east.id}
     assert d.center == pytest.approx((6.575, 3.5), abs=POS_TOL_M)
     assert d.width_m == pytest.approx(2.2, abs=POS_TOL_M)
@@ -347,6 +350,7 @@ def test_a_wide_gap_in_a_straight_wall_separates_two_rooms() -> None:
     one = segment_spaces(grid, AnalysisParams(seg_wall_gap_max_width_m=0.0))
     assert len(one.rooms) == 1
     assert one.doors == ()
+    assert one.openings == ()
 
 
 

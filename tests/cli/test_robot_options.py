@@ -13,7 +13,7 @@ from langnav.cli import build_parser, main
 from langnav.cli.robot_options import ROBOT_OPTIONS, add_robot_arguments, robot_options
 from langnav.robot.errors import RobotError
 from langnav.robot.protocol import create_backend
-from langnav.robot.rosbridge_server import RosbridgeServer
+from langnav.robot.ros.rosbridge_server import RosbridgeServer
 
 
 def _parse(*argv: str) -> argparse.Namespace:
@@ -105,3 +105,19 @@ def test_run_reaches_the_robot_named_by_the_environment(served_sim: int, monkeyp
     monkeypatch.setenv("LANGNAV_ROBOT_OPTIONS", "odom_frme=odom")
     assert main(["run", "where am I"]) == 2
     assert "invalid rosbridge option(s): odom_frme: Extra inputs are not permitted" in capsys.readouterr().err
+
+
+def test_run_says_loudly_when_a_stop_was_not_confirmed(capsys: pytest.CaptureFixture[str]) -> None:
+    from langnav.cli.run import _confirm_stop, _Printer
+    from langnav.robot.protocol import StopConfirmable
+
+    class Unconfirmed:
+        def wait_stopped(self, timeout_s: float | None = None) -> None:
+            raise RobotError("THE ROBOT MAY STILL BE MOVING: stop it at the robot")
+
+    robot: Any = Unconfirmed()
+    assert isinstance(robot, StopConfirmable)
+    _confirm_stop(_Printer(as_json=False), robot)
+    assert capsys.readouterr().out == "WARNING: THE ROBOT MAY STILL BE MOVING: stop it at the robot\n"
+    _confirm_stop(_Printer(as_json=True), robot)
+    assert '"event": "stop_unconfirmed"' in capsys.readouterr().out

@@ -14,7 +14,7 @@ from langnav.cli import main
 from langnav.maps.draw import MapBuilder
 from langnav.maps.io import save_map
 from langnav.robot.protocol import create_backend
-from langnav.robot.rosbridge_server import RosbridgeServer, RosbridgeServerConfig
+from langnav.robot.ros.rosbridge_server import RosbridgeServer, RosbridgeServerConfig
 
 
 @pytest.fixture

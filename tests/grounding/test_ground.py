@@ -131,7 +131,7 @@ def test_named_place_remembered(two_rooms: MapAnalysis) -> None:
 
 @pytest.mark.parametrize(("steps", "message"), [
     ([step(movement="navigate", target={"kind": "door", "ordinal": 5})], "only two doors"),
-    ([step(movement="navigate", target={"kind": "room", "name": "kitchen"})], "don't know where 'kitchen'"),
+    ([step(movement="navigate", target={"kind": "room", "name": "kitchen"})], "don't know a place called 'kitchen'; name it first"),
     ([step(movement="navigate", target={"kind": "narrow_passage"})], "no narrow passages"),
     ([step(movement="move", direction="forward", distance_m=9)], "into a wall.*after about 7.8 m"),
     ([step(movement="move", direction="right", distance_m=1.5)], "into a wall"),

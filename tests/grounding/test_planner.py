@@ -101,10 +101,10 @@ def test_analysis_is_computed_once_per_grid(world: MapAnalysis) -> None:
 def test_named_places(world: MapAnalysis) -> None:
     planner = Planner(Fixed({"kitchen": Intent(steps=[Step.model_validate(
         {"movement": "navigate", "target": {"kind": "room", "name": "kitchen"}})])}))
-    assert "don't know where 'kitchen'" in (planner.plan("kitchen", world, AT_A).clarification or "")
+    assert "don't know a place called 'kitchen'" in (planner.plan("kitchen", world, AT_A).clarification or "")
     planner.name_place("Kitchen", (9.0, 3.0))
     r = planner.plan("kitchen", world, AT_A)
-    assert r.ok and r.commands[0].note == "to kitchen"
+    assert r.ok and r.commands[0].note == "to 'Kitchen'"
 
 
 def _case_file(tmp_path: Path, world: MapAnalysis) -> Path:

@@ -90,7 +90,7 @@ def test_coming_back_without_a_known_start_is_refused(two_rooms: MapAnalysis) ->
 
     step = translate_offline("go to the box, then come back").steps[1]
     ctx = GroundingContext(two_rooms, free_space_for(two_rooms.grid, DEFAULT_PARAMS), DEFAULT_PARAMS, {})
-    with pytest.raises(GroundingError, match="where this instruction started"):
+    with pytest.raises(GroundingError, match="don't know where I started"):
         ground_step(step, ctx, Pose.from_deg(*AT_A))
 
 

@@ -35,8 +35,8 @@ from langnav.robot.protocol import (
     create_backend,
 )
 from langnav.robot.ros import messages as rm
-from langnav.robot.rosbridge_backend import RosbridgeBackend
-from langnav.robot.rosbridge_server import RosbridgeServer, RosbridgeServerConfig
+from langnav.robot.ros.rosbridge_backend import RosbridgeBackend
+from langnav.robot.ros.rosbridge_server import RosbridgeServer, RosbridgeServerConfig
 
 #: The simulated clock runs this many times faster than the wall clock in these tests.
 SIM_SPEED = 4.0
@@ -485,5 +485,5 @@ def test_rosout_carries_the_servers_log(sim_served: tuple[Served, RosbridgeBacke
         else:
             raise AssertionError("no /rosout record of the refusal within 5 s")
     log_msg = reply["msg"]
-    assert (reply["topic"], log_msg["level"], log_msg["name"]) == ("/rosout", 20, "langnav.robot.rosbridge_server")
+    assert (reply["topic"], log_msg["level"], log_msg["name"]) == ("/rosout", 20, "langnav.robot.ros.rosbridge_server")
     assert log_msg["function"] == "_status" and log_msg["line"] > 0

@@ -29,7 +29,7 @@ from langnav.plan.executor import PlanExecutor
 from langnav.robot.errors import RobotError, RobotTimeout
 from langnav.robot.protocol import TaskStatus, create_backend
 from langnav.robot.ros import messages as rm
-from langnav.robot.rosbridge_backend import (
+from langnav.robot.ros.rosbridge_backend import (
     MAP_RESUBSCRIBE_S,
     STOP_HOLD_RATE_HZ,
     RosbridgeBackend,

@@ -9,7 +9,7 @@ import pytest
 from langnav.robot import RobotTimeout, TaskStatus
 from langnav.robot.protocol import Pose2D
 from langnav.robot.ros.backend import _Ros2Task
-from langnav.robot.rosbridge_backend import _Task
+from langnav.robot.ros.rosbridge_backend import _Task
 from langnav.robot.task_state import ReportedTask
 
 

@@ -13,7 +13,7 @@ from langnav.robot.protocol import TaskStatus
 
 
 def _backend(port: int, closer: Callable[[Any], Any]) -> Any:
-    from langnav.robot.rosbridge_backend import RosbridgeBackend, RosbridgeConfig
+    from langnav.robot.ros.rosbridge_backend import RosbridgeBackend, RosbridgeConfig
 
     return closer(RosbridgeBackend(RosbridgeConfig(host="127.0.0.1", port=port, connect_timeout_s=20.0)))
 

@@ -195,6 +195,9 @@ class MapAnalysis:
     narrow_passages: tuple[NarrowPassage, ...]
     unexplored: tuple[UnexploredArea, ...]
     labels: npt.NDArray[np.int32] = field(repr=False)
+    #: Openings between two spaces wider than a door (an arch, an open front in a wall line):
+    #: ways between the spaces (in the graph), not doors a person would count.
+    openings: tuple[Door, ...] = ()
 
     @property
     def elements(self) -> tuple[Element, ...]:
@@ -221,9 +224,10 @@ class MapAnalysis:
         return self.room_by_label(int(self.labels[int(r), int(c)]))
 
     def graph(self) -> dict[str, list[tuple[str, str]]]:
-        """Spaces and the doors between them: space id -> [(door id, other space id)]."""
+        """Spaces and the doors (and wide openings) between them: space id -> [(door id, other
+        space id)]."""
         g: dict[str, list[tuple[str, str]]] = {r.id: [] for r in self.rooms}
-        for d in self.doors:
+        for d in (*self.doors, *self.openings):
             if len(d.connects) == 2:
                 a, b = d.connects
                 g.setdefault(a, []).append((d.id, b))
@@ -241,6 +245,7 @@ class MapAnalysis:
                     "resolution": g.resolution_m, "origin": [g.origin_x_m, g.origin_y_m, g.origin_yaw_rad]},
             "rooms": [r.to_json() for r in self.rooms],
             "doors": [d.to_json() for d in self.doors],
+            "openings": [d.to_json() for d in self.openings],
             "walls": [w.to_json() for w in self.walls],
             "corners": [c.to_json() for c in self.corners],
             "obstacles": [o.to_json() for o in self.obstacles],

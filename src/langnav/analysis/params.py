@@ -109,6 +109,18 @@ class AnalysisParams:
     seg_claim_free_m: float = 3.0
     #: Segmentation: clearance (m) below which a free cell cannot start a space (about a robot radius).
     seg_min_peak_m: float = 0.15
+    # -- unexplored areas a person would send the robot to look at (not furniture insides) --
+    #: An unknown region is worth a trip from this size (m2): a square about two robot widths
+    #: across (0.7 m), room for the robot to drive in and turn; smaller pockets are the shadows
+    #: of table legs and clutter (the bench README's 0.05 m2 specks are noise in any case).
+    unexplored_worth_area_m2: float = 0.5
+    #: ... and when the robot can come up to this much of its frontier in one opening (m of a
+    #: connected run of frontier cells within a robot radius of where the robot fits): an opening
+    #: it can look or drive through, as wide as the robot plus a margin (explore.py's smallest
+    #: frontier worth a trip). Laser holes in a wall, and the gaps in the scanned outline of a
+    #: shelf or a cabinet whose inside is unknown, are narrower. (The outside world: this much
+    #: frontier within reach in all.)
+    unexplored_min_frontier_m: float = 0.4
     #: Straight wall segments shorter than this are not reported.
     wall_min_length_m: float = 0.5
     #: Maximum deviation of wall points from their fitted segment.

@@ -6,9 +6,10 @@ width is between the robot's diameter and ``params.passage_max_width_m`` form ca
 A chain's *core* is where the width stays close to its narrowest (the stretch between two
 parallel sides, without the flaring mouths). A core is a passage when it is longer than
 ``params.passage_min_length_m`` and clearly longer than wide (a short gap beside a chair is a
-gap, not a passage), wide enough for the robot with a margin, has solid sides along most of its
-length (walls, furniture, a shelf's unscanned inside: not laser-ray stripes of unknown, nor the
-unscanned world beyond a sliver outside a wall), leads somewhere (both mouths open into free
+gap, not a passage), wide enough for the robot with a margin, has sides along most of its
+length (or a wall along one side and a single doorway in the other: a passage with a door off
+it), solid ones (walls, furniture, a shelf's unscanned inside: not laser-ray stripes of unknown,
+nor the unscanned world beyond a sliver outside a wall), leads somewhere (both mouths open into free
 space wider than any passage: a dead-end slot does not), and it is not a doorway. A passage
 along a wall (between the wall and a long shelf) shares its skeleton line with the one-sided
 strip along the rest of the room's walls: a core without sides along most of its length is
@@ -32,6 +33,7 @@ from langnav.analysis.precompute import (
     GridLayers,
     component_boxes,
     cov2,
+    dilate8,
     label8_cells,
     median,
     truncated_sq_edt,
@@ -47,8 +49,15 @@ CORE_WIDTH_TOL_M: Final = 0.15
 #: A passage has sides: at this share of its core, blocking cells lie close on both sides (a
 #: strip along a wall whose other side is a row of separate objects is not a passage).
 MIN_BOUNDED_FRACTION: Final = 0.7
+#: ... or, walled on one side along this share, with one doorway in the other side.
+DOORWAY_WALL_FRACTION: Final = 0.9
+#: Open stretches of a side up to this long (cells) are scan noise, not a doorway.
+DOORWAY_MIN_GAP_CELLS: Final = 3
 #: "Close" for a side: within the half-width plus this.
 SIDE_TOL_M: Final = 0.15
+#: The middle line of a strip: the distance to its sides falls by at least this (cells) two
+#: steps away on both sides (about two across it; half a cell along a stair-stepped wall).
+CREST_DROP_CELLS: Final = 1.0
 #: A passage axis within this (degrees) of a grid axis is taken as that axis: pixel noise tilts
 #: the fitted axis of a straight passage by a degree or two.
 AXIS_SNAP_DEG: Final = 3.0
@@ -114,9 +123,11 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     width_of = 2.0 * dist_of - res
     band_of = (width_of > 2.0 * params.robot_radius_m) & (width_of <= params.passage_max_width_m)
     band = sub & band_of[d2]
-    # The medial axis within the band: ridge cells of the distance map (a local maximum across
-    # some direction), thinned to one cell. Cheaper than skeletonising all free space.
-    skel = skeletonize(band & _ridge(d2))
+    # The medial axis within the band: crest cells of the distance map (clearly higher than the
+    # cells two steps away on both sides, across some direction), a cell thicker (to bridge the
+    # sideways step of the crest where a side has a bump), thinned to one cell. Cheaper than
+    # skeletonising all free space.
+    skel = skeletonize(band & dilate8(_crest(d2)))
     # Chains of the skeleton (8-connected), labelled from its few cells, not the whole window.
     idx = np.flatnonzero(skel)
     cid, n = label8_cells(idx, skel.shape)
@@ -186,30 +197,34 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                                          [np.array([-m[5][1], m[5][0]]) for m in measured], SIDE_TOL_M / res)
         for (rr, cc, across, pts, mean, axis, proj, length_m), sides in zip(measured, side_sets, strict=True):
             bounded = np.isfinite(sides).all(axis=1)
-            if bounded.mean() < MIN_BOUNDED_FRACTION:
+            if not _sides_hold(sides, proj, params.door_max_width_m / res):
                 if across is not None and len(rr) * math.sqrt(2) >= min_cells:
                     retry_r.append(rr[across])
                     retry_c.append(cc[across])
                 continue
             # Width: across the passage between its two sides (exact for axis-aligned sides).
             width_m = (median(sides[bounded].sum(axis=1)) - 0.5) * res
+            # It runs where it has two sides: not on into its flaring mouths.
+            lo, hi = float(proj[bounded].min()), float(proj[bounded].max())
+            length_m = (hi - lo + 1.0) * res
             if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * width_m:
                 continue
-            # Wide enough for the robot to pass (the band's test used the skeleton's width, up to
-            # a cell off).
-            if width_m < 2.0 * (params.robot_radius_m + PASSAGE_SIDE_MARGIN_M):
+            # Wide enough for the robot to pass, and narrow (the band's test used the skeleton's
+            # width, up to a cell off).
+            if width_m < 2.0 * (params.robot_radius_m + PASSAGE_SIDE_MARGIN_M) or width_m > params.passage_max_width_m:
                 continue
-            # Between two things: both sides solid along most of it, not laser-ray stripes.
+            # Between two things: both sides solid along most of its two-sided length, not
+            # laser-ray stripes.
             normal = np.array([-axis[1], axis[0]])
             solid = _solid_sides(sub, occupied[r0:r1, c0:c1], exterior[r0:r1, c0:c1], pts, normal, sides, SOLID_UNKNOWN_DEPTH_M / res)
-            if solid.mean() < MIN_BOUNDED_FRACTION:
+            if np.count_nonzero(solid) < MIN_BOUNDED_FRACTION * np.count_nonzero(bounded):
                 continue
-            ends_g = [mean + proj.min() * axis, mean + proj.max() * axis]
+            ends_g = [mean + lo * axis, mean + hi * axis]
             # It leads somewhere: both mouths open into free space wider than any passage.
             if not all(_opens_into_space(sub, e, sign * axis, res, params)
                        for sign, e in zip((-1.0, 1.0), ends_g, strict=True)):
                 continue
-            centre_g = mean + 0.5 * (proj.min() + proj.max()) * axis
+            centre_g = mean + 0.5 * (lo + hi) * axis
             cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
             centre = (float(cx), float(cy))
             if any(math.dist(centre, d.center) <= d.width_m / 2 + params.door_max_depth_m for d in doors):
@@ -235,6 +250,23 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             two_r, two_c = _two_sided(sub, long_r, long_c, dist_of[d2[long_r, long_c]] / res, SIDE_TOL_M / res)
             pieces = [(pr, pc, None) for pr, pc in _pieces(two_r, two_c, sub.shape, min_cells)]
     return tuple(passages)
+
+
+def _crest(d2: npt.NDArray[np.integer]) -> BoolArray:
+    """Cells whose distance (square root of ``d2``, in cells) exceeds that of both cells two
+    steps away along one of the four directions by ``CREST_DROP_CELLS``: the middle line of a
+    strip between two sides (the distance falls by about a cell a step on both sides of it),
+    not a plateau along one wall, nor the ripples of a stair-stepped slanted wall (half a cell)."""
+    d = np.sqrt(d2.astype(np.float32))
+    h, w = d.shape
+    p = np.pad(d, 2, mode="constant", constant_values=0)
+    # Two steps along each direction: rows (dr), columns (dc).
+    highest = np.full(d.shape, np.inf, dtype=np.float32)
+    for dr, dc in ((2, 0), (0, 2), (2, 2), (2, -2)):
+        a = p[2 + dr:2 + dr + h, 2 + dc:2 + dc + w]
+        b = p[2 - dr:2 - dr + h, 2 - dc:2 - dc + w]
+        np.minimum(highest, np.maximum(a, b), out=highest)
+    return (d - highest >= CREST_DROP_CELLS) & (d > 0)
 
 
 def _ridge(d: npt.NDArray[np.integer] | npt.NDArray[np.floating]) -> BoolArray:
@@ -372,6 +404,35 @@ def _side_distances_each(open_: BoolArray, pts: Sequence[npt.NDArray[np.float64]
         out.extend(np.split(sides, np.cumsum(sizes)[:-1]))
         i = j
     return out
+
+
+def _sides_hold(sides: npt.NDArray[np.float64], proj: npt.NDArray[np.float64], door_cells: float) -> bool:
+    """Has a piece sides along it (``sides``: per point, the distances to either side, ``inf``
+    where open; ``proj``: the points' positions along the axis, cells)? Between its first and
+    last two-sided points (not in its flaring mouths): two-sided along ``MIN_BOUNDED_FRACTION``
+    of it, or walled on one side along ``DOORWAY_WALL_FRACTION`` with the other side open in a
+    single doorway (at most ``door_cells`` long; a passage with a door off it), not in a row of
+    gaps (a strip along a wall beside separate objects)."""
+    both = np.isfinite(sides).all(axis=1)
+    if not both.any():
+        return False
+    inside = (proj >= proj[both].min()) & (proj <= proj[both].max())
+    s, p = sides[inside], proj[inside]
+    if np.isfinite(s).all(axis=1).mean() >= MIN_BOUNDED_FRACTION:
+        return True
+    order = np.argsort(p, kind="stable")
+    p = p[order]
+    for j in (0, 1):
+        wall, other = np.isfinite(s[order, j]), np.isfinite(s[order, 1 - j])
+        if wall.mean() < DOORWAY_WALL_FRACTION or other.mean() < 0.5:
+            continue
+        # The open stretches of the other side, by their extent along the axis.
+        edges = np.flatnonzero(np.diff(np.concatenate(([1], other.astype(np.int8), [1]))))
+        gaps = [float(p[b - 1] - p[a]) + 1.0 for a, b in zip(edges[::2], edges[1::2], strict=True)]
+        real = [g for g in gaps if g > DOORWAY_MIN_GAP_CELLS]
+        if len(real) == 1 and real[0] <= door_cells:
+            return True
+    return False
 
 
 def _solid_sides(open_: BoolArray, occupied: BoolArray, outside: BoolArray, pts: npt.NDArray[np.float64],

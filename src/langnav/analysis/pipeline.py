@@ -64,7 +64,7 @@ def analyze(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS) -> Map
     doors = tuple(_resolve_door(d, grid, unx) for d in seg.doors)
     return MapAnalysis(grid=grid, params=params, rooms=rooms, doors=doors, walls=walls,
                        corners=corners, obstacles=obst.obstacles, narrow_passages=passages,
-                       unexplored=unx.areas, labels=labels)
+                       unexplored=unx.areas, labels=labels, openings=seg.openings)
 
 
 def _resolve_door(door: Door, grid: OccupancyGrid, unx: UnexploredResult) -> Door:

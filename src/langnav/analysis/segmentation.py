@@ -8,7 +8,8 @@ After the split, each space takes the rest of its floor: the scanned cells too t
 (laser rays across an unscanned part of a room, broken into dashes: they join the space they
 reach without crossing a wall), then the unknown those rays and its walls enclose, its small
 enclosed pockets, and the unscanned notches between its rays. Openings between two spaces that
-are too narrow for the robot are reported apart (``Segmentation.narrow_doors``).
+are too narrow for the robot are reported apart (``Segmentation.narrow_doors``), and so are
+openings wider than a door that still bound two spaces (``Segmentation.openings``).
 Every threshold is a named parameter in metres (:class:`AnalysisParams`), so the result does
 not depend on the grid's resolution.
 """
@@ -89,6 +90,9 @@ class Segmentation:
     #: Openings between two spaces too narrow for the robot (see NARROW_DOOR_MIN_WIDTH_M): doors
     #: to a person, never a way through for the robot; not in ``doors``.
     narrow_doors: tuple[Door, ...] = ()
+    #: Openings between two spaces wider than a door (``door_max_width_m``) that still bound them
+    #: (a gap in a wall line: an arch, an open front): ways between the spaces, not doors.
+    openings: tuple[Door, ...] = ()
 
     def room_by_label(self, label: int) -> Room | None:
         for r in self.rooms:
@@ -123,7 +127,8 @@ def segment_spaces(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS,
     seg = _segment_at_working_resolution(sub, params)
     labels = np.zeros(grid.cells.shape, dtype=np.int32)
     labels[r0:r1, c0:c1] = seg.labels
-    return Segmentation(labels=labels, rooms=seg.rooms, doors=seg.doors, narrow_doors=seg.narrow_doors)
+    return Segmentation(labels=labels, rooms=seg.rooms, doors=seg.doors, narrow_doors=seg.narrow_doors,
+                        openings=seg.openings)
 
 
 def _segment_at_working_resolution(grid: OccupancyGrid, params: AnalysisParams,
@@ -151,7 +156,8 @@ def _segment_at_working_resolution(grid: OccupancyGrid, params: AnalysisParams,
     objs = ndi.find_objects(labels)
     rooms = tuple(_measured_at(grid, labels, r, objs[r.label - 1]) for r in seg.rooms
                   if r.label <= len(objs) and objs[r.label - 1] is not None)
-    return Segmentation(labels=labels, rooms=rooms, doors=seg.doors, narrow_doors=seg.narrow_doors)
+    return Segmentation(labels=labels, rooms=rooms, doors=seg.doors, narrow_doors=seg.narrow_doors,
+                        openings=seg.openings)
 
 
 def _measured_at(grid: OccupancyGrid, labels: npt.NDArray[np.int32], room: Room,
@@ -188,18 +194,24 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     between = doors_between(labels, fl.clearance_m, res, params,
                             min_width_m=min(NARROW_DOOR_MIN_WIDTH_M, params.door_min_width_m))
     passable = params.door_min_width_m - res
-    raw_doors = [d for d in between if d.width_m >= passable]
+    # Wider than a double door: a gap in a wall line that bounds two spaces (an arch, an open
+    # front), an opening between them but no door a person would count.
+    widest = params.door_max_width_m + res
+    raw_doors = [d for d in between if passable <= d.width_m <= widest]
     raw_narrow = [d for d in between if d.width_m < passable]
+    raw_wide = [d for d in between if d.width_m > widest]
     peaks = label_max(labels, fl.clearance_m)  # the widest clearance of each space
     raw_doors += openings_to_unknown(labels, fl.floor, exterior, occupied,
                                      fl.clearance_m, res, params, peaks)
-    openings = np.bincount(np.array([x for d in raw_doors for x in (d.a, d.b) if x > 0], dtype=np.int64),
+    openings = np.bincount(np.array([x for d in raw_doors + raw_wide for x in (d.a, d.b) if x > 0], dtype=np.int64),
                            minlength=int(labels.max()) + 1)
     rooms = _rooms(grid, labels, fl, params, peaks, openings)
     ids = {r.label: r.id for r in rooms}
     doors = _doors(grid, raw_doors, ids)
     narrow = _doors(grid, raw_narrow, ids, prefix="narrow_door")
-    return Segmentation(labels=labels, rooms=tuple(rooms), doors=tuple(doors), narrow_doors=tuple(narrow))
+    wide = _doors(grid, raw_wide, ids, prefix="opening")
+    return Segmentation(labels=labels, rooms=tuple(rooms), doors=tuple(doors), narrow_doors=tuple(narrow),
+                        openings=tuple(wide))
 
 
 def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor, grid: OccupancyGrid,

@@ -1,22 +1,36 @@
-"""Unexplored areas: connected unknown regions that border free space, with their frontier.
+"""Unexplored areas: the unknown regions a person would send the robot to look at, with their frontier.
 
 The unknown world outside the building (every unknown region touching the grid border) is one
-area, ``interior=False``, and counts only where an opening leads into it (it borders free space).
-Unknown specks smaller than ``params.unexplored_min_area_m2`` are scanner noise, not areas, and
-unknown cells inside a wall (touching no free cell) are not areas either.
+area, ``interior=False``, and counts only where an opening the robot can reach leads into it.
+An unknown region inside the map is an area when it is worth a trip: at least
+``params.unexplored_worth_area_m2`` large, with at least ``params.unexplored_min_frontier_m`` of
+frontier the robot can come up to in one opening (a door, a room's open side: not the gaps in the
+scanned outline of a shelf, a cabinet or a pallet whose inside is unknown, nor laser holes).
+Unknown specks smaller than
+``params.unexplored_min_area_m2`` are scanner noise (navigable for clearance purposes); unknown
+cells inside a wall (touching no free cell) and the other pockets are no areas.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Final
 
 import numpy as np
 import numpy.typing as npt
+from scipy import ndimage as ndi
 
 from langnav.analysis.elements import UnexploredArea
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import EIGHT, GridLayers, border_labels, dilate8, nonzero2
+from langnav.analysis.precompute import (
+    EIGHT,
+    GridLayers,
+    border_labels,
+    dilate8,
+    label8_cells,
+    nonzero2,
+)
 from langnav.maps.grid import OccupancyGrid
 
 __all__ = ["EIGHT", "NEIGHBOURS_8", "UnexploredResult", "adjacent_pairs", "border_labels",
@@ -24,6 +38,10 @@ __all__ = ["EIGHT", "NEIGHBOURS_8", "UnexploredResult", "adjacent_pairs", "borde
 
 #: The eight neighbour offsets (d_row, d_col).
 NEIGHBOURS_8: Final = ((-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1))
+
+#: The outside world's frontier is tested this many cells at a time (consecutive cells: a band
+#: of rows, a small window) until enough of it is within the robot's reach.
+OUTSIDE_CHUNK_CELLS: Final = 2000
 
 BoolArray = npt.NDArray[np.bool_]
 IntArray = npt.NDArray[np.int32]
@@ -100,13 +118,14 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     pairs = adjacent_pairs(layers.free, lab)
     touches = np.zeros(n + 1, dtype=bool)
     touches[pairs[:, 1]] = True
+    worth = _worth_a_trip(grid, params, layers, lab, n, sizes, pairs)
 
     # Map component label -> area index (1-based); all outside components share one index.
     area_of = np.zeros(n + 1, dtype=np.int32)
-    interior_ids = np.flatnonzero(touches & ~outside & (sizes >= min_cells))
+    interior_ids = np.flatnonzero(touches & ~outside & (sizes >= min_cells) & worth)
     interior_ids = interior_ids[interior_ids > 0]
     area_of[interior_ids] = np.arange(1, len(interior_ids) + 1, dtype=np.int32)
-    has_outside = bool((touches & outside).any())
+    has_outside = bool((touches & outside & worth).any())
     if has_outside:
         area_of[outside] = len(interior_ids) + 1
     n_areas = len(interior_ids) + int(has_outside)
@@ -154,3 +173,83 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
             interior=not (has_outside and k == n_areas),
         ))
     return UnexploredResult(tuple(areas), area_labels, exterior, specks)
+
+
+def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, lab: IntArray, n: int,
+                  sizes: npt.NDArray[np.int64], pairs: npt.NDArray[np.int64]) -> BoolArray:
+    """Per unknown component (index = label): would a person send the robot to look at it? For
+    the outside world (all its components together): does the robot reach enough of its
+    frontier? For a region inside the map: big enough, and seen through an opening the robot
+    can reach rather than through gaps in a scanned outline (see the module docstring)."""
+    outside = layers.unknown_outside
+    inside = ~outside
+    inside[0] = False
+    candidate = np.zeros(n + 1, dtype=bool)
+    candidate[inside] = sizes[inside] * grid.cell_area_m2 >= params.unexplored_worth_area_m2
+    res = grid.resolution_m
+    need = math.ceil(params.unexplored_min_frontier_m / res - 1e-9)
+    worth = np.zeros(n + 1, dtype=bool)
+    # The outside world: enough of its frontier (all its pieces together) within reach, tested
+    # in chunks of consecutive cells (a band of rows each, a small window) until enough.
+    # Frontier cells that see the region across an edge (4-neighbours), not only through the
+    # corner between two occupied cells of a diagonal outline, which no scan passes.
+    pairs = pairs[_edge_adjacent(lab, pairs)]
+    out_cells = pairs[outside[pairs[:, 1]], 0]
+    found = 0
+    for k in range(0, len(out_cells), OUTSIDE_CHUNK_CELLS):
+        found += int(np.count_nonzero(_robot_reaches(grid, params, layers, out_cells[k:k + OUTSIDE_CHUNK_CELLS])))
+        if found >= need:
+            worth[outside] = True
+            break
+    # A region inside the map: one opening (a connected run of its frontier) the robot can come
+    # up to along at least unexplored_min_frontier_m (a door, a room's open side; not the gaps
+    # in a shelf's scanned outline, nor laser holes).
+    sel = candidate[pairs[:, 1]]
+    if sel.any():
+        cells, regions = pairs[sel, 0], pairs[sel, 1]
+        reach = _robot_reaches(grid, params, layers, cells)
+        uniq, inverse = np.unique(cells, return_inverse=True)
+        run, n_runs = label8_cells(uniq, (grid.height, grid.width))
+        per_run = np.bincount(run[inverse], weights=reach, minlength=n_runs + 1)
+        best = np.zeros(n + 1)
+        np.maximum.at(best, regions, per_run[run[inverse]])
+        worth |= candidate & (best >= need)
+    return worth
+
+
+def _edge_adjacent(lab: IntArray, pairs: npt.NDArray[np.int64]) -> BoolArray:
+    """Per (cell, label) pair: has the cell a 4-neighbour of that label?"""
+    h, w = lab.shape
+    flat = lab.ravel()
+    rr, cc = np.divmod(pairs[:, 0], w)
+    out = np.zeros(len(pairs), dtype=bool)
+    for dr, dc in ((-1, 0), (1, 0), (0, -1), (0, 1)):
+        r2, c2 = rr + dr, cc + dc
+        ok = (r2 >= 0) & (r2 < h) & (c2 >= 0) & (c2 < w)
+        out[ok] |= flat[r2[ok] * w + c2[ok]] == pairs[ok, 1]
+    return out
+
+
+def _robot_reaches(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers,
+                   cells: npt.NDArray[np.int64]) -> BoolArray:
+    """Per free cell (flat index): can the robot come up to it, i.e. does it touch (8-neighbours)
+    a cell that the robot's footprint covers somewhere, the footprint a free square of a robot's
+    diameter (it holds the robot's disc: a slightly strict test)?"""
+    out = np.zeros(len(cells), dtype=bool)
+    if len(cells) == 0:
+        return out
+    half = max(1, math.ceil(params.robot_radius_m / grid.resolution_m))
+    near = half + 1
+    rr, cc = np.divmod(cells, grid.width)
+    # Over the window that the tests read (its edge blocks): where the robot's centre fits (the
+    # free cells eroded by the square), then the cells within ``near`` of those (the footprint
+    # and its neighbours), by separable minimum and maximum filters.
+    pad = near + half
+    r0, r1 = max(0, int(rr.min()) - pad), min(grid.height, int(rr.max()) + pad + 1)
+    c0, c1 = max(0, int(cc.min()) - pad), min(grid.width, int(cc.max()) + pad + 1)
+    m = layers.free[r0:r1, c0:c1]
+    for axis in (0, 1):
+        m = ndi.minimum_filter1d(m, 2 * half + 1, axis=axis, mode="constant", cval=False)
+    for axis in (0, 1):
+        m = ndi.maximum_filter1d(m, 2 * near + 1, axis=axis, mode="constant", cval=False)
+    return np.asarray(m[rr - r0, cc - c0], dtype=bool)

@@ -22,6 +22,7 @@ SUBCOMMANDS: Final[dict[str, tuple[str, str]]] = {
     "sim": ("langnav.cli.sim", "run the simulated robot (optionally served over rosbridge)"),
     "serve": ("langnav.cli.serve", "the web app: chat + live map"),
     "node": ("langnav.cli.node", "langnav as a ROS 2 node: /langnav/instruct, /langnav/stop, map markers"),
+    "places": ("langnav.cli.places", "list, add, forget or rename the places you named"),
 }
 
 
@@ -49,7 +50,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                         format="%(levelname)s %(name)s: %(message)s")
     try:
         return int(args._run(args))
-    except LangnavError as exc:
+    except (LangnavError, argparse.ArgumentTypeError) as exc:
         print(f"langnav {args.command}: {exc}", file=sys.stderr)
         return 2
     except OSError as exc:  # a file or socket the OS refused: say which and why, without a traceback

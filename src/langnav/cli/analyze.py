@@ -17,7 +17,7 @@ import numpy as np
 
 from langnav.analysis.elements import ElementKind, MapAnalysis
 from langnav.analysis.pipeline import analyze
-from langnav.analysis.render import save_png
+from langnav.analysis.render import save_png, save_svg
 from langnav.errors import LangnavError
 from langnav.maps.demo import DEMO_NAME, demo_map_path
 from langnav.maps.io import load_map
@@ -28,9 +28,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help=f"map_server .yaml, a bare map image, or '{DEMO_NAME}' for the bundled demo world")
     parser.add_argument("--resolution", type=float, default=None, metavar="R",
                         help="metres per cell for a bare image (default 0.05; a YAML gives its own)")
+    parser.add_argument("--unknown-grey", action="store_true",
+                        help="read the map image's grey 205 as unknown even where the YAML's thresholds "
+                             "read it as free or occupied (a warning says when they do)")
     parser.add_argument("--json", type=Path, default=None, metavar="OUT", help="write the elements as JSON")
     parser.add_argument("--png", type=Path, default=None, metavar="OUT",
-                        help="write the map with every element drawn and labelled")
+                        help="write the map with every element drawn and labelled (PNG)")
+    parser.add_argument("--svg", type=Path, default=None, metavar="OUT",
+                        help="write the same picture as a zoomable SVG (the way to read a large map)")
     parser.add_argument("--labels", type=Path, default=None, metavar="OUT.npy",
                         help="write int32 room labels in image orientation (row 0 = top; 0 = no room)")
 
@@ -55,7 +60,7 @@ def summary(a: MapAnalysis, seconds: float) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
-    grid = load_map(resolve_map_path(args.map), resolution_m=args.resolution)
+    grid = load_map(resolve_map_path(args.map), resolution_m=args.resolution, unknown_grey=args.unknown_grey)
     t0 = time.perf_counter()
     result = analyze(grid)
     seconds = time.perf_counter() - t0
@@ -68,6 +73,10 @@ def run(args: argparse.Namespace) -> int:
     if args.png is not None:
         with _writing(args.png, "--png"):
             written = save_png(result, args.png)
+        print(f"  wrote {written}")
+    if args.svg is not None:
+        with _writing(args.svg, "--svg"):
+            written = save_svg(result, args.svg)
         print(f"  wrote {written}")
     if args.labels is not None:
         with _writing(args.labels, "--labels"):

@@ -40,6 +40,7 @@ def run(args: argparse.Namespace) -> int:
     show = sys.stderr.isatty() or len(cases) > 20
     for n, case in enumerate(cases, 1):
         grid: OccupancyGrid = maps.get(case)
+        planner.history.clear()  # each case is a session of its own: no trail from the cases before it
         t0 = time.perf_counter()
         out = planner.plan(case.prompt, grid, case.pose).to_bench(case.id)
         dt = time.perf_counter() - t0

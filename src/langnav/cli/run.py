@@ -28,6 +28,7 @@ import logging
 from typing import Any, Final
 
 from langnav.cli.options import pose_arg, seconds_arg, seed_arg
+from langnav.cli.places import add_places_option, places_path
 from langnav.cli.robot_options import (
     BACKENDS,
     add_robot_arguments,
@@ -38,7 +39,7 @@ from langnav.errors import LangnavError
 from langnav.plan.events import EventKind, ExecEvent, PlanStatus, pose_tuple
 from langnav.plan.executor import DEFAULT_EXPLORE_TIMEOUT_S, PlanExecutor
 from langnav.robot.errors import RobotError, RobotTimeout
-from langnav.robot.protocol import RobotBackend, create_backend
+from langnav.robot.protocol import RobotBackend, StopConfirmable, create_backend
 
 log = logging.getLogger(__name__)
 
@@ -58,6 +59,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    help="give up on the whole plan after this many seconds (robot time in the simulator)")
     p.add_argument("--json", action="store_true", help="one JSON object per line")
     add_robot_arguments(p)
+    add_places_option(p)
 
 
 def _make_robot(args: argparse.Namespace) -> RobotBackend:
@@ -104,14 +106,16 @@ class _Printer:
 def run(args: argparse.Namespace) -> int:
     from langnav.language.translator import get_translator
     from langnav.pipeline import Planner
+    from langnav.places import JsonPlaceStore
 
     out = _Printer(args.json)
+    places = JsonPlaceStore(places_path(args.places))  # read before the robot starts: a bad file stops here
     robot = _make_robot(args)
     try:
         grid = robot.get_map()
         pose = robot.get_robot_pose()
         start = pose_tuple(pose)
-        planner = Planner(get_translator(args.translator))
+        planner = Planner(get_translator(args.translator), places=places)
         result = planner.plan(args.prompt, grid, start)
         if result.clarification is not None:
             out.line({"event": "rejected", "message": result.clarification},
@@ -122,6 +126,8 @@ def run(args: argparse.Namespace) -> int:
                  "plan from ({:.2f}, {:.2f}, {:.0f}°):\n".format(*start)
                  + "\n".join(f"  {i + 1}. {c}" for i, c in enumerate(_described(result)))
                  + "".join(f"\n  note: {m}" for m in result.messages))
+        if not result.commands:  # naming a place, answering what places are known: nothing to drive
+            return _finish(out, robot, PlanStatus.SUCCEEDED)
         run_ = PlanExecutor(robot).start(result.items, on_event=out.event)
         try:
             status = run_.wait(args.timeout)
@@ -149,11 +155,10 @@ def run(args: argparse.Namespace) -> int:
 def _confirm_stop(out: _Printer, robot: RobotBackend) -> None:
     """After a cancel: say so loudly when the robot did not confirm that it stopped (a backend
     that can tell: the rosbridge backend's ``wait_stopped``)."""
-    wait_stopped = getattr(robot, "wait_stopped", None)
-    if not callable(wait_stopped):
+    if not isinstance(robot, StopConfirmable):
         return
     try:
-        wait_stopped()
+        robot.wait_stopped()
     except RobotError as exc:
         out.line({"event": "stop_unconfirmed", "message": str(exc)}, f"WARNING: {exc}")
 

@@ -25,7 +25,7 @@ from typing import Any
 from langnav.cli.options import pose_arg
 from langnav.robot.errors import RobotError
 from langnav.robot.protocol import Pose2D, create_backend
-from langnav.robot.rosbridge_server import RosbridgeServer
+from langnav.robot.ros.rosbridge_server import RosbridgeServer
 
 #: How often the console line with the pose is refreshed.
 STATUS_PERIOD_S = 2.0

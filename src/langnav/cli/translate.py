@@ -9,11 +9,13 @@ import sys
 from pathlib import Path
 
 from langnav.cli.options import pose_arg
+from langnav.cli.places import add_places_option, places_path
 from langnav.errors import LangnavError
 from langnav.eval.cases import MapCache, bench_output, load_cases
 from langnav.language.translator import get_translator
 from langnav.maps.io import load_map
 from langnav.pipeline import Planner, PlanResult
+from langnav.places import JsonPlaceStore, MemoryPlaceStore
 from langnav.plan.commands import describe
 
 
@@ -25,10 +27,13 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--cases", type=Path, help="bench case file (JSONL); writes one output line per case")
     p.add_argument("--translator", default="offline", help="offline (default), gemini, openai, local, auto")
     p.add_argument("--json", action="store_true", help="machine-readable output")
+    add_places_option(p)
 
 
 def run(args: argparse.Namespace) -> int:
-    planner = Planner(get_translator(args.translator))
+    # a dry run: the named places are read, and naming or forgetting in a prompt changes only this copy
+    places = MemoryPlaceStore(JsonPlaceStore(places_path(args.places)).all()) if args.places is not None else None
+    planner = Planner(get_translator(args.translator), places=places)
     if args.cases is not None:
         return run_cases(planner, args.cases)
     if args.map is None or args.pose is None or not args.prompt:

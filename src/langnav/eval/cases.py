@@ -74,4 +74,5 @@ def bench_output(planner: Planner, maps: MapCache, case: BenchCase) -> dict[str,
         grid = maps.get(case)
     except LangnavError as exc:
         return {"id": case.id, "commands": [], "clarification": f"cannot load the map: {exc}"}
+    planner.history.clear()  # each case is a session of its own: no trail from the cases before it
     return planner.plan(case.prompt, grid, case.pose).to_bench(case.id)

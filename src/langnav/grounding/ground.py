@@ -29,6 +29,7 @@ from langnav.analysis.elements import (
     reference_point,
 )
 from langnav.analysis.params import AnalysisParams
+from langnav.grounding import compose
 from langnav.grounding.errors import GroundingError
 from langnav.grounding.geometry import (
     BoolArray,
@@ -42,9 +43,11 @@ from langnav.grounding.geometry import (
     segment_distances,
     unit,
 )
+from langnav.grounding.history import EMPTY_HISTORY, HistoryView
 from langnav.grounding.selection import (
     WallLine,
     describe_ref,
+    label_of,
     select,
     select_pair,
     select_wall,
@@ -57,11 +60,13 @@ from langnav.language.intent import (
     ElementRef,
     Intent,
     Movement,
+    Offset,
     Place,
     Query,
     Step,
 )
 from langnav.language.intent import Element as Kind
+from langnav.places.store import NamedPlace, place_key
 from langnav.plan.commands import (
     MOVE_STEP_M,
     ROTATE_STEP_DEG,
@@ -112,7 +117,7 @@ LITTLE_TURN_DEG: Final = 20.0
 DEFAULT_TURN_DEG: Final = 90.0
 DEFAULT_MOVE_M: Final = 1.0
 #: Named places: the goal lies within this distance of the remembered point.
-NAMED_PLACE_MAX_M: Final = 0.75
+NAMED_PLACE_MAX_M: Final = compose.NAMED_PLACE_MAX_M
 #: "opposite side of a room": the far third (README).
 OPPOSITE_FRACTION: Final = 2.0 / 3.0
 
@@ -131,6 +136,16 @@ class GroundedStep:
     element_ids: tuple[str, ...] = ()
     explore: bool = False
     messages: tuple[str, ...] = ()
+    #: "call this spot the kitchen": the place to remember once the plan is accepted
+    name_place: NamedPlace | None = None
+    #: "forget the kitchen": the name to drop once the plan is accepted
+    forget_place: str | None = None
+    #: "what places do you know?": the answer is the store's list
+    list_places: bool = False
+
+    @property
+    def moves(self) -> bool:
+        return any(isinstance(c, NavigateThroughPoses | Move | Rotate) for c in self.commands)
 
 
 @dataclass(frozen=True)
@@ -158,11 +173,22 @@ def as_pose(pose: Pose | Sequence[float]) -> Pose:
     return Pose.from_deg(x, y, yaw)
 
 
+def named_place_table(named_places: Mapping[str, Point | NamedPlace] | None) -> dict[str, NamedPlace]:
+    """Named places by key; bare points (x, y) are spots."""
+    out: dict[str, NamedPlace] = {}
+    for name, v in (named_places or {}).items():
+        place = v if isinstance(v, NamedPlace) else NamedPlace(" ".join(name.split()), float(v[0]), float(v[1]))
+        out[place_key(name)] = place
+    return out
+
+
 def ground(intent: Intent, analysis: MapAnalysis, pose: Pose | Sequence[float], *,
            params: AnalysisParams | None = None,
-           named_places: Mapping[str, Point] | None = None) -> GroundedPlan:
+           named_places: Mapping[str, Point | NamedPlace] | None = None,
+           history: HistoryView | None = None) -> GroundedPlan:
     """Every step of ``intent`` as commands, each read from where the previous ones leave the robot.
-    ``pose`` is also the prompt's start ("go back to where you started").
+    ``pose`` is also the prompt's start ("go back to where you started"); ``history`` is where the
+    robot drove before this prompt ("the door you just passed", "back to where you were").
 
     Raises GroundingError with a sentence for the user when a step names something the map
     does not have, or asks for something unsafe (a move into a wall).
@@ -174,12 +200,14 @@ def ground(intent: Intent, analysis: MapAnalysis, pose: Pose | Sequence[float], 
                              "'go to the nearest door'.")
     p = params or analysis.params
     start = as_pose(pose)
-    ctx = GroundingContext(analysis, free_space_for(analysis.grid, p), p, dict(named_places or {}), origin=start)
+    ctx = GroundingContext(analysis, free_space_for(analysis.grid, p), p, named_place_table(named_places),
+                           origin=start, history=history or EMPTY_HISTORY, route=[start.xy])
     steps: list[GroundedStep] = []
     cur = start
     for i, step in enumerate(intent.steps):
         gs = ground_step(step, ctx, cur, i)
         steps.append(gs)
+        ctx.advance(gs)
         cur = gs.end_pose
     return GroundedPlan(tuple(steps), start)
 
@@ -191,14 +219,46 @@ class GroundingContext:
     analysis: MapAnalysis
     space: FreeSpace
     params: AnalysisParams
-    named: dict[str, Point]
+    named: dict[str, NamedPlace]
     #: where the robot stood when the prompt began (``Place.START``); None when not known
     origin: Pose | None = None
+    #: where the robot drove before this prompt, and the trips it made
+    history: HistoryView = EMPTY_HISTORY
+    #: this prompt's way so far: the start, then every pose the earlier steps drive through
+    route: list[Point] = field(default_factory=list)
+    #: where each earlier step of this prompt that moved the robot began
+    moved_from: list[Pose] = field(default_factory=list)
+
+    def advance(self, gs: GroundedStep) -> None:
+        """Take a grounded step's way into account for the steps after it."""
+        if not gs.moves:
+            return
+        if math.dist(gs.start_pose.xy, gs.end_pose.xy) > 1e-3:
+            self.moved_from.append(gs.start_pose)
+        if not self.route:
+            self.route.append(gs.start_pose.xy)
+        for c in gs.commands:
+            if isinstance(c, NavigateThroughPoses):
+                self.route.extend((float(q[0]), float(q[1])) for q in c.poses)
+        if math.dist(self.route[-1], gs.end_pose.xy) > 1e-3:
+            self.route.append(gs.end_pose.xy)
+
+    def trail(self, pose: Pose) -> list[Point]:
+        """The whole way driven up to ``pose``, oldest first."""
+        pts = [*self.history.trail, *self.route]
+        if not pts or math.dist(pts[-1], pose.xy) > 1e-3:
+            pts.append(pose.xy)
+        return pts
 
 
 def ground_step(step: Step, ctx: GroundingContext, pose: Pose, index: int = 0) -> GroundedStep:
     """One step from ``pose``."""
     m = step.movement
+    if m in (Movement.NAME_PLACE, Movement.FORGET_PLACE) or (m == Movement.QUERY and step.query == Query.PLACES):
+        return _place_step(step, ctx, pose, index)
+    step = _resolved(step, ctx, pose)
+    if m == Movement.ROTATE and step.target is not None and step.heading_deg is None:
+        return _face(step, ctx, pose, index)
     if m == Movement.STOP:
         return GroundedStep(index, step, (Stop(note="stop now"),), pose, pose, "stop now")
     if m == Movement.QUERY:
@@ -323,6 +383,29 @@ def _nav_step(step: Step, pose: Pose, index: int, poses: list[Point], note: str,
 
 
 def _navigate(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> GroundedStep:
+    """A trip to, through, along ... a place; with an offset ("2 m past the door") or a fraction of the
+    way ("halfway to the door") when the words give one."""
+    if step.offset is not None:
+        return _offset_step(step, ctx, pose, index)
+    along = step.movement == Movement.FOLLOW or step.detail == Detail.ALONG
+    if step.fraction is not None and not along:
+        full = _navigate_full(step.model_copy(update={"fraction": None}), ctx, pose, index)
+        last = _last_goal(full)
+        if last is None:
+            return full
+        desc = full.note.split(" ", 1)[1] if " " in full.note else full.note
+        goal = compose.fraction_goal(last, step.fraction, pose, ctx.space.safe_point_near, _component(ctx, pose), desc)
+        return _nav_step(step, pose, index, [goal], f"{compose.fraction_words(step.fraction)} {full.note}",
+                         full.element_ids)
+    return _navigate_full(step, ctx, pose, index)
+
+
+def _last_goal(gs: GroundedStep) -> Point | None:
+    navs = [c for c in gs.commands if isinstance(c, NavigateThroughPoses)]
+    return (float(navs[-1].poses[-1][0]), float(navs[-1].poses[-1][1])) if navs else None
+
+
+def _navigate_full(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> GroundedStep:
     ref = step.target
     detail = step.detail or Detail.TO
     if ref is None and step.movement == Movement.FOLLOW:
@@ -334,16 +417,11 @@ def _navigate(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> Grou
             ref = ElementRef(kind=Kind.ROOM, in_current_room=True)
         else:
             raise GroundingError("Where should I go? Name a place on the map, e.g. 'the door on your left'.")
-    if ref.place == Place.START:
-        return _to_start(step, ctx, pose, index)
-    if ref.name and ref.name.lower() in {k.lower() for k in ctx.named}:
-        xy = next(v for k, v in ctx.named.items() if k.lower() == ref.name.lower())
-        comp = _component(ctx, pose)
-        goal = ctx.space.safe_point_near(xy, comp, NAMED_PLACE_MAX_M)
-        if goal is None:
-            raise GroundingError(f"I cannot reach '{ref.name}' from here: no free space I can get to near it.")
-        return _nav_step(step, pose, index, [goal], f"to {ref.name}")
+    if ref.place in (Place.START, Place.PREVIOUS):
+        return _to_return(step, ref.place, ctx, pose, index)
     comp = _component(ctx, pose)
+    if ref.name and detail != Detail.BETWEEN:
+        return _to_named(step, ref.name, detail, ctx, pose, comp, index)
     if detail == Detail.BETWEEN:
         return _between(step, ref, ctx, pose, comp, index)
     if step.movement == Movement.FOLLOW or detail == Detail.ALONG:
@@ -374,17 +452,177 @@ def _navigate(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> Grou
     return _nav_step(step, pose, index, [goal], f"{verb} {desc}", (e.id,))
 
 
-def _to_start(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> GroundedStep:
-    """'Go back', 'return to where you started': the pose at which the prompt began."""
-    if ctx.origin is None:
-        raise GroundingError("I don't know where this instruction started, so I can't go back there; "
-                             "name the place instead, e.g. 'go back to the door'.")
+def _to_return(step: Step, place: Place, ctx: GroundingContext, pose: Pose, index: int) -> GroundedStep:
+    """'Go back', 'return to where you started', 'back to where you were' (see grounding.compose)."""
+    h = ctx.history
+    target, words = compose.return_point(place, pose, ctx.origin, tuple(ctx.moved_from), h.session_start,
+                                         h.last_trip_start_away_from(pose.xy))
+    if target is None:
+        note = f"I am already {words}"
+        return GroundedStep(index, step, (), pose, pose, note, messages=(note + ".",))
     comp = _component(ctx, pose)
-    goal = ctx.space.safe_point_near(ctx.origin.xy, comp, NAMED_PLACE_MAX_M)
+    goal = ctx.space.safe_point_near(target.xy, comp, NAMED_PLACE_MAX_M)
     if goal is None:
-        raise GroundingError(f"I cannot get back to where I started ({ctx.origin.x_m:.1f}, {ctx.origin.y_m:.1f}): "
+        raise GroundingError(f"I cannot get back to {words} ({target.x_m:.1f}, {target.y_m:.1f}): "
                              "no free space I can reach is near it.")
-    return _nav_step(step, pose, index, [goal], "back to where I started")
+    return _nav_step(step, pose, index, [goal], f"back to {words}")
+
+
+def _to_named(step: Step, name: str, detail: Detail, ctx: GroundingContext, pose: Pose, comp: int,
+              index: int) -> GroundedStep:
+    """A place the user named: a spot (reached facing its heading when it has one) or a room."""
+    place = compose.find_named(name, ctx.named)
+    element = compose.named_element(place, ctx.analysis)
+    if element is not None and place.kind not in ("room", "hallway", "spot"):
+        # "go through the front door": the element the name was given to, read like its label
+        as_label = ElementRef(kind=Kind(place.kind), label=_label_number(element.id))
+        gs = _navigate_full(step.model_copy(update={"target": as_label}), ctx, pose, index)
+        return GroundedStep(gs.index, step, gs.commands, gs.start_pose, gs.end_pose,
+                            gs.note.replace(describe_ref(as_label), f"'{place.name}' ({label_of(element)})"),
+                            gs.element_ids, gs.explore, gs.messages)
+    room = compose.named_space(place, ctx.analysis)
+    if room is not None:
+        ref = ElementRef(kind=Kind.HALLWAY if room.kind == ElementKind.HALLWAY else Kind.ROOM,
+                         label=_label_number(room.id))
+        gs = _room_goal(step, ref, room, detail if detail in (Detail.MIDDLE, Detail.OPPOSITE_SIDE_OF) else Detail.TO,
+                        ctx, pose, comp, index)
+        return GroundedStep(gs.index, gs.step, gs.commands, gs.start_pose, gs.end_pose,
+                            gs.note.replace(describe_ref(ref), f"'{place.name}' ({label_of(room)})"),
+                            gs.element_ids, gs.explore, gs.messages)
+    if place.kind != "spot" and detail == Detail.NEXT_TO:
+        goal = ctx.space.safe_point_near(place.xy, comp, NEXT_TO_MAX_M)
+    else:
+        goal = ctx.space.safe_point_near(place.xy, comp, NAMED_PLACE_MAX_M)
+    if goal is None:
+        raise GroundingError(f"I cannot reach '{place.name}' from here: no free space I can get to near it "
+                             f"({place.x_m:.1f}, {place.y_m:.1f}).")
+    gs = _nav_step(step, pose, index, [goal], f"to '{place.name}'")
+    if place.yaw_deg is None or place.kind != "spot":
+        return gs
+    cmd = NavigateThroughPoses(poses=[[round(goal[0], 3), round(goal[1], 3), round(place.yaw_deg, 1)]],
+                               note=gs.note)
+    end = Pose(goal[0], goal[1], math.radians(place.yaw_deg))
+    return GroundedStep(index, step, (cmd,), pose, end, gs.note)
+
+
+def _label_number(element_id: str) -> int | None:
+    tail = element_id.rsplit("_", 1)[-1]
+    return int(tail) if tail.isdigit() else None
+
+
+def _point_of(ref: ElementRef, ctx: GroundingContext, pose: Pose, words: str) -> tuple[Point, str, tuple[str, ...]]:
+    """A reference's point (named places, returns and elements alike), its words and element ids."""
+    if ref.name:
+        place = compose.find_named(ref.name, ctx.named)
+        return place.xy, f"'{place.name}'", ()
+    if ref.place in (Place.START, Place.PREVIOUS):
+        h = ctx.history
+        target, said = compose.return_point(ref.place, pose, ctx.origin, tuple(ctx.moved_from), h.session_start,
+                                            h.last_trip_start_away_from(pose.xy))
+        return (target or pose).xy, said, ()
+    if ref.kind == Kind.WALL:
+        line = select_wall(ref, ctx.analysis, pose)
+        return compose.closest_on_segment(pose.xy, line.start, line.end), describe_ref(ref), line.ids
+    e = select(ref, ctx.analysis, pose, words)
+    return reference_point(e), describe_ref(ref), (e.id,)
+
+
+def _resolved(step: Step, ctx: GroundingContext, pose: Pose) -> Step:
+    """'The door you just passed' as the element it is, by label, from the trail driven so far."""
+    update: dict[str, ElementRef] = {}
+    for key in ("target", "second_target"):
+        ref = getattr(step, key)
+        if ref is not None and ref.passed:
+            update[key] = compose.resolve_passed(ref, ctx.trail(pose), ctx.analysis)
+    return step.model_copy(update=update) if update else step
+
+
+def _face(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> GroundedStep:
+    """'Turn to face the door': one rotation the shorter way ('face north' is ``_face_heading``)."""
+    ids: tuple[str, ...] = ()
+    ref = step.target
+    assert ref is not None
+    if ref.name or ref.place is not None or ref.kind == Kind.WALL:
+        point, what, ids = _point_of(ref, ctx, pose, step.text)
+    elif ref.kind == Kind.NONE:
+        raise GroundingError("Which way should I face? Name a place, e.g. 'face the door' or 'face north'.")
+    else:
+        e = select(ref, ctx.analysis, pose, step.text)
+        here = space_of(ctx.analysis, pose.xy)
+        if e is here:
+            raise GroundingError(f"I am in {label_of(e)} already, so I cannot turn to face it; tell me what to face "
+                                 "in it, e.g. 'face the door' or 'face north'.")
+        point = compose.facing_point(e, pose, here, ctx.analysis.doors)
+        what, ids = describe_ref(ref), (e.id,)
+    if math.dist(point, pose.xy) < compose.MIN_OFFSET_RUN_M:
+        raise GroundingError(f"I am at {what}, so there is no way to turn to face it.")
+    yaw = math.atan2(point[1] - pose.y_m, point[0] - pose.x_m)
+    cmd, end, note = compose.facing_turn(pose, yaw, what)
+    if cmd is None:
+        return GroundedStep(index, step, (), pose, pose, note, ids, messages=(note + ".",))
+    return GroundedStep(index, step, (cmd,), pose, end, note, ids)
+
+
+def _offset_step(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> GroundedStep:
+    """'Go 2 m past the door on your right', 'stop 1 m before the corner'."""
+    ref = step.target
+    if ref is None:
+        raise GroundingError("Past or before what? Name the place, e.g. 'stop 1 m before the door'.")
+    comp = _component(ctx, pose)
+    here = space_of(ctx.analysis, pose.xy)
+    anchor: Element | Point
+    ids: tuple[str, ...] = ()
+    if ref.name or ref.place is not None or ref.kind == Kind.WALL:
+        if ref.name and compose.named_space(compose.find_named(ref.name, ctx.named), ctx.analysis) is not None:
+            raise GroundingError(f"'{ref.name}' is a room; I can stop past or before a door, a passage, a corner, "
+                                 "an obstacle, a wall or a named spot, not a room.")
+        anchor, desc, ids = _point_of(ref, ctx, pose, step.text)
+    elif ref.kind in (Kind.ROOM, Kind.HALLWAY, Kind.UNEXPLORED_AREA, Kind.NONE):
+        raise GroundingError(f"I can stop a distance past or before a door, a passage, a corner, an obstacle, a "
+                             f"wall or a named spot, not {describe_ref(ref)}; say e.g. '2 m past the door'.")
+    else:
+        e = select(ref, ctx.analysis, pose, step.text)
+        anchor, desc, ids = e, describe_ref(ref), (e.id,)
+    goal, _ = compose.offset_goal(anchor, step, pose, here, desc, ctx.space.safe_point_near, comp)
+    word = "past" if step.offset == Offset.PAST else "before"
+    return _nav_step(step, pose, index, [goal], f"{step.offset_m:g} m {word} {desc}", ids)
+
+
+def _place_step(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> GroundedStep:
+    """'Call this spot the kitchen', 'forget the kitchen', 'what places do you know?': no motion; the
+    planner applies the change once the whole plan is accepted."""
+    from langnav.places.errors import PlaceError
+
+    if step.movement == Movement.QUERY:
+        known = sorted(ctx.named.values(), key=lambda p: p.key)
+        note = ("the places I know: " + ", ".join(f"'{p.name}'" for p in known)) if known else \
+            "I know no named places yet; name one with e.g. 'call this spot the kitchen'"
+        return GroundedStep(index, step, (), pose, pose, note, list_places=True)
+    name = step.place_name or ""
+    if step.movement == Movement.FORGET_PLACE:
+        place = compose.find_named(name, ctx.named)
+        return GroundedStep(index, step, (), pose, pose, f"forget '{place.name}'", forget_place=place.name)
+    ref = step.target
+    try:
+        if ref is None or ref.kind == Kind.NONE:
+            new = NamedPlace.spot(name, pose.x_m, pose.y_m, pose.yaw_deg % 360.0)
+            what = f"this spot ({pose.x_m:.1f}, {pose.y_m:.1f})"
+            ids: tuple[str, ...] = ()
+        elif ref.kind == Kind.WALL:
+            line = select_wall(ref, ctx.analysis, pose)
+            mid = ((line.start[0] + line.end[0]) / 2, (line.start[1] + line.end[1]) / 2)
+            new = NamedPlace.element(name, "wall", line.ids[0], *mid)
+            what, ids = describe_ref(ref), line.ids
+        else:
+            e = select(ref, ctx.analysis, pose, step.text)
+            new = compose.place_for_element(name, e)
+            what = describe_ref(ref) if ref.label is not None else f"{describe_ref(ref)} ({label_of(e)})"
+            ids = (e.id,)
+    except PlaceError as exc:
+        raise GroundingError(f"I can't use that name: {exc}.") from exc
+    old = ctx.named.get(new.key)
+    note = f"remember {what} as '{new.name}'" + (f" (it was ({old.x_m:.1f}, {old.y_m:.1f}) before)" if old else "")
+    return GroundedStep(index, step, (), pose, pose, note, ids, name_place=new)
 
 
 def _goal_at(e: Element, detail: Detail, ctx: GroundingContext, pose: Pose, comp: int, desc: str) -> Point:
@@ -563,6 +801,16 @@ def _opposite_side(room: Room, mask: BoolArray, ctx: GroundingContext, pose: Pos
 
 
 def _between(step: Step, ref: ElementRef, ctx: GroundingContext, pose: Pose, comp: int, index: int) -> GroundedStep:
+    second_ref = step.second_target
+    if second_ref is not None and any(r.name or r.place is not None for r in (ref, second_ref)):
+        # "between the kitchen and door 2": a named place's point with an element's reference point
+        pa, da, ia = _point_of(ref, ctx, pose, step.text)
+        pb, db, ib = _point_of(second_ref, ctx, pose, step.text)
+        mid = ((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2)
+        goal = ctx.space.safe_point_near(mid, comp, MIDDLE_GOAL_MAX_M)
+        if goal is None:
+            raise GroundingError(f"There is no free space I can reach between {da} and {db}.")
+        return _nav_step(step, pose, index, [goal], f"between {da} and {db}", ia + ib)
     a, b = select_pair(ref, step.second_target, ctx.analysis, pose, step.text)
     pa, pb = reference_point(a), reference_point(b)
     mid = ((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2)
@@ -618,18 +866,29 @@ def _along_wall(step: Step, ref: ElementRef, ctx: GroundingContext, pose: Pose, 
     length = wall.length_m
     t0 = min(max((pose.x_m - start[0]) * d[0] + (pose.y_m - start[1]) * d[1], 0.0), length)
     t_end = length - ALONG_END_MARGIN_M
-    if t_end - t0 < ALONG_MIN_RUN_M:
+    if step.fraction is not None:
+        t_end = t0 + (length - t0) * step.fraction  # "halfway along the wall": of the run from here
+        if t_end - t0 < compose.MIN_OFFSET_RUN_M:
+            raise GroundingError(f"I am already {compose.fraction_words(step.fraction)} along {desc} or past it.")
+    elif t_end - t0 < ALONG_MIN_RUN_M:
         raise GroundingError(f"I am already at the end of {desc}; turn around to drive along it the other way.")
     band = _wall_band(wall, n, ALONG_MAX_M)
+
+    limit = t_end + compose.ALONG_SLACK_M if step.fraction is not None else math.inf
 
     def at(t: float, radius: float) -> Point | None:
         base = (start[0] + d[0] * t, start[1] + d[1] * t)
         target = (base[0] + n[0] * ALONG_OFFSET_M, base[1] + n[1] * ALONG_OFFSET_M)
-        return ctx.space.safe_point_near(target, comp, radius, where=band)
+
+        def where(xs: FloatArray, ys: FloatArray) -> BoolArray:  # never past the part of the wall asked for
+            ok = band(xs, ys)
+            return np.asarray(ok & ((xs - start[0]) * d[0] + (ys - start[1]) * d[1] <= limit), dtype=bool)
+        return ctx.space.safe_point_near(target, comp, radius, where=where)
 
     end: Point | None = None
     t = t_end
-    while t > t0 + ALONG_MIN_RUN_M / 2:
+    shortest = ALONG_MIN_RUN_M / 2 if step.fraction is None else compose.MIN_OFFSET_RUN_M / 2
+    while t > t0 + shortest:
         end = at(t, 0.5)
         if end is not None:
             break
@@ -674,17 +933,26 @@ def _follow_space(step: Step, ref: ElementRef, ctx: GroundingContext, pose: Pose
     else:
         sign = 1.0 if dot > 0 else -1.0
     t_far = (t.max() if sign > 0 else t.min()) - sign * ALONG_END_MARGIN_M
+    if step.fraction is not None:
+        # "halfway down the corridor": that part of the run from here (or from where the robot enters
+        # it) to the end it is heading for
+        t_here = min(max(tr, float(t.min())), float(t.max()))
+        t_far = t_here + ((t.max() if sign > 0 else t.min()) - t_here) * step.fraction
     run = (t_far - tr) * sign
-    if run < ALONG_MIN_RUN_M:
+    if step.fraction is not None and run < compose.MIN_OFFSET_RUN_M:
+        raise GroundingError(f"I am already {compose.fraction_words(step.fraction)} along {desc} or past it.")
+    if run < ALONG_MIN_RUN_M and step.fraction is None:
         raise GroundingError(f"I am already at the end of {desc}; turn around to follow it the other way.")
     k = max(2, math.ceil(run / ALONG_SPACING_M))
     poses: list[Point] = []
     for i in range(1, k + 1):
         ti = tr + (t_far - tr) * i / k
         target = (c[0] + axis[0] * ti, c[1] + axis[1] * ti)
-        p = ctx.space.best_in_mask(mask & (np.abs(((ctx.space.xs - c[0]) * axis[0]
-                                                   + (ctx.space.ys - c[1]) * axis[1]) - ti) <= 0.5),
-                                   comp, target)
+        t_cells = (ctx.space.xs - c[0]) * axis[0] + (ctx.space.ys - c[1]) * axis[1]
+        band = np.abs(t_cells - ti) <= 0.5
+        if step.fraction is not None:  # never past the part of the run asked for
+            band &= (t_cells - t_far) * sign <= compose.ALONG_SLACK_M
+        p = ctx.space.best_in_mask(mask & band, comp, target)
         if p is not None and (not poses or math.dist(p, poses[-1]) > 0.3):
             poses.append(p)
     if not poses:

@@ -54,7 +54,7 @@ from langnav.grounding.geometry import (
     to_robot_frame,
 )
 from langnav.language.intent import Element as Kind
-from langnav.language.intent import ElementRef, Landmark, Place, Side, Superlative
+from langnav.language.intent import ElementRef, Landmark, Place, Relation, Side, Superlative
 
 #: A robot standing in a doorway belongs to the nearest space within this distance.
 SPACE_SNAP_M: Final = 0.6
@@ -97,6 +97,10 @@ KIND_NOUN: Final = {Kind.DOOR: ("door", "doors"), Kind.WALL: ("wall", "walls"), 
                     Kind.OBSTACLE: ("obstacle", "obstacles"), Kind.CORNER: ("corner", "corners"),
                     Kind.UNEXPLORED_AREA: ("unexplored area", "unexplored areas"),
                     Kind.NONE: ("place", "places")}
+#: The word the map picture shows before an element's number ("door 2", "passage 1").
+LABEL_NOUN: Final = {Kind.DOOR: "door", Kind.WALL: "wall", Kind.ROOM: "room", Kind.HALLWAY: "hallway",
+                     Kind.NARROW_PASSAGE: "passage", Kind.OBSTACLE: "obstacle", Kind.CORNER: "corner",
+                     Kind.UNEXPLORED_AREA: "unexplored"}
 SIDE_WORDS: Final = {Side.LEFT: "on your left", Side.RIGHT: "on your right", Side.AHEAD: "in front of you",
                      Side.BEHIND: "behind you"}
 
@@ -128,6 +132,27 @@ def describe_ref(ref: ElementRef) -> str:
         return f"'{ref.name}'"
     if ref.place == Place.START:
         return "where I started"
+    if ref.place == Place.PREVIOUS:
+        return "where I was before"
+    if ref.label is not None:
+        return f"{LABEL_NOUN.get(ref.kind, KIND_NOUN[ref.kind][0])} {ref.label}"
+    if ref.passed:
+        return f"the {KIND_NOUN[ref.kind][0]} I just passed"
+    if ref.relation is not None and ref.kind in (Kind.ROOM, Kind.HALLWAY):
+        noun = KIND_NOUN[ref.kind][0]
+        other = "this one" if ref.near is None or ref.near.in_current_room else describe_ref(landmark_ref(ref.near))
+        if ref.relation == Relation.ACROSS:
+            hall = "the hallway" if ref.near is None or ref.near.kind != Kind.HALLWAY else other
+            return f"the {noun} across {hall}"
+        words = ["the"]
+        if ref.ordinal is not None:
+            words.append(ORDINAL_WORDS.get(ref.ordinal, f"{ref.ordinal}th"))
+        if ref.superlative is not None:
+            words.append(ref.superlative.value)
+        words.append(noun)
+        if ref.side is not None:
+            words.append(SIDE_WORDS[ref.side])
+        return " ".join(words) + f" next to {other}"
     noun = KIND_NOUN[ref.kind][0]
     plain = ref.ordinal is None and ref.superlative is None and ref.side is None and ref.within is None
     if ref.kind in (Kind.ROOM, Kind.HALLWAY) and ref.in_current_room and plain:
@@ -339,12 +364,21 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
     """``count`` elements the words mean, best first ("the two obstacles in this room")."""
     if ref.name:
         raise GroundingError(
-            f"I don't know where '{ref.name}' is: the map has walls, doors and free space but no names. "
-            "Tell me where it is (e.g. 'the second door on your left'), or drive me there and name it.")
+            f"I don't know a place called '{ref.name}'; name it first: stand there and say 'call this spot the "
+            f"{ref.name}'. Or tell me where it is by what the map shows (e.g. 'the second door on your left').")
     if ref.kind == Kind.NONE:
         raise GroundingError("I don't know which place you mean; name a door, room, corner, wall or obstacle.")
     if ref.kind == Kind.WALL:
         raise GroundingError("internal: walls are selected with select_wall")  # pragma: no cover
+    if ref.label is not None:
+        if count != 1:
+            raise GroundingError(f"{describe_ref(ref)} is one element; I cannot pick {count} of it.")
+        return [select_by_label(ref.kind, ref.label, analysis)]
+    if ref.relation is not None and ref.kind in (Kind.ROOM, Kind.HALLWAY):
+        # relations imports this module
+        from langnav.grounding.relations import select_related_spaces
+
+        return select_related_spaces(ref, analysis, pose, count)
     if ref.kind == Kind.CORNER:
         first = _select_corner(ref, analysis, pose)
         if count == 1:
@@ -370,6 +404,15 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
     space = _space_for_ref(ref, analysis, pose)
     if space is not None and ref.kind not in (Kind.ROOM, Kind.HALLWAY):
         pool = [e for e in pool if _in_space(e, space, analysis)]
+    if ref.kind in (Kind.ROOM, Kind.HALLWAY) and not ref.in_current_room and _relative_to_robot(ref):
+        # "the room on the right", "the nearest room", "the second room on your left": words that place
+        # a space relative to the robot mean another space than the one it stands in
+        here_space = space_of(analysis, pose.xy)
+        others = [e for e in pool if e is not here_space]
+        if here_space is not None and len(others) < len(pool):
+            pool = others
+            if not pool:
+                raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]} other than the one I am in.")
     if ref.side is not None:
         pool = [e for e in pool if matches_side(e, pose, ref.side)]
     if ref.kind == Kind.OBSTACLE and words:
@@ -405,6 +448,43 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         raise GroundingError(f"I see only {_count_phrase(len(ordered), ref)}, so I cannot find "
                              f"{describe_ref(ref) if count == 1 else f'{count} of them'}.")
     return ordered[k:k + count]
+
+
+def _relative_to_robot(ref: ElementRef) -> bool:
+    """Words that place an element relative to the robot: a side, an order, nearest / farthest."""
+    return ref.side is not None or ref.ordinal is not None or ref.superlative in (Superlative.NEAREST,
+                                                                                 Superlative.FARTHEST)
+
+
+def label_of(e: Element | str) -> str:
+    """The label the map picture and the web app show: the element id with '_' as a space."""
+    return (e if isinstance(e, str) else e.id).replace("_", " ")
+
+
+def _label_number(element_id: str) -> int | None:
+    m = re.fullmatch(r"[a-z_]+?_(\d+)", element_id)
+    return int(m.group(1)) if m else None
+
+
+def select_by_label(kind: Kind, label: int, analysis: MapAnalysis) -> Element:
+    """The element whose label (id) is that kind and number: "door 2" is door_2. Rooms and hallways
+    are numbered together, so "room 3" may name hallway_3 when no room has that number."""
+    kinds = [kind]
+    if kind == Kind.ROOM:
+        kinds.append(Kind.HALLWAY)
+    elif kind == Kind.HALLWAY:
+        kinds.append(Kind.ROOM)
+    for k in kinds:
+        for e in elements_of_kind(analysis, k):
+            if _label_number(e.id) == label:
+                return e
+    pool = elements_of_kind(analysis, kind)
+    noun = LABEL_NOUN.get(kind, KIND_NOUN[kind][0])
+    if not pool:
+        raise GroundingError(f"I see no {noun} {label} on the map: it has no {KIND_NOUN[kind][1]}.")
+    shown = sorted(pool, key=lambda e: (_label_number(e.id) or 0))
+    names = ", ".join(label_of(e) for e in shown[:12]) + (" ..." if len(shown) > 12 else "")
+    raise GroundingError(f"I see no {noun} {label} on the map; its {KIND_NOUN[kind][1]} are {names}.")
 
 
 def _near_landmark(ref: ElementRef, pool: list[Element], analysis: MapAnalysis,
@@ -570,6 +650,10 @@ def _collinear(a: Wall, b: Wall) -> bool:
 
 def select_wall(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> WallLine:
     """'The left wall', 'the right wall of the hallway', 'the wall in front of you', 'the nearest wall'."""
+    if ref.label is not None:
+        w = select_by_label(Kind.WALL, ref.label, analysis)
+        assert isinstance(w, Wall)
+        return WallLine((w.id,), w.start, w.end, w.inward, w.room)
     space = _space_for_ref(ref, analysis, pose)
     assert space is not None
     room_word = "hallway" if space.kind == ElementKind.HALLWAY else "room"
@@ -625,5 +709,6 @@ def _foot_on_line(p: Point, ln: WallLine) -> Point:
     return (ln.start[0] + d[0] * t, ln.start[1] + d[1] * t)
 
 
-__all__ = ["AHEAD_HALF_ANGLE_DEG", "WallLine", "describe_ref", "distance_to", "matches_side", "select",
-           "select_many", "select_pair", "select_wall", "side_point", "space_of", "wall_lines"]
+__all__ = ["AHEAD_HALF_ANGLE_DEG", "LABEL_NOUN", "WallLine", "describe_ref", "distance_to", "label_of", "matches_side",
+           "select", "select_by_label", "select_many", "select_pair", "select_wall", "side_point", "space_of",
+           "wall_lines"]

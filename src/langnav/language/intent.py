@@ -10,7 +10,7 @@ from __future__ import annotations
 from enum import StrEnum
 from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 
 class Element(StrEnum):
@@ -33,6 +33,8 @@ class Movement(StrEnum):
     FOLLOW = "follow"       # follow / drive along a wall or hallway
     QUERY = "query"         # where are you, what path, show the map
     EXPLORE = "explore"     # frontier exploration until done ("explore", "map this floor")
+    NAME_PLACE = "name_place"      # "call this spot the kitchen": remember a place (no motion)
+    FORGET_PLACE = "forget_place"  # "forget the kitchen": drop a remembered place (no motion)
 
 
 class Detail(StrEnum):
@@ -78,6 +80,7 @@ class Query(StrEnum):
     POSE = "pose"
     PATH = "path"
     MAP = "map"
+    PLACES = "places"  # "what places do you know?": the places the user has named
 
 
 class Amount(StrEnum):
@@ -91,6 +94,21 @@ class Place(StrEnum):
     """A place that is no element of the map (``ElementRef.kind`` is ``none``)."""
 
     START = "start"  # where the robot stood when this prompt began ("go back", "return to where you started")
+    PREVIOUS = "previous"  # where the robot was before its last move ("go back to where you were")
+
+
+class Offset(StrEnum):
+    """Which way ``Step.offset_m`` is measured from the target, along the robot's way."""
+
+    PAST = "past"      # "2 m past the door", "a metre beyond the box"
+    BEFORE = "before"  # "stop 1 m before the corner", "half a metre short of the wall"
+
+
+class Relation(StrEnum):
+    """How a room or hallway lies relative to another space (``ElementRef.near``, else the robot's)."""
+
+    ADJACENT = "adjacent"  # "the room next to this one": joined by a door or only a wall apart
+    ACROSS = "across"      # "the room across the hall": on the far side of the hallway
 
 
 class _Model(BaseModel):
@@ -107,6 +125,7 @@ class Landmark(_Model):
     side: Side | None = None
     in_current_room: bool = False
     within: Element | None = None
+    label: Annotated[int, Field(ge=0, le=9999)] | None = None  # "the room next to room 3"
 
 
 class ElementRef(_Model):
@@ -129,7 +148,18 @@ class ElementRef(_Model):
         "an ordinal or superlative of its own, the element nearest to it is meant")
     place: Place | None = Field(
         default=None, description="with kind 'none': a place that is no map element; 'start' = where the "
-        "robot was when this prompt began ('go back', 'come back', 'return to where you started')")
+        "robot was when this prompt began ('go back', 'come back', 'return to where you started'); 'previous' "
+        "= where it was before its last move ('go back to where you were')")
+    # -- composition (issue 9 items 3-5) ---------------------------------------------------------
+    label: Annotated[int, Field(ge=0, le=9999)] | None = Field(
+        default=None, description="the number of the label drawn on the map: 'door 2' -> kind door, label 2 "
+        "(the element door_2); not an order by distance")
+    relation: Relation | None = Field(
+        default=None, description="rooms and hallways: 'adjacent' ('the room next to this one') or 'across' "
+        "('the room across the hall') relative to the space in 'near' (default: the robot's)")
+    passed: bool = Field(
+        default=False, description="'the door you just passed': the last such element the robot's way went "
+        "by or through")
 
 
 class Step(_Model):
@@ -146,7 +176,28 @@ class Step(_Model):
         "'go north 3 m' is this turn, then a move forward")
     amount: Amount | None = None
     query: Query | None = None
+    # -- composition (issue 9 items 3-5) ---------------------------------------------------------
+    offset_m: Annotated[float, Field(ge=0, le=100)] | None = Field(
+        default=None, description="with 'offset': how far past / before the target to stop, along the "
+        "robot's way ('2 m past the door' -> offset past, offset_m 2)")
+    offset: Offset | None = None
+    fraction: Annotated[float, Field(gt=0, le=1)] | None = Field(
+        default=None, description="part of the way to the target or along it: 'halfway down the corridor' "
+        "-> 0.5")
+    place_name: Annotated[str, Field(min_length=1, max_length=80)] | None = Field(
+        default=None, description="name_place / forget_place: the user's name for the place ('kitchen'); "
+        "name_place with a target names that element, without one the robot's spot")
     text: Annotated[str, Field(max_length=500)] = Field(default="", description="the words of this step")
+
+    @model_validator(mode="after")
+    def _composition_fits(self) -> Step:
+        if (self.offset is None) != (self.offset_m is None):
+            raise ValueError("offset and offset_m come together: 'offset': 'past', 'offset_m': 2")
+        if self.offset is not None and self.fraction is not None:
+            raise ValueError("a step has an offset from its target or a fraction of the way, not both")
+        if self.movement in (Movement.NAME_PLACE, Movement.FORGET_PLACE) and not self.place_name:
+            raise ValueError(f"a {self.movement.value} step needs place_name")
+        return self
 
 
 class Intent(_Model):

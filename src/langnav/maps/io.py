@@ -41,6 +41,11 @@ DEFAULT_FREE_THRESH: Final = 0.25
 #: unknown (occ = 50/255 = 0.19608) reads back as unknown; with 0.25 it would read back as free.
 SAVE_FREE_THRESH: Final = 0.196
 MODES: Final = ("trinary", "scale", "raw")
+#: The grey map_saver (and most SLAM tools) write for unknown cells: occupancy (255 - 205) / 255
+#: = 0.19608, which reads as unknown only with free_thresh at most that (map_saver's 0.196) and
+#: occupied_thresh above it; a YAML with free_thresh 0.25 (map_server's old default) reads it as
+#: free, and the building stands in a field of free floor.
+UNKNOWN_GREY: Final = 205
 #: Longest YAML value quoted back in an error message.
 SHOWN_MAX_CHARS: Final = 80
 IMAGE_SUFFIXES: Final = (".pgm", ".png", ".bmp", ".jpg", ".jpeg", ".tif", ".tiff", ".gif")
@@ -49,14 +54,18 @@ IMAGE_SUFFIXES: Final = (".pgm", ".png", ".bmp", ".jpg", ".jpeg", ".tif", ".tiff
 Image.MAX_IMAGE_PIXELS = MAX_CELLS
 
 
-def load_map(path: str | Path, resolution_m: float | None = None) -> OccupancyGrid:
-    """Load a map_server YAML, or a bare image (with ``resolution_m``, default 0.05 m)."""
+def load_map(path: str | Path, resolution_m: float | None = None, unknown_grey: bool = False) -> OccupancyGrid:
+    """Load a map_server YAML, or a bare image (with ``resolution_m``, default 0.05 m).
+
+    ``unknown_grey``: read the grey ``UNKNOWN_GREY`` of a YAML map's image as unknown whatever
+    its thresholds say (see :func:`load_map_yaml`).
+    """
     p = Path(path)
     _require_file(p, "no such file", "is a directory; give a map .yaml or an image")
     if p.suffix.lower() in (".yaml", ".yml"):
         if resolution_m is not None:
             log.warning("%s: --resolution ignored, the YAML gives the resolution", p)
-        return load_map_yaml(p)
+        return load_map_yaml(p, unknown_grey=unknown_grey)
     if p.suffix.lower() in IMAGE_SUFFIXES:
         return load_bare_image(p, resolution_m if resolution_m is not None else DEFAULT_BARE_RESOLUTION_M)
     raise MapError(f"{p}: unknown map type {p.suffix!r}; give a .yaml (map_server) or an image "
@@ -126,8 +135,13 @@ def _number(path: Path, doc: dict[str, Any], key: str, default: float | None = N
     return val
 
 
-def load_map_yaml(path: str | Path) -> OccupancyGrid:
-    """Load a ROS map_server map (YAML + image)."""
+def load_map_yaml(path: str | Path, unknown_grey: bool = False) -> OccupancyGrid:
+    """Load a ROS map_server map (YAML + image), read as map_server reads it.
+
+    When the YAML's thresholds read the unknown grey (``UNKNOWN_GREY``) that the image holds as
+    free or occupied, a warning names the threshold and what to change. ``unknown_grey``: read
+    that grey as unknown anyway (what the map's maker meant).
+    """
     p = Path(path)
     doc = _read_yaml(p)
     image = doc.get("image")
@@ -155,8 +169,36 @@ def load_map_yaml(path: str | Path) -> OccupancyGrid:
     img_path = Path(image) if Path(image).is_absolute() else p.parent / image
     pixels, alpha = _read_image(img_path)
     ros = _pixels_to_ros(pixels, alpha, mode=mode, negate=bool(negate), occ_th=occ_th, free_th=free_th)
+    if mode != "raw":
+        grey = np.rint(pixels * 255.0) == UNKNOWN_GREY
+        if alpha is not None:
+            grey &= alpha >= 1.0
+        n_grey = int(np.count_nonzero(grey))
+        if unknown_grey:
+            ros[grey] = -1
+        elif n_grey:
+            message = grey_read_as_known(bool(negate), occ_th, free_th, n_grey, grey.size)
+            if message:
+                log.warning("%s: %s", p, message)
     h, w = ros.shape
     return from_ros_data(np.flipud(ros).reshape(-1), w, h, resolution, ox, oy, oyaw, source=str(p))
+
+
+def grey_read_as_known(negate: bool, occ_th: float, free_th: float, n_grey: int, n_pixels: int) -> str | None:
+    """What is wrong when thresholds read the unknown grey as free or occupied (None if they do
+    not): the value, the share of the map it turns, and what to change."""
+    occ = UNKNOWN_GREY / 255.0 if negate else 1.0 - UNKNOWN_GREY / 255.0
+    share = f"{n_grey} cells ({100.0 * n_grey / max(n_pixels, 1):.0f} % of the map)"
+    fix = "or pass --unknown-grey to read that grey as unknown"
+    if occ < free_th:
+        return (f"free_thresh {free_th:g} reads the grey {UNKNOWN_GREY} (unknown, as map_saver writes it; "
+                f"occupancy {occ:.3f}) as FREE: {share} of unscanned space become free floor. If they are "
+                f"unknown, set free_thresh to {SAVE_FREE_THRESH} (at most {occ:.4f}) in the YAML, {fix}.")
+    if occ > occ_th:
+        return (f"occupied_thresh {occ_th:g} (with negate: {int(negate)}) reads the grey {UNKNOWN_GREY} (unknown, "
+                f"as map_saver writes it; occupancy {occ:.3f}) as OCCUPIED: {share} of unscanned space become "
+                f"walls. If they are unknown, set occupied_thresh above {occ:.3f} or negate: 0 in the YAML, {fix}.")
+    return None
 
 
 def _read_image(path: Path) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64] | None]:
@@ -247,4 +289,5 @@ def save_map(grid: OccupancyGrid, yaml_path: str | Path) -> tuple[Path, Path]:
     return y, pgm
 
 
-__all__ = ["FREE", "OCCUPIED", "UNKNOWN", "load_bare_image", "load_map", "load_map_yaml", "save_map"]
+__all__ = ["FREE", "OCCUPIED", "UNKNOWN", "UNKNOWN_GREY", "grey_read_as_known", "load_bare_image", "load_map",
+           "load_map_yaml", "save_map"]

@@ -129,13 +129,23 @@ class RobotBackend(Protocol):
     def close(self) -> None: ...
 
 
+@runtime_checkable
+class StopConfirmable(Protocol):
+    """A backend that can tell whether its last stop took (the rosbridge backend): optional."""
+
+    def wait_stopped(self, timeout_s: float | None = None) -> None:
+        """Block until every cancelled goal is confirmed ended; raise RobotError (the robot may
+        still be moving, and what to do) when one was not, within the backend's own bound."""
+        ...
+
+
 BackendFactory = Callable[..., RobotBackend]
 _REGISTRY: dict[str, BackendFactory] = {}
 #: Built-in backends: name -> the module that registers it (imported on first use, so that
 #: roslibpy / rclpy are only loaded when that backend is asked for).
 _BUILTIN: dict[str, str] = {
     "sim": "langnav.robot.sim",
-    "rosbridge": "langnav.robot.rosbridge_backend",
+    "rosbridge": "langnav.robot.ros.rosbridge_backend",
     "ros2": "langnav.robot.ros.backend",
 }
 

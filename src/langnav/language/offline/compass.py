@@ -26,11 +26,14 @@ _POINT: Final = r"(?:north|south)(?:\s*(?:east|west))?|east|west"
 #: "to the north", "towards due east", "facing north west", "in the direction of the south",
 #: "northwards", "to your north".
 COMPASS_RE: Final = re.compile(
-    r"(?:\b(?:to|towards?|facing|to\s+face|in\s+the\s+direction\s+of|direction)\s+(?:the\s+|your\s+)?)?"
+    r"(?:\bback\s+)?(?:\b(?:to|towards?|facing|to\s+face|in\s+the\s+direction\s+of|direction)\s+(?:the\s+|your\s+)?)?"
     rf"(?:\b(?:due|true)\s+)?\b(?P<point>{_POINT})(?:wards?|erly|bound)?\b(?:\s+direction\b)?")
 #: Words of a compass clause that say nothing more ("straight", "forward" when going that way).
 _FORWARD_RE: Final = re.compile(r"\b(?:forwards?|straight|ahead|directly|yourself|so\s+that\s+you\s+are|"
                                 r"back(?=\s+(?:to\s+)?(?:the\s+)?(?:north|south|east|west)))\b")
+
+
+_FACING_SIDE_RE: Final = re.compile(r"\s+(?:wall|side|end)\b")
 
 
 def heading_of(point: str) -> float:
@@ -49,6 +52,9 @@ def compass_steps(c: Clause) -> tuple[list[Step], bool] | None:
     turn = c.s.find(ROTATE_VERB_RE)
     if turn is not None:
         c.s.use(turn.start(), turn.end())
+        side = _FACING_SIDE_RE.match(c.s.text, m.end())
+        if side is not None:
+            c.s.use(side.start(), side.end())  # "face the north wall": facing it is facing north
     c.s.take_all(_FORWARD_RE)
     steps = [Step(movement=Movement.ROTATE, heading_deg=heading, text=c.text[:500])]
     distance: float | None = None

@@ -60,6 +60,18 @@ _LEAD_IN: Final = re.compile(r"^(?:(?:ok|okay|so|now|alright|robot|please)\s+)*(
                              r"ready|here\s+we\s+go)(?:\s+(?:please|robot|now))*$")
 
 
+#: Words that only soften or acknowledge ("about,", "yeah", "okay so"): a clause of them says nothing.
+_HEDGE_WORDS: Final = frozenset({"about", "like", "roughly", "approximately", "say", "so", "well", "yeah", "yes",
+                                 "yep", "okay", "ok", "alright", "sure", "good", "great", "cool",
+                                 "um", "uh", "hmm", "robot", "please", "now", "just"})
+
+
+def is_hedge(clause: str) -> bool:
+    """Only hedges or acknowledgements: "about," in "turn right, about, thirty degrees"."""
+    words = normalize(clause).split()
+    return bool(words) and all(w in _HEDGE_WORDS for w in words)
+
+
 def is_bare_verb(clause: str) -> bool:
     """Only a verb of motion, with nothing said about where or how far ("turn", "can you move")."""
     words = normalize(clause).split()

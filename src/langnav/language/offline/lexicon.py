@@ -531,6 +531,10 @@ STOPWORDS: Final = frozenset({
     "entire", "total", "altogether", "approx", "ca",
     "circa", "degrees", "meters", "reached", "reach", "arrived", "arrive",
     "passed", "pass", "gone", "through", "make", "want", "need", "wish", "able",
+    # the -ing of the verb already read ("continue moving forward", "keep rolling")
+    "moving", "driving", "rolling", "heading", "turning", "rotating", "travelling", "traveling", "proceeding",
+    # assent said before an instruction ("yeah, just turn north")
+    "yeah", "yes", "yep", "yup",
 })
 
 # ------------------------------------------------------------------------------ typos

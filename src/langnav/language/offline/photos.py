@@ -38,6 +38,8 @@ _PHOTO_LEFTOVER: Final = re.compile(
     r"thanks|thank\s+you)\b|[^\w\s]")
 
 
+#: Request words left in front of the photo's object ("can you [take a picture] of ...").
+_REQUEST_START: Final = re.compile(r"^(?:(?:hi|hey|okay|ok|robot|so|please|can|could|will|would|you|and|now|just)\b[\s,]*)+")
 #: The object of a photo request ("of X", "in front of you").
 _OBJECT_RE: Final = re.compile(r"^(?:(?:please|and|now)\s+|,\s*)*(?:of|in\s+front|at)\b")
 #: A motion verb after the object: the rest is an instruction of its own ("... of the door then turn left").
@@ -61,6 +63,7 @@ def without_photo(clause: str) -> PhotoReading:
         return PhotoReading(clause, False)
     rest = " ".join((text[:m.start()] + " " + text[m.end():]).split()).strip(" ,;")
     rest = re.sub(r"(?:\s+(?:and|then|and\s+then))+$", "", rest)
+    rest = _REQUEST_START.sub("", rest)
     if _OBJECT_RE.match(rest) is not None and _MOTION_VERB_RE.search(rest) is None:
         # "of what is in front of you", "of this room", "of the entire wall": what to photograph;
         # only a side or "behind" in it asks for a turn first

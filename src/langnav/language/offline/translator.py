@@ -8,7 +8,13 @@ from typing import Final
 
 from langnav.language.intent import Amount, Detail, Direction, ElementRef, Intent, Movement, Step
 from langnav.language.offline.ask import ask_message, spatial
-from langnav.language.offline.corrections import apply_corrections, join_fragments
+from langnav.language.offline.composition import read_composed
+from langnav.language.offline.corrections import (
+    CANCEL_RE,
+    apply_corrections,
+    is_hedge,
+    join_fragments,
+)
 from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.photos import without_photo
@@ -45,6 +51,7 @@ NEGATIVE_MESSAGE: Final = (
 NO_CAMERA_MESSAGE: Final = (
     "I have no camera, so I can't take pictures or tell you what I see. I can drive, turn, stop, explore "
     "the map and tell you where I am, my path or the map.")
+CANCELLED_MESSAGE: Final = "You took that back ('never mind'), so I did nothing. Tell me what to do next."
 PHOTO_LEFT_OUT_MESSAGE: Final = "I did the motion but took no picture: I have no camera."
 TOO_MANY_STEPS_MESSAGE: Final = (
     f"That is more than {MAX_STEPS} steps; give me at most {MAX_STEPS} at a time.")
@@ -81,7 +88,7 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     questions: list[str] = []   # what the reading would have to guess
     blocking: list[str] = []    # words left unread that could change where or how far
     for clause in clauses:
-        reading = read_clause(clause, previous, known_names, previous_target)
+        reading = read_composed(clause, previous, known_names, previous_target)
         if reading.problem == Problem.QUESTION and reading.referent is not None:
             asked = (reading.problem, clause, reading)
             previous_target = reading.referent
@@ -136,6 +143,8 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     if not steps:
         if not problems and photo:
             return _clarify(NO_CAMERA_MESSAGE, confidence=1.0, unread=[])
+        if not problems and not clauses and CANCEL_RE.search(text):
+            return _clarify(CANCELLED_MESSAGE, confidence=1.0, unread=[])
         if not problems:
             return _clarify(_unreadable_message(text), confidence=0.2, unread=[text[:200]])
         problem, clause, _ = problems[0]
@@ -156,7 +165,7 @@ def _clauses(text: str) -> tuple[list[str], bool]:
     for clause in split_steps(text):
         without = without_photo(clause)
         photo = photo or without.asked
-        if without.rest:
+        if without.rest and not is_hedge(without.rest):
             kept.append(without.rest)
     joined = join_fragments(kept, _is_open)
     return apply_corrections(joined), photo
@@ -194,9 +203,9 @@ def _amend(previous: Step, fragment: Step, clause: str) -> Step:
 
 
 def _name_message(name: str) -> str:
-    return (f"I don't know where '{name}' is: my map has no names or labels for places. Tell me what it "
-            "is and where (e.g. 'the second door on your left', 'the biggest room'), or stand there and "
-            "name the place first.")
+    return (f"I don't know a place called '{name}'; name it first: stand there and say 'call this spot the "
+            f"{name}'. Or tell me where it is by what the map shows, e.g. 'the second door on your left' or "
+            "'room 3'.")
 
 
 def _unknowable_message(name: str) -> str:

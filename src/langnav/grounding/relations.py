@@ -1,0 +1,212 @@
+"""Relations between spaces: "the room next to this one", "the room across the hall".
+
+* **next to** (``Relation.ADJACENT``): a space joined to the reference space by a door or narrow
+  passage, or separated from it only by a wall (their free cells come within ``WALL_APART_MAX_M``).
+  The reference is ``ref.near`` or, without one, the space the robot is in. When several spaces
+  fit and no other word picks one, the robot asks which (it does not guess).
+* **across the hall** (``Relation.ACROSS``): a space whose door opens onto the same hallway on the
+  other side of it, straight across (along the hallway within ``ACROSS_ALONG_MAX_M``) from the
+  robot's door (the robot in a room) or from the robot (the robot in the hallway).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Final
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from langnav.analysis.elements import Door, Element, ElementKind, MapAnalysis, NarrowPassage, Room
+from langnav.grounding.errors import GroundingError
+from langnav.grounding.geometry import Point, Pose, nearest_point
+from langnav.grounding.selection import (
+    KIND_NOUN,
+    SIDE_WORDS,
+    describe_ref,
+    distance_to,
+    elements_of_kind,
+    label_of,
+    landmark_ref,
+    matches_side,
+    select,
+    size_of,
+    space_of,
+)
+from langnav.language.intent import Element as Kind
+from langnav.language.intent import ElementRef, Relation, Side, Superlative
+
+#: Two spaces whose free cells come this close have only a wall between them (interior walls are
+#: 0.1-0.3 m thick; the free cells stop a cell or two short of them).
+WALL_APART_MAX_M: Final = 0.6
+#: "Straight across": the two doors lie within this distance of each other along the hallway
+#: (about a door's width and a half: doors opposite each other are rarely perfectly aligned).
+ACROSS_ALONG_MAX_M: Final = 2.0
+#: The hallway's local direction is taken from its cells within this distance of the reference.
+HALL_AXIS_RADIUS_M: Final = 3.0
+#: A point this close to the hallway's centre line is on neither side of it.
+CENTRE_LINE_EPS_M: Final = 0.1
+#: In the middle of a hallway, the robot faces one side when its heading is within ~70 deg of that
+#: side's normal (cos 70 deg); facing along the hallway names no side.
+FACING_ACROSS_MIN: Final = 0.34
+
+
+def spaces_joined(a: Room, b: Room, analysis: MapAnalysis) -> bool:
+    """A door or narrow passage joins the two spaces."""
+    openings: list[Door | NarrowPassage] = [*analysis.doors, *analysis.narrow_passages]
+    return any({a.id, b.id} <= set(o.connects) for o in openings)
+
+
+def wall_apart(a: Room, b: Room) -> bool:
+    """The two spaces' free cells come within WALL_APART_MAX_M: only a wall is between them."""
+    if len(a.cells_xy) == 0 or len(b.cells_xy) == 0:
+        return False
+    pa, pb = np.asarray(a.cells_xy, float).reshape(-1, 2), np.asarray(b.cells_xy, float).reshape(-1, 2)
+    if len(pa) > len(pb):
+        pa, pb = pb, pa
+    d, _ = cKDTree(pb).query(pa, k=1, distance_upper_bound=WALL_APART_MAX_M + 1e-6)
+    return bool(np.isfinite(d).any())
+
+
+def _reference_space(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room:
+    if ref.near is not None and not ref.near.in_current_room:
+        mark = select(landmark_ref(ref.near), analysis, pose)
+        if not isinstance(mark, Room):
+            raise GroundingError(f"'{describe_ref(ref)}' relates rooms and hallways, not "
+                                 f"{KIND_NOUN[ref.near.kind][1]}.")
+        return mark
+    here = space_of(analysis, pose.xy)
+    if here is None:
+        raise GroundingError("I cannot tell which room I am in: I seem to be outside every room, so I "
+                             "cannot tell which one is next to it.")
+    return here
+
+
+def _kind_pool(ref: ElementRef, analysis: MapAnalysis) -> list[Room]:
+    return [e for e in elements_of_kind(analysis, ref.kind) if isinstance(e, Room)]
+
+
+def select_related_spaces(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int = 1) -> list[Element]:
+    """The spaces "next to" or "across" the reference space, as the words pick them."""
+    if ref.relation == Relation.ACROSS:
+        return [_across(ref, analysis, pose)]
+    mark = _reference_space(ref, analysis, pose)
+    pool: list[Room] = [r for r in _kind_pool(ref, analysis)
+                        if r is not mark and (spaces_joined(r, mark, analysis) or wall_apart(r, mark))]
+    where = "this one" if ref.near is None or ref.near.in_current_room else label_of(mark)
+    noun, nouns = KIND_NOUN[ref.kind]
+    if not pool:
+        raise GroundingError(f"I see no {noun} next to {where}.")
+    if ref.side is not None:
+        pool = [r for r in pool if matches_side(r, pose, ref.side)]
+        if not pool:
+            raise GroundingError(f"I see no {noun} next to {where} {SIDE_WORDS[ref.side]}.")
+    picked = ref.ordinal is not None or ref.superlative is not None
+    if not picked and len(pool) > count:
+        options = sorted(pool, key=lambda r: distance_to(r, pose.xy))
+        listed = "; ".join(f"{label_of(r)} ({_where_is(r, pose)})" for r in options[:6])
+        raise GroundingError(f"There are {len(pool)} {nouns} next to {where}: {listed}. Which one do you mean? "
+                             f"Say e.g. 'go to {label_of(options[0])}'.")
+    sup = ref.superlative
+    if sup in (Superlative.BIGGEST, Superlative.SMALLEST, Superlative.WIDEST, Superlative.NARROWEST):
+        ordered = sorted(pool, key=size_of, reverse=sup in (Superlative.BIGGEST, Superlative.WIDEST))
+    else:
+        ordered = sorted(pool, key=lambda r: distance_to(r, pose.xy), reverse=sup == Superlative.FARTHEST)
+    k = (ref.ordinal or 1) - 1
+    if len(ordered) < k + count:
+        raise GroundingError(f"I see only {len(ordered)} {nouns if len(ordered) != 1 else noun} next to {where}, "
+                             f"so I cannot find {describe_ref(ref)}.")
+    return list(ordered[k:k + count])
+
+
+def _where_is(e: Element, pose: Pose) -> str:
+    for side in (Side.AHEAD, Side.BEHIND, Side.LEFT, Side.RIGHT):
+        if matches_side(e, pose, side):
+            return SIDE_WORDS[side]
+    return "beside me"
+
+
+def hall_axis(hall: Room, around: Point) -> tuple[Point, Point]:
+    """(centre, unit direction) of the hallway near a point: the principal axis of its cells within
+    HALL_AXIS_RADIUS_M (all of them when too few are near)."""
+    cells = np.asarray(hall.cells_xy, float).reshape(-1, 2)
+    if len(cells) < 3:
+        raise GroundingError(f"{label_of(hall)} has too little free space to tell its direction.")
+    near = cells[np.hypot(cells[:, 0] - around[0], cells[:, 1] - around[1]) <= HALL_AXIS_RADIUS_M]
+    pts = near if len(near) >= 10 else cells
+    c = pts.mean(axis=0)
+    w, v = np.linalg.eigh(np.cov((pts - c).T))
+    axis = v[:, int(np.argmax(w))]
+    return (float(c[0]), float(c[1])), (float(axis[0]), float(axis[1]))
+
+
+def _across(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room:
+    here = space_of(analysis, pose.xy)
+    halls = [r for r in analysis.rooms if r.kind == ElementKind.HALLWAY]
+    if ref.near is not None and ref.near.kind == Kind.HALLWAY and not ref.near.in_current_room:
+        hall_e = select(landmark_ref(ref.near), analysis, pose)
+        assert isinstance(hall_e, Room)
+        hall = hall_e
+    elif here is not None and here.kind == ElementKind.HALLWAY:
+        hall = here
+    else:
+        joined = [h for h in halls if here is not None and spaces_joined(h, here, analysis)]
+        if not joined:
+            raise GroundingError("I see no hallway next to the room I am in, so I cannot tell which room is "
+                                 "across it.")
+        hall = min(joined, key=lambda h: nearest_point(pose.xy, h.cells_xy)[0])
+    # the point across from which to look: the robot in the hallway, else its room's door onto it
+    if here is hall or here is None:
+        origin = pose.xy
+    else:
+        doors = [d for d in analysis.doors if {hall.id, here.id} <= set(d.connects)]
+        if not doors:
+            raise GroundingError(f"I see no door from this room onto {label_of(hall)}.")
+        origin = min(doors, key=lambda d: math.dist(d.center, pose.xy)).center
+    centre, axis = hall_axis(hall, origin)
+    normal = (-axis[1], axis[0])
+
+    def across(p: Point) -> float:
+        return (p[0] - centre[0]) * normal[0] + (p[1] - centre[1]) * normal[1]
+
+    def along(p: Point) -> float:
+        return (p[0] - centre[0]) * axis[0] + (p[1] - centre[1]) * axis[1]
+
+    facing = math.cos(pose.yaw_rad) * normal[0] + math.sin(pose.yaw_rad) * normal[1]
+    if ref.side in (Side.LEFT, Side.RIGHT):
+        # "the room across the hall on your left": that side of the robot is the far side
+        left_is_plus = (-math.sin(pose.yaw_rad)) * normal[0] + math.cos(pose.yaw_rad) * normal[1] > 0
+        far_plus = left_is_plus if ref.side == Side.LEFT else not left_is_plus
+        own = -1.0 if far_plus else 1.0
+    elif abs(across(origin)) >= CENTRE_LINE_EPS_M:
+        own = across(origin)
+    elif abs(facing) >= FACING_ACROSS_MIN:
+        own = -1.0 if facing > 0 else 1.0  # in the middle of the hallway: across is the side it faces
+    else:
+        raise GroundingError(f"I am in the middle of {label_of(hall)}, facing along it, so 'across' could be "
+                             "either side; say 'the room across the hall on your left' (or right).")
+    candidates: list[tuple[float, Room]] = []
+    for d in analysis.doors:
+        if hall.id not in d.connects:
+            continue
+        other_id = next((c for c in d.connects if c != hall.id), None)
+        if other_id is None or (here is not None and other_id == here.id):
+            continue
+        other = next((r for r in analysis.rooms if r.id == other_id), None)
+        if other is None or (ref.kind == Kind.ROOM and other.kind != ElementKind.ROOM):
+            continue
+        if across(d.center) * own >= 0:
+            continue  # a door on the robot's own side of the hallway
+        candidates.append((abs(along(d.center) - along(origin)), other))
+    if not candidates:
+        raise GroundingError(f"I see no room on the other side of {label_of(hall)}.")
+    gap, best = min(candidates, key=lambda t: t[0])
+    if gap > ACROSS_ALONG_MAX_M:
+        raise GroundingError(f"No room is straight across {label_of(hall)} from here: the nearest on the other "
+                             f"side, {label_of(best)}, is {gap:.1f} m further along. Say 'go to {label_of(best)}' "
+                             "if you mean that one.")
+    return best
+
+
+__all__ = ["ACROSS_ALONG_MAX_M", "WALL_APART_MAX_M", "hall_axis", "select_related_spaces", "spaces_joined",
+           "wall_apart"]
