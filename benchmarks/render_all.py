@@ -47,6 +47,7 @@ def main() -> int:
         return 0
     todo = [m for m in maps(SHARED) if args.only in m.as_posix()]
     failed: list[str] = []
+    start = time.perf_counter()
     with tempfile.TemporaryDirectory() as tmp:
         out = args.out or Path(tmp)
         out.mkdir(parents=True, exist_ok=True)
@@ -69,7 +70,7 @@ def main() -> int:
             with Image.open(png) as im:
                 size = im.size
             print(f"ok  {m.relative_to(SHARED)}: picture {size[0]}x{size[1]}, {dt:.1f} s", flush=True)
-    print(f"{len(todo) - len(failed)} of {len(todo)} maps rendered (PNG and SVG)"
+    print(f"{len(todo) - len(failed)} of {len(todo)} maps rendered (PNG and SVG) in {time.perf_counter() - start:.0f} s"
           + (f"; FAILED: {', '.join(failed)}" if failed else ""))
     return 1 if failed else 0
 

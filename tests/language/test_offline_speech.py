@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 import pytest
-from hypothesis import example, given
+from hypothesis import assume, example, given
 from hypothesis import strategies as st
 
 from langnav.language.intent import Amount, Direction, Intent, Movement, Step
@@ -245,3 +245,24 @@ def test_a_self_correction_is_the_only_turn(first: int, second: int, marker: str
     said += f"turn {_spoken(second)} degrees to your right" if restate else f"{_spoken(second)} degrees right"
     intent = translate_offline(said)
     assert [(s.direction, s.angle_deg) for s in intent.steps] == [(Direction.RIGHT, pytest.approx(second))], intent
+
+
+# ------------------------------------------------------------------------------ typing slips
+def _swap(word: str, i: int) -> str:
+    return word[:i] + word[i + 1] + word[i] + word[i + 2:]
+
+
+_PLAIN = {"left": ("turn left 40 degrees", Direction.LEFT), "right": ("turn right 40 degrees", Direction.RIGHT),
+          "turn": ("turn right 40 degrees", Direction.RIGHT), "rotate": ("rotate left 40 degrees", Direction.LEFT),
+          "degrees": ("turn right 40 degrees", Direction.RIGHT)}
+
+
+@given(st.sampled_from(sorted(_PLAIN)), st.data())
+@example(word="right", data=None)
+def test_two_swapped_letters_read_as_the_word(word: str, data: st.DataObject | None) -> None:
+    """A typing slip (two letters swapped, not the first) in a word of the command changes nothing."""
+    i = data.draw(st.integers(min_value=1, max_value=len(word) - 2)) if data is not None else 2
+    plain, side = _PLAIN[word]
+    said = " ".join(_swap(word, i) if w == word else w for w in plain.split())
+    assume(said != plain)  # swapping two equal letters ("degrees") is no slip
+    assert [(s.direction, s.angle_deg) for s in translate_offline(said).steps] == [(side, 40.0)], said

@@ -10,14 +10,21 @@ from langnav.language.offline.lexicon import (
     ELEMENT_NOUNS,
     NOT_TYPOS,
     ORDINALS,
+    OTHER_FLOOR_PATTERNS,
+    OUT_OF_SCOPE_PATTERNS,
     SIDE_ADJECTIVES,
     SUPERLATIVES,
     TYPO_TARGETS,
     TYPOS,
+    UNSAFE_PATTERNS,
 )
 
 #: Shortest word that edit-distance repair touches (shorter words have too many neighbours).
 MIN_TYPO_REPAIR_LEN: Final = 6
+#: Typing slips (two letters swapped) are repaired from three letters ("teh"), a letter left out or
+#: doubled from four ("rigt"): shorter words have too many neighbours.
+MIN_SLIP_REPAIR_LEN: Final = 3
+MIN_SLIP_INDEL_LEN: Final = 4
 
 _CHAR_MAP: Final = str.maketrans({"’": "'", "‘": "'", "`": "'", "´": "'", "“": '"', "”": '"',
                                   "–": "-", "—": "-", "×": "x", "π": " pi "})
@@ -100,9 +107,13 @@ def normalize(clause: str) -> str:
 def _repair(word: str) -> str:
     if word in TYPOS:
         return TYPOS[word]
-    if len(word) < MIN_TYPO_REPAIR_LEN or word in TYPO_TARGETS or word in NOT_TYPOS or not word.isalpha():
+    if word in NOT_TYPOS or not word.isalpha() or len(word) < MIN_SLIP_REPAIR_LEN:
         return word
-    return _closest_target(word) or word
+    if len(word) >= MIN_TYPO_REPAIR_LEN and word not in TYPO_TARGETS:
+        found = _closest_target(word)
+        if found is not None:
+            return found
+    return _typing_slip(word) or word
 
 
 @lru_cache(maxsize=4096)
@@ -111,6 +122,45 @@ def _closest_target(word: str) -> str | None:
     hits = [t for t in TYPO_TARGETS
             if len(t) >= MIN_TYPO_REPAIR_LEN and abs(len(t) - len(word)) <= 1 and _within_one_edit(word, t)]
     return hits[0] if len(hits) == 1 else None
+
+
+@lru_cache(maxsize=4096)
+def _typing_slip(word: str) -> str | None:
+    """A short word the lexicon does not know, one typing slip away from exactly one word it does:
+    two letters swapped ("teh", "rigth", "lfet"), or (from four letters) one letter left out or
+    doubled ("rigt", "leftt", "degres"). The first letter is kept: slips rarely hit it, and real words
+    that differ in it ("saw" / "was", "on" / "no") are not slips."""
+    from langnav.language.offline.vocabulary import (
+        VOCABULARY,  # the vocabulary is built from the parser's tables
+    )
+
+    if word in VOCABULARY or word in _REQUEST_WORDS:
+        return None
+    hits = {v for v in VOCABULARY if v[:1] == word[:1] and len(v) >= MIN_SLIP_REPAIR_LEN
+            and _one_slip(word, v)}
+    return hits.pop() if len(hits) == 1 else None
+
+
+#: Words of requests the robot refuses ("sing", "push", "stairs"): real words, never slips of a known one.
+_REQUEST_WORDS: Final = frozenset(
+    w for pattern in (*OUT_OF_SCOPE_PATTERNS, *OTHER_FLOOR_PATTERNS, *UNSAFE_PATTERNS)
+    for w in re.findall(r"[a-z]{3,}", re.sub(r"\\[a-zA-Z]", " ", pattern)))
+
+
+def _one_slip(typed: str, known: str) -> bool:
+    if len(typed) == len(known):
+        diff = [i for i in range(len(typed)) if typed[i] != known[i]]
+        return (len(diff) == 2 and diff[1] == diff[0] + 1 and typed[diff[0]] == known[diff[1]]
+                and typed[diff[1]] == known[diff[0]])
+    if len(typed) < MIN_SLIP_INDEL_LEN or abs(len(typed) - len(known)) != 1:
+        return False
+    if len(typed) > len(known) and typed.startswith(known) and typed[-1] != typed[-2]:
+        return False  # "ends", "runs", "turned": an inflection of a known word, not a slip
+    short, long_ = (typed, known) if len(typed) < len(known) else (known, typed)
+    i = 0
+    while i < len(short) and short[i] == long_[i]:
+        i += 1
+    return short[i:] == long_[i + 1:]
 
 
 def _within_one_edit(a: str, b: str) -> bool:

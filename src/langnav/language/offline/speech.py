@@ -23,7 +23,7 @@ HESITATIONS: Final = frozenset({
 #: Affirmations ("you're right", "that's correct") are no side; "at least" / "at most" and "until I
 #: tell you to stop" leave the amount said as it is; "what about / how about" before a verb is a request.
 _HEDGES: Final = re.compile(
-    r"\b(?:maybe|perhaps|i\s+guess|i\s+think|you\s+know|kind\s+of|sort\s+of|let\s+us\s+see|let's\s+see|lets\s+see|"
+    r"\b(?:maybe|perhaps|i\s+guess|i\s+think|kind\s+of|sort\s+of|let\s+us\s+see|let's\s+see|lets\s+see|"
     r"(?:you'?re|you\s+are|that'?s|that\s+is|thats)\s+(?:right|correct)|at\s+(?:least|most)|"
     r"(?:until|till)\s+i\s+(?:tell\s+you(?:\s+(?:to\s+stop|otherwise))?|say\s+(?:so|stop|otherwise))|"
     r"(?:what|how)\s+about(?=\s+(?:you\s+)?(?:move|go|turn|rotate|head|drive|face|pivot|back|proceed)\b))\b",
