@@ -104,7 +104,8 @@ def test_explores_a_small_floor_from_an_empty_map() -> None:
     assert covered >= 0.9
     assert robot.collisions == 0
     assert events[0].kind is EventKind.STARTED
-    assert events[-1].kind is EventKind.SUCCEEDED and "no reachable frontier" in events[-1].message
+    assert events[-1].kind is EventKind.SUCCEEDED and "exploration done" in events[-1].message
+    assert "frontier" not in events[-1].message
 
 
 def test_budget_ends_exploration() -> None:
@@ -148,3 +149,20 @@ def test_the_executor_runs_an_exploration_item() -> None:
     done = [e for e in events if e.kind is EventKind.SUCCEEDED]
     assert len(done) == 1 and "budget" in done[0].message
     assert robot.get_map().free.sum() * 0.0025 > 20.0  # the first room and more, in ten seconds
+
+
+def test_done_message_agrees_with_the_map() -> None:
+    """An unmapped edge the robot cannot reach is reported as such, never as 'nothing left'."""
+    from langnav.robot.explore import done_message
+
+    assert done_message(0, 0) == "exploration done: everything I can reach is mapped"
+    assert "2 edges of the map are still unmapped, but I cannot reach them" in done_message(2, 0)
+    assert "could not get there" in done_message(1, 1)
+    b = MapBuilder(8.0, 5.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 3.0, 3.0)
+    b.room(3.5, 0.0, 6.0, 3.0)       # a walled-off room, half of it never seen
+    b.unknown(4.5, 0.5, 5.5, 2.5)
+    g = b.build("sealed")
+    left = find_frontiers(g, (1.5, 1.5), reachable_only=False)
+    assert find_frontiers(g, (1.5, 1.5)) == []
+    assert len(left) >= 1 and all(f.distance_m == float("inf") for f in left)

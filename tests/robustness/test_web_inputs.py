@@ -42,13 +42,20 @@ def _error(r: object) -> dict[str, object]:
     (b"{}", 422, "text: Field required"),
     (b'{"text": "stop", "speed": 9}', 422, "speed: Extra inputs are not permitted"),
     (b'{"text": "\xff\xfe"}', 400, "send UTF-8 JSON"),
-    (b'{"text": ""}', 400, "the prompt is empty"),
-    (b'{"text": " \\n\\t "}', 400, "the prompt is empty"),
 ])
 def test_bad_prompt_bodies(client: TestClient, content: bytes, status: int, words: str) -> None:
     r = client.post("/api/prompt", content=content, headers=JSON)
     assert r.status_code == status
     assert words in str(_error(r)["message"])
+
+
+@pytest.mark.parametrize("text", ["", " \n\t "])
+def test_empty_prompt_gets_a_reply_and_moves_nothing(client: TestClient, text: str) -> None:
+    r = client.post("/api/prompt", json={"text": text})
+    assert r.status_code == 200
+    (reply,) = r.json()["messages"]
+    assert reply["kind"] == "clarification" and reply["text"].startswith("Your message was empty")
+    assert client.get("/api/status").json()["plan"]["state"] == "idle"
 
 
 def test_huge_wrong_type_and_unknown_route(client: TestClient) -> None:
@@ -129,7 +136,7 @@ def test_websocket_garbage_and_abrupt_close_leave_the_server_up(client: TestClie
     r = client.post("/api/prompt", json={"text": "where are you?"})
     assert r.status_code == 200
     answer = r.json()["messages"][1]["text"]
-    assert re.fullmatch(r"I'm in .+ at x 1\.\d, y [45]\.\d, facing \w+\.", answer), answer  # the robot answers
+    assert re.fullmatch(r"I'm in .+, facing \w+\.", answer), answer  # the robot answers
 
 
 def test_rapid_prompts_are_rate_limited(tmp_path: Path) -> None:

@@ -55,7 +55,7 @@ def test_describe_intent_in_order() -> None:
         Step(movement=Movement.MOVE, direction=Direction.FORWARD, distance_m=0.5),
         Step(movement=Movement.QUERY, query=Query.POSE),
     ])
-    assert describe_intent(intent) == ("I'll go to the nearest unexplored area, then turn left 90°, then "
+    assert describe_intent(intent) == ("I'll go to the nearest unexplored area, then turn left, then "
                                        "move forward 0.50 m, then tell you where I am.")
 
 

@@ -11,6 +11,7 @@ import logging
 from pathlib import Path
 
 from langnav.cli.options import pose_arg
+from langnav.cli.places import add_places_option, places_path
 from langnav.cli.robot_options import add_robot_arguments, robot_options
 from langnav.web.settings import DEFAULT_HOST, DEFAULT_PORT, WebSettings, make_token
 
@@ -28,6 +29,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--known-map", action="store_true", help="the robot starts with the whole world map as its own")
     p.add_argument("--pose", type=pose_arg, default=None, help="start pose X,Y,YAW_DEG (default: the world's open spot)")
     p.add_argument("--db", type=Path, default=Path("langnav.db"), help="SQLite file of the conversation")
+    add_places_option(p)  # the same places file as `langnav run` / `langnav places`
     add_robot_arguments(p)
 
 
@@ -36,7 +38,8 @@ def settings_from_args(args: argparse.Namespace) -> WebSettings:
     backend, options = robot_options(args)  # flags, then LANGNAV_* variables (one definition with `run`)
     settings = WebSettings.from_env(world=args.world, backend=backend, translator=args.translator,
                                     host=args.host, port=args.port, known_map=args.known_map or None,
-                                    start_pose=args.pose, db_path=args.db, backend_options=options or None)
+                                    start_pose=args.pose, db_path=args.db, backend_options=options or None,
+                                    places_path=places_path(getattr(args, "places", None)))
     if settings.requires_token and not settings.token:
         settings = settings.model_copy(update={"token": make_token()})
     return settings.checked()

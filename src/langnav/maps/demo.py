@@ -20,6 +20,14 @@ from langnav.maps.io import save_map
 #: The word the CLI accepts in place of a map file.
 DEMO_NAME: Final = "demo"
 DEMO_FILE: Final = "demo.yaml"
+#: Where the demo robot starts (x_m, y_m, yaw_deg): in the hallway's west end, facing east along
+#: it, so the first screen shows doors ahead on both sides, rooms through them and the unscanned
+#: corner beyond: every starter example in the web app has something to act on from here.
+DEMO_START: Final = (1.5, 4.95, 0.0)
+#: The demo robot starts with the floor already mapped (as a robot with a saved slam_toolbox map
+#: does): rooms, doors and furniture have names from the first second; the unscanned corner and
+#: the exit are still there to explore.
+DEMO_KNOWN_MAP: Final = True
 
 
 def build_demo_grid() -> OccupancyGrid:

@@ -90,9 +90,21 @@ def frontier_mask(grid: OccupancyGrid) -> np.ndarray:
     return grid.free & near_unknown
 
 
+def done_message(edges_left: int, given_up: int) -> str:
+    """How an exploration ended, in plain words that agree with the map: when unmapped edges are
+    left (out of reach, too narrow to see into, or goals that failed), say so rather than "done"."""
+    if edges_left == 0:
+        return "exploration done: everything I can reach is mapped"
+    what = "one edge of the map is" if edges_left == 1 else f"{edges_left} edges of the map are"
+    why = " (I tried and could not get there)" if given_up else ""
+    return f"exploration done: {what} still unmapped, but I cannot reach {'it' if edges_left == 1 else 'them'}{why}"
+
+
 def find_frontiers(grid: OccupancyGrid, pose_xy: tuple[float, float], params: ExploreParams | None = None,
-                   blacklist: list[tuple[float, float]] | None = None) -> list[Frontier]:
-    """The reachable frontiers of a map, best first. Pure."""
+                   blacklist: list[tuple[float, float]] | None = None, *,
+                   reachable_only: bool = True) -> list[Frontier]:
+    """The reachable frontiers of a map, best first (with ``reachable_only=False``, the others
+    too, at an infinite distance). Pure."""
     p = params or ExploreParams()
     res = grid.resolution_m
     mask = frontier_mask(grid)
@@ -121,6 +133,10 @@ def find_frontiers(grid: OccupancyGrid, pose_xy: tuple[float, float], params: Ex
         reach = cum[rr, cc]
         ok = np.isfinite(reach)
         if not ok.any():
+            if not reachable_only:
+                xs, ys = grid.cell_to_world(rr, cc)
+                c = (float(xs.mean()), float(ys.mean()))
+                out.append(Frontier(size_m, c, c, math.inf, math.inf))
             continue
         xs, ys = grid.cell_to_world(rr, cc)
         cx, cy = float(xs.mean()), float(ys.mean())
@@ -247,12 +263,13 @@ class Explorer:
             pose = self.robot.get_robot_pose()
             frontiers = find_frontiers(grid, (pose.x_m, pose.y_m), p, self.blacklist)
             if not frontiers:
-                self._emit(EventKind.SUCCEEDED, "exploration done: no reachable frontier is left",
-                           data=self._figures(grid, 0))
+                left = len(find_frontiers(grid, (pose.x_m, pose.y_m), p, None, reachable_only=False))
+                figures = {**self._figures(grid, 0), "edges_left": left}
+                self._emit(EventKind.SUCCEEDED, done_message(left, len(self.blacklist)), data=figures)
                 return PlanStatus.SUCCEEDED
             target = frontiers[0]
             self._emit(EventKind.PROGRESS,
-                       f"heading for a {target.size_m:.1f} m frontier at ({target.goal_xy[0]:.1f}, {target.goal_xy[1]:.1f})",
+                       f"heading for the edge of what I have mapped, {target.distance_m:.0f} m away",
                        data=self._figures(grid, len(frontiers)))
             last = self._drive_to(target, last)
 

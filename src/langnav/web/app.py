@@ -25,6 +25,7 @@ import asyncio
 import contextlib
 import html
 import logging
+import math
 import secrets
 import threading
 import time
@@ -81,11 +82,30 @@ class _Body(BaseModel):
 
 class PromptIn(_Body):
     text: str = Field(description="what the robot should do, in plain words")
+    replace: bool = Field(default=False, description="replace the running plan (after the robot asked)")
 
 
 class GotoIn(_Body):
     x: float = Field(allow_inf_nan=False, description="map-frame x, metres")
     y: float = Field(allow_inf_nan=False, description="map-frame y, metres")
+    yaw_deg: float | None = Field(default=None, allow_inf_nan=False, ge=-360, le=360,
+                                  description="heading to stop in, degrees counter-clockwise from +x")
+
+
+class PlaceIn(_Body):
+    name: str = Field(min_length=1, max_length=60, description="what to call the spot")
+    x: float = Field(allow_inf_nan=False, description="map-frame x, metres")
+    y: float = Field(allow_inf_nan=False, description="map-frame y, metres")
+    element_id: str | None = Field(default=None, max_length=60, description="name this map element instead")
+
+
+class RenameIn(_Body):
+    name: str = Field(min_length=1, max_length=60)
+    new_name: str = Field(min_length=1, max_length=60)
+
+
+class ForgetIn(_Body):
+    name: str = Field(min_length=1, max_length=60)
 
 
 class TranslatorIn(_Body):
@@ -175,6 +195,8 @@ def _install_error_handlers(app: FastAPI) -> None:
     async def _http(request: Request, exc: StarletteHTTPException) -> Response:
         title = _TITLES.get(exc.status_code, "Error")
         message = exc.detail if isinstance(exc.detail, str) else title
+        if exc.status_code != 404:
+            log.warning("%s %s -> %d %s: %s", request.method, request.url.path, exc.status_code, title, message)
         if exc.status_code == 404 and message == "Not Found":
             message = f"There is nothing at {request.url.path}."
         elif exc.status_code == 400 and message == "There was an error parsing the body":
@@ -184,12 +206,14 @@ def _install_error_handlers(app: FastAPI) -> None:
     @app.exception_handler(RequestValidationError)
     async def _invalid(request: Request, exc: RequestValidationError) -> Response:
         reasons = [_reason(e) for e in exc.errors()]
+        log.warning("%s %s -> 422: %s", request.method, request.url.path, "; ".join(reasons))
         return error_response(request, 422, "Invalid request", "The request was not understood: "
                               + "; ".join(reasons), reasons)
 
     async def _library_error(request: Request, exc: Exception) -> Response:
         # the most specific class in LIBRARY_ERRORS the error is an instance of
         status, title = next(v for k, v in LIBRARY_ERRORS.items() if isinstance(exc, k))
+        log.warning("%s %s -> %d %s: %s", request.method, request.url.path, status, title, exc)
         return error_response(request, status, title, str(exc), getattr(exc, "reasons", None))
 
     for error_class in LIBRARY_ERRORS:
@@ -292,6 +316,28 @@ def create_app(settings: WebSettings, session_factory: Callable[[WebSettings], R
         msgs = session_of(request).store.history(after_id=after, limit=limit)
         return {"messages": [m.to_json() for m in msgs]}
 
+    @app.get("/api/spot")
+    def spot(request: Request, x: float, y: float) -> dict[str, Any]:
+        if not (math.isfinite(x) and math.isfinite(y)):
+            raise HTTPException(422, "x and y must be finite numbers (map-frame metres).")
+        return session_of(request).spot(x, y)
+
+    @app.get("/api/places")
+    def places(request: Request) -> dict[str, Any]:
+        return {"places": session_of(request).places()}
+
+    @app.post("/api/places", dependencies=moving)
+    def name_place(body: PlaceIn, request: Request) -> dict[str, Any]:
+        return session_of(request).name_place(body.name, body.x, body.y, body.element_id)
+
+    @app.post("/api/places/rename", dependencies=moving)
+    def rename_place(body: RenameIn, request: Request) -> dict[str, Any]:
+        return session_of(request).rename_place(body.name, body.new_name)
+
+    @app.post("/api/places/forget", dependencies=moving)
+    def forget_place(body: ForgetIn, request: Request) -> dict[str, Any]:
+        return session_of(request).forget_place(body.name)
+
     @app.get("/api/map.png")
     def map_png(request: Request) -> Response:
         return Response(session_of(request).map_png(), media_type="image/png")
@@ -301,12 +347,12 @@ def create_app(settings: WebSettings, session_factory: Callable[[WebSettings], R
         if len(body.text) > settings.max_prompt_chars:
             raise HTTPException(413, f"The prompt is {len(body.text)} characters long; langnav reads at most "
                                      f"{settings.max_prompt_chars}. Give the robot one instruction or a few steps.")
-        msgs = session_of(request).submit_prompt(body.text)
+        msgs = session_of(request).submit_prompt(body.text, replace=body.replace)
         return {"messages": [m.to_json() for m in msgs]}
 
     @app.post("/api/goto", dependencies=moving)
     def goto(body: GotoIn, request: Request) -> dict[str, Any]:
-        msgs = session_of(request).go_to(body.x, body.y)
+        msgs = session_of(request).go_to(body.x, body.y, body.yaw_deg)
         return {"messages": [m.to_json() for m in msgs]}
 
     @app.post("/api/stop")

@@ -8,18 +8,36 @@ Map frame: +x is east, +y is north, yaw counter-clockwise from east.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Sequence
 from typing import Final
 
 import numpy as np
 
-from langnav.analysis.elements import ElementKind, MapAnalysis
+from langnav.analysis.elements import Element as MapElement
+from langnav.analysis.elements import ElementKind, MapAnalysis, reference_point
+from langnav.analysis.identity import label
 from langnav.language.intent import Amount, Detail, Direction, ElementRef, Intent, Movement, Step
 from langnav.maps.grid import OccupancyGrid
+from langnav.plan.commands import (
+    MOVE_STEP_M,
+    ROTATE_STEP_DEG,
+    Command,
+    GetCurrentPath,
+    GetMap,
+    GetRobotPoseLast,
+    Move,
+    NavigateThroughPoses,
+    Rotate,
+    Stop,
+)
 from langnav.robot.protocol import Pose2D
 
 #: Eight compass words, counter-clockwise from east (yaw 0) in 45-degree sectors.
 COMPASS: Final = ("east", "north-east", "north", "north-west", "west", "south-west", "south", "south-east")
+#: "Near" a landmark: within a couple of strides (a person points someone to "near door 2" when it
+#: is that close; farther, the room alone says where).
+NEAR_M: Final = 2.0
 _ORDINALS: Final = ("first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth",
                     "ninth", "tenth")
 _ELEMENT_WORDS: Final = {"narrow_passage": "narrow passage", "unexplored_area": "unexplored area",
@@ -37,33 +55,108 @@ def heading_word(yaw_rad: float) -> str:
 
 
 def place_name(analysis: MapAnalysis | None, x_m: float, y_m: float) -> str | None:
-    """ "the hallway", "room 2" or None when the point is in no known space."""
+    """ "hallway 2", "room 3" (the names on the map) or None when the point is in no known space."""
     if analysis is None:
         return None
     space = analysis.room_at(x_m, y_m)
-    if space is None:
+    return None if space is None else label(space.id)
+
+
+def nearest_landmark(analysis: MapAnalysis | None, x_m: float, y_m: float,
+                     within_m: float = NEAR_M) -> str | None:
+    """The name of the doorway (else passage, else piece of furniture) nearest a point, if one is
+    within ``within_m``: what a person says to place someone ("near door 2")."""
+    if analysis is None:
         return None
-    if space.kind == ElementKind.HALLWAY:
-        halls = [r for r in analysis.rooms if r.kind == ElementKind.HALLWAY]
-        return "the hallway" if len(halls) == 1 else f"hallway {halls.index(space) + 1}"
-    rooms = [r for r in analysis.rooms if r.kind != ElementKind.HALLWAY]
-    return f"room {rooms.index(space) + 1}"
+    groups: tuple[Sequence[MapElement], ...] = (analysis.doors, analysis.narrow_passages, analysis.obstacles)
+    for group in groups:
+        best = min(group, key=lambda e: math.dist(reference_point(e), (x_m, y_m)), default=None)
+        if best is not None and math.dist(reference_point(best), (x_m, y_m)) <= within_m:
+            return label(best.id)
+    return None
 
 
-def where_am_i(pose: Pose2D, analysis: MapAnalysis | None = None) -> str:
-    """ "I'm in the hallway at x 3.1, y 6.0, facing east." """
-    place = place_name(analysis, pose.x_m, pose.y_m)
-    where = f"in {place} at" if place else "at"
-    return f"I'm {where} x {pose.x_m:.1f}, y {pose.y_m:.1f}, facing {heading_word(pose.yaw_rad)}."
+def where_words(analysis: MapAnalysis | None, x_m: float, y_m: float) -> str:
+    """ "in room 3 near door 2", "in hallway 2", "near door 4", or "" when nothing names the spot."""
+    place = place_name(analysis, x_m, y_m)
+    near = nearest_landmark(analysis, x_m, y_m)
+    parts = ([f"in {place}"] if place else []) + ([f"near {near}"] if near else [])
+    return " ".join(parts)
 
 
-def describe_path(path: Sequence[tuple[float, float]]) -> str:
+def where_am_i(pose: Pose2D, analysis: MapAnalysis | None = None, *, exact: bool = False) -> str:
+    """ "I'm in room 3 near door 2, facing east." Coordinates only when asked for (``exact``) or
+    when nothing on the map names the spot."""
+    where = where_words(analysis, pose.x_m, pose.y_m)
+    facing = heading_word(pose.yaw_rad)
+    coords = f"x {pose.x_m:.1f}, y {pose.y_m:.1f}"
+    if not where:
+        return f"I'm at {coords}, facing {facing}."
+    if exact:
+        return f"I'm {where}, at {coords} (metres on the map), facing {facing}."
+    return f"I'm {where}, facing {facing}."
+
+
+def describe_path(path: Sequence[tuple[float, float]], analysis: MapAnalysis | None = None) -> str:
     if len(path) < 2:
         return "I have no path right now: I'm not driving anywhere."
     pts = np.asarray(path, dtype=float)
     length = float(np.linalg.norm(np.diff(pts, axis=0), axis=1).sum())
     end = pts[-1]
+    where = where_words(analysis, float(end[0]), float(end[1]))
+    if where:
+        return f"My path is {length:.1f} m long and ends {where}."
     return f"My path is {length:.1f} m long and ends at x {end[0]:.1f}, y {end[1]:.1f}."
+
+
+#: Words with which a person asks for numbers rather than a place's name.
+_NUMBER_WORDS: Final = re.compile(r"\b(coordinates?|exact(ly)?|precise(ly)?|x\s*(and|,)\s*y|numbers?)\b", re.I)
+
+
+_COORDS: Final = re.compile(r"\((-?\d+(?:\.\d+)?),\s*(-?\d+(?:\.\d+)?)\)")
+
+
+def asks_for_numbers(prompt: str) -> bool:
+    """Whether a question asks for coordinates ("where exactly are you?", "your coordinates?")."""
+    return bool(_NUMBER_WORDS.search(prompt))
+
+
+def turn_words(direction: str, angle_deg: float) -> str:
+    """ "turn around", "turn left", "turn right 30°", "turn a full circle left"."""
+    a = round(angle_deg)
+    if a % 360 == 0 and a:
+        return f"turn {a // 360} full circle{'s' if a >= 720 else ''} {direction}"
+    if a == 180:
+        return "turn around"
+    if a == 90:
+        return f"turn {direction}"
+    return f"turn {direction} {a}°"
+
+
+def plain_command(cmd: Command, analysis: MapAnalysis | None = None) -> str:
+    """A robot command in words a person uses: where it goes by name, turns as turns, no steps.
+    (The exact command, with its coordinates, stays available as :func:`langnav.plan.commands.describe`.)"""
+    note = (cmd.note or "").strip()
+    if isinstance(cmd, NavigateThroughPoses):
+        end = cmd.poses[-1]
+        where = where_words(analysis, float(end[0]), float(end[1]))
+        lead = f"Go {note}" if note and not note.lower().startswith(("go ", "the point")) else (
+            "Go to the point you clicked" if note.startswith("the point") else (note.capitalize() or "Go"))
+        return f"{lead} ({where})" if where else lead
+    if isinstance(cmd, Move):
+        return f"Move {cmd.direction} {cmd.repeat * MOVE_STEP_M:.2f} m"
+    if isinstance(cmd, Rotate):
+        words = turn_words(cmd.direction, cmd.repeat * ROTATE_STEP_DEG)
+        return words[:1].upper() + words[1:]
+    if isinstance(cmd, Stop):
+        return "Stop"
+    if isinstance(cmd, GetCurrentPath):
+        return "Tell you my path"
+    if isinstance(cmd, GetMap):
+        return "Tell you what is on my map"
+    if isinstance(cmd, GetRobotPoseLast):
+        return "Tell you where I am"
+    return type(cmd).__name__
 
 
 def describe_map(grid: OccupancyGrid, analysis: MapAnalysis | None = None) -> str:
@@ -118,6 +211,8 @@ def describe_step(step: Step) -> str:
     if m == Movement.ROTATE:
         if step.direction == Direction.AROUND:
             return "turn around"
+        if step.angle_deg is not None and step.direction is not None:
+            return turn_words(step.direction.value, step.angle_deg)
         how = f"{step.angle_deg:.0f}°" if step.angle_deg is not None else (
             "a little" if step.amount == Amount.LITTLE else "")
         side = step.direction.value if step.direction else ""
@@ -151,11 +246,36 @@ class FeedbackManager:
     def __init__(self, analysis: Callable[[], MapAnalysis | None]) -> None:
         self._analysis = analysis
 
-    def where_am_i(self, pose: Pose2D) -> str:
-        return where_am_i(pose, self._analysis())
+    def where_am_i(self, pose: Pose2D, exact: bool = False) -> str:
+        return where_am_i(pose, self._analysis(), exact=exact)
 
     def path(self, path: Sequence[tuple[float, float]]) -> str:
-        return describe_path(path)
+        return describe_path(path, self._analysis())
+
+    def exploration_left(self, message: str) -> str:
+        """An exploration's last word, with the unexplored areas the map still shows named."""
+        analysis = self._analysis()
+        left = [u for u in analysis.unexplored if u.interior] if analysis is not None else []
+        if not left:
+            return message
+        names = ", ".join(label(u.id) + (f" ({where_words(analysis, *u.centroid)})"
+                                         if where_words(analysis, *u.centroid) else "") for u in left[:3])
+        more = f" and {len(left) - 3} more" if len(left) > 3 else ""
+        return f"{message}. Still unexplored on the map: {names}{more}"
+
+    def placed(self, text: str) -> str:
+        """A reply with map coordinates "(x, y)" in it, with the place's name in their stead when
+        the map names the spot (coordinates only when nothing does)."""
+        analysis = self._analysis()
+
+        def name(m: re.Match[str]) -> str:
+            where = where_words(analysis, float(m.group(1)), float(m.group(2)))
+            return f"({where})" if where else m.group(0)
+
+        return _COORDS.sub(name, text)
+
+    def command(self, cmd: Command) -> str:
+        return plain_command(cmd, self._analysis())
 
     def map(self, grid: OccupancyGrid) -> str:
         return describe_map(grid, self._analysis())

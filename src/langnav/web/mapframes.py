@@ -14,7 +14,8 @@ from typing import Any, Final
 import numpy as np
 from PIL import Image
 
-from langnav.analysis.elements import ElementKind, MapAnalysis
+from langnav.analysis.elements import MapAnalysis
+from langnav.analysis.identity import label
 from langnav.maps.grid import FREE, OCCUPIED, OccupancyGrid
 from langnav.robot.protocol import RobotState
 
@@ -49,10 +50,25 @@ def map_png(grid: OccupancyGrid) -> bytes:
     return buf.getvalue()
 
 
+def known_bounds(grid: OccupancyGrid) -> list[float] | None:
+    """[x_min, y_min, x_max, y_max] (map frame, m) of the mapped cells, or None when none is:
+    what "Fit" frames (a slam map is mostly unknown margin around the floor)."""
+    known = grid.cells != -1
+    rows = np.flatnonzero(known.any(axis=1))
+    cols = np.flatnonzero(known.any(axis=0))
+    if not len(rows):
+        return None
+    r = np.array([rows[0], rows[0], rows[-1] + 1, rows[-1] + 1], dtype=float)
+    c = np.array([cols[0], cols[-1] + 1, cols[0], cols[-1] + 1], dtype=float)
+    xs, ys = grid.grid_to_world(r, c)
+    return [round(float(np.min(xs)), DECIMALS), round(float(np.min(ys)), DECIMALS),
+            round(float(np.max(xs)), DECIMALS), round(float(np.max(ys)), DECIMALS)]
+
+
 def map_frame(grid: OccupancyGrid, digest: str) -> dict[str, Any]:
     return {"type": "map", "version": digest, "png": base64.b64encode(map_png(grid)).decode("ascii"),
             "width": grid.width, "height": grid.height, "resolution": grid.resolution_m,
-            "origin": [grid.origin_x_m, grid.origin_y_m, grid.origin_yaw_rad]}
+            "origin": [grid.origin_x_m, grid.origin_y_m, grid.origin_yaw_rad], "known": known_bounds(grid)}
 
 
 def _decimate(points: Any, limit: int) -> list[list[float]]:
@@ -97,12 +113,9 @@ def path_frame(state: RobotState) -> dict[str, Any]:
 
 
 def space_labels(analysis: MapAnalysis) -> dict[str, str]:
-    """Room id -> the name the chat uses for it ("room 2", "the hallway")."""
-    halls = [r for r in analysis.rooms if r.kind == ElementKind.HALLWAY]
-    rooms = [r for r in analysis.rooms if r.kind != ElementKind.HALLWAY]
-    out = {r.id: ("hallway" if len(halls) == 1 else f"hallway {i + 1}") for i, r in enumerate(halls)}
-    out.update({r.id: f"room {i + 1}" for i, r in enumerate(rooms)})
-    return out
+    """Room id -> the name the map shows and the chat uses for it: the id read as words
+    ("room 3", "hallway 2"), which is also a name a prompt may use."""
+    return {r.id: label(r.id) for r in analysis.rooms}
 
 
 def elements_frame(analysis: MapAnalysis, digest: str) -> dict[str, Any]:
@@ -112,6 +125,9 @@ def elements_frame(analysis: MapAnalysis, digest: str) -> dict[str, Any]:
     for room_doc, room in zip(doc["rooms"], analysis.rooms, strict=True):
         room_doc["label"] = names.get(room.id, room.id)
         room_doc["polygon"] = _decimate(room.polygon, MAX_POLYGON_POINTS) if len(room.polygon) else []
+    for key in ("doors", "walls", "corners", "obstacles", "narrow_passages", "unexplored"):
+        for e in doc[key]:
+            e["label"] = label(e["id"])
     for u in doc["unexplored"]:
         u.pop("frontier", None)
     doc.pop("graph", None)

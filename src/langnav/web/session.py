@@ -12,8 +12,9 @@ its own thread), whose elements are published for drawing. None of this holds th
 for longer than one ``state()`` / ``get_map()`` call, so the control loop never waits on a client.
 
 Mid-plan prompts: a prompt that only asks (where are you, what path, the map) is answered at
-once and the plan goes on; any other prompt replaces the running plan (it is cancelled first),
-as a person redirecting the robot would expect. STOP always wins at once.
+once and the plan goes on; a prompt that would move the robot is not run silently over the
+running plan: the robot asks whether to replace it (the page resends it with ``replace``).
+STOP, and a prompt that starts with stop, always win at once.
 """
 
 from __future__ import annotations
@@ -28,18 +29,22 @@ from typing import Any, Final
 
 import numpy as np
 
-from langnav.analysis.elements import MapAnalysis
+from langnav.analysis.elements import MapAnalysis, element_kind, reference_point
+from langnav.analysis.identity import StableAnalyzer, label
 from langnav.errors import LangnavError
 from langnav.language.translator import available as translator_names
 from langnav.language.translator import clean_prompt, get_translator
+from langnav.maps.demo import DEMO_KNOWN_MAP, DEMO_START
 from langnav.maps.grid import FREE, OccupancyGrid
-from langnav.pipeline import Planner, PlanResult
+from langnav.pipeline import Planner, PlanResult, default_analyzer
+from langnav.places import JsonPlaceStore, NamedPlace, PlaceError, PlaceStore
 from langnav.plan.commands import (
     Command,
     GetCurrentPath,
     GetMap,
     GetRobotPoseLast,
     NavigateThroughPoses,
+    Stop,
     describe,
 )
 from langnav.plan.errors import PlanRejected
@@ -49,8 +54,15 @@ from langnav.plan.executor import PlanRun as ExecutorRun
 from langnav.plan.validator import CheckedPlan, validate_plan
 from langnav.robot.errors import RobotError
 from langnav.robot.protocol import Pose2D, RobotBackend, create_backend
+from langnav.web import conversation
 from langnav.web.broadcast import Broadcaster
-from langnav.web.feedback import FeedbackManager, describe_intent
+from langnav.web.feedback import (
+    FeedbackManager,
+    asks_for_numbers,
+    describe_intent,
+    heading_word,
+    where_words,
+)
 from langnav.web.mapframes import (
     elements_frame,
     grid_digest,
@@ -81,6 +93,10 @@ CANCEL_WAIT_S: Final = 3.0
 #: Wait this long for the sampler thread to end when closing.
 THREAD_JOIN_S: Final = 3.0
 QUERY_COMMANDS: Final = (GetRobotPoseLast, GetCurrentPath, GetMap)
+#: The starter examples are planned again when the robot has moved this far or turned this much
+#: ("the door on your left" changes with the heading) or the map's analysis changed.
+EXAMPLES_CELL_M: Final = 0.5
+EXAMPLES_TURN_DEG: Final = 30.0
 QUERY_NAMES: Final = ("GetRobotPoseLast", "GetCurrentPath", "GetMap")
 
 
@@ -90,6 +106,22 @@ class ClickItem:
 
     commands: tuple[Command, ...]
     explore: bool = False
+
+
+def _moves(result: PlanResult) -> bool:
+    """Whether a plan would move the robot (not only answer questions, not a Stop)."""
+    flat = [c for it in result.items for c in it.commands]
+    if any(it.explore for it in result.items):
+        return True
+    if flat and isinstance(flat[0], Stop):
+        return False
+    return any(not isinstance(c, QUERY_COMMANDS) for c in flat)
+
+
+def _goals(result: PlanResult) -> list[tuple[float, float]]:
+    """Every navigation goal of a plan, in order."""
+    return [(float(p[0]), float(p[1])) for it in result.items for c in it.commands
+            if isinstance(c, NavigateThroughPoses) for p in c.poses]
 
 
 class SessionBusy(LangnavError):
@@ -115,9 +147,13 @@ def _make_robot(settings: WebSettings) -> RobotBackend:
     options: dict[str, Any] = dict(settings.backend_options)
     if settings.backend == "sim":
         options.setdefault("world", load_world(settings))
-        options.setdefault("known_map", settings.known_map)
+        demo = settings.world is None
+        options.setdefault("known_map", DEMO_KNOWN_MAP if settings.known_map is None and demo
+                           else bool(settings.known_map))
         if settings.start_pose is not None:
             options.setdefault("pose", settings.start_pose)
+        elif demo:
+            options.setdefault("pose", DEMO_START)
     import langnav.robot  # noqa: F401  (registers the built-in backends)
 
     return create_backend(settings.backend, **options)
@@ -139,6 +175,14 @@ class RobotSession:
         self.robot = robot
         self.radius_m = float(getattr(getattr(robot, "config", None), "robot_radius_m", DEFAULT_RADIUS_M))
         self.translator = settings.translator
+        # every analysis of this robot's map (the sampler's and the planner's re-grounding ones)
+        # keeps the element ids of the ones before: "door 2" stays door 2 while the map grows
+        self.identity = StableAnalyzer(default_analyzer)
+        try:
+            self.place_store: PlaceStore = JsonPlaceStore(settings.places_file)
+        except PlaceError:
+            self.store.close()
+            raise
         self._planner = self._make_planner(self.translator)
         self._plan_lock = threading.Lock()   # one prompt planned at a time
         self._state_lock = threading.Lock()
@@ -154,6 +198,8 @@ class RobotSession:
         self.executor = PlanExecutor(robot)
         self.feedback = FeedbackManager(lambda: self._analysis)
         self._halt = threading.Event()
+        self._exact = False  # the last prompt asked for coordinates
+        self._examples: tuple[Any, list[str]] | None = None
         self._sampler: threading.Thread | None = None
         self.frames_published = 0
 
@@ -193,7 +239,8 @@ class RobotSession:
                 "translators": translator_names(), "plan": self.plan_state(),
                 "max_prompt_chars": self.settings.max_prompt_chars,
                 "requires_token": self.settings.requires_token, "viewers": self.broadcaster.subscriber_count,
-                "pose": list(st.pose.as_tuple()), "where": self.feedback.where_am_i(st.pose)}
+                "pose": list(st.pose.as_tuple()), "where": self.feedback.where_am_i(st.pose),
+                "examples": self.examples()}
 
     def map_png(self) -> bytes:
         return map_png(self.robot.get_map())
@@ -208,36 +255,140 @@ class RobotSession:
         self.broadcaster.publish_event({"type": "message", "message": msg.to_json()})
         return msg
 
-    def submit_prompt(self, text: str) -> list[Message]:
-        """Read, ground and validate a prompt; show the plan; run it. Returns the new messages."""
+    def submit_prompt(self, text: str, replace: bool = False) -> list[Message]:
+        """Read, ground and validate a prompt; show the plan; run it. Returns the new messages.
+
+        Help and questions about the map are answered from the map; a prompt that would move the
+        robot while a plan runs is not run at once: the robot asks whether to replace the running
+        plan (``replace=True`` says yes; STOP always wins at once)."""
+        if not "".join(ch for ch in text if ch.isprintable()).strip():
+            examples = self.examples()
+            hint = f" For example: “{examples[1] if len(examples) > 1 else examples[0]}”." if examples else ""
+            return [self.say("robot", "clarification", {"text": "Your message was empty: tell me what to do "
+                                                                 "in your own words." + hint})]
         text = clean_prompt(text)
         if not self._plan_lock.acquire(timeout=0.1):
             raise SessionBusy("still working out the previous prompt; try again in a moment")
         try:
             out = [self.say("user", "prompt", {"text": text})]
+            self._exact = asks_for_numbers(text)
             pose = self.robot.get_robot_pose()
-            source: MapAnalysis | OccupancyGrid = self._current_analysis() or self.robot.get_map()
+            analysis = self._current_analysis()
+            reply = conversation.answer(text, analysis, pose, self.examples)
+            if reply is not None:
+                out.append(self.say("robot", "answer", {"text": reply}))
+                return out
+            source: MapAnalysis | OccupancyGrid = analysis or self.robot.get_map()
+            places_before = self.places()
             # The planner never raises for a user's mistake: the reason comes back as clarification.
             result = self._planner.plan(text, source, (pose.x_m, pose.y_m, math.degrees(pose.yaw_rad)))
+            if analysis is not None and not result.clarification:
+                # a name from the map ("door 5") must be where the plan goes: a reading that lost the
+                # number would send the robot to another door
+                missed = [e for e in conversation.named_elements(text, analysis)
+                          if not conversation.plan_reaches(_goals(result), analysis, e)]
+                if missed and _moves(result):
+                    names = ", ".join(label(e) for e in missed)
+                    out.append(self.say("robot", "clarification", {
+                        "text": f"My plan for that would not take me to {names}, so nothing moved. "
+                                f"Try e.g. “go to the nearest door” or click {names} on the map.",
+                        "translator": result.translator}))
+                    return out
+            running = self._run
+            if (not replace and running is not None and not running.done and not result.clarification
+                    and _moves(result)):
+                out.append(self.say("robot", "confirm", {
+                    "text": f"I'm still carrying out the plan before (step {(running.index or 0) + 1} of "
+                            f"{running.total}). Stop it and do “{text}” instead?",
+                    "prompt": text}))
+                return out
             out.extend(self._show_and_run(result, source="prompt"))
+            if self.places() != places_before:
+                self._places_changed()  # the prompt named or forgot a place: the pins follow
             return out
         finally:
             self._plan_lock.release()
 
-    def go_to(self, x_m: float, y_m: float) -> list[Message]:
-        """Send the robot to a clicked point, through the same validator as any prompt."""
+    def examples(self) -> list[str]:
+        """Prompts that would run on this map from where the robot is (each one planned; kept
+        while the map analysis and the robot's spot stay the same, so many pages opening at once
+        do not plan them again and again)."""
+        pose = self.robot.get_robot_pose()
+        analysis = self._analysis or self._current_analysis()
+        key = (analysis, round(pose.x_m / EXAMPLES_CELL_M), round(pose.y_m / EXAMPLES_CELL_M),
+               round(math.degrees(pose.yaw_rad) / EXAMPLES_TURN_DEG), self.translator)
+        cached = self._examples
+        if cached is not None and cached[0] == key:
+            return list(cached[1])
+        out = self._plan_examples(pose, analysis)
+        self._examples = (key, out)
+        return list(out)
+
+    def _plan_examples(self, pose: Pose2D, analysis: MapAnalysis | None) -> list[str]:
+        xyz = (pose.x_m, pose.y_m, math.degrees(pose.yaw_rad))
+
+        def plan_ok(prompt: str) -> bool:
+            if conversation.answer(prompt, analysis, pose, list) is not None:
+                return True
+            result = self._planner.plan(prompt, analysis or self.robot.get_map(), xyz)
+            if result.clarification or not any(it.commands or it.explore for it in result.items):
+                return False
+            # an example that names an element ("go to room 4") must go there
+            named = conversation.named_elements(prompt, analysis) if analysis is not None else []
+            goals = _goals(result)
+            return all(conversation.plan_reaches(goals, analysis, e) for e in named if analysis is not None)
+
+        return conversation.starter_examples(analysis, pose, plan_ok)
+
+    def spot(self, x_m: float, y_m: float) -> dict[str, Any]:
+        """What is at a map point: free floor / obstacle / unmapped / outside, the element there
+        (name, kind, size, actions), and whether the robot may be sent there."""
+        grid = self.robot.get_map()
+        r, c = grid.world_to_index(x_m, y_m)
+        analysis = self._analysis or self._current_analysis()
+        element = conversation.element_at(analysis, x_m, y_m) if analysis is not None else None
+        out: dict[str, Any] = {"x": round(x_m, 2), "y": round(y_m, 2),
+                               "element": conversation.element_card(element) if element is not None else None}
+        if not grid.in_bounds(int(r), int(c)):
+            out.update(cell="outside", go=False, reason="That is outside the map.")
+            return out
+        value = int(grid.cells[int(r), int(c)])
+        if value == FREE:
+            where = where_words(analysis, x_m, y_m)
+            out.update(cell="free", go=True, reason="", where=where)
+        elif value == -1:
+            out.update(cell="unknown", go=False,
+                       reason="I haven't mapped that spot yet, so I can't plan a way there. "
+                              "Send me to the edge of what I know, or ask me to explore.")
+        else:
+            out.update(cell="obstacle", go=False, reason="That spot is taken by a wall or an obstacle: "
+                                                         "I can't drive there.")
+        return out
+
+    def go_to(self, x_m: float, y_m: float, yaw_deg: float | None = None) -> list[Message]:
+        """Send the robot to a clicked point (facing ``yaw_deg`` when given, as RViz's Nav2 goal
+        tool does), through the same validator as any prompt. Refused up front, with the reason,
+        on an obstacle, on unmapped space or outside the map."""
         if not self._plan_lock.acquire(timeout=0.1):
             raise SessionBusy("still working out the previous prompt; try again in a moment")
         try:
-            out = [self.say("user", "prompt", {"text": f"Go to the point I clicked: x {x_m:.2f}, y {y_m:.2f}"})]
-            cmd = NavigateThroughPoses(poses=[[x_m, y_m]], note="the point you clicked")
+            spot = self.spot(x_m, y_m)
+            facing = f", facing {heading_word(math.radians(yaw_deg))}" if yaw_deg is not None else ""
+            where = spot.get("where") or f"x {x_m:.1f}, y {y_m:.1f}"
+            out = [self.say("user", "prompt", {"text": f"Go to the spot I clicked ({where}){facing}"})]
+            if not spot["go"]:
+                out.append(self.say("robot", "rejected", {"text": spot["reason"] + " Nothing moved.",
+                                                           "reasons": [spot["reason"]]}))
+                return out
+            pose_cmd: list[float] = [x_m, y_m] if yaw_deg is None else [x_m, y_m, yaw_deg]
+            cmd = NavigateThroughPoses(poses=[pose_cmd], note="the point you clicked")
             try:
                 checked = self._validate([cmd])
             except PlanRejected as exc:
                 out.append(self.say("robot", "rejected", {"text": "I can't go there, nothing moved.",
                                                            "reasons": exc.reasons}))
                 return out
-            out.extend(self._start_plan(f"I'll go to x {x_m:.2f}, y {y_m:.2f}.", "map click",
+            out.extend(self._start_plan(f"I'll go to the spot you clicked ({where}){facing}.", "map click",
                                         [ClickItem(checked.commands)], list(checked.repairs), source="click"))
             return out
         finally:
@@ -274,6 +425,52 @@ class RobotSession:
         msg = self.say("system", "info", {"text": "Resuming the plan."})
         return {"ok": True, "plan": self.plan_state(), "message": msg.to_json()}
 
+    # -- named places (pins on the map) ---------------------------------------------------------
+    # The session's place store (a JSON file kept across restarts) is the one the planner reads
+    # ("go to the kitchen", "call this spot the kitchen"); the pins show and edit it.
+    def places(self) -> list[dict[str, Any]]:
+        return [{"name": p.name, "x": round(p.xy[0], 2), "y": round(p.xy[1], 2)}
+                for p in sorted(self.place_store.all(), key=lambda p: p.key)]
+
+    def _places_changed(self) -> None:
+        self.broadcaster.publish_event({"type": "places", "places": self.places()})
+
+    def name_place(self, name: str, x_m: float, y_m: float, element_id: str | None = None) -> dict[str, Any]:
+        """Name a spot of free floor, or a map element ("front door", kept at the element)."""
+        if element_id is not None:
+            analysis = self._analysis or self._current_analysis()
+            try:
+                element = analysis.by_id(element_id) if analysis is not None else None
+            except KeyError:
+                element = None
+            if element is None:
+                raise LangnavError(f"there is no {label(element_id)} on the map now; click it again")
+            x, y = reference_point(element)
+            place = self.place_store.put(NamedPlace.element(name, element_kind(element).value, element_id, x, y))
+            where = label(element_id)
+        else:
+            spot = self.spot(x_m, y_m)
+            if spot["cell"] != "free":
+                raise LangnavError(f"a named place must be on free floor: {spot['reason']}")
+            place = self.place_store.put(NamedPlace.spot(name, x_m, y_m))
+            where = spot.get("where") or "here"
+        self.say("system", "info", {"text": f"I'll remember {where} as “{place.name}”. "
+                                            f"Say e.g. “go to the {place.name}”."})
+        self._places_changed()
+        return {"ok": True, "places": self.places()}
+
+    def rename_place(self, old: str, new: str) -> dict[str, Any]:
+        place = self.place_store.rename(old, new)
+        self.say("system", "info", {"text": f"“{old.strip()}” is now called “{place.name}”."})
+        self._places_changed()
+        return {"ok": True, "places": self.places()}
+
+    def forget_place(self, name: str) -> dict[str, Any]:
+        place = self.place_store.remove(name)
+        self.say("system", "info", {"text": f"I forgot the place “{place.name}”."})
+        self._places_changed()
+        return {"ok": True, "places": self.places()}
+
     def set_translator(self, name: str) -> dict[str, Any]:
         names = translator_names()
         if name not in names:
@@ -287,7 +484,10 @@ class RobotSession:
 
     # -- planning internals -----------------------------------------------------------------------
     def _make_planner(self, translator: str) -> Planner:
-        return Planner(get_translator(translator))
+        # one place store and one pose history for the session: they survive a translator change
+        old = getattr(self, "_planner", None)
+        return Planner(get_translator(translator), analyzer=self.identity, places=self.place_store,
+                       history=old.history if old is not None else None)
 
     def _validate(self, commands: Sequence[Command]) -> CheckedPlan:
         """Commands made here (a map click) go through the same validator as a prompt's."""
@@ -303,6 +503,10 @@ class RobotSession:
             if result.intent is not None and result.intent.steps:
                 payload["intent_text"] = describe_intent(result.intent)
             return [self.say("robot", "clarification", payload)]
+        if not any(item.commands or item.explore for item in result.items) and result.messages:
+            # done without moving (a place named or forgotten, "I am already there"): say so
+            text = " ".join(self.feedback.placed(m) for m in result.messages)
+            return [self.say("robot", "answer", {"text": text, "translator": result.translator})]
         if not any(item.commands or item.explore for item in result.items):
             return [self.say("robot", "clarification", {
                 "text": "I did not find anything to do in that. Try e.g. “go to the nearest door”."})]
@@ -326,8 +530,8 @@ class RobotSession:
                 rows.append({"index": len(rows), "text": "Explore until there is nothing left to map",
                              "command": {"command": "Explore"}})
                 continue
-            rows.extend({"index": len(rows), "text": describe(c), "command": c.model_dump(exclude={"note"})}
-                        for c in it.commands)
+            rows.extend({"index": len(rows), "text": self.feedback.command(c), "detail": describe(c),
+                         "command": c.model_dump(exclude={"note"})} for c in it.commands)
         card = self.say("robot", "plan", {"intent_text": intent_text, "translator": translator, "source": source,
                                           "commands": rows, "notes": notes}, plan_id=plan_id)
         view = PlanView(self, plan_id, len(rows))
@@ -337,7 +541,7 @@ class RobotSession:
 
     def _answer(self, cmd: Command) -> str:
         if isinstance(cmd, GetRobotPoseLast):
-            return self.feedback.where_am_i(self.robot.get_robot_pose())
+            return self.feedback.where_am_i(self.robot.get_robot_pose(), exact=self._exact)
         if isinstance(cmd, GetCurrentPath):
             return self.feedback.path(self.robot.get_current_path())
         return self.feedback.map(self.robot.get_map())
@@ -369,10 +573,8 @@ class RobotSession:
         return float(np.count_nonzero(old.cells != grid.cells)) * grid.cell_area_m2
 
     def _analyze(self, grid: OccupancyGrid) -> MapAnalysis | None:
-        from langnav.analysis.pipeline import analyze
-
         try:
-            return analyze(grid)
+            return self.identity(grid, self._planner.params)
         except LangnavError as exc:
             log.warning("map analysis failed: %s", exc)
             return None
@@ -499,7 +701,12 @@ class PlanView:
             self._finish(event)
             return
         status = {EventKind.STARTED: "running", EventKind.RESUMED: "running"}.get(kind, kind.value)
-        s.say("robot", "step", {"index": event.index, "status": status, "text": event.message,
+        message = event.message
+        if kind == EventKind.SUCCEEDED and event.text == "Explore":
+            message = s.feedback.exploration_left(message)
+        elif kind == EventKind.SUCCEEDED and (event.command or {}).get("command") not in QUERY_NAMES:
+            message = "done"  # the backend's own words carry coordinates ("reached (2.98, 4.53)")
+        s.say("robot", "step", {"index": event.index, "status": status, "text": message,
                                 "command_text": event.text}, plan_id=self.plan_id)
         if kind == EventKind.SUCCEEDED and event.command and event.command.get("command") in QUERY_NAMES:
             s.say("robot", "answer", {"text": self._answer(event)}, plan_id=self.plan_id)
@@ -508,7 +715,7 @@ class PlanView:
         name = (event.command or {}).get("command")
         if name == "GetRobotPoseLast" and event.pose is not None:
             x, y, yaw_deg = event.pose
-            return self.session.feedback.where_am_i(Pose2D(x, y, math.radians(yaw_deg)))
+            return self.session.feedback.where_am_i(Pose2D(x, y, math.radians(yaw_deg)), exact=self.session._exact)
         if name == "GetCurrentPath":
             return self.session.feedback.path([tuple(p) for p in event.data.get("path", [])])
         return event.message[:1].upper() + event.message[1:] + "."
@@ -529,3 +736,7 @@ class PlanView:
             s.say("robot", "outcome", {"status": status, "text": text}, plan_id=self.plan_id)
         finally:
             self._finished.set()
+            try:  # the robot is somewhere else now: the examples (and the plan state) with it
+                s.broadcaster.publish_event({"type": "status", "status": s.status()})
+            except LangnavError as exc:
+                log.warning("status after the plan: %s", exc)

@@ -62,10 +62,14 @@ class WebSettings(BaseModel):
     port: int = Field(default=DEFAULT_PORT, ge=0, le=65535)
     token: str | None = Field(default=None, min_length=16,
                               description="required for robot-moving requests when host is not loopback")
-    known_map: bool = Field(default=False, description="the robot starts with the world map as its own")
+    known_map: bool | None = Field(
+        default=None, description="the robot starts with the world map as its own; None = the world's "
+                                  "default (the bundled demo floor was mapped before, any other world starts unknown)")
     start_pose: tuple[float, float, float] | None = Field(
         default=None, description="x_m, y_m, yaw_deg; None = the world's default start")
     db_path: Path = Field(default=Path("langnav.db"), description="SQLite file of the conversation")
+    places_path: Path | None = Field(
+        default=None, description="JSON file of the named places (kept across restarts); None = next to db_path")
     max_prompt_chars: int = Field(default=MAX_PROMPT_CHARS, ge=1, le=MAX_PROMPT_CHARS)
     rate_burst: int = Field(default=DEFAULT_RATE_BURST, ge=1)
     rate_refill_s: float = Field(default=DEFAULT_RATE_REFILL_S, gt=0)
@@ -86,6 +90,11 @@ class WebSettings(BaseModel):
         if v is not None and not all(math.isfinite(c) for c in v):
             raise ValueError(f"start_pose must be three finite numbers (x_m, y_m, yaw_deg), got {v}")
         return v
+
+    @property
+    def places_file(self) -> Path:
+        """Where the named places are kept: ``places_path``, else beside the conversation database."""
+        return self.places_path if self.places_path is not None else self.db_path.with_suffix(".places.json")
 
     @property
     def requires_token(self) -> bool:

@@ -132,6 +132,9 @@ _LIST_RE: Final = re.compile(
 _FORGET_NOT_PLACES: Final = re.compile(r"^(?:that|it|this|everything|all|the\s+map|map|what\s+i\s+said)$")
 
 
+#: An element is named in at most this many words ("the second door on your left in the hallway"):
+#: longer heads are not tried when splitting "call <element> <name>".
+MAX_TARGET_WORDS: Final = 12
 #: A place word that fit no step halves the reading's confidence (and is reported unread: the
 #: planner asks instead of running a plan that ignores it).
 LEFT_OVER_FACTOR: Final = 0.5
@@ -372,7 +375,7 @@ def _split_target_name(rest: str, previous: Step | None, known_names: Sequence[s
     left the lab')."""
     words = rest.split()
     found: list[tuple[bool, int, ElementRef, str]] = []
-    for k in range(1, len(words)):
+    for k in range(1, min(len(words), MAX_TARGET_WORDS + 1)):
         head, tail = " ".join(words[:k]), " ".join(words[k:])
         opens = re.match(r"(?:the|a|an|my|our|as)\b", tail) is not None
         name = _place_name(tail)

@@ -77,7 +77,9 @@
       row.dataset.index = c.index;
       row.append(el("span", "icon"));
       const body = el("div", "");
-      body.append(el("span", "text", c.text));
+      const t = el("span", "text", c.text);
+      if (c.detail) t.title = c.detail;  // the exact command, coordinates included, on hover
+      body.append(t);
       body.append(el("span", "progress", ""));
       const bar = el("div", "bar"); bar.append(el("span", ""));
       bar.hidden = true;
@@ -113,6 +115,29 @@
     }
   }
 
+  function confirmCard(m) {
+    const node = bubble("robot", "confirm", m.text, m.t);
+    const row = el("div", "confirm-actions");
+    const yes = el("button", "btn btn-primary", "Yes, do this instead");
+    const no = el("button", "btn", "No, carry on");
+    yes.type = no.type = "button";
+    const done = () => { yes.disabled = no.disabled = true; };
+    yes.addEventListener("click", async () => {
+      done();
+      try { const d = await api("/api/prompt", { text: m.prompt, replace: true }); d.messages.forEach(render); }
+      catch (e) { showError(e.message); }
+    });
+    no.addEventListener("click", () => { done(); render({ kind: "info", text: "OK, I'll carry on with the plan.", t: Date.now() / 1000 }); });
+    row.append(yes, no);
+    node.insertBefore(row, node.querySelector(".meta"));
+    return node;
+  }
+  // Errors stay in the conversation (the box under the prompt only says the latest one).
+  function showError(text) {
+    errBox.textContent = text;
+    render({ kind: "error", text, t: Date.now() / 1000 });
+  }
+
   function render(m) {
     if (m.id && seen.has(m.id)) return;
     if (m.id) { seen.add(m.id); lastId = Math.max(lastId, m.id); }
@@ -134,6 +159,7 @@
       case "outcome": node = bubble("robot", `outcome ${m.status || ""}`, m.text, m.t); break;
       case "answer": node = bubble("robot", "answer", m.text, m.t); break;
       case "error": node = bubble("robot", "error", m.text, m.t); break;
+      case "confirm": node = confirmCard(m); break;
       default: node = bubble("system", "info", m.text, m.t);
     }
     const hint = $("empty-hint");
@@ -142,15 +168,30 @@
     scrollDown();
   }
 
-  const EXAMPLES = ["where are you?", "go to the nearest door", "go through the door on your left, then turn around",
-    "explore", "go to the nearest unexplored area, then come back to the door"];
+  // Examples come from the server, which planned each one on this map before offering it.
+  let examples = [];
+  function exampleChips() {
+    const box = $("examples");
+    box.textContent = "";
+    if (examples.length) box.append(el("span", "muted small", "Try:"));
+    examples.forEach((t) => {
+      const b = el("button", "chip", t);
+      b.type = "button"; b.dataset.prompt = t;
+      b.title = "Put this example in the box (press Send to run it)";
+      b.addEventListener("click", () => { input.value = t; updateCount(); input.focus(); });
+      box.append(b);
+    });
+  }
   function emptyHint() {
-    if (list.children.length) return;
-    const li = el("li", "empty-hint", "Tell the robot what to do in your own words. For example:");
+    const old = $("empty-hint");
+    if (list.querySelector(".msg")) { if (old) old.remove(); return; }
+    if (old) old.remove();
+    const li = el("li", "empty-hint", "Tell the robot what to do in your own words. For example (click one):");
     li.id = "empty-hint";
     const ul = el("ul");
-    EXAMPLES.forEach((t) => {
-      const item = el("li", "", `“${t}”`);
+    examples.forEach((t) => {
+      const item = el("li", "example", `“${t}”`);
+      item.dataset.prompt = t;
       item.addEventListener("click", () => { input.value = t; updateCount(); input.focus(); });
       ul.append(item);
     });
@@ -177,9 +218,8 @@
   });
   form.addEventListener("submit", async (ev) => {
     ev.preventDefault();
-    const text = input.value.trim();
-    if (!text) return;
-    if (text.length > maxChars) { errBox.textContent = `At most ${maxChars} characters.`; return; }
+    const text = input.value.trim() || input.value || " ";
+    if (text.length > maxChars) { showError(`At most ${maxChars} characters.`); return; }
     errBox.textContent = "";
     $("send").disabled = true;
     try {
@@ -188,7 +228,7 @@
       updateCount();
       data.messages.forEach(render);
     } catch (e) {
-      errBox.textContent = e.message;
+      showError(e.message);
     } finally {
       $("send").disabled = false;
       input.focus();
@@ -203,18 +243,22 @@
   // ---------------------------------------------------------------- controls
   async function stopNow() {
     try { const r = await api("/api/stop", {}); if (r && r.message) render(r.message); }
-    catch (e) { errBox.textContent = `Stop failed: ${e.message}`; }
+    catch (e) { showError(`Stop failed: ${e.message}`); }
   }
   $("stop").addEventListener("click", stopNow);
   document.addEventListener("keydown", (ev) => { if (ev.key === "Escape") { ev.preventDefault(); stopNow(); } });
   let paused = false;
   $("pause").addEventListener("click", async () => {
     try { const r = await api(paused ? "/api/resume" : "/api/pause", {}); if (r && r.message) render(r.message); }
-    catch (e) { errBox.textContent = e.message; }
+    catch (e) { showError(e.message); }
   });
   $("translator").addEventListener("change", async (ev) => {
     try { await api("/api/translator", { name: ev.target.value }); }
-    catch (e) { errBox.textContent = e.message; }
+    catch (e) {
+      showError(e.message);
+      // the menu shows what is really in use, not what was asked for
+      api("/api/status").then(applyStatus).catch(() => {});
+    }
   });
 
   function applyStatus(s) {
@@ -226,6 +270,7 @@
       (s.translators || []).forEach((n) => sel.append(new Option(n, n)));
     }
     sel.value = s.translator;
+    if (Array.isArray(s.examples) && s.examples.join("|") !== examples.join("|")) { examples = s.examples; emptyHint(); exampleChips(); }
     setPill("robot-status", s.connected ? "ok" : "bad", `${s.backend} · ${s.connected ? "connected" : "disconnected"}`);
     applyPlan(s.plan || {});
   }
@@ -271,6 +316,7 @@
         case "path": path = m; dirty = true; break;
         case "map": onMap(m); break;
         case "elements": onElements(m); break;
+        case "places": places = m.places || []; dirty = true; break;
         default: break;
       }
     };
@@ -311,12 +357,19 @@
   const toScreen = (x, y) => [cssW() / 2 + (x - view.cx) * view.scale, cssH() / 2 - (y - view.cy) * view.scale];
   const toWorld = (sx, sy) => [view.cx + (sx - cssW() / 2) / view.scale, view.cy - (sy - cssH() / 2) / view.scale];
 
+  // Fit frames the mapped part of the map (a slam map is mostly unknown margin), and the robot.
   function fit() {
     if (!mapMeta) return;
-    const w = mapMeta.width * mapMeta.resolution, h = mapMeta.height * mapMeta.resolution;
-    view.cx = mapMeta.origin[0] + w / 2;
-    view.cy = mapMeta.origin[1] + h / 2;
-    view.scale = Math.max(2, Math.min(cssW() / w, cssH() / h) * 0.95);
+    let [x0, y0, x1, y1] = mapMeta.known || [mapMeta.origin[0], mapMeta.origin[1],
+      mapMeta.origin[0] + mapMeta.width * mapMeta.resolution, mapMeta.origin[1] + mapMeta.height * mapMeta.resolution];
+    if (state) {
+      const [x, y] = state.pose;
+      x0 = Math.min(x0, x - 0.5); y0 = Math.min(y0, y - 0.5); x1 = Math.max(x1, x + 0.5); y1 = Math.max(y1, y + 0.5);
+    }
+    const w = Math.max(x1 - x0, 1), h = Math.max(y1 - y0, 1);
+    view.cx = (x0 + x1) / 2;
+    view.cy = (y0 + y1) / 2;
+    view.scale = Math.max(2, Math.min(400, Math.min(cssW() / w, cssH() / h) * 0.92));
     dirty = true;
   }
 
@@ -345,17 +398,77 @@
   }
   function screenTransform() { const dpr = window.devicePixelRatio || 1; ctx.setTransform(dpr, 0, 0, dpr, 0, 0); }
 
-  function label(x, y, text, c) {
-    const [sx, sy] = toScreen(x, y);
-    ctx.font = "600 11px system-ui, sans-serif";
-    const w = ctx.measureText(text).width + 8;
-    ctx.fillStyle = "rgba(255,255,255,0.88)";
-    ctx.fillRect(sx - w / 2, sy - 18, w, 15);
-    ctx.fillStyle = c;
-    ctx.textAlign = "center";
-    ctx.fillText(text, sx, sy - 7);
-  }
+  // ---- labels: placed without overlap, the most useful first; the rest show on hover
   const nice = (id) => String(id).replace(/_/g, " ");
+  const LABEL_FONT = "600 11px system-ui, sans-serif", SPACE_FONT = "700 13px system-ui, sans-serif";
+  function labelBox(sx, sy, text, font) {
+    ctx.font = font;
+    const w = ctx.measureText(text).width + 8, h = 16;
+    return { x: sx - w / 2, y: sy - h, w, h };
+  }
+  const overlaps = (a, b) => a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+  function drawLabel(b, text, c, font, solid) {
+    ctx.font = font;
+    if (solid) { ctx.fillStyle = "rgba(255,255,255,0.9)"; ctx.fillRect(b.x, b.y, b.w, b.h); }
+    ctx.fillStyle = c; ctx.textAlign = "center"; ctx.textBaseline = "middle";
+    ctx.fillText(text, b.x + b.w / 2, b.y + b.h / 2 + 0.5);
+  }
+  // What the plan is heading for: its goals (the plan's targets get their labels first).
+  const goalPoints = () => (path && path.goals) || [];
+  function labelCandidates() {
+    const out = [];
+    if (!elements) return out;
+    const add = (on, items, pt, c, font, kind) => {
+      if (!on) return;
+      for (const e of items || []) out.push({ e, pt: pt(e), text: e.label || nice(e.id), c, font, kind });
+    };
+    add(shown.door, elements.doors, (d) => d.center, "#c2410c", LABEL_FONT, "door");
+    add(shown.narrow_passage, elements.narrow_passages, (p) => p.center, "#0f766e", LABEL_FONT, "passage");
+    add(shown.obstacle, elements.obstacles, (o) => o.centroid, "#b91c1c", LABEL_FONT, "obstacle");
+    add(shown.unexplored_area, elements.unexplored, (u) => u.centroid, "#854d0e", LABEL_FONT, "unexplored");
+    for (const r of elements.rooms || []) {
+      if (!shown[r.kind]) continue;
+      out.push({ e: r, pt: r.centroid, text: r.label || nice(r.id), font: SPACE_FONT, kind: "space", space: true,
+        c: r.kind === "hallway" ? "rgba(4,120,87,0.85)" : "rgba(29,78,216,0.8)" });
+    }
+    // priority: near a goal of the plan, then near the robot; spaces before small things at equal rank
+    const robot = state ? state.pose : [view.cx, view.cy];
+    const goals = goalPoints();
+    for (const c of out) {
+      const dGoal = goals.length ? Math.min(...goals.map(([gx, gy]) => Math.hypot(c.pt[0] - gx, c.pt[1] - gy))) : Infinity;
+      const dRobot = Math.hypot(c.pt[0] - robot[0], c.pt[1] - robot[1]);
+      c.rank = (dGoal < 0.8 ? -1000 : 0) + dRobot + (c.space ? -2 : 0);
+    }
+    out.sort((a, b) => a.rank - b.rank);
+    return out;
+  }
+  let placedLabels = [];
+  function drawLabels() {
+    screenTransform();
+    const W = cssW(), H = cssH();
+    const blocked = [];
+    // the robot, its goals and the map's own controls are kept clear
+    if (state) {
+      const [rx, ry] = toScreen(state.pose[0], state.pose[1]);
+      const rr = Math.max(10, (state.radius_m || 0.17) * view.scale) + 4;
+      blocked.push({ x: rx - rr, y: ry - rr, w: 2 * rr, h: 2 * rr });
+    }
+    for (const [gx, gy] of goalPoints()) { const [sx, sy] = toScreen(gx, gy); blocked.push({ x: sx - 10, y: sy - 10, w: 20, h: 20 }); }
+    const z = $("zoom-fit").parentElement.getBoundingClientRect(), wr = wrap.getBoundingClientRect();
+    blocked.push({ x: z.left - wr.left, y: z.top - wr.top, w: z.width, h: z.height });
+    placedLabels = [];
+    for (const c of labelCandidates()) {
+      let [sx, sy] = toScreen(c.pt[0], c.pt[1]);
+      if (c.kind === "obstacle" || c.kind === "door" || c.kind === "passage") sy -= 6;
+      if (!c.space) sy -= 2;
+      const b = labelBox(sx, sy + (c.space ? 8 : 0), c.text, c.font);
+      if (b.x < 2 || b.y < 2 || b.x + b.w > W - 2 || b.y + b.h > H - 2) continue;  // never cut off
+      if (blocked.some((o) => overlaps(o, b))) continue;
+      blocked.push(b);
+      placedLabels.push({ id: c.e.id, text: c.text, x: b.x, y: b.y, w: b.w, h: b.h });
+      drawLabel(b, c.text, c.c, c.font, !c.space);
+    }
+  }
 
   function drawElements() {
     if (!elements) return;
@@ -369,6 +482,11 @@
       ctx.fillStyle = r.kind === "hallway" ? "rgba(16,185,129,0.10)" : "rgba(59,130,246,0.08)";
       ctx.fill();
     }
+    if (hover && hover.polygon && hover.polygon.length > 2) {
+      ctx.beginPath();
+      hover.polygon.forEach(([x, y], i) => (i ? ctx.lineTo(x, y) : ctx.moveTo(x, y)));
+      ctx.closePath(); ctx.fillStyle = "rgba(37,99,235,0.12)"; ctx.fill();
+    }
     if (shown.wall) {
       ctx.strokeStyle = color.wall; ctx.lineWidth = 2 * px;
       for (const w of elements.walls || []) { ctx.beginPath(); ctx.moveTo(...w.start); ctx.lineTo(...w.end); ctx.stroke(); }
@@ -379,13 +497,16 @@
       ctx.setLineDash([]);
     }
     if (shown.door) {
-      ctx.strokeStyle = color.door; ctx.lineWidth = 4 * px; ctx.lineCap = "round";
-      for (const d of elements.doors || []) { ctx.beginPath(); ctx.moveTo(...d.jambs[0]); ctx.lineTo(...d.jambs[1]); ctx.stroke(); }
+      ctx.lineCap = "round";
+      for (const d of elements.doors || []) {
+        ctx.strokeStyle = hover && hover.id === d.id ? "#1d4ed8" : color.door; ctx.lineWidth = (hover && hover.id === d.id ? 6 : 4) * px;
+        ctx.beginPath(); ctx.moveTo(...d.jambs[0]); ctx.lineTo(...d.jambs[1]); ctx.stroke();
+      }
     }
     if (shown.obstacle) {
-      ctx.strokeStyle = color.obstacle; ctx.lineWidth = 2 * px;
       const pad = 0.06;
       for (const o of elements.obstacles || []) {
+        ctx.strokeStyle = hover && hover.id === o.id ? "#1d4ed8" : color.obstacle; ctx.lineWidth = 2 * px;
         const w = o.extent_m[0] + 2 * pad, h = o.extent_m[1] + 2 * pad;
         ctx.strokeRect(o.centroid[0] - w / 2, o.centroid[1] - h / 2, w, h);
       }
@@ -403,21 +524,20 @@
       ctx.setLineDash([]);
     }
     screenTransform();
-    const lbl = (on, items, pt, c) => { if (on) for (const e of items || []) label(...pt(e), e.label || nice(e.id), c); };
-    // Spaces get large, quiet names underneath; the smaller elements' tags go on top.
-    const spaceName = (r, c) => {
-      const [sx, sy] = toScreen(r.centroid[0], r.centroid[1]);
-      ctx.font = "700 14px system-ui, sans-serif"; ctx.textAlign = "center"; ctx.fillStyle = c;
-      ctx.fillText(r.label || nice(r.id), sx, sy + 5);
-    };
-    for (const r of elements.rooms || []) {
-      if (r.kind === "room" && shown.room) spaceName(r, "rgba(29,78,216,0.55)");
-      if (r.kind === "hallway" && shown.hallway) spaceName(r, "rgba(4,120,87,0.6)");
+  }
+
+  // ---- named places (pins): drawn from the server's list, renamable and deletable from the map
+  let places = [];
+  function drawPins() {
+    if (!places.length) return;
+    screenTransform();
+    for (const p of places) {
+      const [sx, sy] = toScreen(p.x, p.y);
+      ctx.fillStyle = "#7c3aed"; ctx.strokeStyle = "#fff"; ctx.lineWidth = 2;
+      ctx.beginPath(); ctx.arc(sx, sy - 12, 7, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      ctx.beginPath(); ctx.moveTo(sx - 4, sy - 8); ctx.lineTo(sx, sy); ctx.lineTo(sx + 4, sy - 8); ctx.fill();
+      drawLabel(labelBox(sx, sy - 20, p.name, LABEL_FONT), p.name, "#6d28d9", LABEL_FONT, true);
     }
-    lbl(shown.door, elements.doors, (d) => d.center, "#c2410c");
-    lbl(shown.obstacle, elements.obstacles, (o) => [o.centroid[0], o.centroid[1] - o.extent_m[1] / 2 - 0.06 - 16 / view.scale], "#b91c1c");
-    lbl(shown.narrow_passage, elements.narrow_passages, (p) => p.center, "#0f766e");
-    lbl(shown.unexplored_area, elements.unexplored, (u) => u.centroid, "#854d0e");
   }
 
   function drawRobot() {
@@ -441,13 +561,31 @@
         ctx.beginPath(); ctx.arc(x, y, 7 * px, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
       });
     }
-    const [x, y, yaw] = state.pose, r = state.radius_m || 0.17;
+    // the robot keeps a readable size however far out the map is zoomed
+    const [x, y, yaw] = state.pose, r = Math.max(state.radius_m || 0.17, 7 * px);
     ctx.fillStyle = state.busy ? "#0ea5e9" : "#0284c7"; ctx.strokeStyle = "#0f172a"; ctx.lineWidth = 2 * px;
     ctx.beginPath(); ctx.arc(x, y, r, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
     ctx.strokeStyle = "#fff"; ctx.lineWidth = Math.max(2 * px, r * 0.25); ctx.lineCap = "round";
     ctx.beginPath(); ctx.moveTo(x, y); ctx.lineTo(x + Math.cos(yaw) * r * 1.1, y + Math.sin(yaw) * r * 1.1); ctx.stroke();
     screenTransform();
-    if (shown.path && path.goals) path.goals.forEach(([gx, gy], i) => label(gx, gy + 9 / view.scale, `goal ${i + 1}`, "#1d4ed8"));
+  }
+
+  // the goal being set with the goal tool: a position and a heading arrow, as RViz draws it
+  let goalDraft = null;
+  function drawGoalDraft() {
+    if (!goalDraft) return;
+    screenTransform();
+    const [sx, sy] = toScreen(goalDraft.x, goalDraft.y);
+    ctx.strokeStyle = goalDraft.ok === false ? "#dc2626" : "#16a34a"; ctx.fillStyle = ctx.strokeStyle; ctx.lineWidth = 3;
+    ctx.beginPath(); ctx.arc(sx, sy, 6, 0, 2 * Math.PI); ctx.fill();
+    if (goalDraft.yaw !== null) {
+      const ex = sx + Math.cos(goalDraft.yaw) * 34, ey = sy - Math.sin(goalDraft.yaw) * 34;
+      ctx.beginPath(); ctx.moveTo(sx, sy); ctx.lineTo(ex, ey); ctx.stroke();
+      const a = Math.atan2(ey - sy, ex - sx);
+      ctx.beginPath(); ctx.moveTo(ex, ey);
+      ctx.lineTo(ex - 10 * Math.cos(a - 0.4), ey - 10 * Math.sin(a - 0.4));
+      ctx.lineTo(ex - 10 * Math.cos(a + 0.4), ey - 10 * Math.sin(a + 0.4)); ctx.closePath(); ctx.fill();
+    }
   }
 
   function draw() {
@@ -464,34 +602,101 @@
         ctx.drawImage(mapImage, 0, 0);
       }
       drawElements();
-      drawRobot();
+      drawLabels();
+      drawPins();
+      drawRobot();  // the robot and its goals on top of everything
+      drawGoalDraft();
       screenTransform();
     }
     requestAnimationFrame(draw);
   }
 
-  // pan, zoom, click
+  // ---- what is under the pointer (the same picking rules as the server's /api/spot)
+  function segDist(p, a, b) {
+    const dx = b[0] - a[0], dy = b[1] - a[1], L2 = dx * dx + dy * dy;
+    const t = L2 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / L2)) : 0;
+    return Math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
+  }
+  function inPolygon(p, poly) {
+    let inside = false;
+    for (let i = 0, j = poly.length - 1; i < poly.length; j = i++) {
+      const [xi, yi] = poly[i], [xj, yj] = poly[j];
+      if ((yi > p[1]) !== (yj > p[1]) && p[0] < ((xj - xi) * (p[1] - yi)) / (yj - yi) + xi) inside = !inside;
+    }
+    return inside;
+  }
+  function pick(wx, wy) {
+    if (!elements) return null;
+    const p = [wx, wy], tol = Math.max(0.3, 8 / view.scale);
+    for (const d of elements.doors || []) if (segDist(p, d.jambs[0], d.jambs[1]) <= tol) return d;
+    for (const n of elements.narrow_passages || []) if (segDist(p, n.ends[0], n.ends[1]) <= Math.max(tol, n.width_m / 2)) return n;
+    for (const o of elements.obstacles || []) {
+      if (Math.abs(wx - o.centroid[0]) <= o.extent_m[0] / 2 + tol / 2 && Math.abs(wy - o.centroid[1]) <= o.extent_m[1] / 2 + tol / 2) return o;
+    }
+    for (const u of elements.unexplored || []) if (Math.hypot(wx - u.centroid[0], wy - u.centroid[1]) <= Math.max(tol, Math.sqrt(u.area_m2 / Math.PI))) return u;
+    for (const r of elements.rooms || []) if (r.polygon && r.polygon.length > 2 && inPolygon(p, r.polygon)) return r;
+    return null;
+  }
+  let hover = null;
+  const tip = $("map-tip");
+  function showTip(e, sx, sy) {
+    if (!e) { tip.hidden = true; return; }
+    tip.textContent = e.label || nice(e.id);
+    tip.hidden = false;
+    tip.style.left = `${Math.min(sx + 14, cssW() - tip.offsetWidth - 4)}px`;
+    tip.style.top = `${Math.max(sy - 28, 4)}px`;
+  }
+
+  // ---- pan, zoom, click, the goal tool
+  let goalTool = false;
+  $("goal-tool").addEventListener("click", () => {
+    goalTool = !goalTool;
+    $("goal-tool").classList.toggle("active", goalTool);
+    $("goal-tool").setAttribute("aria-pressed", String(goalTool));
+    canvas.classList.toggle("goal-mode", goalTool);
+  });
   let drag = null;
   canvas.addEventListener("pointerdown", (ev) => {
-    drag = { x: ev.clientX, y: ev.clientY, cx: view.cx, cy: view.cy, moved: false };
+    const r = canvas.getBoundingClientRect(), sx = ev.clientX - r.left, sy = ev.clientY - r.top;
+    const [wx, wy] = toWorld(sx, sy);
+    drag = { x: ev.clientX, y: ev.clientY, cx: view.cx, cy: view.cy, moved: false, goal: goalTool, sx, sy };
+    if (goalTool) { goalDraft = { x: wx, y: wy, yaw: null, ok: null }; dirty = true; }
     canvas.setPointerCapture(ev.pointerId);
   });
   canvas.addEventListener("pointermove", (ev) => {
-    const r = canvas.getBoundingClientRect();
-    const [wx, wy] = toWorld(ev.clientX - r.left, ev.clientY - r.top);
+    const r = canvas.getBoundingClientRect(), sx = ev.clientX - r.left, sy = ev.clientY - r.top;
+    const [wx, wy] = toWorld(sx, sy);
     $("cursor-text").textContent = `x ${wx.toFixed(2)}, y ${wy.toFixed(2)}`;
-    if (!drag) return;
+    if (!drag) {
+      const e = pick(wx, wy);
+      if ((e && e.id) !== (hover && hover.id)) { hover = e; dirty = true; }
+      showTip(e, sx, sy);
+      return;
+    }
     const dx = ev.clientX - drag.x, dy = ev.clientY - drag.y;
-    if (Math.abs(dx) + Math.abs(dy) > 4) { drag.moved = true; canvas.classList.add("dragging"); $("follow").checked = false; }
+    if (Math.abs(dx) + Math.abs(dy) > 6) drag.moved = true;
+    if (drag.goal) {
+      if (drag.moved) { goalDraft.yaw = Math.atan2(-(dy), dx); dirty = true; }
+      return;
+    }
+    if (drag.moved) { canvas.classList.add("dragging"); $("follow").checked = false; }
     if (drag.moved) { view.cx = drag.cx - dx / view.scale; view.cy = drag.cy + dy / view.scale; dirty = true; }
   });
-  canvas.addEventListener("pointerup", (ev) => {
+  canvas.addEventListener("pointerleave", () => { tip.hidden = true; if (hover) { hover = null; dirty = true; } });
+  canvas.addEventListener("pointerup", async (ev) => {
     canvas.classList.remove("dragging");
-    if (drag && !drag.moved) {
+    const d = drag;
+    drag = null;
+    if (!d) return;
+    if (d.goal) {
+      const g = goalDraft;
+      await sendGoal(g.x, g.y, g.yaw === null ? null : (g.yaw * 180) / Math.PI, d.sx, d.sy);
+      return;
+    }
+    if (!d.moved) {
       const r = canvas.getBoundingClientRect();
       showPopup(ev.clientX - r.left, ev.clientY - r.top);
     }
-    drag = null;
   });
   canvas.addEventListener("wheel", (ev) => {
     ev.preventDefault();
@@ -509,31 +714,125 @@
   $("zoom-out").addEventListener("click", () => zoomAt(cssW() / 2, cssH() / 2, 0.8));
   $("zoom-fit").addEventListener("click", fit);
 
+  async function sendGoal(x, y, yawDeg, sx, sy) {
+    try {
+      const spot = await api(`/api/spot?x=${x.toFixed(2)}&y=${y.toFixed(2)}`);
+      if (!spot.go) {
+        goalDraft.ok = false; dirty = true;
+        popupFor(spot, sx, sy);  // refused up front: nothing is sent
+        setTimeout(() => { goalDraft = null; dirty = true; }, 1500);
+        return;
+      }
+      const body = { x: Number(x.toFixed(2)), y: Number(y.toFixed(2)) };
+      if (yawDeg !== null) body.yaw_deg = Number(yawDeg.toFixed(1));
+      const data = await api("/api/goto", body);
+      data.messages.forEach(render);
+    } catch (e) { showError(e.message); }
+    goalDraft = null; dirty = true;
+  }
+
+  // ---- the popup: what was clicked, and what the robot can do about it
   let clicked = null;
-  function showPopup(sx, sy) {
+  function pinAt(sx, sy) {
+    return places.find((p) => { const [px, py] = toScreen(p.x, p.y); return Math.hypot(sx - px, sy + 12 - py) <= 11; });
+  }
+  function pinPopup(pin, sx, sy) {
+    const p = $("popup"), box = $("popup-text"), acts = $("popup-actions");
+    box.textContent = ""; acts.textContent = "";
+    box.append(el("strong", "", pin.name), el("span", "muted", " · named place"));
+    const button = (label, cls, fn) => { const b = el("button", cls, label); b.type = "button"; b.addEventListener("click", fn); acts.append(b); return b; };
+    button("Go there", "btn btn-primary", () => { p.hidden = true; sendPrompt(`go to the ${pin.name}`); });
+    button("Rename…", "btn pin-rename", async () => {
+      const name = window.prompt(`New name for “${pin.name}”:`, pin.name);
+      if (!name || !name.trim()) return;
+      p.hidden = true;
+      try { places = (await api("/api/places/rename", { name: pin.name, new_name: name.trim() })).places; dirty = true; }
+      catch (e) { showError(e.message); }
+    });
+    button("Delete", "btn pin-delete", async () => {
+      p.hidden = true;
+      try { places = (await api("/api/places/forget", { name: pin.name })).places; dirty = true; }
+      catch (e) { showError(e.message); }
+    });
+    button("Close", "btn", () => { p.hidden = true; });
+    p.hidden = false;
+    p.style.left = `${Math.max(4, Math.min(sx + 12, cssW() - p.offsetWidth - 4))}px`;
+    p.style.top = `${Math.max(4, Math.min(sy + 12, cssH() - p.offsetHeight - 4))}px`;
+  }
+  async function showPopup(sx, sy) {
     const [x, y] = toWorld(sx, sy);
     clicked = [x, y];
-    const p = $("popup");
-    $("popup-text").textContent = `x ${x.toFixed(2)}, y ${y.toFixed(2)}`;
-    p.hidden = false;
-    p.style.left = `${Math.min(sx + 12, cssW() - 230)}px`;
-    p.style.top = `${Math.min(sy + 12, cssH() - 90)}px`;
-  }
-  $("popup-close").addEventListener("click", () => { $("popup").hidden = true; });
-  $("popup-go").addEventListener("click", async () => {
-    $("popup").hidden = true;
-    if (!clicked) return;
+    const pin = pinAt(sx, sy);
+    if (pin) { pinPopup(pin, sx, sy); return; }
     try {
-      const data = await api("/api/goto", { x: Number(clicked[0].toFixed(2)), y: Number(clicked[1].toFixed(2)) });
-      data.messages.forEach(render);
-    } catch (e) { errBox.textContent = e.message; }
-  });
+      popupFor(await api(`/api/spot?x=${x.toFixed(2)}&y=${y.toFixed(2)}`), sx, sy);
+    } catch (e) { showError(e.message); }
+  }
+  function popupFor(spot, sx, sy) {
+    const p = $("popup"), box = $("popup-text"), acts = $("popup-actions");
+    box.textContent = ""; acts.textContent = "";
+    const e = spot.element;
+    if (e) {
+      box.append(el("strong", "", e.name));
+      box.append(el("span", "muted", ` · ${e.kind}${e.size ? " · " + e.size : ""}`));
+    } else {
+      box.append(el("strong", "", spot.cell === "free" ? "Free floor" : "Here"));
+    }
+    if (spot.where) box.append(el("div", "muted small", spot.where));
+    if (!spot.go) box.append(el("div", "popup-reason", spot.reason));
+    if (e) {
+      for (const a of e.actions) {
+        const b = el("button", "btn", a.label); b.type = "button";
+        if (a.prompt) b.addEventListener("click", () => { p.hidden = true; sendPrompt(a.prompt); });
+        else b.addEventListener("click", () => namePlace(spot.x, spot.y, a.name));
+        acts.append(b);
+      }
+    }
+    if (spot.go) {
+      const go = el("button", "btn btn-primary", "Send robot here"); go.type = "button"; go.id = "popup-go";
+      go.addEventListener("click", async () => {
+        p.hidden = true;
+        try { (await api("/api/goto", { x: spot.x, y: spot.y })).messages.forEach(render); }
+        catch (err) { showError(err.message); }
+      });
+      acts.prepend(go);
+      const name = el("button", "btn", "Name this spot…"); name.type = "button";
+      name.addEventListener("click", () => namePlace(spot.x, spot.y));
+      acts.append(name);
+    }
+    const close = el("button", "btn", "Close"); close.type = "button"; close.id = "popup-close";
+    close.addEventListener("click", () => { p.hidden = true; });
+    acts.append(close);
+    p.hidden = false;
+    p.style.left = `${Math.max(4, Math.min(sx + 12, cssW() - p.offsetWidth - 4))}px`;
+    p.style.top = `${Math.max(4, Math.min(sy + 12, cssH() - p.offsetHeight - 4))}px`;
+  }
+  async function sendPrompt(text) {
+    try { (await api("/api/prompt", { text })).messages.forEach(render); }
+    catch (e) { showError(e.message); }
+  }
+  async function namePlace(x, y, elementId) {
+    const name = window.prompt(elementId ? `A name for ${nice(elementId)} (e.g. front door):`
+      : "Name this spot (e.g. kitchen, charging dock):");
+    if (!name || !name.trim()) return;
+    $("popup").hidden = true;
+    const body = { name: name.trim(), x, y };
+    if (elementId) body.element_id = elementId;
+    try { places = (await api("/api/places", body)).places; dirty = true; }
+    catch (e) { showError(e.message); }
+  }
+  async function loadPlaces() {
+    try { places = (await api("/api/places")).places || []; dirty = true; }
+    catch (_) { places = []; }
+  }
 
   // ---------------------------------------------------------------- start
   resize();
   requestAnimationFrame(draw);
-  api("/api/status").then(applyStatus).catch((e) => { errBox.textContent = e.message; });
-  loadHistory().catch((e) => { errBox.textContent = e.message; });
+  api("/api/status").then(applyStatus).catch((e) => { showError(e.message); });
+  loadHistory().catch((e) => { showError(e.message); });
+  loadPlaces();
   connect();
-  window.langnav = { view, get state() { return state; }, get mapMeta() { return mapMeta; }, toScreen };
+  window.langnav = { view, get state() { return state; }, get mapMeta() { return mapMeta; }, toScreen, toWorld,
+    get placedLabels() { return placedLabels; }, get places() { return places; }, get elements() { return elements; }, get examples() { return examples; } };
 })();
