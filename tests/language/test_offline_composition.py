@@ -85,6 +85,8 @@ def test_every_label_noun_and_number_is_read_as_that_label(noun: str, number: in
     ("go to the room next to this one", "adjacent", {"kind": "room", "in_current_room": True}),
     ("go to the room next door", "adjacent", {"kind": "room", "in_current_room": True}),
     ("go to the room next to room 3", "adjacent", {"kind": "room", "label": 3}),
+    ("enter the room across from this one", "across", None),
+    ("go into the room opposite", "across", None),
 ])
 def test_relations_between_spaces(prompt: str, relation: str, near: dict[str, Any] | None) -> None:
     s = one_step(prompt)
@@ -94,6 +96,7 @@ def test_relations_between_spaces(prompt: str, relation: str, near: dict[str, An
 @pytest.mark.parametrize(("prompt", "place"), [
     ("go back to where you were", Place.PREVIOUS), ("return to where you were before", Place.PREVIOUS),
     ("go back to where you started", Place.START), ("come back here", Place.START),
+    ("return to your previous position", Place.PREVIOUS), ("go back to where you were a minute ago", Place.PREVIOUS),
 ])
 def test_returns(prompt: str, place: Place) -> None:
     assert one_step(prompt)["target"] == {"kind": "none", "place": place.value}
@@ -137,6 +140,11 @@ def test_named_places_in_later_prompts() -> None:
     assert s["target"] == {"kind": "none", "name": "front door"}
     s = one_step("go 1 m past the kitchen", ("kitchen",))
     assert s["offset"] == Offset.PAST.value and s["target"]["name"] == "kitchen"
+
+
+def test_facing_a_named_place() -> None:
+    s = one_step("turn to face the kitchen", ("kitchen",))
+    assert s["movement"] == "rotate" and s["target"] == {"kind": "none", "name": "kitchen"}
 
 
 def test_an_unknown_name_is_asked_about() -> None:

@@ -26,9 +26,9 @@ from websockets.exceptions import ConnectionClosed
 
 from langnav.plan.commands import NavigateThroughPoses
 from langnav.plan.executor import PlanExecutor
-from langnav.robot import ros_messages as rm
 from langnav.robot.errors import RobotError, RobotTimeout
 from langnav.robot.protocol import TaskStatus, create_backend
+from langnav.robot.ros import messages as rm
 from langnav.robot.ros.rosbridge_backend import (
     MAP_RESUBSCRIBE_S,
     STOP_HOLD_RATE_HZ,
