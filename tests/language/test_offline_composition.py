@@ -85,6 +85,8 @@ def test_every_label_noun_and_number_is_read_as_that_label(noun: str, number: in
     ("go to the room next to this one", "adjacent", {"kind": "room", "in_current_room": True}),
     ("go to the room next door", "adjacent", {"kind": "room", "in_current_room": True}),
     ("go to the room next to room 3", "adjacent", {"kind": "room", "label": 3}),
+    ("enter the room across from this one", "across", None),
+    ("go into the room opposite", "across", None),
 ])
 def test_relations_between_spaces(prompt: str, relation: str, near: dict[str, Any] | None) -> None:
     s = one_step(prompt)
@@ -94,6 +96,7 @@ def test_relations_between_spaces(prompt: str, relation: str, near: dict[str, An
 @pytest.mark.parametrize(("prompt", "place"), [
     ("go back to where you were", Place.PREVIOUS), ("return to where you were before", Place.PREVIOUS),
     ("go back to where you started", Place.START), ("come back here", Place.START),
+    ("return to your previous position", Place.PREVIOUS), ("go back to where you were a minute ago", Place.PREVIOUS),
 ])
 def test_returns(prompt: str, place: Place) -> None:
     assert one_step(prompt)["target"] == {"kind": "none", "place": place.value}
@@ -139,6 +142,11 @@ def test_named_places_in_later_prompts() -> None:
     assert s["offset"] == Offset.PAST.value and s["target"]["name"] == "kitchen"
 
 
+def test_facing_a_named_place() -> None:
+    s = one_step("turn to face the kitchen", ("kitchen",))
+    assert s["movement"] == "rotate" and s["target"] == {"kind": "none", "name": "kitchen"}
+
+
 def test_an_unknown_name_is_asked_about() -> None:
     intent = translate_offline("go to the kitchen")
     assert intent.steps == [] and "name it first" in (intent.clarification or "")
@@ -152,3 +160,24 @@ def test_a_place_word_that_fits_no_step_is_asked_about() -> None:
 def test_relation_words_only_relate_spaces() -> None:
     s = one_step("go to the room across the hall")
     assert s["target"]["kind"] == Element.ROOM.value and s["target"]["relation"] == Relation.ACROSS.value
+
+
+_WORDS = ("go", "to", "the", "kitchen", "front door", "door", "2", "metres", "past", "before", "halfway", "down",
+          "corridor", "call", "this", "spot", "forget", "room", "across", "hall", "next", "one", "you", "are", "in",
+          "back", "where", "were", "started", "passed", "just", "face", "turn", "between", "and", "lab", ",", "then")
+
+
+@settings(max_examples=150, deadline=None, derandomize=True)
+@given(st.lists(st.sampled_from(_WORDS), min_size=1, max_size=14))
+def test_any_mix_of_place_words_is_read_or_asked_about_in_the_users_words(words: list[str]) -> None:
+    prompt = " ".join(words)
+    intent = translate_offline(prompt, ("kitchen", "front door"))
+    shown = " ".join([intent.clarification or "", *intent.unread,
+                      *(s.target.name or "" for s in intent.steps if s.target is not None)])
+    assert "zqxplace" not in shown  # the stand-ins of the user's names never reach the user
+    assert intent.steps or intent.clarification
+    for s in intent.steps:
+        if s.offset is not None:
+            assert s.target is not None and s.offset_m is not None
+        if s.fraction is not None:
+            assert s.target is not None and 0 < s.fraction <= 1

@@ -12,10 +12,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from langnav.maps.draw import MapBuilder
-from langnav.robot import ros_interfaces as ri
-from langnav.robot import ros_messages as rm
 from langnav.robot.errors import RobotError
 from langnav.robot.protocol import LaserScan, Pose2D
+from langnav.robot.ros import interfaces as ri
+from langnav.robot.ros import messages as rm
 
 rosbags_typesys = pytest.importorskip("rosbags.typesys")
 JAZZY = rosbags_typesys.get_typestore(rosbags_typesys.Stores.ROS2_JAZZY)

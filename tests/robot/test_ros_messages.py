@@ -11,9 +11,9 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
-from langnav.robot import ros_messages as rm
 from langnav.robot.errors import RobotError
 from langnav.robot.protocol import LaserScan, Pose2D
+from langnav.robot.ros import messages as rm
 
 angles = st.floats(min_value=-math.pi + 1e-6, max_value=math.pi, allow_nan=False)
 coords = st.floats(min_value=-1e4, max_value=1e4, allow_nan=False)

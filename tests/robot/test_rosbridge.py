@@ -25,7 +25,6 @@ from websockets.sync.client import connect
 
 from langnav.maps.draw import MapBuilder
 from langnav.maps.grid import OccupancyGrid
-from langnav.robot import ros_messages as rm
 from langnav.robot.errors import RobotError, RobotTimeout
 from langnav.robot.protocol import (
     Pose2D,
@@ -35,6 +34,7 @@ from langnav.robot.protocol import (
     TaskStatus,
     create_backend,
 )
+from langnav.robot.ros import messages as rm
 from langnav.robot.ros.rosbridge_backend import RosbridgeBackend
 from langnav.robot.ros.rosbridge_server import RosbridgeServer, RosbridgeServerConfig
 

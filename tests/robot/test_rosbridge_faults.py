@@ -20,15 +20,15 @@ from typing import Any
 
 import pytest
 import roslibpy
-from test_rosbridge import GOAL, START, Served, _until, _world
+from test_rosbridge import GOAL, START, Served, _DummyRobot, _until, _world
 from websockets.asyncio.server import ServerConnection, serve
 from websockets.exceptions import ConnectionClosed
 
 from langnav.plan.commands import NavigateThroughPoses
 from langnav.plan.executor import PlanExecutor
-from langnav.robot import ros_messages as rm
 from langnav.robot.errors import RobotError, RobotTimeout
 from langnav.robot.protocol import TaskStatus, create_backend
+from langnav.robot.ros import messages as rm
 from langnav.robot.ros.rosbridge_backend import (
     MAP_RESUBSCRIBE_S,
     STOP_HOLD_RATE_HZ,
@@ -254,7 +254,9 @@ def test_subscriptions_ask_rosbridge_for_no_queue_and_a_missing_map_is_a_clear_e
 
 
 def test_connecting_before_rosbridge_discovered_the_map_publisher_still_gets_the_map() -> None:
-    served = _served(latched_discovery_s=1.5)  # the first 1.5 s, subscriptions miss the latched map
+    # a map that does not change (the simulator's own keeps being refined from its scans, which
+    # would re-send it); for the first 1.5 s, subscriptions miss the latched map
+    served = Served(_DummyRobot(), latched_discovery_s=1.5)
     try:
         robot = served.client()
         try:

@@ -8,8 +8,8 @@ import pytest
 
 from langnav.robot import RobotTimeout, TaskStatus
 from langnav.robot.protocol import Pose2D
+from langnav.robot.ros.backend import _Ros2Task
 from langnav.robot.ros.rosbridge_backend import _Task
-from langnav.robot.ros2_backend import _Ros2Task
 from langnav.robot.task_state import ReportedTask
 
 

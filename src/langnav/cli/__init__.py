@@ -21,6 +21,7 @@ SUBCOMMANDS: Final[dict[str, tuple[str, str]]] = {
     "run": ("langnav.cli.run", "translate, validate and execute a prompt on a robot"),
     "sim": ("langnav.cli.sim", "run the simulated robot (optionally served over rosbridge)"),
     "serve": ("langnav.cli.serve", "the web app: chat + live map"),
+    "node": ("langnav.cli.node", "langnav as a ROS 2 node: /langnav/instruct, /langnav/stop, map markers"),
     "places": ("langnav.cli.places", "list, add, forget or rename the places you named"),
 }
 

@@ -146,7 +146,7 @@ _REGISTRY: dict[str, BackendFactory] = {}
 _BUILTIN: dict[str, str] = {
     "sim": "langnav.robot.sim",
     "rosbridge": "langnav.robot.ros.rosbridge_backend",
-    "ros2": "langnav.robot.ros2_backend",
+    "ros2": "langnav.robot.ros.backend",
 }
 
 

@@ -85,16 +85,19 @@ _PASSED_RE: Final = re.compile(
     r"(?:passed(?:\s+by|\s+through)?|went\s+(?:past|by|through)|came\s+(?:through|past|by)|drove\s+(?:past|by|through)|"
     r"walked\s+(?:past|by|through)|gone\s+(?:past|by|through)|crossed)(?:\s+(?:just\s+now|earlier|before|a\s+moment\s+ago))?\b")
 _PREVIOUS_RE: Final = re.compile(
-    r"\bwhere\s+(?:you|we|i)\s+(?:were|was)(?:\s+(?:just\s+)?(?:before|a\s+moment\s+ago|earlier|just\s+now|last))?"
-    r"(?!\s+(?:at\s+the\s+start|at\s+first|originally|to\s+begin\s+with))\b")
+    r"\bwhere\s+(?:you|we|i)\s+(?:were|was)(?:\s+(?:just\s+)?(?:before|a\s+(?:moment|minute|second|while)\s+ago|"
+    r"earlier|just\s+now|last|previously))?(?!\s+(?:at\s+the\s+start|at\s+first|originally|to\s+begin\s+with))\b"
+    r"|\b(?:your|my|our|the)\s+(?:previous|last|earlier|former)\s+(?:position|location|spot|place|pose)\b")
 #: "Come back here" / "return here": back to where the prompt began ("come here" alone names no place
 #: the robot knows: it is left to the clause reader, which asks).
 _HERE_RETURN_RE: Final = re.compile(r"\b(?:(?P<verb>come|get|head|go|drive|move)\s+back|(?P<ret>return))\s+here\b")
 _SPACE_NOUN: Final = r"(?P<noun>room|office|hallway|corridor|space)"
 _ACROSS_RE: Final = re.compile(
     r"\b" + _SPACE_NOUN + r"\s+(?:(?:that|which)\s+is\s+|that\s*'s\s+)?(?:directly\s+|right\s+|just\s+|straight\s+)?"
-    r"(?:across|opposite)\s+(?:from\s+(?:us|you|me|here)\s+)?(?:(?:on|in)\s+)?(?:the\s+)?(?:hall|hallway|corridor)"
-    r"(?:\s+from\s+(?:here|us|you|me|this\s+(?:one|room)|the\s+one\s+(?:you|we)\s+are\s+in))?\b")
+    r"(?:(?:across|opposite)\s+(?:from\s+(?:us|you|me|here)\s+)?(?:(?:on|in)\s+)?(?:the\s+)?(?:hall|hallway|corridor)"
+    r"(?:\s+from\s+(?:here|us|you|me|this\s+(?:one|room)|the\s+one\s+(?:you|we)\s+are\s+in))?"
+    r"|across\s+from\s+(?:here|us|you|me|this\s+(?:one|room)|the\s+one\s+(?:you|we)\s+are\s+in)"
+    r"|opposite(?:\s+(?:this\s+(?:one|room)|us|here|the\s+one\s+(?:you|we)\s+are\s+in))?\s*$)")
 _THIS_SPACE: Final = (r"this\s+one|this\s+room|here|yours|ours|the\s+current\s+(?:one|room)|your\s+(?:current\s+)?room|"
                       r"the\s+(?:one|room)\s+(?:that\s+)?(?:you|we|i)\s+(?:are|am)\s+(?:currently\s+|now\s+)?in|"
                       r"where\s+(?:you|we)\s+are")
@@ -132,6 +135,9 @@ _LIST_RE: Final = re.compile(
 _FORGET_NOT_PLACES: Final = re.compile(r"^(?:that|it|this|everything|all|the\s+map|map|what\s+i\s+said)$")
 
 
+#: An element is named in at most this many words ("the second door on your left in the hallway"):
+#: longer heads are not tried when splitting "call <element> <name>".
+MAX_TARGET_WORDS: Final = 12
 #: A place word that fit no step halves the reading's confidence (and is reported unread: the
 #: planner asks instead of running a plan that ignores it).
 LEFT_OVER_FACTOR: Final = 0.5
@@ -372,7 +378,7 @@ def _split_target_name(rest: str, previous: Step | None, known_names: Sequence[s
     left the lab')."""
     words = rest.split()
     found: list[tuple[bool, int, ElementRef, str]] = []
-    for k in range(1, len(words)):
+    for k in range(1, min(len(words), MAX_TARGET_WORDS + 1)):
         head, tail = " ".join(words[:k]), " ".join(words[k:])
         opens = re.match(r"(?:the|a|an|my|our|as)\b", tail) is not None
         name = _place_name(tail)
@@ -434,6 +440,11 @@ def read_composed(text: str, previous: Step | None = None, known_names: Sequence
         return Reading(steps=(between,))
     rewritten, marks = extract(norm)
     rewritten, stand_ins = _stand_in_names(rewritten, known_names)
+    face = _FACE_NAMED_RE.match(rewritten) if stand_ins else None
+    if face is not None and face.group("token") in stand_ins:
+        # "turn to face the kitchen": the clause reader turns towards elements only
+        ref = ElementRef(kind=Element.NONE, name=stand_ins[face.group("token")][:80])
+        return Reading(steps=(Step(movement=Movement.ROTATE, detail=Detail.TOWARDS, target=ref, text=text[:500]),))
     if not marks.any and not stand_ins:
         return reader(text, previous, known_names, previous_target)
     reading = _words_back(reader(rewritten, previous, (*known_names, *stand_ins), previous_target), stand_ins)
@@ -453,6 +464,11 @@ __all__ = ["LABEL_NOUNS", "Marks", "attach", "extract", "read_composed", "read_p
 #: Stand-in words for the user's place names while the clause reader reads the clause: a name made of
 #: words the reader knows ("the front door", "the big room") would otherwise be read as those words.
 _STAND_IN: Final = "zqxplace{}"
+
+
+_FACE_NAMED_RE: Final = re.compile(
+    r"^(?:please\s+)?(?:turn\s+(?:(?:a)?round\s+)?(?:to\s+face|to\s+look\s+at|towards?|to)|face|look\s+(?:at|towards?)|"
+    r"point\s+(?:at|towards?))\s+the\s+(?P<token>" + _STAND_IN.format("") + r"[a-z])(?:\s+please)?\s*$")
 
 
 def _stand_in_names(norm: str, known_names: Sequence[str]) -> tuple[str, dict[str, str]]:

@@ -49,7 +49,6 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from langnav.maps.grid import OccupancyGrid
 from langnav.plan.commands import MOVE_STEP_M, ROTATE_STEP_DEG
-from langnav.robot import ros_messages as rm
 from langnav.robot.errors import RobotError, RobotTimeout
 from langnav.robot.protocol import (
     DEFAULT_REQUEST_TIMEOUT_S,
@@ -61,6 +60,7 @@ from langnav.robot.protocol import (
     TaskStatus,
     register_backend,
 )
+from langnav.robot.ros import messages as rm
 from langnav.robot.task_state import ReportedTask
 
 log = logging.getLogger(__name__)

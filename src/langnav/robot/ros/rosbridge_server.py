@@ -5,7 +5,7 @@ JSON text; topics are sent as JSON, or, when a subscription asks for ``compressi
 ``"cbor-raw"``, as binary CBOR frames (``cbor-raw``: the message's CDR bytes, as rosbridge_suite
 sends them, which is what Foxglove's rosbridge connection asks for and decodes with the
 definitions from ``/rosapi/topics_and_raw_types``). Shapes follow the ROS 2 message definitions
-(:mod:`langnav.robot.ros_interfaces`), so Foxglove, roslibjs pages and roslibpy scripts
+(:mod:`langnav.robot.ros.interfaces`), so Foxglove, roslibjs pages and roslibpy scripts
 (langnav's own ``rosbridge`` backend among them) can watch and drive the robot as if it were a
 TurtleBot running Nav2 behind rosbridge_suite.
 
@@ -69,10 +69,10 @@ from websockets.asyncio.server import Server, ServerConnection, serve
 from websockets.exceptions import ConnectionClosed
 
 from langnav.errors import LangnavError
-from langnav.robot import ros_interfaces as ri
-from langnav.robot import ros_messages as rm
 from langnav.robot.errors import RobotError, RobotTimeout
 from langnav.robot.protocol import Pose2D, RobotBackend, TaskHandle, TaskStatus
+from langnav.robot.ros import interfaces as ri
+from langnav.robot.ros import messages as rm
 
 log = logging.getLogger(__name__)
 

@@ -771,6 +771,22 @@ class SimBackend:
             return self._begin(_StepsTask(self, "rotate", [_Phase(turn_rad=angle)],
                                           f"rotate {direction} {math.degrees(abs(angle)):.0f} deg"))
 
+    def drive(self, distance_m: float) -> SimTaskHandle:
+        """Drive straight by ``distance_m`` (negative: backwards), as Nav2's DriveOnHeading / BackUp."""
+        if not math.isfinite(distance_m) or distance_m == 0.0:
+            raise RobotError(f"drive needs a finite, non-zero distance in metres, got {distance_m!r}")
+        with self.lock:
+            return self._begin(_StepsTask(self, "move", [_Phase(drive_m=float(distance_m))],
+                                          f"drive {distance_m:+.2f} m"))
+
+    def turn(self, angle_rad: float) -> SimTaskHandle:
+        """Turn in place by ``angle_rad`` (counter-clockwise positive), as Nav2's Spin."""
+        if not math.isfinite(angle_rad) or angle_rad == 0.0:
+            raise RobotError(f"turn needs a finite, non-zero angle in radians, got {angle_rad!r}")
+        with self.lock:
+            return self._begin(_StepsTask(self, "rotate", [_Phase(turn_rad=float(angle_rad))],
+                                          f"turn {math.degrees(angle_rad):+.0f} deg"))
+
     def cancel_task(self, task: _Task, message: str) -> None:
         with self.lock:
             task.finish(self, TaskStatus.CANCELED, message)

@@ -198,7 +198,7 @@ class _Writer:
 
 def _number(kind: str, value: Any) -> Any:
     if value is None and kind.startswith("float"):
-        return math.inf  # JSON has no inf: rosbridge and ros_messages send null (a LaserScan "no return")
+        return math.inf  # JSON has no inf: rosbridge and ros.messages send null (a LaserScan "no return")
     if kind == "bool":
         if not isinstance(value, bool):
             raise TypeError(f"a bool, not {value!r}")
