@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 from scipy import ndimage as ndi
 
+from langnav.analysis.elements import Door
 from langnav.analysis.params import DEFAULT_PARAMS
 from langnav.analysis.passages import find_passages
 from langnav.analysis.pipeline import analyze, labels_for_free_components
@@ -214,3 +215,32 @@ def test_rotated_noisy_warehouse_keeps_its_aisles_and_nothing_else(degrees: floa
     assert len(found) == 3
     for p in found:
         assert p.width_m == pytest.approx(AISLE_M, abs=0.1)
+
+
+def two_rooms_joined_by_a_corridor() -> OccupancyGrid:
+    """Two rooms, x 0 to 3.15 and 4.85 to 8 (y 0 to 3), joined by a corridor 0.8 m wide and
+    1.7 m long (x 3.15 to 4.85, y 1.1 to 1.9)."""
+    b = MapBuilder(10.0, 5.0, origin=(-1.0, -1.0))
+    b.rect(-0.15, -0.15, 8.15, 3.15, OCCUPIED)
+    b.free(0.0, 0.0, 3.15, 3.0).free(4.85, 0.0, 8.0, 3.0).free(3.1, 1.1, 4.9, 1.9)
+    return b.build(source="corridor_between_rooms")
+
+
+def door_across(x: float) -> Door:
+    return Door(id="door_1", center=(x, 1.5), width_m=0.8, jambs=((x, 1.1), (x, 1.9)), normal=(1.0, 0.0),
+                connects=("space_1", "space_2"))
+
+
+@pytest.mark.parametrize(("door_x", "is_passage"), [(None, True), (4.8, True), (3.2, True), (4.0, False)])
+def test_a_door_at_a_mouth_leaves_the_passage_one_in_its_middle_is_it(door_x: float | None,
+                                                                      is_passage: bool) -> None:
+    grid = two_rooms_joined_by_a_corridor()
+    labels, n = labels_for_free_components(grid)
+    layers = GridLayers(grid)
+    doors = [] if door_x is None else [door_across(door_x)]
+    found = find_passages(grid, P, labels, {k: f"space_{k}" for k in range(1, n + 1)}, doors,
+                          layers.occupied | layers.unknown, layers=layers)
+    assert len(found) == int(is_passage)
+    if is_passage:
+        assert found[0].center == pytest.approx((4.0, 1.5), abs=0.06)
+        assert found[0].width_m == pytest.approx(0.8, abs=0.051)

@@ -160,3 +160,24 @@ def test_a_place_word_that_fits_no_step_is_asked_about() -> None:
 def test_relation_words_only_relate_spaces() -> None:
     s = one_step("go to the room across the hall")
     assert s["target"]["kind"] == Element.ROOM.value and s["target"]["relation"] == Relation.ACROSS.value
+
+
+_WORDS = ("go", "to", "the", "kitchen", "front door", "door", "2", "metres", "past", "before", "halfway", "down",
+          "corridor", "call", "this", "spot", "forget", "room", "across", "hall", "next", "one", "you", "are", "in",
+          "back", "where", "were", "started", "passed", "just", "face", "turn", "between", "and", "lab", ",", "then")
+
+
+@settings(max_examples=150, deadline=None, derandomize=True)
+@given(st.lists(st.sampled_from(_WORDS), min_size=1, max_size=14))
+def test_any_mix_of_place_words_is_read_or_asked_about_in_the_users_words(words: list[str]) -> None:
+    prompt = " ".join(words)
+    intent = translate_offline(prompt, ("kitchen", "front door"))
+    shown = " ".join([intent.clarification or "", *intent.unread,
+                      *(s.target.name or "" for s in intent.steps if s.target is not None)])
+    assert "zqxplace" not in shown  # the stand-ins of the user's names never reach the user
+    assert intent.steps or intent.clarification
+    for s in intent.steps:
+        if s.offset is not None:
+            assert s.target is not None and s.offset_m is not None
+        if s.fraction is not None:
+            assert s.target is not None and 0 < s.fraction <= 1

@@ -176,6 +176,7 @@ _WORDS = ["", "one", "two", "three", "four", "five", "six", "seven", "eight", "n
           "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen"]
 _TENS = {2: "twenty", 3: "thirty", 4: "forty", 5: "fifty", 6: "sixty", 7: "seventy", 8: "eighty", 9: "ninety"}
 _FILLERS = ["", "uh", "um", "maybe", "uh maybe", "please", "like"]
+_LEAD_INS = ["", "go ahead and", "yeah go ahead and", "okay go ahead,", "so,", "alright now"]
 _MORE = ["", "more", "another", "further"]  # "another" is said before the amount, the others after
 
 
@@ -196,18 +197,21 @@ def _total(steps: list[Step], field: str) -> float:
        st.sampled_from(["move", "go", "drive", "back up", "keep going", "continue"]),
        st.sampled_from(["", "forward", "back", "to your left", "to the right"]),
        st.lists(st.sampled_from(_FILLERS), min_size=3, max_size=3), st.integers(min_value=0, max_value=3),
-       st.booleans())
-@example(n=2, unit="feet", more="more", verb="move", direction="", fillers=["", "", ""], shape=0, digits=False)
+       st.booleans(), st.sampled_from(_LEAD_INS))
+@example(n=2, unit="feet", more="more", verb="move", direction="", fillers=["", "", ""], shape=0, digits=False,
+         lead="")
 @example(n=45, unit="feet", more="more", verb="move", direction="to the right", fillers=["", "", ""], shape=0,
-         digits=False)
+         digits=False, lead="")
+@example(n=3, unit="feet", more="", verb="move", direction="forward", fillers=["", "", ""], shape=0,
+         digits=False, lead="yeah go ahead and")  # was a default move and then the three feet
 def test_a_move_never_goes_farther_than_asked(n: int, unit: str, more: str, verb: str, direction: str,
-                                               fillers: list[str], shape: int, digits: bool) -> None:
+                                               fillers: list[str], shape: int, digits: bool, lead: str) -> None:
     number = str(n) if digits else _spoken(n)
     amount = " ".join(w for w in ((more, number, unit) if more == "another" else (number, more, unit)) if w)
     f1, f2, f3 = fillers
     shapes = [f"{verb} {f1} {amount} {f2} {direction}", f"{verb} {direction}, {f1} {amount}",
               f"{f1} {amount}, {f2} {verb} {direction}", f"{verb}, {f3} {direction} {f1} {amount}"]
-    intent = translate_offline(" ".join(shapes[shape].split()))
+    intent = translate_offline(" ".join(f"{lead} {shapes[shape]}".split()))
     asked = n * _UNITS[unit]
     assert _total(_moves(intent), "distance_m") <= asked * (1 + 1e-9), intent
     assert not any(s.amount == Amount.DEFAULT for s in _moves(intent)), intent  # never a guessed distance

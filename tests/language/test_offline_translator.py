@@ -262,10 +262,12 @@ def test_a_guessed_side_or_unit_asks_and_says_what_it_understood(prompt: str, qu
     assert intent.confidence < CONFIDENT
 
 
-@pytest.mark.parametrize("prompt", ["move forward", "go left"])
-def test_guessed_defaults_lower_confidence(prompt: str) -> None:
+@pytest.mark.parametrize("prompt", ["move forward", "go left", "back up", "keep going forward"])
+def test_a_move_with_no_distance_asks_how_far(prompt: str) -> None:
+    """Issue 9: never a guessed distance."""
     intent = translate_offline(prompt)
-    assert intent.steps
+    assert intent.steps == []
+    assert intent.clarification is not None and "How far" in intent.clarification
     assert intent.confidence < CONFIDENT
 
 

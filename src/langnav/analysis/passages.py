@@ -10,7 +10,8 @@ gap, not a passage), wide enough for the robot with a margin, has sides along mo
 length (or a wall along one side and a single doorway in the other: a passage with a door off
 it), solid ones (walls, furniture, a shelf's unscanned inside: not laser-ray stripes of unknown,
 nor the unscanned world beyond a sliver outside a wall), leads somewhere (both mouths open into free
-space wider than any passage: a dead-end slot does not), and it is not a doorway. A passage
+space wider than any passage: a dead-end slot does not), and it is not a door's own gap (a door
+across its middle; a door at one of its mouths is how it is entered). A passage
 along a wall (between the wall and a long shelf) shares its skeleton line with the one-sided
 strip along the rest of the room's walls: a core without sides along most of its length is
 split into its two-sided stretches, and each is judged on its own.
@@ -227,7 +228,9 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             centre_g = mean + 0.5 * (lo + hi) * axis
             cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
             centre = (float(cx), float(cy))
-            if any(math.dist(centre, d.center) <= d.width_m / 2 + params.door_max_depth_m for d in doors):
+            ax_w = np.subtract(grid.grid_to_world(r0 + centre_g[1] + axis[1], c0 + centre_g[0] + axis[0]), centre)
+            axis_w = (float(ax_w[0]), float(ax_w[1]))
+            if any(_is_the_door(d, centre, axis_w, length_m, width_m, params) for d in doors):
                 continue
             ends_w: list[tuple[float, float]] = []
             spaces: list[str] = []
@@ -404,6 +407,20 @@ def _side_distances_each(open_: BoolArray, pts: Sequence[npt.NDArray[np.float64]
         out.extend(np.split(sides, np.cumsum(sizes)[:-1]))
         i = j
     return out
+
+
+def _is_the_door(door: Door, centre: tuple[float, float], axis: tuple[float, float], length_m: float,
+                 width_m: float, params: AnalysisParams) -> bool:
+    """Is a passage (``centre``, unit ``axis`` in world metres) the gap of ``door``? When the door
+    lies across it away from its mouths: a door at one of its mouths is how one enters a passage
+    (a short corridor between two rooms with a door at its end), not the passage itself."""
+    n = math.hypot(*axis) or 1.0
+    ux, uy = axis[0] / n, axis[1] / n
+    dx, dy = door.center[0] - centre[0], door.center[1] - centre[1]
+    along, across = dx * ux + dy * uy, abs(-dx * uy + dy * ux)
+    if across > width_m / 2 + params.door_max_depth_m:
+        return False
+    return abs(along) < length_m / 2 - params.door_max_depth_m or length_m <= 2 * params.door_max_depth_m
 
 
 def _sides_hold(sides: npt.NDArray[np.float64], proj: npt.NDArray[np.float64], door_cells: float) -> bool:

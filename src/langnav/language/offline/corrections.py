@@ -56,7 +56,7 @@ _BARE_VERBS: Final = frozenset(v for v in (*lx.GO_VERBS, *lx.ROTATE_VERBS) if " 
 
 
 #: A clause that only opens a request ("go ahead", "okay go on", "come on").
-_LEAD_IN: Final = re.compile(r"^(?:(?:ok|okay|so|now|alright|robot|please)\s+)*(?:go\s+ahead|go\s+on|come\s+on|"
+_LEAD_IN: Final = re.compile(r"^(?:(?:ok|okay|so|now|alright|robot|please|yeah|yes|well|just)\s+)*(?:go\s+ahead|go\s+on|come\s+on|"
                              r"ready|here\s+we\s+go)(?:\s+(?:please|robot|now))*$")
 
 

@@ -11,6 +11,7 @@ from langnav.language.offline import lexicon as lx
 from langnav.language.offline.numbers import Quantity, QuantityKind, find_quantities
 from langnav.language.offline.patterns import LITTLE_RE, MOVE_DIR_RE
 from langnav.language.offline.reading import (
+    ASK_DISTANCE,
     ASK_UNIT,
     DEFAULT_AMOUNT_FACTOR,
     ELLIPSIS_FACTOR,
@@ -75,6 +76,8 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
         direction = Direction.FORWARD
         if distance is None and amount == Amount.DEFAULT:
             c.doubt(GUESSED_DIRECTION_FACTOR)
+    if amount == Amount.DEFAULT:
+        c.asks.append(ASK_DISTANCE.format(direction=direction.value))  # never a guessed distance
     if distance is not None and distance > MAX_MOVE_M:
         c.out_of_range = True
         return []

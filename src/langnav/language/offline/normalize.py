@@ -55,6 +55,9 @@ _IDIOMS: Final = (
     (re.compile(r"\b(?:go|turn|spin|drive|move|roll|rotate)\s+(?:(?:a)?round\s+)?in\s+a\s+(?:full\s+|complete\s+)?circle\b"),
      "turn 360 degrees"),
     (re.compile(r"\b(?:do|make)\s+a\s+(?:full\s+|complete\s+)?circle\b"), "turn 360 degrees"),
+    # "do a one eighty", "pull a three sixty": a half or full turn named by its degrees
+    (re.compile(r"\b(?:do|make|pull|perform)\s+(?:a|an)\s+(one\s+eighty|180|three\s+sixty|360)\b(?!\s*(?:degrees?|turn))"),
+     r"turn \1 degrees"),
     (re.compile(r"\boutside\s+(?:of\s+)?(?=(?:the|this|that|your)\s+(?:room|hallway|corridor|hall)\b)"), "out of "),
 )
 #: Punctuation that carries no meaning inside one instruction (kept: . / - ' " in numbers and units).

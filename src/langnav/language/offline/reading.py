@@ -36,6 +36,7 @@ DEFAULT_TURN_DEG: Final = 90.0
 
 #: Questions asked instead of guessing.
 ASK_SIDE: Final = "Which way should I turn, left or right?"
+ASK_DISTANCE: Final = "How far should I move {direction}?"
 ASK_UNIT: Final = "In what unit is '{number}': metres, feet or something else?"
 
 

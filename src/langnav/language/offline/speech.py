@@ -25,6 +25,7 @@ HESITATIONS: Final = frozenset({
 _HEDGES: Final = re.compile(
     r"\b(?:maybe|perhaps|i\s+guess|i\s+think|kind\s+of|sort\s+of|let\s+us\s+see|let's\s+see|lets\s+see|"
     r"(?:you'?re|you\s+are|that'?s|that\s+is|thats)\s+(?:right|correct)|at\s+(?:least|most)|"
+    r"(?:go\s+ahead|go\s+on|come\s+on)\s+and|"
     r"(?:until|till)\s+i\s+(?:tell\s+you(?:\s+(?:to\s+stop|otherwise))?|say\s+(?:so|stop|otherwise))|"
     r"(?:what|how)\s+about(?=\s+(?:you\s+)?(?:move|go|turn|rotate|head|drive|face|pivot|back|proceed)\b))\b",
     re.IGNORECASE)

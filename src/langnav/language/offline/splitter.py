@@ -22,7 +22,8 @@ _CONNECTIVE_SPLIT: Final = re.compile(
     r"and\s+once\s+there|and\s+when\s+there|and\s+from\s+there)\b",
     re.IGNORECASE)
 _DECIMAL_COMMA: Final = re.compile(r"(?<=\d),(?=\d{1,2}(?!\d))")
-_LEAD_IN: Final = re.compile(r"^\s*(?:please\s+|now\s+|ok(?:ay)?\s+)*(?:go\s+ahead|go\s+on|come\s+on|try|"
+_LEAD_IN: Final = re.compile(r"^\s*(?:(?:please|now|ok(?:ay)?|yeah|yes|alright|so|well|just|robot|um|uh)\s+)*"
+                             r"(?:go\s+ahead|go\s+on|come\s+on|try|"
                              r"be\s+(?:a\s+dear|so\s+kind)|do\s+me\s+a\s+favou?r)\s*$", re.IGNORECASE)
 _AND: Final = re.compile(r"\s+(?:and|&|plus|\+)\s+", re.IGNORECASE)
 #: Words that may stand between "and" and the verb of a new instruction.
