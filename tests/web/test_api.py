@@ -409,3 +409,35 @@ def test_named_places_survive_a_restart(make_client: AppFactory) -> None:
         assert client.post("/api/places", json={"name": "dock", "x": 2.0, "y": 3.0}).status_code == 200
     with make_client() as client:  # the same database directory: the same places file
         assert [p["name"] for p in client.get("/api/places").json()["places"]] == ["dock"]
+
+
+def test_element_ids_stay_put_as_the_map_grows(make_client: AppFactory) -> None:
+    """The session's analyses (the live map's and the planner's) keep each element's id."""
+    import math
+
+    with make_client(known_map=False) as client:
+        session = client.app.state.session  # type: ignore[attr-defined]
+        first = session._current_analysis()
+        assert first is not None
+        seen = {d.id: d.center for d in first.doors}
+        for text in ("move forward 2 metres", "move forward 2 metres", "turn around", "move forward 3 metres"):
+            _prompt(client, text)
+            _wait_idle(client, 60.0)
+            now = session._current_analysis()
+            for d in now.doors:
+                for old_id, c in seen.items():
+                    if math.dist(c, d.center) < 0.3:
+                        assert d.id == old_id, (d.id, old_id, d.center)
+                seen.setdefault(d.id, d.center)
+        assert len(seen) >= 2
+
+
+def test_errors_shown_to_the_user_are_logged(make_client: AppFactory, caplog: Any) -> None:
+    import logging
+
+    with make_client() as client, caplog.at_level(logging.WARNING):
+        client.post("/api/goto", json={"x": 2.8, "y": 7.5})       # on the table: refused
+        client.post("/api/translator", json={"name": "nope"})     # an HTTP error
+    text = caplog.text
+    assert "told the user (rejected)" in text and "wall or an obstacle" in text
+    assert "/api/translator -> 400" in text

@@ -272,7 +272,11 @@ def test_hover_names_an_element_and_a_click_describes_it(page: Any) -> None:
     text = page.locator("#popup-text").inner_text()
     assert text.startswith("door 5 · door · ") and "m wide" in text
     buttons = page.locator("#popup-actions button").all_inner_texts()
-    assert buttons[:3] == ["Send robot here", "Go to it", "Go through it"]
+    assert buttons[:3] == ["Send robot here", "Go to it", "Go through it"] and "Name it…" in buttons
+    box, mp = page.locator("#popup").bounding_box(), page.locator("#map").bounding_box()
+    rx, ry = page.evaluate("window.langnav.toScreen(...window.langnav.state.pose)")
+    rx, ry = rx + mp["x"], ry + mp["y"]
+    assert not (box["x"] <= rx <= box["x"] + box["width"] and box["y"] <= ry <= box["y"] + box["height"])
     page.screenshot(path=str(ARTIFACTS / "web-click-door.png"))
     page.click("#popup-close")
     # furniture: described, and no "Send robot here"

@@ -125,3 +125,15 @@ def test_named_elements_and_plan_reaches() -> None:
     assert cv.plan_reaches([near], a, "door_5")
     assert not cv.plan_reaches([(3.0, 4.5)], a, "door_5")
     assert cv.plan_reaches([(3.0, 2.0)], a, "room_3") and not cv.plan_reaches([(3.0, 7.0)], a, "room_3")
+
+
+def test_replies_are_put_in_plain_words() -> None:
+    from langnav.web.feedback import FeedbackManager
+
+    fm = FeedbackManager(demo)
+    assert fm.plain("There is nothing left to explore that I can reach: every frontier of the map is mapped") == \
+        "There is nothing left to explore that I can reach: every edge of the map is mapped"
+    assert fm.plain("check that my pose on the map is right") == "check that my position on the map is right"
+    assert fm.plain("command 1, pose 1 (4.00, 5.85): inside a wall") == \
+        "command 1, position 1 (in hallway 2 near door 5): inside a wall"
+    assert fm.plain("Poses far away (40.0, 40.0)") == "Positions far away (40.0, 40.0)"  # nothing names it

@@ -50,6 +50,7 @@ if [ ! -f "$IF_STAMP" ]; then
   need_tool
   export AMENT_PREFIX_PATH="$VENV" CMAKE_PREFIX_PATH="$VENV" LD_LIBRARY_PATH="$VENV/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
   export PATH="$VENV/bin:$PATH"
+  mkdir -p "$BUILD"   # a fresh clone has no build/ yet (the logs sit beside it)
   for pkg in "${PKGS[@]}"; do
     start=$SECONDS
     rm -rf "$BUILD/$pkg"

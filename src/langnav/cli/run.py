@@ -104,8 +104,9 @@ class _Printer:
 
 
 def run(args: argparse.Namespace) -> int:
+    from langnav.analysis.identity import StableAnalyzer
     from langnav.language.translator import get_translator
-    from langnav.pipeline import Planner
+    from langnav.pipeline import Planner, default_analyzer
     from langnav.places import JsonPlaceStore
 
     out = _Printer(args.json)
@@ -115,7 +116,9 @@ def run(args: argparse.Namespace) -> int:
         grid = robot.get_map()
         pose = robot.get_robot_pose()
         start = pose_tuple(pose)
-        planner = Planner(get_translator(args.translator), places=places)
+        # later steps are re-grounded on the grown map: its elements keep the ids the prompt read
+        planner = Planner(get_translator(args.translator), places=places,
+                          analyzer=StableAnalyzer(default_analyzer))
         result = planner.plan(args.prompt, grid, start)
         if result.clarification is not None:
             out.line({"event": "rejected", "message": result.clarification},

@@ -7,6 +7,7 @@ Map frame: +x is east, +y is north, yaw counter-clockwise from east.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from collections.abc import Callable, Sequence
@@ -114,6 +115,16 @@ _NUMBER_WORDS: Final = re.compile(r"\b(coordinates?|exact(ly)?|precise(ly)?|x\s*
 
 
 _COORDS: Final = re.compile(r"\((-?\d+(?:\.\d+)?),\s*(-?\d+(?:\.\d+)?)\)")
+
+
+#: Robotics words users do not use, and the words they do (every reply goes through this).
+_JARGON: Final = ((re.compile(r"\bposes\b", re.I), "positions"), (re.compile(r"\bpose\b", re.I), "position"),
+                  (re.compile(r"\bfrontiers\b( of the map)?", re.I), "edges of the map"),
+                  (re.compile(r"\bfrontier\b( of the map)?", re.I), "edge of the map"))
+
+
+def _same_case(found: re.Match[str], words: str) -> str:
+    return words[:1].upper() + words[1:] if found.group(0)[:1].isupper() else words
 
 
 def asks_for_numbers(prompt: str) -> bool:
@@ -273,6 +284,14 @@ class FeedbackManager:
             return f"({where})" if where else m.group(0)
 
         return _COORDS.sub(name, text)
+
+    def plain(self, text: str) -> str:
+        """Any reply in the words a user knows: map coordinates named by place (see :meth:`placed`),
+        "pose" said as "position", a "frontier" as an edge of the map."""
+        text = self.placed(text)
+        for pattern, words in _JARGON:
+            text = pattern.sub(functools.partial(_same_case, words=words), text)
+        return text
 
     def command(self, cmd: Command) -> str:
         return plain_command(cmd, self._analysis())

@@ -250,7 +250,19 @@ class RobotSession:
 
     # -- chat ------------------------------------------------------------------------------------
     def say(self, role: str, kind: str, payload: dict[str, Any], plan_id: int | None = None) -> Message:
-        """Store a chat message and send it to every page."""
+        """Store a chat message and send it to every page. What the robot says is put in plain
+        words (no "pose", no "frontier", places named rather than given as coordinates); the
+        user's own words, and a plan's exact commands (shown on request), are left as they are."""
+        if role != "user":
+            payload = dict(payload)
+            for key in ("text", "intent_text"):
+                if isinstance(payload.get(key), str) and not (key == "text" and self._exact and kind == "answer"):
+                    payload[key] = self.feedback.plain(payload[key])
+            for key in ("reasons", "notes"):
+                if isinstance(payload.get(key), list):
+                    payload[key] = [self.feedback.plain(str(v)) for v in payload[key]]
+        if kind in ("rejected", "error") or (kind == "outcome" and payload.get("status") == "failed"):
+            log.warning("told the user (%s): %s %s", kind, payload.get("text", ""), payload.get("reasons") or "")
         msg = self.store.add(role, kind, payload, plan_id)
         self.broadcaster.publish_event({"type": "message", "message": msg.to_json()})
         return msg

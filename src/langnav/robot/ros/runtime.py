@@ -140,6 +140,12 @@ class RosRuntime:
         self._spin.join(timeout_s)
         if self._spin.is_alive():
             log.warning("the rclpy spin thread did not stop within %.1f s", timeout_s)
+        # Jazzy's Executor.shutdown() returns without waiting for callbacks under way (it tests
+        # its shutdown flag after setting it); wait for them here, or destroying the node below
+        # fails them ("cannot use Destroyable because destruction was requested").
+        tracker = getattr(self.executor, "_work_tracker", None)
+        if tracker is not None and not tracker.wait(timeout_s):
+            log.warning("ROS 2 callbacks still running %.1f s after the executor's shutdown", timeout_s)
         # Action servers and clients are waitables, which destroy_node leaves alive (and with them
         # the node and the DDS participant: the robot would stay on the graph).
         for waitable in list(self.node.waitables):

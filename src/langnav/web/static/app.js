@@ -755,9 +755,7 @@
       catch (e) { showError(e.message); }
     });
     button("Close", "btn", () => { p.hidden = true; });
-    p.hidden = false;
-    p.style.left = `${Math.max(4, Math.min(sx + 12, cssW() - p.offsetWidth - 4))}px`;
-    p.style.top = `${Math.max(4, Math.min(sy + 12, cssH() - p.offsetHeight - 4))}px`;
+    placePopup(p, sx, sy);
   }
   async function showPopup(sx, sy) {
     const [x, y] = toWorld(sx, sy);
@@ -803,9 +801,21 @@
     const close = el("button", "btn", "Close"); close.type = "button"; close.id = "popup-close";
     close.addEventListener("click", () => { p.hidden = true; });
     acts.append(close);
+    placePopup(p, sx, sy);
+  }
+  // The popup goes beside the click, on the side that leaves the robot (and its goals) in view.
+  function placePopup(p, sx, sy) {
     p.hidden = false;
-    p.style.left = `${Math.max(4, Math.min(sx + 12, cssW() - p.offsetWidth - 4))}px`;
-    p.style.top = `${Math.max(4, Math.min(sy + 12, cssH() - p.offsetHeight - 4))}px`;
+    const w = p.offsetWidth, h = p.offsetHeight, W = cssW(), H = cssH();
+    const keep = [];
+    if (state) keep.push(toScreen(state.pose[0], state.pose[1]));
+    goalPoints().forEach(([gx, gy]) => keep.push(toScreen(gx, gy)));
+    const spots = [[sx + 12, sy + 12], [sx - w - 12, sy + 12], [sx + 12, sy - h - 12], [sx - w - 12, sy - h - 12]]
+      .map(([x, y]) => [Math.max(4, Math.min(x, W - w - 4)), Math.max(4, Math.min(y, H - h - 4))]);
+    const clear = ([x, y]) => !keep.some(([kx, ky]) => kx > x - 14 && kx < x + w + 14 && ky > y - 14 && ky < y + h + 14);
+    const [x, y] = spots.find(clear) || spots[0];
+    p.style.left = `${x}px`;
+    p.style.top = `${y}px`;
   }
   async function sendPrompt(text) {
     try { (await api("/api/prompt", { text })).messages.forEach(render); }
