@@ -415,8 +415,9 @@ def test_named_places_are_pins_renamable_and_deletable(page: Any) -> None:
 
 
 def test_user_text_is_never_html(page: Any) -> None:
+    n = page.locator(".msg.user").count()
     _send(page, "<img src=x onerror=alert(1)> where are you?")
+    page.wait_for_function(f"document.querySelectorAll('.msg.user').length > {n}", timeout=SHORT_MS)
     bubble = page.locator(".msg.user").last
-    bubble.wait_for(timeout=SHORT_MS)
     assert bubble.locator("img").count() == 0
     assert "<img src=x onerror=alert(1)>" in bubble.inner_text()
