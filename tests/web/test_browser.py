@@ -387,9 +387,10 @@ def test_whitespace_prompt_gets_a_reply(page: Any) -> None:
 
 
 def test_help_lists_examples_that_work_here(page: Any) -> None:
+    n = page.locator(".msg.answer").count()
     _send(page, "what can you do?")
+    page.wait_for_function(f"document.querySelectorAll('.msg.answer').length > {n}", timeout=SHORT_MS)
     answer = page.locator(".msg.answer").last
-    answer.wait_for(timeout=SHORT_MS)
     for chip in page.locator("#examples .chip").all_inner_texts():
         assert chip in answer.inner_text()
 
