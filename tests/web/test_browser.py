@@ -266,7 +266,8 @@ def test_hover_names_an_element_and_a_click_describes_it(page: Any) -> None:
     door = next(d for d in page.evaluate("window.langnav.elements.doors") if d["id"] == "door_5")
     page.mouse.move(*_screen(page, *door["center"]))
     page.wait_for_selector("#map-tip:not([hidden])", timeout=SHORT_MS)
-    assert page.locator("#map-tip").inner_text() == "door 5"
+    tip = page.locator("#map-tip").inner_text()
+    assert tip.startswith("door 5 · ") and tip.endswith(" m wide")
     page.mouse.click(*_screen(page, *door["center"]))
     page.wait_for_selector("#popup:not([hidden])", timeout=SHORT_MS)
     text = page.locator("#popup-text").inner_text()
