@@ -26,6 +26,7 @@ from typing import Final
 from langnav.errors import LangnavError
 from langnav.eval.cases import MapCache, load_cases
 from langnav.eval.metrics import CaseResult, ValidityMap, score_case, summarise
+from langnav.eval.overshoot import Overshoot, overshoots
 from langnav.grounding import ground
 from langnav.language.translator import Context, get_translator
 from langnav.pipeline import Planner
@@ -46,6 +47,7 @@ def score_file(cases_path: Path, translator: str) -> None:
     validity: dict[int, ValidityMap] = {}
     results: list[CaseResult] = []
     times: list[float] = []
+    unsafe: list[Overshoot] = []
     for case in cases:
         grid = maps.get(case)
         planner.analysis_for(grid)  # analysed once per map, not timed as a prompt
@@ -53,6 +55,7 @@ def score_file(cases_path: Path, translator: str) -> None:
         out = planner.plan(case.prompt, grid, case.pose).to_bench(case.id)
         times.append(time.perf_counter() - t0)
         results.append(score_case(case.model_dump(), out, validity.setdefault(id(grid), ValidityMap(grid))))
+        unsafe.extend(overshoots(case.model_dump(), out))
     s = summarise(results)
     ntp = "n/a" if s.ntp_validity is None else f"{s.ntp_validity:.4f}"
     move = "n/a" if s.move_validity is None else f"{s.move_validity:.4f}"
@@ -62,6 +65,9 @@ def score_file(cases_path: Path, translator: str) -> None:
           f"pose validity NTP {ntp} Move {move}")
     print(f"  per prompt: median {statistics.median(ms):.2f} ms, p95 {ms[int(0.95 * (len(ms) - 1))]:.2f} ms, "
           f"max {ms[-1]:.2f} ms   (target: median < 50 ms)")
+    print(f"  moves farther or turns more than asked: {len({o.id for o in unsafe})} cases (target 0)")
+    for o in unsafe:
+        print(f"    {o}")
 
 
 def main() -> int:

@@ -13,6 +13,7 @@ from pathlib import Path
 from langnav.errors import LangnavError
 from langnav.eval.cases import MapCache, load_cases
 from langnav.eval.metrics import CaseResult, ValidityMap, score_case, summarise
+from langnav.eval.overshoot import Overshoot, overshoots
 from langnav.eval.report import table, write_report
 from langnav.language.translator import get_translator
 from langnav.maps.grid import OccupancyGrid
@@ -35,6 +36,7 @@ def run(args: argparse.Namespace) -> int:
     maps = MapCache(args.cases.resolve().parent)
     validity: dict[int, ValidityMap] = {}
     results: list[CaseResult] = []
+    unsafe: list[Overshoot] = []
     lines: list[str] = []
     t_all = 0.0
     show = sys.stderr.isatty() or len(cases) > 20
@@ -48,6 +50,7 @@ def run(args: argparse.Namespace) -> int:
         lines.append(json.dumps(out))
         vm = validity.setdefault(id(grid), ValidityMap(grid))
         r = score_case(case.model_dump(), out, vm)
+        unsafe.extend(overshoots(case.model_dump(), out))
         r.seconds = dt
         results.append(r)
         if show:
@@ -58,9 +61,13 @@ def run(args: argparse.Namespace) -> int:
     summary = summarise(results)
     name = planner.translator.name
     if args.json:
-        print(json.dumps({**summary.to_json(), "translator": name, "seconds": round(t_all, 3)}))
+        print(json.dumps({**summary.to_json(), "translator": name, "seconds": round(t_all, 3),
+                          "overshoot_cases": len({o.id for o in unsafe})}))
     else:
         print(table(summary, name, t_all))
+        print(f"moves farther or turns more than asked: {len({o.id for o in unsafe})} cases")
+        for o in unsafe:
+            print(f"OVERSHOOT {o}")
         for r in results:
             if not r.right:
                 print(f"MISS {r.id}: {r.prompt}  -- {'; '.join(r.why)}")
