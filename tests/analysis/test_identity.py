@@ -144,3 +144,24 @@ def test_the_same_map_analysed_again_keeps_every_id(seed: int) -> None:
 
     second = stable(a.grid, DEFAULT_PARAMS)
     assert [e.id for e in second.elements] == [e.id for e in first.elements]
+
+
+def test_a_big_map_is_renamed_quickly() -> None:
+    """Hundreds of walls and shelves (a warehouse): matched kind by kind at once, not pair by pair."""
+    import time
+
+    from langnav.maps.draw import MapBuilder
+
+    b = MapBuilder(60.0, 40.0, origin=(0.0, 0.0))
+    b.room(1.0, 1.0, 59.0, 39.0)
+    for row in range(12):
+        for col in range(20):
+            b.box(3.0 + col * 2.8, 3.0 + row * 3.0, 4.2 + col * 2.8, 3.6 + row * 3.0)
+    a = analyze(b.build("warehouse"))
+    assert len(a.obstacles) >= 200
+    _, state = stable_ids(None, a)
+    t0 = time.perf_counter()
+    again, _ = stable_ids(state, _shuffled(a, 7))
+    elapsed = time.perf_counter() - t0
+    assert _by_place(again) == _by_place(a)
+    assert elapsed < 1.0, f"renaming took {elapsed:.2f} s"

@@ -33,7 +33,7 @@ from __future__ import annotations
 import math
 import re
 import threading
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Final, TypeVar
 
@@ -188,6 +188,41 @@ def _score(old: Known, new: Element, analysis: MapAnalysis) -> float | None:
     return d if d <= reach else None
 
 
+def _candidates(olds: Sequence[Known], news: Sequence[Element], analysis: MapAnalysis) -> list[tuple[int, int]]:
+    """(old, new) index pairs that may be the same element, found at once for the whole kind (the
+    exact test, :func:`_score`, then runs on these only: a warehouse map has hundreds of walls and
+    shelves, and testing every pair one by one would take seconds).
+
+    Spaces: the new spaces the old one's floor sample falls in. Others: centres close enough for
+    the most generous reach of the kind (walls: half their lengths apart, plus the offset)."""
+    if not olds or not news:
+        return []
+    if isinstance(news[0], Room):
+        by_label = {r.label: j for j, r in enumerate(news) if isinstance(r, Room)}
+        out: list[tuple[int, int]] = []
+        grid = analysis.grid
+        for i, old in enumerate(olds):
+            if not old.points:
+                continue
+            pts = np.asarray(old.points, dtype=float)
+            rows, cols = (np.asarray(v, dtype=int) for v in grid.world_to_index(pts[:, 0], pts[:, 1]))
+            inside = (rows >= 0) & (rows < grid.height) & (cols >= 0) & (cols < grid.width)
+            found = np.unique(analysis.labels[rows[inside], cols[inside]])
+            out.extend((i, by_label[int(k)]) for k in found if int(k) in by_label)
+        return out
+    old_pts = np.asarray([k.point for k in olds], dtype=float)
+    new_pts = np.asarray([reference_point(e) for e in news], dtype=float)
+    old_size = np.asarray([k.size_m for k in olds], dtype=float)
+    new_size = np.asarray([_remember(e).size_m for e in news], dtype=float)
+    dist = np.hypot(old_pts[:, None, 0] - new_pts[None, :, 0], old_pts[:, None, 1] - new_pts[None, :, 1])
+    if isinstance(news[0], Wall):
+        reach = (old_size[:, None] + new_size[None, :]) / 2 + WALL_OFFSET_MAX_M
+    else:
+        reach = 0.5 * np.maximum(old_size[:, None], new_size[None, :]) + MATCH_MARGIN_M
+    ii, jj = np.nonzero(dist <= reach)
+    return list(zip(ii.tolist(), jj.tolist(), strict=True))
+
+
 def _prefix(e: Element) -> str:
     return split_id(e.id)[0]
 
@@ -221,11 +256,10 @@ def stable_ids(previous: IdentityState | None, analysis: MapAnalysis) -> tuple[M
         # (retired, score, -size, old, new): live elements first, then the best match, then the
         # larger of two equally good (two rooms merged keep the larger one's name)
         pairs: list[tuple[bool, float, float, int, int]] = []
-        for j, new in enumerate(news):
-            for i, old in enumerate(olds):
-                s = _score(old, new, analysis)
-                if s is not None:
-                    pairs.append((old.retired, s, -old.size_m, i, j))
+        for i, j in _candidates(olds, news, analysis):
+            s = _score(olds[i], news[j], analysis)
+            if s is not None:
+                pairs.append((olds[i].retired, s, -olds[i].size_m, i, j))
         pairs.sort()
         used_old: set[int] = set()
         for _, _, _, i, j in pairs:

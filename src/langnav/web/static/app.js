@@ -639,9 +639,19 @@
   }
   let hover = null;
   const tip = $("map-tip");
+  // the name, kind and size of an element (what the click popup says, in one line)
+  function tipText(e) {
+    const name = e.label || nice(e.id);
+    if (e.polygon) return `${name} · ${Math.round(e.area_m2)} m²`;
+    if (e.jambs) return `${name} · ${e.width_m.toFixed(2)} m wide`;
+    if (e.ends) return `${name} · ${e.width_m.toFixed(2)} m wide, ${e.length_m.toFixed(1)} m long`;
+    if (e.extent_m) return `${name} · ${e.extent_m[0].toFixed(1)} × ${e.extent_m[1].toFixed(1)} m`;
+    if (e.area_m2 !== undefined) return `${name} · about ${Math.round(e.area_m2)} m²`;
+    return name;
+  }
   function showTip(e, sx, sy) {
     if (!e) { tip.hidden = true; return; }
-    tip.textContent = e.label || nice(e.id);
+    tip.textContent = tipText(e);
     tip.hidden = false;
     tip.style.left = `${Math.min(sx + 14, cssW() - tip.offsetWidth - 4)}px`;
     tip.style.top = `${Math.max(sy - 28, 4)}px`;
