@@ -24,6 +24,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
+from functools import partial
 from typing import Final
 
 from langnav.language.intent import (
@@ -237,6 +238,11 @@ def _same_kind(a: Element, b: Element) -> bool:
     return a == b or (a in spaces and b in spaces)
 
 
+def _takes_label(kind: Element, ref: ElementRef) -> bool:
+    """'Door 2' may number ``ref``: one of that kind, not numbered yet, not a door already passed."""
+    return ref.label is None and _same_kind(ref.kind, kind) and not ref.passed
+
+
 def attach(steps: tuple[Step, ...], marks: Marks) -> tuple[tuple[Step, ...], list[str]]:
     """The steps with the marks attached, and the words of the marks that fit no step."""
     out = list(steps)
@@ -245,36 +251,30 @@ def attach(steps: tuple[Step, ...], marks: Marks) -> tuple[tuple[Step, ...], lis
     def update_ref(i: int, key: str, ref: ElementRef) -> None:
         out[i] = out[i].model_copy(update={key: ref})
 
+    def first_ref(fits: Callable[[ElementRef], bool], latest: bool = False) -> tuple[int, str, ElementRef] | None:
+        """The first element reference that ``fits``, in the first step that has one (the last when
+        ``latest``)."""
+        order = reversed(range(len(out))) if latest else range(len(out))
+        return next(((i, key, ref) for i in order for key, ref in _refs(out[i]) if fits(ref)), None)
+
     for kind, number, words in marks.labels:
-        done = False
-        for i, s in enumerate(out):
-            for key, ref in _refs(s):
-                if ref.label is None and _same_kind(ref.kind, kind) and not ref.passed:
-                    update_ref(i, key, ref.model_copy(update={"label": number, "kind": kind, "ordinal": None,
-                                                              "superlative": None, "side": None,
-                                                              "in_current_room": False}))
-                    done = True
-                    break
-            if done:
-                break
-        if not done:
+        hit = first_ref(partial(_takes_label, kind))
+        if hit is None:
             left.append(words)
+        else:
+            i, key, ref = hit
+            update_ref(i, key, ref.model_copy(update={"label": number, "kind": kind, "ordinal": None,
+                                                      "superlative": None, "side": None, "in_current_room": False}))
     for words in marks.passed:
-        done = False
-        for i, s in reversed(list(enumerate(out))):
-            for key, ref in _refs(s):
-                if ref.kind not in (Element.NONE,) and ref.label is None and not ref.passed:
-                    update_ref(i, key, ref.model_copy(update={"passed": True, "superlative": None, "ordinal": None}))
-                    done = True
-                    break
-            if done:
-                break
-        if not done:
+        hit = first_ref(lambda r: r.kind != Element.NONE and r.label is None and not r.passed, latest=True)
+        if hit is None:
             left.append(words)
+        else:
+            i, key, ref = hit
+            update_ref(i, key, ref.model_copy(update={"passed": True, "superlative": None, "ordinal": None}))
     if marks.relation is not None:
         relation, near, words = marks.relation
-        hit = next(((i, key, ref) for i, s in enumerate(out) for key, ref in _refs(s)
-                    if ref.kind in (Element.ROOM, Element.HALLWAY)), None)
+        hit = first_ref(lambda r: r.kind in (Element.ROOM, Element.HALLWAY))
         if hit is None:
             left.append(words)
         else:
