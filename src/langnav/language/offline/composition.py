@@ -42,6 +42,7 @@ from langnav.language.intent import (
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import ONES, QuantityKind, find_quantities
 from langnav.language.offline.parser import Reading, read_clause
+from langnav.places.store import place_key
 
 #: The clause reader this stage wraps: (clause, previous step, known names, previous target) -> Reading.
 ClauseReader = Callable[[str, Step | None, Sequence[str], ElementRef | None], Reading]
@@ -328,8 +329,8 @@ def read_place_command(norm: str, text: str, previous: Step | None, known_names:
     m = _FORGET_RE.match(norm)
     if m is not None:
         name = _place_name(m.group("name"))
-        known = {n.lower() for n in known_names}
-        if name and not _FORGET_NOT_PLACES.match(name) and (name in known or not _LABEL_RE.search(name)):
+        known = {place_key(n) for n in known_names}
+        if name and not _FORGET_NOT_PLACES.match(name) and (place_key(name) in known or not _LABEL_RE.search(name)):
             return (Step(movement=Movement.FORGET_PLACE, place_name=name, text=text[:500]),)
     for rx in _NAME_SPOT_RES:
         m = rx.match(norm)
@@ -408,10 +409,10 @@ def _between_named(norm: str, text: str, previous: Step | None, known_names: Seq
     m = _BETWEEN_RE.match(norm)
     if m is None:
         return None
-    known = {_bare(n): n for n in known_names}
+    known = {place_key(n): n for n in known_names}
     refs: list[ElementRef] = []
     for side in (m.group("a"), m.group("b")):
-        name = known.get(_bare(side))
+        name = known.get(place_key(side))
         ref = ElementRef(kind=Element.NONE, name=name[:80]) if name else \
             _target_of(side, previous, known_names, previous_target, reader)
         if ref is None:
@@ -421,10 +422,6 @@ def _between_named(norm: str, text: str, previous: Step | None, known_names: Seq
         return None  # two elements: the clause reader's own reading
     return Step(movement=Movement.NAVIGATE, detail=Detail.BETWEEN, target=refs[0], second_target=refs[1],
                 text=text[:500])
-
-
-def _bare(name: str) -> str:
-    return re.sub(r"^(?:(?:the|a|an|my|our|your)\s+)+", "", " ".join(name.lower().split())).strip(" .!?\"'")
 
 
 # ------------------------------------------------------------------------------ the stage
@@ -464,6 +461,9 @@ __all__ = ["LABEL_NOUNS", "Marks", "attach", "extract", "read_composed", "read_p
 #: Stand-in words for the user's place names while the clause reader reads the clause: a name made of
 #: words the reader knows ("the front door", "the big room") would otherwise be read as those words.
 _STAND_IN: Final = "zqxplace{}"
+#: At most this many names stand in at once: one letter each ("zqxplacea" ...) within a-z, and far
+#: more places than one instruction names.
+MAX_STAND_INS: Final = 20
 
 
 _FACE_NAMED_RE: Final = re.compile(
@@ -474,15 +474,17 @@ _FACE_NAMED_RE: Final = re.compile(
 def _stand_in_names(norm: str, known_names: Sequence[str]) -> tuple[str, dict[str, str]]:
     """The clause with each known place name (longest first) replaced by a stand-in word."""
     stand_ins: dict[str, str] = {}
-    for name in sorted({_bare(n) for n in known_names if _bare(n)}, key=len, reverse=True):
+    originals: dict[str, str] = {}
+    for n in known_names:
+        originals.setdefault(place_key(n), n)  # the first name the user gave with that key
+    for name in sorted((k for k in originals if k), key=len, reverse=True):
         rx = re.compile(r"\b(?:(?:the|a|an|my|our|your)\s+)?" + r"\s+".join(map(re.escape, name.split())) + r"\b")
         if rx.search(norm) is None:
             continue
         token = _STAND_IN.format(chr(ord("a") + len(stand_ins)))
-        original = next(n for n in known_names if _bare(n) == name)
-        stand_ins[token] = original
+        stand_ins[token] = originals[name]
         norm = rx.sub(f"the {token}", norm)
-        if len(stand_ins) >= 20:
+        if len(stand_ins) >= MAX_STAND_INS:
             break
     return norm, stand_ins
 
