@@ -107,6 +107,24 @@ def test_a_name_the_user_gave_passes() -> None:
     assert tr.translate("go to the kitchen", ctx).clarification is None
 
 
+@pytest.mark.parametrize("given", ["the kitchen", "The  Kitchen.", "my kitchen", "'kitchen'"])
+def test_a_name_the_user_gave_passes_however_the_model_words_it(given: str) -> None:
+    # the place store matches names by place_key (case, articles, spacing, quotes do not count),
+    # so the check of the model's answer must too, or a saved place is reported as unknown
+    ctx = Context(analysis=two_room_analysis(), pose=POSE, known_names=("kitchen",))
+    tr, _ = _translator(answer([{"movement": "navigate", "target": {"kind": "room", "name": given}}]))
+    intent = tr.translate("go to the kitchen", ctx)
+    assert intent.clarification is None
+    assert [s.target.name for s in intent.steps if s.target is not None] == [given]
+
+
+def test_a_name_the_user_never_gave_is_asked_about() -> None:
+    ctx = Context(analysis=two_room_analysis(), pose=POSE, known_names=("kitchen",))
+    tr, _ = _translator(answer([{"movement": "navigate", "target": {"kind": "room", "name": "the kitchenette"}}]))
+    intent = tr.translate("go to the kitchenette", ctx)
+    assert intent.steps == [] and intent.clarification is not None and "kitchenette" in intent.clarification
+
+
 def test_backend_failure_is_not_retried_and_not_guessed() -> None:
     tr, backend = _translator(LLMError("the scripted backend did not answer within 5.0 s"))
     with pytest.raises(LLMError, match="did not answer"):

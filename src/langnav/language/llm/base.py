@@ -28,6 +28,7 @@ from langnav.analysis.elements import ElementKind, MapAnalysis, element_kind, re
 from langnav.language.errors import LLMError
 from langnav.language.intent import Element, ElementRef, Intent, Side
 from langnav.language.translator import Context, clean_prompt
+from langnav.places.store import place_key
 
 log = logging.getLogger(__name__)
 
@@ -165,13 +166,13 @@ def missing_references(intent: Intent, context: Context) -> list[str]:
     how many there are (on the named side), a proper name the user never gave.
     """
     problems: list[str] = []
-    known = {n.strip().lower() for n in context.known_names}
+    known = {place_key(n) for n in context.known_names}
     analysis = context.analysis
     for step in intent.steps:
         for ref in (step.target, step.second_target):
             if ref is None:
                 continue
-            if ref.name and ref.name.strip().lower() not in known:
+            if ref.name and place_key(ref.name) not in known:
                 problems.append(f"I don't know where '{ref.name}' is: the map has no labels. "
                                 "Describe it by what the map shows (a door, a room, a corner ...)")
                 continue

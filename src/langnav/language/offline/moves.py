@@ -48,6 +48,9 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
     if verb == Verb.NONE and direction in (Direction.LEFT, Direction.RIGHT) and not lengths:
         c.doubt(ELLIPSIS_FACTOR)  # "then left": a turn
         return [rotation_from(c, direction, quantities, little)]
+    # a move goes one way: another way said in the clause ("move forward 2 m before turning left")
+    # is an instruction not read, never dropped: it stays unread, so the translator asks
+    c.lost.extend(d.value for d in directions[1:] if d != direction)
     distance: float | None = None
     amount: Amount | None = None
     for q in quantities:
