@@ -29,6 +29,7 @@ from langnav.grounding.ground import (
     GroundedPlan,
     GroundedStep,
     GroundingContext,
+    advance_way,
     as_pose,
     ground,
     ground_step,
@@ -243,9 +244,7 @@ class Planner:
             n = len(s.commands)
             items.append(PlanItem(s.index, s.step, tuple(commands[k:k + n]), s.note, s.explore, self,
                                   grounded.start_pose, tuple(moved_from), tuple(route)))
-            if s.moves and math.dist(s.start_pose.xy, s.end_pose.xy) > 1e-3:
-                moved_from.append(s.start_pose)
-            route.extend(_route_of(s.commands) or [s.end_pose.xy])
+            advance_way(route, moved_from, s)
             k += n
         return tuple(items)
 

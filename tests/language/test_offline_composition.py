@@ -133,6 +133,13 @@ def test_forgetting_and_listing_places() -> None:
     assert translate_offline("drop table messages").steps == []  # no 'forget' without a place noun
 
 
+def test_forgetting_a_saved_name_that_holds_a_label_matches_it_by_its_key() -> None:
+    # "room 2" inside the name reads like a map label: it is forgotten as a place only when the
+    # user saved that name, matched as the place store matches names (articles and case do not count)
+    assert one_step("forget my office room 2", ("Office Room 2",)) == {"movement": "forget_place",
+                                                                       "place_name": "my office room 2"}
+
+
 def test_named_places_in_later_prompts() -> None:
     s = one_step("go between the kitchen and door 2", ("kitchen",))
     assert s["target"] == {"kind": "none", "name": "kitchen"} and s["second_target"] == {"kind": "door", "label": 2}

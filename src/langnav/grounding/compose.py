@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Final, Literal
+from typing import Final, Literal, Protocol
 
 import numpy as np
 
@@ -78,8 +78,14 @@ OFFSET_SIDE_M: Final = 0.6
 ALONG_SLACK_M: Final = 0.03
 #: "before X" closer than this to the robot is no move at all.
 MIN_OFFSET_RUN_M: Final = 0.1
-#: "halfway to X": a free point at most this far short of the point asked for.
+#: "halfway to X": a free point at most this far short of the point asked for ...
 FRACTION_SNAP_M: Final = 0.5
+#: ... searched for within this much more of it: the nearest free cell may lie a little to the side
+#: of the straight way (the value the search has used since fractions were added).
+FRACTION_SEARCH_EXTRA_M: Final = 0.3
+#: "past / before X" in a hallway: X less than this along the hallway from the robot is beside it,
+#: neither ahead nor behind, so the way the robot faces says which way "past" is.
+BESIDE_ALONG_M: Final = 0.3
 #: Facing: a turn smaller than half a rotate step cannot be made; the robot already faces it.
 FACING_DONE_DEG: Final = ROTATE_STEP_DEG / 2
 #: "the door you just passed": the trail came within this of it (a hallway's width: a door on the
@@ -97,6 +103,13 @@ OF_HALL_M: Final = 1.0
 #: Compass names for headings in messages.
 COMPASS: Final = {0: "east", 45: "north-east", 90: "north", 135: "north-west", 180: "west", 225: "south-west",
                   270: "south", 315: "south-east"}
+
+
+class SafePointNear(Protocol):
+    """The free-space search the goals are snapped with (``FreeSpace.safe_point_near``)."""
+
+    def __call__(self, target: Point, component: int, max_radius_m: float, *, prefer: Point | None = None,
+                 where: Callable[[FloatArray, FloatArray], BoolArray] | None = None) -> Point | None: ...
 
 
 @dataclass(frozen=True)
@@ -200,7 +213,7 @@ def offset_anchor(e: Element | Point, pose: Pose, here: Room | None) -> Anchor:
         _, axis = hall_axis(here, pose.xy)
         along = (ref[0] - pose.x_m) * axis[0] + (ref[1] - pose.y_m) * axis[1]
         heading = math.cos(pose.yaw_rad) * axis[0] + math.sin(pose.yaw_rad) * axis[1]
-        sign = (1.0 if along > 0 else -1.0) if abs(along) > 0.3 else (1.0 if heading >= 0 else -1.0)
+        sign = (1.0 if along > 0 else -1.0) if abs(along) > BESIDE_ALONG_M else (1.0 if heading >= 0 else -1.0)
         d = (axis[0] * sign, axis[1] * sign)
         origin = pose.xy
     elif isinstance(e, Door | NarrowPassage):
@@ -217,7 +230,7 @@ def offset_anchor(e: Element | Point, pose: Pose, here: Room | None) -> Anchor:
 
 
 def offset_goal(e: Element | Point, step: Step, pose: Pose, here: Room | None, desc: str,
-                safe_point: Callable[..., Point | None], comp: int) -> tuple[Point, float]:
+                safe_point: SafePointNear, comp: int) -> tuple[Point, float]:
     """The goal N metres past / before ``e`` and the along-way distance asked for (from the anchor's
     origin). Raises GroundingError when that point is behind the robot or not reachable."""
     assert step.offset is not None and step.offset_m is not None
@@ -250,7 +263,7 @@ def offset_goal(e: Element | Point, step: Step, pose: Pose, here: Room | None, d
 
 # ------------------------------------------------------------------------------ fractions
 def fraction_goal(full_goal: Point, fraction: float, pose: Pose,
-                  safe_point: Callable[..., Point | None], comp: int, desc: str) -> Point:
+                  safe_point: SafePointNear, comp: int, desc: str) -> Point:
     """That part of the straight way from the robot to ``full_goal`` (never beyond it)."""
     v = (full_goal[0] - pose.x_m, full_goal[1] - pose.y_m)
     length = math.hypot(*v)
@@ -264,7 +277,7 @@ def fraction_goal(full_goal: Point, fraction: float, pose: Pose,
         t = (xs - pose.x_m) * d[0] + (ys - pose.y_m) * d[1]
         return np.asarray((t <= want + ALONG_SLACK_M) & (t >= want - FRACTION_SNAP_M), dtype=bool)
 
-    goal = safe_point(target, comp, FRACTION_SNAP_M + 0.3, prefer=target, where=not_beyond)
+    goal = safe_point(target, comp, FRACTION_SNAP_M + FRACTION_SEARCH_EXTRA_M, prefer=target, where=not_beyond)
     if goal is None:
         raise GroundingError(f"I cannot stop {fraction_words(fraction)} to {desc}: there is no free space I can "
                              "reach at that point of the way. Nothing was run.")

@@ -231,17 +231,7 @@ class GroundingContext:
 
     def advance(self, gs: GroundedStep) -> None:
         """Take a grounded step's way into account for the steps after it."""
-        if not gs.moves:
-            return
-        if math.dist(gs.start_pose.xy, gs.end_pose.xy) > 1e-3:
-            self.moved_from.append(gs.start_pose)
-        if not self.route:
-            self.route.append(gs.start_pose.xy)
-        for c in gs.commands:
-            if isinstance(c, NavigateThroughPoses):
-                self.route.extend((float(q[0]), float(q[1])) for q in c.poses)
-        if math.dist(self.route[-1], gs.end_pose.xy) > 1e-3:
-            self.route.append(gs.end_pose.xy)
+        advance_way(self.route, self.moved_from, gs)
 
     def trail(self, pose: Pose) -> list[Point]:
         """The whole way driven up to ``pose``, oldest first."""
@@ -249,6 +239,23 @@ class GroundingContext:
         if not pts or math.dist(pts[-1], pose.xy) > 1e-3:
             pts.append(pose.xy)
         return pts
+
+
+def advance_way(route: list[Point], moved_from: list[Pose], gs: GroundedStep) -> None:
+    """Add a grounded step's way to a prompt's ``route`` (the start, then every pose driven through)
+    and, when it moved the robot, its start to ``moved_from``. The planner keeps these per step for
+    re-grounding; ``GroundingContext`` keeps them while grounding: one bookkeeping for both."""
+    if not gs.moves:
+        return
+    if math.dist(gs.start_pose.xy, gs.end_pose.xy) > 1e-3:
+        moved_from.append(gs.start_pose)
+    if not route:
+        route.append(gs.start_pose.xy)
+    for c in gs.commands:
+        if isinstance(c, NavigateThroughPoses):
+            route.extend((float(q[0]), float(q[1])) for q in c.poses)
+    if math.dist(route[-1], gs.end_pose.xy) > 1e-3:
+        route.append(gs.end_pose.xy)
 
 
 def ground_step(step: Step, ctx: GroundingContext, pose: Pose, index: int = 0) -> GroundedStep:

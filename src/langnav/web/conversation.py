@@ -280,9 +280,10 @@ def candidate_examples(analysis: MapAnalysis | None, pose: Pose2D) -> list[str]:
     here = analysis.room_at(pose.x_m, pose.y_m)
     others = sorted((r for r in analysis.rooms if r is not here),
                     key=lambda r: math.dist(r.centroid, (pose.x_m, pose.y_m)))
-    out += [f"go to {label(r.id)}" for r in others[:2]]
+    out += [f"go to {label(r.id)}" for r in others[:1]]
     if any(u.interior for u in analysis.unexplored):
         out += ["explore", "go to the nearest unexplored area, then come back here"]
+    out += [f"go to {label(r.id)}" for r in others[1:2]]
     if analysis.obstacles:
         nearest = min(analysis.obstacles, key=lambda o: math.dist(o.centroid, (pose.x_m, pose.y_m)))
         out.append(f"go to {label(nearest.id)}")

@@ -416,7 +416,25 @@ class RobotSession:
             run.cancel()
         pose = self.robot.get_robot_pose()
         msg = self.say("system", "info", {"text": self.feedback.stopped(pose, "you pressed STOP")})
+        self._confirm_stop()
         return {"ok": True, "message": msg.to_json()}
+
+    def _confirm_stop(self) -> None:
+        """On a backend that can tell whether a stop took (``StopConfirmable``: it holds zero
+        velocity until the robot confirms the cancel, within its own bound), watch in the background
+        and say so when it did not: the user must know the robot may still be moving. The cancelled
+        plan's own outcome is silenced on STOP, so this is the only place that would tell them."""
+        wait_stopped = getattr(self.robot, "wait_stopped", None)
+        if wait_stopped is None:
+            return
+
+        def watch() -> None:
+            try:
+                wait_stopped()
+            except RobotError as e:
+                self.say("system", "error", {"text": str(e)})
+
+        threading.Thread(target=watch, name="langnav-stop-confirm", daemon=True).start()
 
     def pause(self) -> dict[str, Any]:
         """Hold the running plan (the robot stops at once); with no plan, stop whatever moves

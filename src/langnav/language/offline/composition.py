@@ -24,6 +24,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
+from functools import partial
 from typing import Final
 
 from langnav.language.intent import (
@@ -41,6 +42,7 @@ from langnav.language.intent import (
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import ONES, QuantityKind, find_quantities
 from langnav.language.offline.parser import Reading, read_clause
+from langnav.places.store import place_key
 
 #: The clause reader this stage wraps: (clause, previous step, known names, previous target) -> Reading.
 ClauseReader = Callable[[str, Step | None, Sequence[str], ElementRef | None], Reading]
@@ -237,6 +239,11 @@ def _same_kind(a: Element, b: Element) -> bool:
     return a == b or (a in spaces and b in spaces)
 
 
+def _takes_label(kind: Element, ref: ElementRef) -> bool:
+    """'Door 2' may number ``ref``: one of that kind, not numbered yet, not a door already passed."""
+    return ref.label is None and _same_kind(ref.kind, kind) and not ref.passed
+
+
 def attach(steps: tuple[Step, ...], marks: Marks) -> tuple[tuple[Step, ...], list[str]]:
     """The steps with the marks attached, and the words of the marks that fit no step."""
     out = list(steps)
@@ -245,36 +252,30 @@ def attach(steps: tuple[Step, ...], marks: Marks) -> tuple[tuple[Step, ...], lis
     def update_ref(i: int, key: str, ref: ElementRef) -> None:
         out[i] = out[i].model_copy(update={key: ref})
 
+    def first_ref(fits: Callable[[ElementRef], bool], latest: bool = False) -> tuple[int, str, ElementRef] | None:
+        """The first element reference that ``fits``, in the first step that has one (the last when
+        ``latest``)."""
+        order = reversed(range(len(out))) if latest else range(len(out))
+        return next(((i, key, ref) for i in order for key, ref in _refs(out[i]) if fits(ref)), None)
+
     for kind, number, words in marks.labels:
-        done = False
-        for i, s in enumerate(out):
-            for key, ref in _refs(s):
-                if ref.label is None and _same_kind(ref.kind, kind) and not ref.passed:
-                    update_ref(i, key, ref.model_copy(update={"label": number, "kind": kind, "ordinal": None,
-                                                              "superlative": None, "side": None,
-                                                              "in_current_room": False}))
-                    done = True
-                    break
-            if done:
-                break
-        if not done:
+        hit = first_ref(partial(_takes_label, kind))
+        if hit is None:
             left.append(words)
+        else:
+            i, key, ref = hit
+            update_ref(i, key, ref.model_copy(update={"label": number, "kind": kind, "ordinal": None,
+                                                      "superlative": None, "side": None, "in_current_room": False}))
     for words in marks.passed:
-        done = False
-        for i, s in reversed(list(enumerate(out))):
-            for key, ref in _refs(s):
-                if ref.kind not in (Element.NONE,) and ref.label is None and not ref.passed:
-                    update_ref(i, key, ref.model_copy(update={"passed": True, "superlative": None, "ordinal": None}))
-                    done = True
-                    break
-            if done:
-                break
-        if not done:
+        hit = first_ref(lambda r: r.kind != Element.NONE and r.label is None and not r.passed, latest=True)
+        if hit is None:
             left.append(words)
+        else:
+            i, key, ref = hit
+            update_ref(i, key, ref.model_copy(update={"passed": True, "superlative": None, "ordinal": None}))
     if marks.relation is not None:
         relation, near, words = marks.relation
-        hit = next(((i, key, ref) for i, s in enumerate(out) for key, ref in _refs(s)
-                    if ref.kind in (Element.ROOM, Element.HALLWAY)), None)
+        hit = first_ref(lambda r: r.kind in (Element.ROOM, Element.HALLWAY))
         if hit is None:
             left.append(words)
         else:
@@ -328,8 +329,8 @@ def read_place_command(norm: str, text: str, previous: Step | None, known_names:
     m = _FORGET_RE.match(norm)
     if m is not None:
         name = _place_name(m.group("name"))
-        known = {n.lower() for n in known_names}
-        if name and not _FORGET_NOT_PLACES.match(name) and (name in known or not _LABEL_RE.search(name)):
+        known = {place_key(n) for n in known_names}
+        if name and not _FORGET_NOT_PLACES.match(name) and (place_key(name) in known or not _LABEL_RE.search(name)):
             return (Step(movement=Movement.FORGET_PLACE, place_name=name, text=text[:500]),)
     for rx in _NAME_SPOT_RES:
         m = rx.match(norm)
@@ -408,10 +409,10 @@ def _between_named(norm: str, text: str, previous: Step | None, known_names: Seq
     m = _BETWEEN_RE.match(norm)
     if m is None:
         return None
-    known = {_bare(n): n for n in known_names}
+    known = {place_key(n): n for n in known_names}
     refs: list[ElementRef] = []
     for side in (m.group("a"), m.group("b")):
-        name = known.get(_bare(side))
+        name = known.get(place_key(side))
         ref = ElementRef(kind=Element.NONE, name=name[:80]) if name else \
             _target_of(side, previous, known_names, previous_target, reader)
         if ref is None:
@@ -421,10 +422,6 @@ def _between_named(norm: str, text: str, previous: Step | None, known_names: Seq
         return None  # two elements: the clause reader's own reading
     return Step(movement=Movement.NAVIGATE, detail=Detail.BETWEEN, target=refs[0], second_target=refs[1],
                 text=text[:500])
-
-
-def _bare(name: str) -> str:
-    return re.sub(r"^(?:(?:the|a|an|my|our|your)\s+)+", "", " ".join(name.lower().split())).strip(" .!?\"'")
 
 
 # ------------------------------------------------------------------------------ the stage
@@ -464,6 +461,9 @@ __all__ = ["LABEL_NOUNS", "Marks", "attach", "extract", "read_composed", "read_p
 #: Stand-in words for the user's place names while the clause reader reads the clause: a name made of
 #: words the reader knows ("the front door", "the big room") would otherwise be read as those words.
 _STAND_IN: Final = "zqxplace{}"
+#: At most this many names stand in at once: one letter each ("zqxplacea" ...) within a-z, and far
+#: more places than one instruction names.
+MAX_STAND_INS: Final = 20
 
 
 _FACE_NAMED_RE: Final = re.compile(
@@ -474,15 +474,17 @@ _FACE_NAMED_RE: Final = re.compile(
 def _stand_in_names(norm: str, known_names: Sequence[str]) -> tuple[str, dict[str, str]]:
     """The clause with each known place name (longest first) replaced by a stand-in word."""
     stand_ins: dict[str, str] = {}
-    for name in sorted({_bare(n) for n in known_names if _bare(n)}, key=len, reverse=True):
+    originals: dict[str, str] = {}
+    for n in known_names:
+        originals.setdefault(place_key(n), n)  # the first name the user gave with that key
+    for name in sorted((k for k in originals if k), key=len, reverse=True):
         rx = re.compile(r"\b(?:(?:the|a|an|my|our|your)\s+)?" + r"\s+".join(map(re.escape, name.split())) + r"\b")
         if rx.search(norm) is None:
             continue
         token = _STAND_IN.format(chr(ord("a") + len(stand_ins)))
-        original = next(n for n in known_names if _bare(n) == name)
-        stand_ins[token] = original
+        stand_ins[token] = originals[name]
         norm = rx.sub(f"the {token}", norm)
-        if len(stand_ins) >= 20:
+        if len(stand_ins) >= MAX_STAND_INS:
             break
     return norm, stand_ins
 
