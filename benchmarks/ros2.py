@@ -16,15 +16,12 @@ or ``make test-ros2`` first, then ``make bench-ros2``). Prints why and exits 0 w
 
 from __future__ import annotations
 
-import importlib.util
 import json
-import math
 import os
 import statistics
 import sys
 import time
 from pathlib import Path
-from types import ModuleType
 from typing import Any, Final
 
 os.environ.setdefault("ROS_DOMAIN_ID", str(10 + os.getpid() % 90))
@@ -32,10 +29,6 @@ os.environ.setdefault("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
 
 BENCH = Path(__file__).resolve().parents[2] / "shared" / "bench"
 TARGET_PROMPTS: Final = 0.95
-#: A Move ends within this distance of where its steps lead (as benchmarks/sim.py).
-MOVE_TOLERANCE_M: Final = 0.1
-STEP_M: Final = 0.03
-STEP_DEG: Final = 10.0
 #: The simulator runs this many times faster than real time for the prompts (the ROS side is
 #: wall-clock: Nav2's time allowances are generous enough for it).
 PROMPT_SPEED: Final = 4.0
@@ -43,47 +36,9 @@ STOP_TRIALS: Final = 5
 RECONNECTS: Final = 40
 
 
-def _score_module(bench: Path) -> ModuleType:
-    spec = importlib.util.spec_from_file_location("bench_score", bench / "score.py")
-    assert spec is not None and spec.loader is not None
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
-def expected_end(case: dict[str, Any]) -> tuple[str, Any] | None:
-    """Where the robot must end: ("region", region) after a NavigateThroughPoses, ("segment", (a, b))
-    after a Move, None when the case does not move the robot (as benchmarks/sim.py)."""
-    x, y, yaw = case["pose"]
-    end: tuple[str, Any] | None = None
-    for cmd in case["expect"]:
-        kind = cmd["command"]
-        if kind == "NavigateThroughPoses":
-            end = ("region", cmd["goal"])
-            x = y = math.nan
-        elif kind == "Rotate":
-            lo, hi = cmd["repeat"]
-            turn = (lo + hi) / 2 * STEP_DEG
-            yaw += -turn if cmd["direction"] == "right" else turn
-        elif kind == "Move":
-            lo, hi = cmd["repeat"]
-            ang = math.radians(yaw + {"forward": 0, "backward": 180, "left": 90, "right": -90}[cmd["direction"]])
-            a = (x + lo * STEP_M * math.cos(ang), y + lo * STEP_M * math.sin(ang))
-            b = (x + hi * STEP_M * math.cos(ang), y + hi * STEP_M * math.sin(ang))
-            end = ("segment", (a, b))
-            x, y = (a[0] + b[0]) / 2, (a[1] + b[1]) / 2
-    return end
-
-
-def _segment_distance(p: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    L2 = dx * dx + dy * dy
-    t = 0.0 if L2 == 0 else max(0.0, min(1.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / L2))
-    return math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy)
-
-
 def run_bench_prompts(bench: Path = BENCH, speed: float = PROMPT_SPEED) -> tuple[int, int, list[str]]:
     """(cases in the goal region, cases that move the robot, what went wrong with the others)."""
+    from langnav.eval.endpoint import ended_as_expected, expected_end
     from langnav.language.translator import get_translator
     from langnav.maps.io import load_map
     from langnav.pipeline import Planner
@@ -93,7 +48,6 @@ def run_bench_prompts(bench: Path = BENCH, speed: float = PROMPT_SPEED) -> tuple
     from langnav.robot.ros.robot_node import RobotNode
     from langnav.robot.sim import create_sim
 
-    score = _score_module(bench)
     cases = [json.loads(line) for line in (bench / "prompts_dev.jsonl").read_text().splitlines() if line.strip()]
     moving = [c for c in cases if isinstance(c["expect"], list) and expected_end(c) is not None]
     planner = Planner(get_translator("offline"))
@@ -120,9 +74,8 @@ def run_bench_prompts(bench: Path = BENCH, speed: float = PROMPT_SPEED) -> tuple
             node.close()
             sim.close()
         x, y = sim.pose.x_m, sim.pose.y_m
-        kind, target = expected_end(case)  # type: ignore[misc]
-        inside = (score.in_region(target, x, y) if kind == "region"
-                  else _segment_distance((x, y), *target) <= MOVE_TOLERANCE_M)
+        end = expected_end(case)
+        inside = end is not None and ended_as_expected(end, x, y)
         if inside and sim.collisions == 0 and not why:
             ok += 1
         else:

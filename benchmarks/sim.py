@@ -13,18 +13,16 @@ Needs ../shared; prints why and exits 0 when it is absent.
 
 from __future__ import annotations
 
-import importlib.util
 import json
-import math
 import sys
 import time
 from pathlib import Path
-from types import ModuleType
-from typing import Any, Final
+from typing import Final
 
 import numpy as np
 from scipy import ndimage
 
+from langnav.eval.endpoint import ended_as_expected, expected_end
 from langnav.maps.grid import OccupancyGrid
 from langnav.maps.io import load_map
 from langnav.plan.events import PlanStatus
@@ -41,11 +39,6 @@ SPEED_ROUTE: Final = [(16.2, 3.1)]
 TARGET_RTF: Final = 20.0
 TARGET_COVERAGE: Final = 0.95
 TARGET_PROMPTS: Final = 0.95
-#: A Move ends within this distance of where its steps lead (the robot's own drive tolerance is
-#: mm; the slack is for the step rounding between the expected range's ends).
-MOVE_TOLERANCE_M: Final = 0.1
-STEP_M: Final = 0.03
-STEP_DEG: Final = 10.0
 
 
 def speed() -> float:
@@ -83,60 +76,19 @@ def exploration() -> float:
     reach = reachable_free(world, *HALLWAY_START[:2])
     grid = sim.get_map()
     covered = float((grid.free & reach).sum() / reach.sum())
-    print(f"explore env2 from the hallway, empty map: {status.value}; uncovered {covered:.1%} of the "
+    print(f"explore env2 from the hallway, empty map: {status.value}; covered {covered:.1%} of the "
           f"{reach.sum() * world.cell_area_m2:.0f} m2 reachable free area (target >= {TARGET_COVERAGE:.0%})")
     print(f"  simulated {sim.time_s:.0f} s, wall {wall:.1f} s ({cpu:.1f} s CPU), real-time factor "
           f"{sim.time_s / wall:.1f}x; collisions {sim.collisions}")
     return covered
 
 
-def _score_module() -> ModuleType:
-    spec = importlib.util.spec_from_file_location("bench_score", BENCH / "score.py")
-    assert spec is not None and spec.loader is not None
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
-def _expected_end(case: dict[str, Any]) -> tuple[str, Any] | None:
-    """What the robot's last position must satisfy: ("region", region) after a NavigateThroughPoses,
-    ("segment", (a, b)) after a Move (its steps' range), or None when nothing moves the robot."""
-    x, y, yaw = case["pose"]
-    end: tuple[str, Any] | None = None
-    for cmd in case["expect"]:
-        kind = cmd["command"]
-        if kind == "NavigateThroughPoses":
-            end = ("region", cmd["goal"])
-            x = y = math.nan  # unknown within the region; a later Move cannot be placed
-        elif kind == "Rotate":
-            lo, hi = cmd["repeat"]
-            turn = (lo + hi) / 2 * STEP_DEG
-            yaw += -turn if cmd["direction"] == "right" else turn
-        elif kind == "Move":
-            lo, hi = cmd["repeat"]
-            ang = math.radians(yaw + {"forward": 0, "backward": 180, "left": 90, "right": -90}[cmd["direction"]])
-            a = (x + lo * STEP_M * math.cos(ang), y + lo * STEP_M * math.sin(ang))
-            b = (x + hi * STEP_M * math.cos(ang), y + hi * STEP_M * math.sin(ang))
-            end = ("segment", (a, b))
-            x, y = (a[0] + b[0]) / 2, (a[1] + b[1]) / 2
-    return end
-
-
-def _segment_distance(p: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
-    ax, ay = a
-    dx, dy = b[0] - ax, b[1] - ay
-    L2 = dx * dx + dy * dy
-    t = 0.0 if L2 == 0 else max(0.0, min(1.0, ((p[0] - ax) * dx + (p[1] - ay) * dy) / L2))
-    return math.hypot(p[0] - ax - t * dx, p[1] - ay - t * dy)
-
-
 def prompts() -> float:
     from langnav.language.translator import get_translator
     from langnav.pipeline import Planner
 
-    score = _score_module()
     cases = [json.loads(line) for line in (BENCH / "prompts_dev.jsonl").read_text().splitlines() if line.strip()]
-    moving = [c for c in cases if isinstance(c["expect"], list) and _expected_end(c) is not None]
+    moving = [c for c in cases if isinstance(c["expect"], list) and expected_end(c) is not None]
     planner = Planner(get_translator("offline"))
     worlds: dict[str, OccupancyGrid] = {}
     ok = 0
@@ -153,9 +105,8 @@ def prompts() -> float:
             if status is not PlanStatus.SUCCEEDED:
                 why = f"plan {status.value}"
         x, y = sim.pose.x_m, sim.pose.y_m
-        kind, target = _expected_end(case)  # type: ignore[misc]
-        inside = (score.in_region(target, x, y) if kind == "region"
-                  else _segment_distance((x, y), *target) <= MOVE_TOLERANCE_M)
+        end = expected_end(case)
+        inside = end is not None and ended_as_expected(end, x, y)
         good = inside and sim.collisions == 0 and not why
         ok += good
         if not good:

@@ -37,7 +37,7 @@ from langnav.grounding.ground import (
 from langnav.grounding.history import PoseHistory
 from langnav.language.errors import TranslationError
 from langnav.language.intent import Intent, Step
-from langnav.language.offline.ask import spatial
+from langnav.language.offline.ask import ask_message, spatial
 from langnav.language.translator import Context, Translator, clean_prompt
 from langnav.maps.grid import OccupancyGrid
 from langnav.places.errors import PlaceError
@@ -204,7 +204,7 @@ class Planner:
         doubtful = [u for u in intent.unread if spatial(u)]
         if doubtful:
             # ask, don't guess: words not read that could change where or how far the robot goes
-            return self._refusal(prompt, intent, unread_question(grounded, doubtful), name)
+            return self._refusal(prompt, intent, unread_question(intent, grounded, doubtful), name)
         try:
             messages = self._apply_place_changes(grounded)
         except PlaceError as exc:
@@ -226,8 +226,7 @@ class Planner:
         for s in grounded.steps:
             if s.name_place is not None:
                 place = self.places.put(s.name_place)
-                said.append(f"I will remember {s.note.removeprefix('remember ').rsplit(' as ', 1)[0]} as "
-                            f"'{place.name}'.")
+                said.append(f"I will remember {s.named_what} as '{place.name}'.")
             elif s.forget_place is not None:
                 gone = self.places.remove(s.forget_place)
                 said.append(f"I forgot '{gone.name}'.")
@@ -273,13 +272,11 @@ def _route_of(commands: tuple[Command, ...] | list[Command]) -> list[Point]:
     return [(float(p[0]), float(p[1])) for c in commands if isinstance(c, NavigateThroughPoses) for p in c.poses]
 
 
-def unread_question(grounded: GroundedPlan, unread: list[str]) -> str:
-    """What was understood and what was not, as a question: nothing runs on a partial reading."""
-    notes = [s.note for s in grounded.steps if s.note]
-    understood = "; then ".join(notes) if notes else "nothing I can do"
-    words = "; ".join(f"'{u}'" for u in unread)
-    return (f"I understood: {understood}. But I did not understand {words}, which could change where I go or "
-            "how far, so I have not moved. Could you say it another way?")
+def unread_question(intent: Intent, grounded: GroundedPlan, unread: list[str]) -> str:
+    """What was understood (the grounded plan, in its notes) and what was not, as a question: nothing
+    runs on a partial reading. The words are the offline parser's ask message, one for both."""
+    notes = "; then ".join(s.note for s in grounded.steps if s.note)
+    return ask_message(intent.steps, unread, (), plan=notes)
 
 
 def bench_line(case_id: str, result: PlanResult) -> dict[str, Any]:

@@ -8,8 +8,6 @@ each backend closes only its own connection, so any number of them can come and 
 
 from __future__ import annotations
 
-import asyncio
-import contextlib
 import json
 import logging
 import math
@@ -19,8 +17,8 @@ from collections.abc import Callable, Iterator
 from typing import Any
 
 import pytest
-from websockets.asyncio.server import ServerConnection, serve
-from websockets.exceptions import ConnectionClosed
+from fake_rosbridge import RawRosbridge
+from websockets.asyncio.server import ServerConnection
 from websockets.sync.client import connect
 
 from langnav.maps.draw import MapBuilder
@@ -201,33 +199,15 @@ def test_server_answers_malformed_input_with_status_and_keeps_serving(sim_served
 
 
 # -- a robot that speaks nonsense -------------------------------------------------------------------
-class _BadRobot:
+class _BadRobot(RawRosbridge):
     """A raw rosbridge server whose /map and NavigateThroughPoses feedback are malformed and
     which never publishes tf: the robot side of the 'malformed message' fault."""
 
     def __init__(self) -> None:
-        self.port = 0
         self.cmd_vel: list[dict[str, Any]] = []
-        self._ready = threading.Event()
-        self._stop: asyncio.Event | None = None
-        self._loop: asyncio.AbstractEventLoop | None = None
-        self._thread = threading.Thread(target=lambda: asyncio.run(self._main()), daemon=True)
-        self._thread.start()
-        assert self._ready.wait(5), "bad robot did not start"
+        super().__init__()
 
-    async def _main(self) -> None:
-        self._loop = asyncio.get_running_loop()
-        self._stop = asyncio.Event()
-        async with serve(self._handle, "127.0.0.1", 0) as server:
-            self.port = next(iter(server.sockets)).getsockname()[1]
-            self._ready.set()
-            await self._stop.wait()
-
-    async def _handle(self, ws: ServerConnection) -> None:
-        with contextlib.suppress(ConnectionClosed):
-            await self._serve_one(ws)
-
-    async def _serve_one(self, ws: ServerConnection) -> None:
+    async def serve_one(self, ws: ServerConnection) -> None:
         async for raw in ws:
             msg = json.loads(raw)
             if msg["op"] == "subscribe" and msg["topic"] == "/map":
@@ -238,11 +218,6 @@ class _BadRobot:
                                           "values": {"current_pose": {"pose": "nowhere"}}}))
             elif msg["op"] == "publish" and msg["topic"] == "/cmd_vel":
                 self.cmd_vel.append(msg["msg"])
-
-    def close(self) -> None:
-        if self._loop is not None and self._stop is not None:
-            self._loop.call_soon_threadsafe(self._stop.set)
-        self._thread.join(5)
 
 
 def test_malformed_messages_from_the_robot_give_clear_errors() -> None:

@@ -20,9 +20,9 @@ from typing import Any
 
 import pytest
 import roslibpy
+from fake_rosbridge import RawRosbridge
 from test_rosbridge import GOAL, START, Served, _DummyRobot, _until, _world
-from websockets.asyncio.server import ServerConnection, serve
-from websockets.exceptions import ConnectionClosed
+from websockets.asyncio.server import ServerConnection
 
 from langnav.plan.commands import NavigateThroughPoses
 from langnav.plan.executor import PlanExecutor
@@ -198,39 +198,19 @@ def test_confirmed_stop_ends_the_hold_and_the_robot_stands_still() -> None:
 
 
 # -- what rosbridge is asked for -------------------------------------------------------------------
-class _Listener:
+class _Listener(RawRosbridge):
     """A rosbridge that records what clients send and publishes nothing (no map ever comes)."""
 
     def __init__(self) -> None:
-        self.port = 0
         self.received: list[dict[str, Any]] = []
-        self._ready = threading.Event()
-        self._stop: asyncio.Event | None = None
-        self._loop: asyncio.AbstractEventLoop | None = None
-        self._thread = threading.Thread(target=lambda: asyncio.run(self._main()), daemon=True)
-        self._thread.start()
-        assert self._ready.wait(5), "listener did not start"
+        super().__init__()
 
-    async def _main(self) -> None:
-        self._loop = asyncio.get_running_loop()
-        self._stop = asyncio.Event()
-        async with serve(self._handle, "127.0.0.1", 0) as server:
-            self.port = next(iter(server.sockets)).getsockname()[1]
-            self._ready.set()
-            await self._stop.wait()
-
-    async def _handle(self, ws: ServerConnection) -> None:
-        with contextlib.suppress(ConnectionClosed):
-            async for raw in ws:
-                self.received.append(json.loads(raw))
+    async def serve_one(self, ws: ServerConnection) -> None:
+        async for raw in ws:
+            self.received.append(json.loads(raw))
 
     def ops(self, op: str, topic: str | None = None) -> list[dict[str, Any]]:
         return [m for m in list(self.received) if m.get("op") == op and (topic is None or m.get("topic") == topic)]
-
-    def close(self) -> None:
-        if self._loop is not None and self._stop is not None:
-            self._loop.call_soon_threadsafe(self._stop.set)
-        self._thread.join(5)
 
 
 def test_subscriptions_ask_rosbridge_for_no_queue_and_a_missing_map_is_a_clear_error() -> None:

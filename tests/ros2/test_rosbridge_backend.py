@@ -8,7 +8,6 @@ goal region.
 
 from __future__ import annotations
 
-import importlib.util
 import math
 import os
 import signal
@@ -199,19 +198,11 @@ def test_forty_connect_disconnect_cycles(demo_robot: Callable[..., Any], rosbrid
     assert ok == CYCLES
 
 
-def _bench() -> Any:
-    spec = importlib.util.spec_from_file_location(
-        "bench_ros2", Path(__file__).resolve().parents[2] / "benchmarks" / "ros2.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
 def test_bench_dev_prompts_through_rosbridge(shared_dir: Path, rosbridge_rs: int) -> None:
     """Every dev prompt of the bench that moves the robot, through rosbridge-server-rs (../shared)."""
     import json
 
+    from langnav.eval.endpoint import ended_as_expected, expected_end
     from langnav.language.translator import get_translator
     from langnav.maps.io import load_map
     from langnav.pipeline import Planner
@@ -220,11 +211,9 @@ def test_bench_dev_prompts_through_rosbridge(shared_dir: Path, rosbridge_rs: int
     from langnav.robot.ros.rosbridge_backend import RosbridgeBackend
     from langnav.robot.sim import create_sim
 
-    bench = _bench()
     root = shared_dir / "bench"
-    score = bench._score_module(root)
     cases = [json.loads(line) for line in (root / "prompts_dev.jsonl").read_text().splitlines() if line.strip()]
-    moving = [c for c in cases if isinstance(c["expect"], list) and bench.expected_end(c) is not None]
+    moving = [c for c in cases if isinstance(c["expect"], list) and expected_end(c) is not None]
     planner = Planner(get_translator("offline"))
     ok, misses = 0, []
     for case in moving:
@@ -246,9 +235,8 @@ def test_bench_dev_prompts_through_rosbridge(shared_dir: Path, rosbridge_rs: int
             node.close()
             sim.close()
         x, y = sim.pose.x_m, sim.pose.y_m
-        kind, target = bench.expected_end(case)
-        inside = (score.in_region(target, x, y) if kind == "region"
-                  else bench._segment_distance((x, y), *target) <= bench.MOVE_TOLERANCE_M)
+        end = expected_end(case)
+        inside = end is not None and ended_as_expected(end, x, y)
         if inside and sim.collisions == 0 and not why:
             ok += 1
         else:

@@ -30,6 +30,7 @@ from scipy import ndimage as ndi
 from skimage.measure import find_contours
 from skimage.segmentation import watershed
 
+from langnav.analysis.door_judge import judge_doors
 from langnav.analysis.elements import Door, ElementKind, Room
 from langnav.analysis.errors import AnalysisError
 from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
@@ -216,6 +217,10 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     peaks = label_max(labels, fl.clearance_m)  # the widest clearance of each space
     raw_doors += openings_to_unknown(labels, fl.floor, exterior, occupied,
                                      fl.clearance_m, res, params, peaks)
+    # Only openings cut in a wall are doors (door_judge); the others between two spaces are
+    # still ways between them.
+    raw_doors, not_doors = judge_doors(raw_doors, fl.free, occupied, res, params)
+    raw_wide += [d for d in not_doors if d.b != 0]
     openings = np.bincount(np.array([x for d in raw_doors + raw_wide for x in (d.a, d.b) if x > 0], dtype=np.int64),
                            minlength=int(labels.max()) + 1)
     rooms = _rooms(grid, labels, fl, params, peaks, openings)

@@ -83,6 +83,9 @@ FRACTION_SNAP_M: Final = 0.5
 #: ... searched for within this much more of it: the nearest free cell may lie a little to the side
 #: of the straight way (the value the search has used since fractions were added).
 FRACTION_SEARCH_EXTRA_M: Final = 0.3
+#: A fraction this close to a named one ("halfway", "a third") is said with that name (1/3 is read
+#: as 0.333 and 0.3333: a thousandth tells them apart from the next fraction a person says).
+FRACTION_NAME_TOL: Final = 1e-3
 #: "past / before X" in a hallway: X less than this along the hallway from the robot is beside it,
 #: neither ahead nor behind, so the way the robot faces says which way "past" is.
 BESIDE_ALONG_M: Final = 0.3
@@ -115,12 +118,19 @@ class SafePointNear(Protocol):
 @dataclass(frozen=True)
 class Anchor:
     """What an offset is measured from: the direction of travel and the target's near / far edge
-    along it, as distances from ``origin`` (the robot, or a door's centre)."""
+    along it, as distances from ``origin`` (the robot's place on the line of the way); ``space_id``
+    is the space the way runs through at the goal (the hallway, the room a door leads into), where
+    the goal is looked for first."""
 
     origin: Point
     direction: Point
     near_t: float
     far_t: float
+    space_id: str | None = None
+
+
+#: A vectorised predicate on world x, y arrays (the cells a goal may be on).
+Where = Callable[[FloatArray, FloatArray], BoolArray]
 
 
 # ------------------------------------------------------------------------------ facing
@@ -201,7 +211,18 @@ def _of_hallway(e: Element | Point, hall: Room) -> bool:
     return len(hall.cells_xy) > 0 and nearest_point(p, hall.cells_xy)[0] <= OF_HALL_M
 
 
-def offset_anchor(e: Element | Point, pose: Pose, here: Room | None) -> Anchor:
+def _way_space(e: Door | NarrowPassage, here: Room | None, past: bool) -> str | None:
+    """The space the way runs through at an offset from an opening: the one on its far side from the
+    robot (``past``) or the robot's own (``before``); None when the robot is in neither."""
+    if here is None or here.id not in e.connects:
+        return None
+    if not past:
+        return here.id
+    others = [c for c in e.connects if c != here.id]
+    return others[0] if len(others) == 1 else None
+
+
+def offset_anchor(e: Element | Point, pose: Pose, here: Room | None, *, past: bool = True) -> Anchor:
     """How "past / before X" is measured from this pose (see the module docstring); ``e`` is an
     element or a point (a named spot, the foot of a wall)."""
     pts = element_extent(e)
@@ -209,38 +230,50 @@ def offset_anchor(e: Element | Point, pose: Pose, here: Room | None) -> Anchor:
         ref = e
     else:
         ref = reference_point(e) if not isinstance(e, Wall) else closest_on_segment(pose.xy, e.start, e.end)
+    space_id: str | None = None
     if here is not None and here.kind == ElementKind.HALLWAY and _of_hallway(e, here):
-        _, axis = hall_axis(here, pose.xy)
+        # down the hallway as it runs where X is (an L-shaped corridor turns), along its middle
+        centre, axis = hall_axis(here, ref)
         along = (ref[0] - pose.x_m) * axis[0] + (ref[1] - pose.y_m) * axis[1]
         heading = math.cos(pose.yaw_rad) * axis[0] + math.sin(pose.yaw_rad) * axis[1]
         sign = (1.0 if along > 0 else -1.0) if abs(along) > BESIDE_ALONG_M else (1.0 if heading >= 0 else -1.0)
         d = (axis[0] * sign, axis[1] * sign)
-        origin = pose.xy
+        t_robot = (pose.x_m - centre[0]) * d[0] + (pose.y_m - centre[1]) * d[1]
+        origin = (centre[0] + d[0] * t_robot, centre[1] + d[1] * t_robot)
+        space_id = here.id
     elif isinstance(e, Door | NarrowPassage):
         centre, d = _door_axis(e, pose)
         # measured from the robot's line through the opening's centre
         t_robot = (pose.x_m - centre[0]) * d[0] + (pose.y_m - centre[1]) * d[1]
         origin = (centre[0] + d[0] * t_robot, centre[1] + d[1] * t_robot)
+        space_id = _way_space(e, here, past)
     else:
         v = (ref[0] - pose.x_m, ref[1] - pose.y_m)
         d = unit(v) if math.hypot(*v) > 1e-6 else (math.cos(pose.yaw_rad), math.sin(pose.yaw_rad))
         origin = pose.xy
     t = (pts[:, 0] - origin[0]) * d[0] + (pts[:, 1] - origin[1]) * d[1]
-    return Anchor(origin, d, float(t.min()), float(t.max()))
+    return Anchor(origin, d, float(t.min()), float(t.max()), space_id)
 
 
 def offset_goal(e: Element | Point, step: Step, pose: Pose, here: Room | None, desc: str,
-                safe_point: SafePointNear, comp: int) -> tuple[Point, float]:
+                safe_point: SafePointNear, comp: int,
+                in_space: Callable[[str], Where | None] | None = None) -> tuple[Point, float]:
     """The goal N metres past / before ``e`` and the along-way distance asked for (from the anchor's
-    origin). Raises GroundingError when that point is behind the robot or not reachable."""
-    assert step.offset is not None and step.offset_m is not None
-    a = offset_anchor(e, pose, here)
+    origin). The goal is looked for first in the space the way runs through there (``in_space``
+    gives a space's cells by id, None for an id that is no space): never sideways into a doorway
+    or a room beside the way. Raises GroundingError when that point is behind the robot or not
+    reachable."""
+    if step.offset is None or step.offset_m is None:
+        raise GroundingError(f"How far past or before {desc} should I stop? Say e.g. 'stop 1 m before {desc}' "
+                             f"or 'go 2 m past {desc}'; nothing was run.")
+    past = step.offset == Offset.PAST
+    a = offset_anchor(e, pose, here, past=past)
     n = step.offset_m
-    t_goal = a.far_t + n if step.offset == Offset.PAST else a.near_t - n
+    t_goal = a.far_t + n if past else a.near_t - n
     t_robot = (pose.x_m - a.origin[0]) * a.direction[0] + (pose.y_m - a.origin[1]) * a.direction[1]
-    word = "past" if step.offset == Offset.PAST else "before"
+    word = "past" if past else "before"
     if t_goal - t_robot < MIN_OFFSET_RUN_M:
-        if step.offset == Offset.BEFORE:
+        if not past:
             raise GroundingError(f"I am already less than {n:g} m from {desc}, so I cannot stop {n:g} m before it; "
                                  "nothing was run.")
         raise GroundingError(f"{n:g} m past {desc} is behind me; turn towards it first or name where to go.")
@@ -254,7 +287,18 @@ def offset_goal(e: Element | Point, step: Step, pose: Pose, here: Room | None, d
         return np.asarray((t <= t_goal + ALONG_SLACK_M) & (t >= t_goal - OFFSET_SNAP_M) & (side <= OFFSET_SIDE_M),
                           dtype=bool)
 
-    goal = safe_point(target, comp, math.hypot(OFFSET_SNAP_M, OFFSET_SIDE_M), prefer=target, where=on_the_way)
+    radius = math.hypot(OFFSET_SNAP_M, OFFSET_SIDE_M)
+    goal: Point | None = None
+    space = in_space(a.space_id) if a.space_id is not None and in_space is not None else None
+    if space is not None:
+        inside = space
+
+        def on_the_way_in_space(xs: FloatArray, ys: FloatArray) -> BoolArray:
+            return np.asarray(on_the_way(xs, ys) & inside(xs, ys), dtype=bool)
+
+        goal = safe_point(target, comp, radius, prefer=target, where=on_the_way_in_space)
+    if goal is None:  # the way leaves that space there (the hallway ends in a room): straight on
+        goal = safe_point(target, comp, radius, prefer=target, where=on_the_way)
     if goal is None:
         raise GroundingError(f"I cannot stop {n:g} m {word} {desc}: there is no free space I can reach there "
                              "(a wall or an obstacle is in the way, or it is off the map). Nothing was run.")
@@ -288,7 +332,7 @@ def fraction_words(fraction: float) -> str:
     named = {0.5: "halfway", 0.25: "a quarter of the way", 0.75: "three quarters of the way",
              1 / 3: "a third of the way", 2 / 3: "two thirds of the way"}
     for v, w in named.items():
-        if abs(fraction - v) < 1e-3:
+        if abs(fraction - v) < FRACTION_NAME_TOL:
             return w
     return f"{fraction * 100:.0f}% of the way"
 

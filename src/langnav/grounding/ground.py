@@ -120,6 +120,9 @@ DEFAULT_MOVE_M: Final = 1.0
 NAMED_PLACE_MAX_M: Final = compose.NAMED_PLACE_MAX_M
 #: "opposite side of a room": the far third (README).
 OPPOSITE_FRACTION: Final = 2.0 / 3.0
+#: Two points of the robot's way closer than this are the same point: a millimetre, far below a
+#: cell, and above the error of the poses' rounding to 3 decimals (at most 0.7 mm).
+SAME_POINT_M: Final = 1e-3
 
 
 @dataclass(frozen=True)
@@ -138,6 +141,8 @@ class GroundedStep:
     messages: tuple[str, ...] = ()
     #: "call this spot the kitchen": the place to remember once the plan is accepted
     name_place: NamedPlace | None = None
+    #: ... and what that name is given to, in words ("this spot (3.0, 3.0)", "door 2")
+    named_what: str = ""
     #: "forget the kitchen": the name to drop once the plan is accepted
     forget_place: str | None = None
     #: "what places do you know?": the answer is the store's list
@@ -236,7 +241,7 @@ class GroundingContext:
     def trail(self, pose: Pose) -> list[Point]:
         """The whole way driven up to ``pose``, oldest first."""
         pts = [*self.history.trail, *self.route]
-        if not pts or math.dist(pts[-1], pose.xy) > 1e-3:
+        if not pts or math.dist(pts[-1], pose.xy) > SAME_POINT_M:
             pts.append(pose.xy)
         return pts
 
@@ -247,14 +252,14 @@ def advance_way(route: list[Point], moved_from: list[Pose], gs: GroundedStep) ->
     re-grounding; ``GroundingContext`` keeps them while grounding: one bookkeeping for both."""
     if not gs.moves:
         return
-    if math.dist(gs.start_pose.xy, gs.end_pose.xy) > 1e-3:
+    if math.dist(gs.start_pose.xy, gs.end_pose.xy) > SAME_POINT_M:
         moved_from.append(gs.start_pose)
     if not route:
         route.append(gs.start_pose.xy)
     for c in gs.commands:
         if isinstance(c, NavigateThroughPoses):
             route.extend((float(q[0]), float(q[1])) for q in c.poses)
-    if math.dist(route[-1], gs.end_pose.xy) > 1e-3:
+    if math.dist(route[-1], gs.end_pose.xy) > SAME_POINT_M:
         route.append(gs.end_pose.xy)
 
 
@@ -315,18 +320,13 @@ def _rotate(step: Step, pose: Pose, index: int) -> GroundedStep:
 
 
 def _face_heading(step: Step, pose: Pose, index: int) -> GroundedStep:
-    """'face north': one turn the shorter way from the heading the robot has now (README "Compass";
-    exactly 180 degrees may go either way, left is used); nothing when it already faces that way."""
+    """'face north': one turn the shorter way from the heading the robot has now (README "Compass"),
+    as 'face the door' turns (``compose.facing_turn``); nothing when it already faces that way."""
     heading = float(step.heading_deg or 0.0)
-    delta = (heading - pose.yaw_deg + 180.0) % 360.0 - 180.0  # in [-180, 180)
-    note = f"turn to face heading {heading:g}°"
-    if abs(delta) < ROTATE_STEP_DEG / 2:
-        return GroundedStep(index, step, (), pose, pose, f"already facing heading {heading:g}°")
-    direction: Literal["left", "right"] = "left" if delta > 0 or abs(delta) >= 180.0 - 1e-9 else "right"
-    n = steps_for_angle(abs(delta))
-    sign = 1.0 if direction == "left" else -1.0
-    end = Pose(pose.x_m, pose.y_m, pose.yaw_rad + sign * math.radians(n * ROTATE_STEP_DEG))
-    return GroundedStep(index, step, (Rotate(direction=direction, repeat=n, note=note),), pose, end, note)
+    cmd, end, note = compose.facing_turn(pose, math.radians(heading), compose.compass_word(heading))
+    if cmd is None:
+        return GroundedStep(index, step, (), pose, pose, note, messages=(note + ".",))
+    return GroundedStep(index, step, (cmd,), pose, end, note)
 
 
 MoveDir = Literal["forward", "backward", "left", "right"]
@@ -590,7 +590,8 @@ def _offset_step(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> G
     else:
         e = select(ref, ctx.analysis, pose, step.text)
         anchor, desc, ids = e, describe_ref(ref), (e.id,)
-    goal, _ = compose.offset_goal(anchor, step, pose, here, desc, ctx.space.safe_point_near, comp)
+    goal, _ = compose.offset_goal(anchor, step, pose, here, desc, ctx.space.safe_point_near, comp,
+                                 lambda space_id: _in_space_id(ctx, space_id))
     word = "past" if step.offset == Offset.PAST else "before"
     return _nav_step(step, pose, index, [goal], f"{step.offset_m:g} m {word} {desc}", ids)
 
@@ -629,7 +630,7 @@ def _place_step(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> Gr
         raise GroundingError(f"I can't use that name: {exc}.") from exc
     old = ctx.named.get(new.key)
     note = f"remember {what} as '{new.name}'" + (f" (it was ({old.x_m:.1f}, {old.y_m:.1f}) before)" if old else "")
-    return GroundedStep(index, step, (), pose, pose, note, ids, name_place=new)
+    return GroundedStep(index, step, (), pose, pose, note, ids, name_place=new, named_what=what)
 
 
 def _goal_at(e: Element, detail: Detail, ctx: GroundingContext, pose: Pose, comp: int, desc: str) -> Point:
@@ -759,21 +760,31 @@ def _room_cells_mask(ctx: GroundingContext, room: Room) -> BoolArray:
     return room_mask(ctx.analysis.labels, room.label)
 
 
-def _room_goal(step: Step, ref: ElementRef, room: Room, detail: Detail, ctx: GroundingContext, pose: Pose, comp: int,
-               index: int) -> GroundedStep:
-    desc = describe_ref(ref)
-    mask = _room_cells_mask(ctx, room)
-    label = room.label
+def _in_label(ctx: GroundingContext, label: int) -> compose.Where:
+    """The cells of the room or hallway whose label is ``label``, as a predicate on world x, y."""
     labels = ctx.analysis.labels
     grid = ctx.analysis.grid
 
-    def in_room(xs: FloatArray, ys: FloatArray) -> BoolArray:
+    def inside(xs: FloatArray, ys: FloatArray) -> BoolArray:
         rr, cc = grid.world_to_index(xs, ys)
         ok = grid.in_bounds(rr, cc)
         out = np.zeros(xs.shape, dtype=bool)
         out[ok] = labels[rr[ok], cc[ok]] == label
         return out
+    return inside
 
+
+def _in_space_id(ctx: GroundingContext, space_id: str) -> compose.Where | None:
+    """The cells of the room or hallway ``space_id``; None when no space has that id (unexplored)."""
+    room = next((r for r in ctx.analysis.rooms if r.id == space_id), None)
+    return None if room is None else _in_label(ctx, room.label)
+
+
+def _room_goal(step: Step, ref: ElementRef, room: Room, detail: Detail, ctx: GroundingContext, pose: Pose, comp: int,
+               index: int) -> GroundedStep:
+    desc = describe_ref(ref)
+    mask = _room_cells_mask(ctx, room)
+    in_room = _in_label(ctx, room.label)
     messages: tuple[str, ...] = ()
     if detail == Detail.OPPOSITE_SIDE_OF:
         goal = _opposite_side(room, mask, ctx, pose, comp)

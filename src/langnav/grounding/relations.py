@@ -44,6 +44,12 @@ WALL_APART_MAX_M: Final = 0.6
 ACROSS_ALONG_MAX_M: Final = 2.0
 #: The hallway's local direction is taken from its cells within this distance of the reference.
 HALL_AXIS_RADIUS_M: Final = 3.0
+#: Windows taken for the hallway's direction: the first finds the middle of the hallway near the
+#: point, the second is centred there (see ``hall_axis``).
+AXIS_PASSES: Final = 2
+#: Fewer cells than this near the point (a stub of a hallway) say nothing of its direction: all of
+#: the hallway's cells are used.
+AXIS_MIN_CELLS: Final = 10
 #: A point this close to the hallway's centre line is on neither side of it.
 CENTRE_LINE_EPS_M: Final = 0.1
 #: In the middle of a hallway, the robot faces one side when its heading is within ~70 deg of that
@@ -132,9 +138,15 @@ def hall_axis(hall: Room, around: Point) -> tuple[Point, Point]:
     cells = np.asarray(hall.cells_xy, float).reshape(-1, 2)
     if len(cells) < 3:
         raise GroundingError(f"{label_of(hall)} has too little free space to tell its direction.")
-    near = cells[np.hypot(cells[:, 0] - around[0], cells[:, 1] - around[1]) <= HALL_AXIS_RADIUS_M]
-    pts = near if len(near) >= 10 else cells
-    c = pts.mean(axis=0)
+    c = np.asarray(around, float)
+    pts = cells
+    # Twice: a window round a point off the centre line (near a wall, at the hallway's end) holds
+    # more of one side of the hallway than of the other and tilts the axis; the second window is
+    # centred on the middle of the hallway found by the first.
+    for _ in range(AXIS_PASSES):
+        near = cells[np.hypot(cells[:, 0] - c[0], cells[:, 1] - c[1]) <= HALL_AXIS_RADIUS_M]
+        pts = near if len(near) >= AXIS_MIN_CELLS else cells
+        c = pts.mean(axis=0)
     w, v = np.linalg.eigh(np.cov((pts - c).T))
     axis = v[:, int(np.argmax(w))]
     return (float(c[0]), float(c[1])), (float(axis[0]), float(axis[1]))

@@ -33,9 +33,12 @@ def spatial(words: str) -> list[str]:
     return [w for w in words.lower().split() if w.strip(",.;:!?'\"") in SPATIAL_WORDS]
 
 
-def ask_message(steps: Sequence[Step], unread: Sequence[str], questions: Sequence[str]) -> str:
-    """What was understood, what was not, and the question: nothing runs until the user answers."""
-    plan = describe_steps(steps)
+def ask_message(steps: Sequence[Step], unread: Sequence[str], questions: Sequence[str], *,
+                plan: str | None = None) -> str:
+    """What was understood, what was not, and the question: nothing runs until the user answers.
+    ``plan`` is the understood plan in words when the caller has better ones than the steps' (the
+    grounded plan's notes: "to the second door on your left")."""
+    plan = describe_steps(steps) if plan is None else plan
     understood = f"I understood: {plan}." if plan else f"{UNDERSTOOD_NONE}."
     parts = [understood]
     if unread:

@@ -1,0 +1,68 @@
+"""Golden buildings for door judgement (issue 8): an opening is a door only where it is cut in a
+wall between two places (langnav.analysis.door_judge), drawn here with exactly known doors."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from langnav.analysis.door_judge import constriction_depth, evidence, free_widths
+from langnav.analysis.segmentation import Segmentation, segment_spaces
+from langnav.maps.draw import MapBuilder
+from langnav.maps.grid import FREE, OCCUPIED, OccupancyGrid
+
+#: Door positions within two cells plus the half-cell of a door's centre.
+POS_TOL_M = 0.15
+
+
+def label_at(seg: Segmentation, grid: OccupancyGrid, x: float, y: float) -> int:
+    r, c = grid.world_to_index(x, y)
+    return int(seg.labels[int(r), int(c)])
+
+
+def two_halls_and_a_passage() -> OccupancyGrid:
+    """Two 5 m x 5 m halls joined by a wall-bounded passage 0.9 m wide and 2.5 m long (a
+    corridor between two wings), and a 0.9 m door from the west hall to a 3 m x 3 m office
+    through a wall 0.1 m thick."""
+    b = MapBuilder(16.0, 10.0)
+    b.room(0.5, 0.5, 5.5, 5.5).room(8.0, 0.5, 13.0, 5.5)
+    b.wall(5.5, 1.95, 8.0, 1.95).wall(5.5, 2.95, 8.0, 2.95)  # the passage's walls
+    b.free(5.45, 2.0, 8.05, 2.9)
+    b.room(0.5, 5.6, 3.5, 8.6).door_h(2.0, 5.55, 0.9)
+    return b.build("two halls and a passage")
+
+
+def test_the_mouths_of_a_passage_are_no_doors_the_door_in_a_wall_is() -> None:
+    """The passage is as narrow as its mouths for 2.5 m (longer than any wall is thick): its
+    mouths are no doors, the halls stay joined by a way between them; the office door is one."""
+    grid = two_halls_and_a_passage()
+    seg = segment_spaces(grid)
+    west, east, office = (label_at(seg, grid, x, y) for x, y in ((3.0, 2.5), (10.5, 2.5), (2.0, 7.0)))
+    assert len({west, east, office}) == 3 and 0 not in (west, east, office)
+    assert len(seg.doors) == 1
+    door = seg.doors[0]
+    assert math.dist(door.center, (2.0, 5.55)) <= POS_TOL_M
+    assert door.width_m == pytest.approx(0.9, abs=POS_TOL_M)
+    ids = {r.label: r.id for r in seg.rooms}
+    assert set(door.connects) == {ids[west], ids[office]}
+    # The halls are still joined: by the passage, as a way between them (not a door).
+    ways = [set(o.connects) for o in seg.openings]
+    assert {ids[west], ids[east]} in ways or any(
+        {ids[west], x} in ways and {x, ids[east]} in ways for x in ids.values())
+
+
+def test_constriction_depth_is_the_wall_thickness_for_a_door_and_the_length_of_a_passage() -> None:
+    grid = two_halls_and_a_passage()
+    free, occ = grid.cells == FREE, grid.cells == OCCUPIED
+    res = grid.resolution_m
+    # The office door: normal along y (rows), centre on the wall line.
+    r, c = grid.world_to_cell(2.0, 5.55)
+    ev = evidence(free, occ, (float(r), float(c)), (1.0, 0.0), 0.9, res)
+    assert ev.constriction_m <= 0.2
+    # The passage's west mouth: normal along x (cols).
+    r, c = grid.world_to_cell(5.5, 2.45)
+    t, w = free_widths(free, (float(r), float(c)), (0.0, 1.0), res, 1.5)
+    assert constriction_depth(t, w, 0.9) >= 1.4  # followed to the end of the look (1.5 m)
+    assert np.all(w[(t > 0.2) & (t < 1.5)] == pytest.approx(0.9, abs=0.06))
