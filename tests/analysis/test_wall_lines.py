@@ -159,3 +159,33 @@ def test_the_wall_directions_of_a_rotated_building_are_found(angle_deg: float) -
     assert len(dirs) == 2
     assert dirs[0] % 90.0 == pytest.approx(angle_deg % 90.0, abs=0.5)
     assert dirs[1] - dirs[0] == pytest.approx(90.0)
+
+
+def narrow_hallway_with_rooms() -> OccupancyGrid:
+    """A 1.0 m hallway, 11 m long, 0.2 m walls, with two 3 m x 3 m rooms off it: one through a
+    0.7 m doorway (a bathroom's), one through a 0.9 m door."""
+    b = MapBuilder(12.0, 8.0)
+    b.room(0.5, 0.5, 11.5, 1.5, wall_m=0.2)
+    b.room(3.0, 1.7, 6.0, 4.7, wall_m=0.2)
+    b.room(6.2, 1.7, 9.0, 4.7, wall_m=0.2)
+    b.door_h(4.5, 1.6, 0.7, depth_m=0.3)
+    b.door_h(7.5, 1.6, 0.9, depth_m=0.3)
+    return b.build("narrow hallway")
+
+
+def test_a_room_off_a_narrow_hallway_through_a_narrow_doorway_is_a_room_of_its_own() -> None:
+    """The hallway is hardly wider than the doorway, so the flood sees no saddle there; the
+    doorway is a gap in the hallway's wall line, with the room running on past its ends."""
+    grid = narrow_hallway_with_rooms()
+    seg = segment_spaces(grid)
+    hallway = space_at(seg, grid, 1.5, 1.0)
+    assert hallway.kind == ElementKind.HALLWAY
+    rooms = [space_at(seg, grid, 4.5, 3.2), space_at(seg, grid, 7.5, 3.2)]
+    assert [r.kind for r in rooms] == [ElementKind.ROOM] * 2
+    assert len({hallway.id, *(r.id for r in rooms)}) == 3
+    assert len(seg.rooms) == 3
+    assert len(seg.doors) == 2
+    for (x, width), room in zip(((4.5, 0.7), (7.5, 0.9)), rooms, strict=True):
+        d = door_near(seg.doors, x, 1.6)
+        assert set(d.connects) == {hallway.id, room.id}
+        assert d.width_m == pytest.approx(width, abs=POS_TOL_M)

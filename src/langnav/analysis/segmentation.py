@@ -74,6 +74,8 @@ WIDTH_MAX_CELLS: Final = 250_000
 #: A cell is on a space's centre line when its clearance is at least this share of the largest
 #: within half a hallway's width (a wall's bumps add spurs to the medial axis, lower than it).
 CENTRE_LINE_MIN_SHARE: Final = 0.8
+#: A closed wall gap is given back to the spaces found within this many cells of it.
+REOPEN_MARGIN_CELLS: Final = 4
 #: Id used in ``Door.connects`` for unexplored territory.
 UNKNOWN_ID: Final = "unknown"
 #: Openings between two spaces narrower than the robot can pass (``door_min_width_m``) but at
@@ -262,19 +264,22 @@ def _reopen(labels: npt.NDArray[np.int32], closed: npt.NDArray[np.bool_],
             renum = np.zeros(int(labels.max()) + 1, dtype=np.int32)
             renum[keep] = np.arange(keep.size, dtype=np.int32)  # keep[0] is 0: no space stays 0
             labels = renum[target][labels].astype(np.int32)
-    rows = np.flatnonzero(todo.any(axis=1))
-    cols = np.flatnonzero(todo.any(axis=0))
-    win = (slice(max(rows[0] - 1, 0), rows[-1] + 2), slice(max(cols[0] - 1, 0), cols[-1] + 2))
+    # Each cell goes to the nearest space (the gap's two sides meet in its middle), looked for
+    # in a window around each closure.
     out = labels.copy()
-    lab = out[win]
-    left = todo[win]
-    while left.any():
-        grown = maximum3(lab)
-        take = left & (grown > 0)
-        if not take.any():
-            break  # a closure with no space beside it (its spaces were too small to keep)
-        lab[take] = grown[take]
-        left &= ~take
+    pieces, _ = ndi.label(todo, structure=EIGHT)
+    h, w = labels.shape
+    for sl in ndi.find_objects(pieces):
+        if sl is None:
+            continue
+        win = (slice(max(sl[0].start - REOPEN_MARGIN_CELLS, 0), min(sl[0].stop + REOPEN_MARGIN_CELLS, h)),
+               slice(max(sl[1].start - REOPEN_MARGIN_CELLS, 0), min(sl[1].stop + REOPEN_MARGIN_CELLS, w)))
+        lab = labels[win]
+        if not (lab > 0).any():
+            continue  # a closure with no space beside it (its spaces were too small to keep)
+        _, (ri, ci) = ndi.distance_transform_edt(lab == 0, return_indices=True)
+        sub = todo[win]
+        out[win][sub] = lab[ri[sub], ci[sub]]
     return out
 
 
