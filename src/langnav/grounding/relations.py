@@ -6,7 +6,8 @@
   fit and no other word picks one, the robot asks which (it does not guess).
 * **across the hall** (``Relation.ACROSS``): a space whose door opens onto the same hallway on the
   other side of it, straight across (along the hallway within ``ACROSS_ALONG_MAX_M``) from the
-  robot's door (the robot in a room) or from the robot (the robot in the hallway).
+  door of the room named ("the room across from the first room on your left", ``ref.near``), of
+  the robot's room (the robot in a room) or from the robot (the robot in the hallway).
 """
 
 from __future__ import annotations
@@ -26,6 +27,7 @@ from langnav.grounding.selection import (
     describe_ref,
     distance_to,
     elements_of_kind,
+    floor_area_m2,
     label_of,
     landmark_ref,
     matches_side,
@@ -115,7 +117,8 @@ def select_related_spaces(ref: ElementRef, analysis: MapAnalysis, pose: Pose, co
                              f"Say e.g. 'go to {label_of(options[0])}'.")
     sup = ref.superlative
     if sup in (Superlative.BIGGEST, Superlative.SMALLEST, Superlative.WIDEST, Superlative.NARROWEST):
-        ordered = sorted(pool, key=size_of, reverse=sup in (Superlative.BIGGEST, Superlative.WIDEST))
+        ordered = sorted(pool, key=lambda r: floor_area_m2(r, analysis) if sup in (Superlative.BIGGEST,
+                         Superlative.SMALLEST) else size_of(r), reverse=sup in (Superlative.BIGGEST, Superlative.WIDEST))
     else:
         ordered = sorted(pool, key=lambda r: distance_to(r, pose.xy), reverse=sup == Superlative.FARTHEST)
     k = (ref.ordinal or 1) - 1
@@ -155,25 +158,32 @@ def hall_axis(hall: Room, around: Point) -> tuple[Point, Point]:
 def _across(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room:
     here = space_of(analysis, pose.xy)
     halls = [r for r in analysis.rooms if r.kind == ElementKind.HALLWAY]
+    # the room across from which to look: "across from the first room on your left", else the robot's
+    base = here
+    if ref.near is not None and ref.near.kind == Kind.ROOM and not ref.near.in_current_room:
+        mark = select(landmark_ref(ref.near), analysis, pose)
+        if not isinstance(mark, Room):
+            raise GroundingError(f"I cannot tell which room is across from {describe_ref(landmark_ref(ref.near))}.")
+        base = mark
     if ref.near is not None and ref.near.kind == Kind.HALLWAY and not ref.near.in_current_room:
         hall_e = select(landmark_ref(ref.near), analysis, pose)
         assert isinstance(hall_e, Room)
         hall = hall_e
-    elif here is not None and here.kind == ElementKind.HALLWAY:
+    elif base is here and here is not None and here.kind == ElementKind.HALLWAY:
         hall = here
     else:
-        joined = [h for h in halls if here is not None and spaces_joined(h, here, analysis)]
+        joined = [h for h in halls if base is not None and spaces_joined(h, base, analysis)]
         if not joined:
-            raise GroundingError("I see no hallway next to the room I am in, so I cannot tell which room is "
-                                 "across it.")
+            what = "the room I am in" if base is here else label_of(base) if base is not None else "me"
+            raise GroundingError(f"I see no hallway next to {what}, so I cannot tell which room is across it.")
         hall = min(joined, key=lambda h: nearest_point(pose.xy, h.cells_xy)[0])
-    # the point across from which to look: the robot in the hallway, else its room's door onto it
-    if here is hall or here is None:
+    # the point across from which to look: the robot in the hallway, else the room's door onto it
+    if base is hall or base is None:
         origin = pose.xy
     else:
-        doors = [d for d in analysis.doors if {hall.id, here.id} <= set(d.connects)]
+        doors = [d for d in analysis.doors if {hall.id, base.id} <= set(d.connects)]
         if not doors:
-            raise GroundingError(f"I see no door from this room onto {label_of(hall)}.")
+            raise GroundingError(f"I see no door from {label_of(base)} onto {label_of(hall)}.")
         origin = min(doors, key=lambda d: math.dist(d.center, pose.xy)).center
     centre, axis = hall_axis(hall, origin)
     normal = (-axis[1], axis[0])
@@ -202,7 +212,7 @@ def _across(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room:
         if hall.id not in d.connects:
             continue
         other_id = next((c for c in d.connects if c != hall.id), None)
-        if other_id is None or (here is not None and other_id == here.id):
+        if other_id is None or (base is not None and other_id == base.id):
             continue
         other = next((r for r in analysis.rooms if r.id == other_id), None)
         if other is None or (ref.kind == Kind.ROOM and other.kind != ElementKind.ROOM):

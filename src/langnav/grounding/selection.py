@@ -4,11 +4,16 @@ The meanings follow ``../shared/bench/README.md``:
 
 * left / right: the element's reference point has a positive / negative lateral offset;
   ahead: within +-60 deg of the heading; behind: beyond +-120 deg;
-* nearest / farthest and first, second ...: straight-line distance from the robot to the element's
-  reference point (door: centre; room: nearest cell; obstacle: nearest cell; unexplored area: nearest
-  frontier cell), among the elements the other words select; "the X on your left" = the nearest;
-* biggest / smallest: by area; "this room": the room holding the robot; a corner with no room named
-  is a corner of the robot's room; "the left corner": of the room's corners ahead, the farthest left.
+* nearest: straight-line distance from the robot to the element's reference point (door: centre;
+  room: nearest cell; obstacle: nearest cell; unexplored area: nearest frontier cell), among the
+  elements the other words select; "the X on your left" = the nearest;
+* first, second ..., last / farthest: the order the robot meets them walking there (the shortest
+  path through free space, ``walking_order``): the straight-line order in an open room or a straight
+  hallway, and the order along the way round the bend of an L-shaped corridor; "the last" is the
+  last of those met walking on, not turning back (``met_turning_back``), when there are any;
+* biggest / smallest: by area (a room's counting its unscanned part, ``floor_area_m2``); "this room":
+  the room holding the robot; a corner with no room named is a corner of the robot's room; "the
+  left corner": of the room's corners ahead, the farthest left.
 
 Doors and passages of the space the robot is in are counted before the others: "the third door on
 your left" in a hallway means the hallway's doors, not one seen through a wall.
@@ -18,7 +23,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Final
 
@@ -41,10 +46,12 @@ from langnav.analysis.elements import (
 from langnav.grounding.errors import GroundingError
 from langnav.grounding.geometry import (
     AHEAD_HALF_ANGLE_DEG,
+    BEHIND_HALF_ANGLE_DEG,
     Point,
     Pose,
     bearing_rad,
     closest_on_segment,
+    free_space_for,
     is_ahead,
     is_behind,
     is_left,
@@ -53,8 +60,10 @@ from langnav.grounding.geometry import (
     nearest_point,
     to_robot_frame,
 )
+from langnav.grounding.walking import walk_from
 from langnav.language.intent import Element as Kind
 from langnav.language.intent import ElementRef, Landmark, Place, Relation, Side, Superlative
+from langnav.maps.grid import UNKNOWN
 
 #: A robot standing in a doorway belongs to the nearest space within this distance.
 SPACE_SNAP_M: Final = 0.6
@@ -142,6 +151,8 @@ def describe_ref(ref: ElementRef) -> str:
         noun = KIND_NOUN[ref.kind][0]
         other = "this one" if ref.near is None or ref.near.in_current_room else describe_ref(landmark_ref(ref.near))
         if ref.relation == Relation.ACROSS:
+            if ref.near is not None and ref.near.kind == Kind.ROOM and not ref.near.in_current_room:
+                return f"the {noun} across from {other}"
             hall = "the hallway" if ref.near is None or ref.near.kind != Kind.HALLWAY else other
             return f"the {noun} across {hall}"
         words = ["the"]
@@ -278,6 +289,30 @@ def distance_to(e: Element, xy: Point) -> float:
     return math.dist(xy, reference_point(e))
 
 
+def walking_order(analysis: MapAnalysis, pose: Pose) -> Callable[[Element], float]:
+    """How far the robot walks to reach each element (its reference point; a room's nearest cell, an
+    area's frontier, an obstacle's cells): the order in which one meets them along the way. "The
+    second door on your left", "the last room on the right" count in this order: in an open room or
+    a straight hallway it is the straight-line order, and around the bend of an L-shaped corridor or
+    behind a wall it is the order a person walking there meets them. Straight-line distance when the
+    robot stands on no passable cell (nothing is reachable: the order is all there is to go by)."""
+    walk = walk_from(free_space_for(analysis.grid, analysis.params), pose.xy)
+    if walk is None:
+        return lambda e: distance_to(e, pose.xy)
+    return lambda e: walk.to(_cells(e))
+
+
+def met_turning_back(analysis: MapAnalysis, pose: Pose, pool: Sequence[Element]) -> set[int]:
+    """The ``id``s of the elements of ``pool`` whose walk sets off behind the robot (beyond +-120 deg
+    of its heading, the contract's "behind"): "the last room on your left" is the last one met
+    walking on, not a room back the way the robot came that happens to be farther."""
+    walk = walk_from(free_space_for(analysis.grid, analysis.params), pose.xy)
+    if walk is None:
+        return set()
+    limit = math.radians(BEHIND_HALF_ANGLE_DEG)
+    return {id(e) for e in pool if abs(walk.sets_off_bearing(_cells(e), pose)) > limit}
+
+
 def side_point(e: Element, pose: Pose) -> Point:
     """The point whose side of the robot decides 'on your left' (the reference point)."""
     if isinstance(e, UnexploredArea) and len(e.frontier):
@@ -285,6 +320,52 @@ def side_point(e: Element, pose: Pose) -> Point:
     if isinstance(e, Wall):
         return closest_on_segment(pose.xy, e.start, e.end)
     return reference_point(e)
+
+
+def unscanned_part_m2(room: Room, analysis: MapAnalysis) -> float:
+    """The floor of a room the map has not seen yet: the unexplored areas inside the building that
+    open onto this room only, along more than a doorway's width (``params.door_max_width_m``). A
+    room half scanned shows its unknown half across the whole room; an unscanned room behind a
+    door shows it through the doorway only, and is a room of its own, not part of this one."""
+    total = 0.0
+    for u in analysis.unexplored:
+        if not u.interior or len(u.frontier) == 0:
+            continue
+        f = np.asarray(u.frontier, dtype=float).reshape(-1, 2)
+        rr, cc = analysis.grid.world_to_index(f[:, 0], f[:, 1])
+        ok = analysis.grid.in_bounds(rr, cc)
+        labels = analysis.labels[rr[ok], cc[ok]]
+        labels = labels[labels > 0]
+        if labels.size == 0 or bool(np.any(labels != room.label)):
+            continue
+        span = math.hypot(float(np.ptp(f[:, 0])), float(np.ptp(f[:, 1])))
+        if span > analysis.params.door_max_width_m and not _counted_in(u, room, analysis):
+            total += u.area_m2
+    return total
+
+
+def _counted_in(u: UnexploredArea, room: Room, analysis: MapAnalysis) -> bool:
+    """The analysis already gave the area's unknown cells to the room (its ``area_m2`` counts them):
+    most unknown cells next to the area's frontier carry the room's label."""
+    grid = analysis.grid
+    f = np.asarray(u.frontier, dtype=float).reshape(-1, 2)
+    rr, cc = grid.world_to_index(f[:, 0], f[:, 1])
+    near_r = (rr[:, None] + np.array([-1, -1, -1, 0, 0, 1, 1, 1])[None, :]).ravel()
+    near_c = (cc[:, None] + np.array([-1, 0, 1, -1, 1, -1, 0, 1])[None, :]).ravel()
+    ok = grid.in_bounds(near_r, near_c)
+    near_r, near_c = near_r[ok], near_c[ok]
+    unknown = grid.cells[near_r, near_c] == UNKNOWN
+    if not np.any(unknown):
+        return False
+    return bool(np.mean(analysis.labels[near_r[unknown], near_c[unknown]] == room.label) > 0.5)
+
+
+def floor_area_m2(e: Element, analysis: MapAnalysis) -> float:
+    """"The biggest room": a room's floor area counting its unexplored cells (README), including the
+    part not scanned yet (``unscanned_part_m2``); other elements by ``size_of``."""
+    if isinstance(e, Room):
+        return e.area_m2 + unscanned_part_m2(e, analysis)
+    return size_of(e)
 
 
 def size_of(e: Element) -> float:
@@ -430,13 +511,18 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
 
     sup = ref.superlative
     if sup in (Superlative.BIGGEST, Superlative.SMALLEST):
-        ordered = sorted(pool, key=size_of, reverse=sup == Superlative.BIGGEST)
+        ordered = sorted(pool, key=lambda e: floor_area_m2(e, analysis), reverse=sup == Superlative.BIGGEST)
     elif sup in (Superlative.WIDEST, Superlative.NARROWEST):
         ordered = sorted(pool, key=width_of, reverse=sup == Superlative.WIDEST)
-    elif sup == Superlative.FARTHEST:
-        ordered = sorted(pool, key=lambda e: (local_first(e), -distance_to(e, pose.xy)))
+    elif sup == Superlative.FARTHEST:  # "the last room on the right": the last one met walking on
+        walk = walking_order(analysis, pose)
+        back = met_turning_back(analysis, pose, pool)
+        ordered = sorted(pool, key=lambda e: (local_first(e), id(e) in back, -walk(e)))
     elif by_landmark is not None and sup is None and ref.ordinal is None:
         ordered = sorted(pool, key=lambda e: by_landmark[id(e)])  # "the door next to the box": nearest to it
+    elif ref.ordinal is not None and sup is None:  # "the second door on your left": counted walking
+        walk = walking_order(analysis, pose)
+        ordered = sorted(pool, key=lambda e: (local_first(e), walk(e)))
     else:
         ordered = sorted(pool, key=lambda e: (local_first(e), distance_to(e, pose.xy)))
 

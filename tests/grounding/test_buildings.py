@@ -1,0 +1,211 @@
+"""Grounding on buildings other than the bench's, analysed by the real analysis and read by the
+offline translator end to end: an L-shaped corridor with rooms on both sides, the same floor turned
+a quarter turn (north-south becomes east-west: no rule may lean on the map's axes) and a floor
+with one room half unscanned. Each test asserts the region the goal lies in.
+
+The L (``build_l``), metres; hallway = leg A (y 5-7, x 1-12) + leg B (x 10-12, y 7-17):
+
+    y=17 +   unknown   +---------+--+---------+
+         |             | room 5  |  | room 3  |
+    y=11 +-------------+   D(10,14) D(12,13)  |
+         |   room 2 (x 1-10, y 7-11) |B |     |
+    y=7  +----D(4,7)-------------+  |  +------+ y=9
+         |          leg A           D(12,6)   |
+    y=5  +--D(3,5)----D(7,5)---D(10.5,5)------+ room 4 (x 12-16, y 1-9)
+         | room 6  | room 7  | room 8  |      |
+    y=1  +---------+---------+---------+------+
+        x=1       x=5       x=9       x=12   x=16
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+import pytest
+
+from langnav.analysis.elements import ElementKind, MapAnalysis, Room
+from langnav.analysis.params import DEFAULT_PARAMS
+from langnav.analysis.pipeline import analyze
+from langnav.grounding.selection import unscanned_part_m2
+from langnav.language.translator import get_translator
+from langnav.maps.draw import MapBuilder
+from langnav.maps.grid import OccupancyGrid
+from langnav.pipeline import Planner, PlanResult
+from langnav.plan.commands import NavigateThroughPoses
+
+Point = tuple[float, float]
+#: A frame change of the floor: world point of the drawn floor -> world point of the map.
+Frame = Callable[[Point], Point]
+
+
+def build_l_grid() -> OccupancyGrid:
+    b = MapBuilder(18.0, 18.0)
+    b.room(1.0, 1.0, 16.0, 17.0)
+    b.unknown(1.0, 11.0, 6.0, 17.0)  # the north-west block is not part of the building
+    b.wall(1.0, 11.0, 6.0, 11.0, 0.3)
+    b.wall(6.0, 11.0, 6.0, 17.0, 0.3)
+    b.wall(1.0, 5.0, 12.0, 5.0)
+    b.wall(1.0, 7.0, 10.0, 7.0)
+    b.wall(10.0, 7.0, 10.0, 17.0)
+    b.wall(12.0, 1.0, 12.0, 17.0)
+    b.wall(5.0, 1.0, 5.0, 5.0)
+    b.wall(9.0, 1.0, 9.0, 5.0)
+    b.wall(6.0, 11.0, 10.0, 11.0)
+    b.wall(12.0, 9.0, 16.0, 9.0)
+    for x in (3.0, 7.0, 10.5):
+        b.door_h(x, 5.0, 0.9)
+    b.door_h(4.0, 7.0, 0.9)
+    b.door_v(10.0, 14.0, 0.9)
+    b.door_v(12.0, 6.0, 0.9)
+    b.door_v(12.0, 13.0, 0.9)
+    return b.build("l_corridor")
+
+
+def quarter_turn(grid: OccupancyGrid) -> tuple[OccupancyGrid, Frame]:
+    """The floor turned a quarter turn clockwise, as a map of its own (exact: cells map to cells;
+    headings turn by -90 degrees), and where a point of the drawn floor is on it."""
+    width_m = grid.cells.shape[1] * grid.resolution_m
+    cells = np.rot90(grid.cells).copy()  # row 0 is the bottom: (x, y) -> (y, width - x)
+    turned = OccupancyGrid(cells, grid.resolution_m, 0.0, 0.0, 0.0, f"{grid.source}_turned")
+    return turned, lambda p: (p[1], width_m - p[0])
+
+
+def identity(p: Point) -> Point:
+    return p
+
+
+FLOORS: dict[str, tuple[MapAnalysis, Frame]] = {}
+
+
+def floor(name: str) -> tuple[MapAnalysis, Frame]:
+    if name not in FLOORS:
+        grid = build_l_grid()
+        frame: Frame = identity
+        if name == "turned":
+            grid, frame = quarter_turn(grid)
+        FLOORS[name] = (analyze(grid, DEFAULT_PARAMS), frame)
+    return FLOORS[name]
+
+
+def pose_in(frame: Frame, x: float, y: float, yaw_deg: float, turn_deg: float) -> tuple[float, float, float]:
+    fx, fy = frame((x, y))
+    return (fx, fy, (yaw_deg + turn_deg) % 360.0)
+
+
+def plan(prompt: str, a: MapAnalysis, pose: tuple[float, float, float]) -> PlanResult:
+    return Planner(get_translator("offline")).plan(prompt, a, pose)
+
+
+def last_goal(r: PlanResult) -> Point:
+    assert r.ok, r.clarification
+    navs = [c for c in r.commands if isinstance(c, NavigateThroughPoses)]
+    assert navs, r.commands
+    return (navs[-1].poses[-1][0], navs[-1].poses[-1][1])
+
+
+def room_holding(a: MapAnalysis, frame: Frame, x: float, y: float) -> Room:
+    r = a.room_at(*frame((x, y)))
+    assert r is not None, f"the analysis has no space at ({x}, {y})"
+    return r
+
+
+CASES = [("drawn", 0.0), ("turned", -90.0)]
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+def test_the_l_floor_is_what_the_tests_expect(name: str, turn: float) -> None:
+    a, frame = floor(name)
+    assert sorted(r.kind.value for r in a.rooms) == ["hallway"] + ["room"] * 7
+    assert len(a.doors) == 7
+    hall = room_holding(a, frame, 6.0, 6.0)
+    assert hall.kind == ElementKind.HALLWAY and room_holding(a, frame, 11.0, 15.0) is hall
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+def test_the_last_room_on_your_left_is_the_last_along_the_way_ahead(name: str, turn: float) -> None:
+    # in leg B facing up it: the rooms south of leg A are also on the left (behind, and farther by
+    # straight line); the last one ahead is room 5, at the end of leg B
+    a, frame = floor(name)
+    r = plan("go into the last room on your left", a, pose_in(frame, 11.0, 8.0, 90.0, turn))
+    assert a.room_at(*last_goal(r)) is room_holding(a, frame, 8.0, 14.0)
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+def test_the_first_room_on_your_left_is_the_first_met_walking(name: str, turn: float) -> None:
+    # room 2's wall runs beside the robot (straight-line nearest), but its door is far back in leg A;
+    # walking on, room 5's door is the first on the left
+    a, frame = floor(name)
+    r = plan("go into the first room on your left", a, pose_in(frame, 11.0, 10.0, 90.0, turn))
+    assert a.room_at(*last_goal(r)) is room_holding(a, frame, 8.0, 14.0)
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+def test_the_nearest_room_on_your_left_is_by_straight_line(name: str, turn: float) -> None:
+    # the contract's "nearest": straight-line distance to the room's nearest cell
+    a, frame = floor(name)
+    r = plan("go into the nearest room on your left", a, pose_in(frame, 11.0, 10.0, 90.0, turn))
+    assert a.room_at(*last_goal(r)) is room_holding(a, frame, 5.0, 9.0)
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+def test_the_last_door_on_your_right_down_leg_a(name: str, turn: float) -> None:
+    a, frame = floor(name)
+    r = plan("go to the last door on your right", a, pose_in(frame, 2.0, 6.0, 0.0, turn))
+    assert math.dist(last_goal(r), frame((10.5, 5.0))) <= 0.75
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+def test_a_metre_past_a_door_stays_in_the_hallway(name: str, turn: float) -> None:
+    # 1 m past the door of room 8 (x 10.5) runs down leg A to the bend, in the hallway's middle
+    a, frame = floor(name)
+    start = (3.0, 6.0)
+    r = plan("go 1 metre past the third door on your right", a, pose_in(frame, *start, 0.0, turn))
+    goal = last_goal(r)
+    hall = room_holding(a, frame, 6.0, 6.0)
+    assert a.room_at(*goal) is hall
+    door = frame((10.5, 5.0))
+    along = math.dist(frame(start), goal) if turn else goal[0] - start[0]
+    assert along <= (10.5 - start[0]) + 1.0 + 0.06  # never farther than asked
+    assert math.dist(goal, door) >= 0.9
+
+
+# ------------------------------------------------------------------------------ a room half scanned
+def build_half_scanned() -> MapAnalysis:
+    """A hallway (y 10-12) with room A (x 1-8, y 6-10) and room B (x 8-17, y 1-10) south of it; B's
+    south part (y 1-7.5) is not scanned yet, and behind A's south door is room G (y 1-6), never
+    entered: unknown seen through a doorway only."""
+    b = MapBuilder(18.0, 13.0)
+    b.room(1.0, 1.0, 17.0, 12.0)
+    b.wall(1.0, 10.0, 17.0, 10.0)
+    b.wall(8.0, 1.0, 8.0, 10.0)
+    b.wall(1.0, 6.0, 8.0, 6.0)
+    b.door_h(4.0, 10.0, 0.9)
+    b.door_h(12.0, 10.0, 0.9)
+    b.door_h(4.0, 6.0, 0.9)
+    b.unknown(1.0, 1.0, 7.9, 5.9)
+    b.unknown(8.1, 1.0, 17.0, 7.5)
+    return analyze(b.build("half_scanned"), DEFAULT_PARAMS)
+
+
+@pytest.fixture(scope="module")
+def half() -> MapAnalysis:
+    return build_half_scanned()
+
+
+def test_the_biggest_room_counts_its_unscanned_part(half: MapAnalysis) -> None:
+    a_room, b_room = half.room_at(4.0, 8.0), half.room_at(12.0, 9.0)
+    assert a_room is not None and b_room is not None
+    assert b_room.area_m2 < a_room.area_m2  # scanned so far, B is the smaller
+    x, y = last_goal(plan("go into the biggest room", half, (2.0, 11.0, 0.0)))
+    assert half.room_at(x, y) is b_room
+    x, y = last_goal(plan("go into the smallest room", half, (2.0, 11.0, 0.0)))
+    assert half.room_at(x, y) is a_room
+
+
+def test_a_room_seen_through_a_doorway_is_not_part_of_the_room(half: MapAnalysis) -> None:
+    a_room, b_room = half.room_at(4.0, 8.0), half.room_at(12.0, 9.0)
+    assert a_room is not None and b_room is not None
+    assert unscanned_part_m2(a_room, half) == 0.0  # room G, behind A's door
+    assert unscanned_part_m2(b_room, half) == pytest.approx(8.9 * 6.5, rel=0.05)
