@@ -25,12 +25,13 @@ SHELF_X = (2.0, 6.0)
 
 def passages_of(grid: OccupancyGrid):
     """The passages of ``grid``, its free components as spaces, no doors; unknown noise specks
-    do not block (as in the pipeline)."""
+    do not block and unexplored areas are no sides (as in the pipeline)."""
     labels, n = labels_for_free_components(grid)
     layers = GridLayers(grid)
-    specks = find_unexplored(grid, P, layers).specks
+    unx = find_unexplored(grid, P, layers)
     return find_passages(grid, P, labels, {k: f"space_{k}" for k in range(1, n + 1)}, [],
-                         layers.occupied | (layers.unknown & ~specks), layers=layers)
+                         layers.occupied | (layers.unknown & ~unx.specks), layers=layers,
+                         unexplored=unx.area_labels > 0)
 
 
 def warehouse(n_shelves: int = 4, unknown_racks: bool = False) -> OccupancyGrid:
@@ -244,3 +245,54 @@ def test_a_door_at_a_mouth_leaves_the_passage_one_in_its_middle_is_it(door_x: fl
     if is_passage:
         assert found[0].center == pytest.approx((4.0, 1.5), abs=0.06)
         assert found[0].width_m == pytest.approx(0.8, abs=0.051)
+
+
+def test_scan_specks_in_an_aisle_neither_cut_nor_narrow_it() -> None:
+    # Lidar dots (single occupied cells) every 0.7 m along each aisle, off its middle line: the
+    # aisles stay whole, 0.8 m wide and as long as the shelves.
+    grid = warehouse(3)
+    cells = grid.cells.copy()
+    for _x, y in aisle_centres(3):
+        for k, xs in enumerate(np.arange(SHELF_X[0] + 0.3, SHELF_X[1] - 0.2, 0.7)):
+            r, c = (int(v) for v in grid.world_to_index(float(xs), y + (0.15 if k % 2 else -0.2)))
+            cells[r, c] = OCCUPIED
+    found = passages_of(OccupancyGrid(cells, grid.resolution_m, grid.origin_x_m, grid.origin_y_m, 0.0, "dotted"))
+    assert len(found) == 2
+    for p, (x, y) in zip(sorted(found, key=lambda p: p.center[1]), aisle_centres(3), strict=True):
+        assert p.center == pytest.approx((x, y), abs=0.06)
+        assert p.width_m == pytest.approx(AISLE_M, abs=0.051)
+        assert p.length_m == pytest.approx(SHELF_X[1] - SHELF_X[0], abs=0.15)
+
+
+def test_a_pinch_at_one_end_does_not_shorten_the_passage() -> None:
+    # Two rooms joined by a corridor 0.8 m wide and 2.5 m long (x 3 to 5.5, y 1.1 to 1.9), a
+    # door leaf or a cabinet narrowing its west end to 0.55 m over 0.3 m: the passage is still
+    # the whole tight stretch, its width the typical one (not the pinch's).
+    b = MapBuilder(11.0, 5.0, origin=(-1.0, -1.0))
+    b.rect(-0.15, -0.15, 8.65, 3.15, OCCUPIED)
+    b.free(0.0, 0.0, 3.0, 3.0).free(5.5, 0.0, 8.5, 3.0).free(2.95, 1.1, 5.55, 1.9)
+    b.rect(3.0, 1.65, 3.3, 1.9, OCCUPIED)
+    (p,) = passages_of(b.build(source="pinched_corridor"))
+    assert p.center == pytest.approx((4.25, 1.5), abs=0.1)
+    assert p.length_m == pytest.approx(2.5, abs=0.15)
+    assert p.width_m == pytest.approx(0.8, abs=0.051)
+
+
+def test_strip_between_a_shelf_and_an_unexplored_area_is_no_passage() -> None:
+    # A 9 x 7 m hall; a 4 x 0.4 m shelf and, 0.8 m north of it, a 4 x 3.3 m part of the hall
+    # the scan never reached (an unexplored area, open to the hall on three sides). Nothing is
+    # known to stand along the strip's north side: no passage. Control: the same strip with a
+    # second shelf in place of the unscanned part is an aisle.
+    def hall(unscanned: bool) -> OccupancyGrid:
+        b = MapBuilder(11.0, 9.0, origin=(-1.0, -1.0))
+        b.room(0.0, 0.0, 9.0, 7.0)
+        b.box(2.0, 1.5, 6.0, 1.9)
+        if unscanned:
+            b.unknown(2.0, 2.7, 6.0, 6.0)
+        else:
+            b.box(2.0, 2.7, 6.0, 3.1)
+        return b.build(source=f"hall_unscanned_{unscanned}")
+
+    assert passages_of(hall(unscanned=True)) == ()
+    (p,) = passages_of(hall(unscanned=False))
+    assert p.center == pytest.approx((4.0, 2.3), abs=0.05)

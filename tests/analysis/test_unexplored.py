@@ -3,6 +3,7 @@ the building it can reach, not the unknown insides of furniture, shelves or wall
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from langnav.analysis.params import DEFAULT_PARAMS
@@ -86,3 +87,32 @@ def test_outside_world_reached_only_through_a_laser_hole_is_not_an_area() -> Non
     b.door_v(4.075, 1.5, 0.9)
     (u,) = find_unexplored(b.build(source="door"), P).areas
     assert not u.interior
+
+
+def test_long_thin_unknown_inside_a_rack_is_no_unexplored_area() -> None:
+    # A 9 x 7 m hall with a 5 x 0.5 m rack the laser never saw into (2.5 m2 of unknown, open to
+    # the hall all along): no room for the robot to drive in and turn.
+    b = MapBuilder(11.0, 9.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 9.0, 7.0)
+    b.unknown(2.0, 3.0, 7.0, 3.5)
+    assert find_unexplored(b.build(source="rack"), P).areas == ()
+    # The same hall with a 5 x 1 m unscanned bay instead: one area.
+    b.unknown(2.0, 3.0, 7.0, 4.0)
+    (u,) = find_unexplored(b.build(source="bay"), P).areas
+    assert u.area_m2 == pytest.approx(5.0, abs=0.05)
+
+
+def test_room_seen_through_a_fan_of_laser_rays_is_an_unexplored_area() -> None:
+    # A 6 x 4 m room; north of it, through a 1 m doorway, an unscanned 6 x 2 m closet crossed by
+    # free laser rays (two cells wide, 0.3 m apart): every unknown stripe between two rays is
+    # thin, but the robot fits in none of the rays, and the closet is a place to look at.
+    grid = closet_behind("door")
+    cells = grid.cells.copy()
+    for x in np.arange(0.2, 5.8, 0.3):
+        r0, c = (int(v) for v in grid.world_to_index(float(x), 4.6))
+        r1, _ = (int(v) for v in grid.world_to_index(float(x), 5.9))
+        cells[r0:r1, c:c + 2] = FREE
+    fan = OccupancyGrid(cells, grid.resolution_m, grid.origin_x_m, grid.origin_y_m, 0.0, "fan")
+    areas = find_unexplored(fan, P).areas
+    assert len(areas) >= 1 and all(a.interior for a in areas)
+    assert sum(a.area_m2 for a in areas) > 5.0

@@ -121,6 +121,12 @@ class AnalysisParams:
     #: shelf or a cabinet whose inside is unknown, are narrower. (The outside world: this much
     #: frontier within reach in all.)
     unexplored_min_frontier_m: float = 0.4
+    #: ... and when it is wide enough for the robot to drive in and turn: it holds a disc this
+    #: wide (m; two robot widths, the side of unexplored_worth_area_m2's square), counting the
+    #: free laser rays across it that the robot does not fit in as part of it (a room seen through
+    #: a fan of rays is one wide region). The unknown inside a shelf, a rack or a cabinet, and the
+    #: slivers between a wall and the rays along it, are thinner however long they are.
+    unexplored_min_width_m: float = 0.7
     #: Straight wall segments shorter than this are not reported.
     wall_min_length_m: float = 0.5
     #: Maximum deviation of wall points from their fitted segment.

@@ -44,8 +44,11 @@ from langnav.maps.grid import OccupancyGrid
 #: A passage is at least this many times longer than wide: a corridor, not a gap beside an
 #: object (a 0.9 m gap along a 0.7 m table is where you walk round it, not a passage).
 PASSAGE_MIN_ELONGATION: Final = 2.0
-#: The core of a chain: cells no wider than its narrowest width (20th percentile, robust to one
-#: noisy cell) plus this, i.e. the stretch with near-parallel sides.
+#: The core of a chain: cells no wider than its typical width (this quantile of its widths along
+#: it) plus CORE_WIDTH_TOL_M, i.e. the stretch with near-parallel sides. Typical, not the
+#: narrowest: a passage is the stretch over which the way stays tight, and one pinch point
+#: (a door leaf, a bump of clutter) does not shorten it to the pinch.
+CORE_REF_QUANTILE: Final = 0.5
 CORE_WIDTH_TOL_M: Final = 0.15
 #: A passage has sides: at this share of its core, blocking cells lie close on both sides (a
 #: strip along a wall whose other side is a row of separate objects is not a passage).
@@ -92,15 +95,26 @@ def clearance_m(grid: OccupancyGrid, blocking: BoolArray) -> npt.NDArray[np.floa
 def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArray[np.int32],
                   room_ids: Mapping[int, str], doors: Sequence[Door], blocking: BoolArray,
                   dist_m: npt.NDArray[np.float64] | None = None,
-                  layers: GridLayers | None = None) -> tuple[NarrowPassage, ...]:
+                  layers: GridLayers | None = None,
+                  unexplored: BoolArray | None = None) -> tuple[NarrowPassage, ...]:
     """Narrow passages of the navigable space ``~blocking`` (see the module docstring).
 
     ``dist_m`` is :func:`clearance_m` of ``blocking`` when the caller already has it; ``layers``
-    the grid's shared masks (built when not given).
+    the grid's shared masks (built when not given); ``unexplored`` the unknown cells of the
+    unexplored areas worth a look (:mod:`langnav.analysis.unexplored`): like the world outside the
+    map, unscanned floor that is no side of a passage (nothing is known to stand there).
     """
     res = grid.resolution_m
     layers = layers or GridLayers(grid)
-    occupied, exterior = layers.occupied, layers.exterior
+    exterior = layers.exterior if unexplored is None else layers.exterior | unexplored
+    # Scan-noise specks (isolated occupied clusters no bigger than the segmentation's specks,
+    # which it reads as floor) neither narrow a passage nor make one of its sides: a person
+    # reading the map looks past the dots a lidar leaves in an aisle.
+    occ = layers.occupied_components
+    speck_max = params.seg_speck_max_area_m2 / grid.cell_area_m2
+    specks = (occ.sizes <= speck_max)[occ.labels] & layers.occupied
+    occupied = layers.occupied & ~specks
+    blocking = blocking & ~specks
     open_ = ~blocking & ~occupied
     rows_any = np.flatnonzero(open_.any(axis=1))
     cols_any = np.flatnonzero(open_.any(axis=0))
@@ -135,12 +149,12 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     if n == 0:
         return ()
     w = width_of[d2.ravel()[idx]]
-    # Per chain: the 20th-percentile width (sort by (chain, width), pick the rank).
+    # Per chain: its typical width (sort by (chain, width), pick the rank).
     order = np.lexsort((w, cid))
     cid_s, w_s = cid[order], w[order]
     starts = np.searchsorted(cid_s, np.arange(1, n + 1))
     counts = np.bincount(cid, minlength=n + 1)[1:]
-    ref = w_s[starts + (counts * 0.2).astype(int)]
+    ref = w_s[starts + (counts * CORE_REF_QUANTILE).astype(int)]
     core_idx = idx[w <= ref[cid - 1] + CORE_WIDTH_TOL_M]
     core_id, m = label8_cells(core_idx, skel.shape)
     passages: list[NarrowPassage] = []

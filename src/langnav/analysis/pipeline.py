@@ -60,7 +60,8 @@ def analyze(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS) -> Map
 
     # Passages: unknown noise specks do not narrow a passage; everything else unknown does.
     blocking = layers.occupied | (layers.unknown & ~unx.specks)
-    passages = find_passages(grid, params, labels, room_ids, seg.doors, blocking, layers=layers)
+    passages = find_passages(grid, params, labels, room_ids, seg.doors, blocking, layers=layers,
+                             unexplored=unx.area_labels > 0)
     doors = tuple(_resolve_door(d, grid, unx) for d in seg.doors)
     return MapAnalysis(grid=grid, params=params, rooms=rooms, doors=doors, walls=walls,
                        corners=corners, obstacles=obst.obstacles, narrow_passages=passages,

@@ -3,7 +3,8 @@
 The unknown world outside the building (every unknown region touching the grid border) is one
 area, ``interior=False``, and counts only where an opening the robot can reach leads into it.
 An unknown region inside the map is an area when it is worth a trip: at least
-``params.unexplored_worth_area_m2`` large, with at least ``params.unexplored_min_frontier_m`` of
+``params.unexplored_worth_area_m2`` large, ``params.unexplored_min_width_m`` wide (room to drive in
+and turn: not a shelf's or a rack's unknown inside, however long), with at least ``params.unexplored_min_frontier_m`` of
 frontier the robot can come up to in one opening (a door, a room's open side: not the gaps in the
 scanned outline of a shelf, a cabinet or a pallet whose inside is unknown, nor laser holes).
 Unknown specks smaller than
@@ -27,9 +28,11 @@ from langnav.analysis.precompute import (
     EIGHT,
     GridLayers,
     border_labels,
+    component_boxes,
     dilate8,
     label8_cells,
     nonzero2,
+    truncated_sq_edt,
 )
 from langnav.maps.grid import OccupancyGrid
 
@@ -186,6 +189,7 @@ def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayer
     inside[0] = False
     candidate = np.zeros(n + 1, dtype=bool)
     candidate[inside] = sizes[inside] * grid.cell_area_m2 >= params.unexplored_worth_area_m2
+    candidate &= _wide_enough(grid, params, layers, lab, candidate)
     res = grid.resolution_m
     need = math.ceil(params.unexplored_min_frontier_m / res - 1e-9)
     worth = np.zeros(n + 1, dtype=bool)
@@ -215,6 +219,46 @@ def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayer
         np.maximum.at(best, regions, per_run[run[inverse]])
         worth |= candidate & (best >= need)
     return worth
+
+
+def _wide_enough(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, lab: IntArray,
+                 candidate: BoolArray) -> BoolArray:
+    """Per unknown component (index = label; only ``candidate`` ones tested, others False): does
+    it hold a disc ``params.unexplored_min_width_m`` wide, within the unknown cells and the free
+    cells around them that the robot does not fit in (laser rays across an unscanned room, the
+    specks of free in a shelf's outline): room for the robot to drive in and turn?"""
+    out = np.zeros(len(candidate), dtype=bool)
+    ids = np.flatnonzero(candidate)
+    if len(ids) == 0:
+        return out
+    rows, cols = nonzero2(np.isin(lab, ids))
+    boxes = component_boxes(lab[rows, cols], rows, cols, ids)
+    res = grid.resolution_m
+    # The disc's centre lies this far (cells, centre to centre) from everything else: half its
+    # width plus half a cell (a width counts whole cells, distances run between centres).
+    need = (params.unexplored_min_width_m / res + 1.0) / 2.0
+    reach = math.ceil(need) + 1
+    half = max(1, math.ceil(params.robot_radius_m / res))
+    pad = reach + 2 * half + 1
+    for k in ids.tolist():
+        sr, sc = boxes[k]
+        r0, r1 = max(0, sr.start - pad), min(grid.height, sr.stop + pad)
+        c0, c1 = max(0, sc.start - pad), min(grid.width, sc.stop + pad)
+        own = lab[r0:r1, c0:c1] == k
+        # The region alone first (a room behind a door is wide by itself), then with the free
+        # cells about it that the robot's footprint (a free square of its diameter) never covers.
+        if int(truncated_sq_edt(own, reach)[own].max()) >= need * need:
+            out[k] = True
+            continue
+        free = layers.free[r0:r1, c0:c1]
+        fits = free
+        for axis in (0, 1):
+            fits = ndi.minimum_filter1d(fits, 2 * half + 1, axis=axis, mode="constant", cval=False)
+        for axis in (0, 1):
+            fits = ndi.maximum_filter1d(fits, 2 * half + 1, axis=axis, mode="constant", cval=False)
+        region = layers.unknown[r0:r1, c0:c1] | (free & ~fits)
+        out[k] = int(truncated_sq_edt(region, reach)[own].max()) >= need * need
+    return out
 
 
 def _edge_adjacent(lab: IntArray, pairs: npt.NDArray[np.int64]) -> BoolArray:
