@@ -8,7 +8,8 @@ import math
 import numpy as np
 import pytest
 
-from langnav.analysis.door_judge import constriction_depth, evidence, free_widths
+from langnav.analysis.door_judge import constriction_depth, evidence, free_widths, is_door
+from langnav.analysis.params import DEFAULT_PARAMS
 from langnav.analysis.segmentation import Segmentation, segment_spaces
 from langnav.maps.draw import MapBuilder
 from langnav.maps.grid import FREE, OCCUPIED, OccupancyGrid
@@ -59,10 +60,37 @@ def test_constriction_depth_is_the_wall_thickness_for_a_door_and_the_length_of_a
     res = grid.resolution_m
     # The office door: normal along y (rows), centre on the wall line.
     r, c = grid.world_to_cell(2.0, 5.55)
-    ev = evidence(free, occ, (float(r), float(c)), (1.0, 0.0), 0.9, res)
+    ev = evidence(free, occ, (float(r), float(c)), (1.0, 0.0), 0.9, res, DEFAULT_PARAMS)
     assert ev.constriction_m <= 0.2
     # The passage's west mouth: normal along x (cols).
     r, c = grid.world_to_cell(5.5, 2.45)
     t, w = free_widths(free, (float(r), float(c)), (0.0, 1.0), res, 1.5)
     assert constriction_depth(t, w, 0.9) >= 1.4  # followed to the end of the look (1.5 m)
     assert np.all(w[(t > 0.2) & (t < 1.5)] == pytest.approx(0.9, abs=0.06))
+
+
+def wall_with_gaps() -> OccupancyGrid:
+    """A free 10 m x 6 m floor cut by a wall along y = 3 (0.1 m thick) with: a 0.9 m door at
+    x = 2 (wall on both sides); a 0.9 m gap at x = 5 whose east end is the tip of a laser ray
+    (the wall stops; beyond, a free streak into unknown); a 0.9 m gap at x = 8 between the
+    wall's end and a lone speck."""
+    b = MapBuilder(10.0, 6.0)
+    b.free(0.0, 0.0, 10.0, 6.0)
+    b.wall(0.0, 3.0, 1.55, 3.0).wall(2.45, 3.0, 4.55, 3.0)  # the door at x = 2
+    b.unknown(5.45, 2.9, 7.55, 3.1).free(5.45, 2.95, 7.55, 3.0)  # ray streak in unknown
+    b.wall(7.55, 3.0, 7.55, 3.0).rect(8.45, 2.95, 8.5, 3.05, OCCUPIED)  # the speck
+    return b.build("wall with gaps")
+
+
+@pytest.mark.parametrize(("x", "door"), [(2.0, True), (5.0, False), (8.0, False)])
+def test_a_door_has_wall_at_both_jambs(x: float, door: bool) -> None:
+    """Both jambs of a door are wall running on along its line; the end of a ray streak or a
+    lone speck is no jamb."""
+    grid = wall_with_gaps()
+    walls = grid.cells == OCCUPIED
+    r, c = grid.world_to_cell(x, 3.0)
+    ev = evidence(grid.cells == FREE, walls, (float(r), float(c)), (1.0, 0.0), 0.9, grid.resolution_m,
+                  DEFAULT_PARAMS)
+    assert is_door(ev, DEFAULT_PARAMS, into_unknown=False) is door
+    if door:
+        assert min(ev.along) >= 0.9

@@ -186,6 +186,8 @@ def _spoken(n: int) -> str:
     if n < 100:
         return _TENS[n // 10] + ("" if n % 10 == 0 else " " + _WORDS[n % 10])
     hundreds, rest = divmod(n, 100)
+    if rest == 0:
+        return f"{_WORDS[hundreds]} hundred"
     return f"{_WORDS[hundreds]} {_spoken(rest)}" if rest >= 20 else f"{_WORDS[hundreds]} hundred and {_spoken(rest)}"
 
 
@@ -244,6 +246,7 @@ def test_a_turn_never_turns_more_than_asked(n: int, side: str, more: str, verb: 
 
 @given(st.integers(min_value=10, max_value=170), st.integers(min_value=10, max_value=170),
        st.sampled_from(["actually", "sorry", "no wait", "i'm sorry", "i mean"]), st.booleans())
+@example(first=10, second=100, marker="sorry", restate=False)  # "one hundred degrees": no "and" after it
 def test_a_self_correction_is_the_only_turn(first: int, second: int, marker: str, restate: bool) -> None:
     said = f"turn {_spoken(first)} degrees to your left, {marker}, "
     said += f"turn {_spoken(second)} degrees to your right" if restate else f"{_spoken(second)} degrees right"

@@ -11,6 +11,12 @@ thickness the free width along the wall widens into the space beyond. The mouth 
 way between two wings) stays as narrow for longer than any wall is thick: a narrow passage or a
 corridor continuing, not a door.
 
+*A door's jambs are wall.* Each end of the opening is the end of a wall that carries on along
+the opening's line (scanned, occupied cells for a wall's length, allowing for the holes a scan
+leaves in walls), or a wall the opening's wall abuts, crossing its line (a door beside a room's
+corner). The tip of a laser ray, a speck of clutter, the corner where a corridor's wall turns
+away into a hall, are not: a gap beside them is no door.
+
 A candidate between two spaces that is no door is still a way between them (an opening); one
 into unexplored territory is nothing a person would point at.
 
@@ -46,6 +52,23 @@ CENTRE_SLACK_M: Final = 0.25
 #: thickness plus a passage's length, a constriction is a passage whatever follows.
 THROUGH_LOOK_M: Final = 1.5
 
+#: A jamb's wall carries on along the opening's line with occupied cells on at least this share
+#: of a wall's length (scanned walls have holes: glass, dark surfaces, grazing rays) ...
+JAMB_ALONG_MIN_SHARE: Final = 0.45
+#: A scanned wall's cells lie within this distance (m) of its line (three cells of a 5 cm map:
+#: scan noise and a thin wall's thickness); farther is another wall or clutter beside it.
+JAMB_BAND_M: Final = 0.1
+#: A jamb's wall may leave the jamb-to-jamb line by up to this angle (degrees): ragged wall
+#: ends over a door's width tilt that short baseline; a corner (90 degrees) is no run-on wall.
+ALONG_MAX_TURN_DEG: Final = 25
+#: A jamb lies at most this far (m) beyond the end of the opening as measured (the opening's
+#: width is its clearance at one crossing; a ragged jamb stands back from it).
+JAMB_REACH_M: Final = 0.3
+#: ... or the jamb is a wall crossing the opening's line: occupied on at least this share of a
+#: wall's length on both sides of the line (a T or a corner the door stands beside).
+JAMB_ACROSS_MIN_SHARE: Final = 0.8
+
+
 @dataclass(frozen=True)
 class DoorEvidence:
     """What the cells around one candidate say (see module doc)."""
@@ -53,6 +76,10 @@ class DoorEvidence:
     #: Along the normal, the longest stretch (m) through the opening where the free width stays
     #: within the door's width (the constriction's depth).
     constriction_m: float
+    #: For each jamb: the share of a wall's length beyond it, along the opening's line, that is
+    #: occupied; and the smaller of the same shares along the normal's two directions.
+    along: tuple[float, float]
+    across: tuple[float, float]
 
 
 def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np.float64],
@@ -112,12 +139,85 @@ def constriction_depth(t_m: npt.NDArray[np.float64], width_m: npt.NDArray[np.flo
     return float(t_m[hi] - t_m[lo])
 
 
+def jamb_cells(occupied: BoolArray, center_rc: tuple[float, float], width_m: float,
+               resolution_m: float) -> tuple[tuple[float, float], tuple[float, float]] | None:
+    """The centres of the two jamb cells of a candidate: the occupied cell nearest to its
+    centre, and the nearest one on the opposite side of the centre; both within half the
+    opening plus JAMB_REACH_M. None when there is no such pair (an end of the opening is
+    unknown or free: no wall)."""
+    reach = (width_m / 2 + JAMB_REACH_M) / resolution_m
+    rad = math.ceil(reach) + 1
+    r0 = max(0, math.floor(center_rc[0]) - rad)
+    c0 = max(0, math.floor(center_rc[1]) - rad)
+    win = occupied[r0:math.floor(center_rc[0]) + rad + 1, c0:math.floor(center_rc[1]) + rad + 1]
+    rr, cc = np.nonzero(win)
+    if rr.size == 0:
+        return None
+    dr = rr + r0 + 0.5 - center_rc[0]
+    dc = cc + c0 + 0.5 - center_rc[1]
+    d2 = dr * dr + dc * dc
+    i = int(np.argmin(d2))
+    # Opposite: more than 90 degrees away from the first jamb, seen from the centre.
+    opposite = (dr * dr[i] + dc * dc[i] < 0) & (d2 <= reach * reach)
+    if d2[i] > reach * reach or not opposite.any():
+        return None
+    j = int(np.flatnonzero(opposite)[np.argmin(d2[opposite])])
+    return ((float(rr[i] + r0 + 0.5), float(cc[i] + c0 + 0.5)),
+            (float(rr[j] + r0 + 0.5), float(cc[j] + c0 + 0.5)))
+
+
+def wall_share(occupied: BoolArray, start_rc: tuple[float, float], direction_rc: tuple[float, float],
+               resolution_m: float, length_m: float, band_m: float) -> float:
+    """Share of the steps along ``direction_rc`` from ``start_rc`` (up to ``length_m``) with an
+    occupied cell within ``band_m`` either side of the line (walls are not ruled lines)."""
+    dr, dc = direction_rc
+    s = np.arange(_STEP_CELLS, length_m / resolution_m + 1e-9, _STEP_CELLS)
+    b = np.arange(-band_m / resolution_m, band_m / resolution_m + 1e-9, _STEP_CELLS)
+    rows = start_rc[0] + s[:, None] * dr - b[None, :] * dc
+    cols = start_rc[1] + s[:, None] * dc + b[None, :] * dr
+    return float(_sample(occupied, rows, cols, outside=False).any(axis=1).mean())
+
+
+def _turned(dr: float, dc: float, angle: float) -> tuple[float, float]:
+    """(dr, dc) turned by ``angle`` radians."""
+    ca, sa = math.cos(angle), math.sin(angle)
+    return dr * ca - dc * sa, dr * sa + dc * ca
+
+
+#: Directions tried for a jamb's wall, about the opening's line (radians).
+_ALONG_ANGLES: Final = tuple(math.radians(a) for a in
+                             np.linspace(-ALONG_MAX_TURN_DEG, ALONG_MAX_TURN_DEG, 2 * ALONG_MAX_TURN_DEG // 5 + 1))
+
+
 def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float],
-             normal_rc: tuple[float, float], width_m: float, resolution_m: float) -> DoorEvidence:
+             normal_rc: tuple[float, float], width_m: float, resolution_m: float,
+             params: AnalysisParams) -> DoorEvidence:
     """The evidence of one candidate (``center_rc`` in cell-corner coordinates, unit normal)."""
+    # A wall's length: the shortest wall stub that is a jamb; a scanned wall's cells scatter
+    # about its line by a few cells (JAMB_BAND_M).
+    wall_m = params.seg_wall_min_length_m
+    band_m = JAMB_BAND_M
     t, w = free_widths(free, center_rc, normal_rc, resolution_m, THROUGH_LOOK_M)
     depth = constriction_depth(t, w, width_m)
-    return DoorEvidence(constriction_m=depth)
+    jj = jamb_cells(occupied, center_rc, width_m, resolution_m)
+    if jj is None:
+        return DoorEvidence(constriction_m=depth, along=(0.0, 0.0), across=(0.0, 0.0))
+    (r1, c1), (r2, c2) = jj
+    # The opening's line runs from jamb to jamb (the candidate's own normal is the mean step
+    # across a ragged boundary, often slanted).
+    n = math.hypot(r2 - r1, c2 - c1) or 1.0
+    tr, tc = (r2 - r1) / n, (c2 - c1) / n
+    nr, nc = tc, -tr
+    along: list[float] = []
+    across: list[float] = []
+    for jamb, sign in (((r1, c1), -1.0), ((r2, c2), 1.0)):
+        # The wall runs on along (nearly) the opening's line: jamb to jamb is a short baseline
+        # across ragged wall ends, so the wall may leave it at a small angle.
+        along.append(max(wall_share(occupied, jamb, _turned(sign * tr, sign * tc, a), resolution_m, wall_m, band_m)
+                         for a in _ALONG_ANGLES))
+        across.append(min(wall_share(occupied, jamb, (nr, nc), resolution_m, wall_m, band_m),
+                          wall_share(occupied, jamb, (-nr, -nc), resolution_m, wall_m, band_m)))
+    return DoorEvidence(constriction_m=depth, along=(along[0], along[1]), across=(across[0], across[1]))
 
 
 def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool) -> bool:
@@ -125,7 +225,11 @@ def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool) -> boo
     unexplored territory, where only its own side was seen)."""
     # As deep as a wall (plus the shortest passage): a longer constriction is a passage or a
     # corridor running on.
-    return ev.constriction_m <= params.door_max_depth_m + params.passage_min_length_m
+    if ev.constriction_m > params.door_max_depth_m + params.passage_min_length_m:
+        return False
+    # Both jambs are wall.
+    return all(a >= JAMB_ALONG_MIN_SHARE or x >= JAMB_ACROSS_MIN_SHARE
+               for a, x in zip(ev.along, ev.across, strict=True))
 
 
 def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray, resolution_m: float,
@@ -134,7 +238,7 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
     doors: list[RawDoor] = []
     rest: list[RawDoor] = []
     for d in candidates:
-        ev = evidence(free, occupied, d.center_rc, d.normal_rc, d.width_m, resolution_m)
+        ev = evidence(free, occupied, d.center_rc, d.normal_rc, d.width_m, resolution_m, params)
         (doors if is_door(ev, params, into_unknown=d.b == 0) else rest).append(d)
     return doors, rest
 

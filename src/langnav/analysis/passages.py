@@ -69,6 +69,15 @@ AXIS_SNAP_DEG: Final = 3.0
 #: each cell tried across this many directions over 180 degrees (22.5 degrees apart: the side
 #: of a passage at any angle is within 11.25 degrees, 2 % farther, of one of them).
 TWO_SIDED_DIRECTIONS: Final = 8
+#: A short squeeze beside a wall: the wall runs on past both mouths, blocked (within the
+#: squeeze's width) along this share of the samples there, and the thing beside it ends (open
+#: along as much).
+WALL_RUNS_ON_SHARE: Final = 0.7
+#: ... sampled this far past each mouth (m): a wall, not the corner of a jamb.
+WALL_RUN_M: Final = 0.6
+#: ... and the thing is deeper than a wall is thick (door_max_depth_m): blocked along this share
+#: of that depth past its face (its outline may have a scan dropout).
+DEEP_SHARE: Final = 0.8
 #: Look this far beyond a mouth for the space the passage opens into.
 MOUTH_SEARCH_M: Final = 1.0
 #: A passage leaves the robot at least this much room on each side (about a robot's
@@ -158,6 +167,8 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     core_idx = idx[w <= ref[cid - 1] + CORE_WIDTH_TOL_M]
     core_id, m = label8_cells(core_idx, skel.shape)
     passages: list[NarrowPassage] = []
+    # Where the robot's centre fits with its margin (the distance table is exact that far).
+    fits = dist_of[d2] > params.robot_radius_m + PASSAGE_SIDE_MARGIN_M
     # Necessary conditions, vectorised, before the per-core work: a chain of n cells spans at
     # most n * sqrt(2) cells and at most its bounding box's diagonal.
     n_cells = np.bincount(core_id, minlength=m + 1)
@@ -203,8 +214,8 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 axis = np.array([0.0, math.copysign(1.0, axis[1])])
             proj = (pts - mean) @ axis
             length_m = (float(proj.max() - proj.min()) + 1.0) * res
-            rough_w = median(width_of[d2[rr, cc]])
-            if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * rough_w:
+            # Short ones too (a squeeze past furniture beside a wall is as deep as the furniture).
+            if length_m < params.passage_min_length_m:
                 continue
             measured.append((rr, cc, across, pts, mean, axis, proj, length_m))
         side_sets = _side_distances_each(sub, [m[3] for m in measured],
@@ -222,7 +233,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             # It runs where it has two sides: not on into its flaring mouths.
             lo, hi = float(proj[bounded].min()), float(proj[bounded].max())
             length_m = (hi - lo + 1.0) * res
-            if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * width_m:
+            if length_m < params.passage_min_length_m:
                 continue
             # Wide enough for the robot to pass, and narrow (the band's test used the skeleton's
             # width, up to a cell off).
@@ -240,11 +251,30 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                        for sign, e in zip((-1.0, 1.0), ends_g, strict=True)):
                 continue
             centre_g = mean + 0.5 * (lo + hi) * axis
+            # Short (less than PASSAGE_MIN_ELONGATION times longer than wide), it is a gap: in a
+            # wall line (a door's business), between two objects or beside one (walked round).
+            # Except a squeeze between a wall and a thing standing beside it (the wall runs on
+            # past both mouths, the other side ends at both), a thing deeper than any wall or
+            # door leaf (a sofa, a cupboard: not a jamb with its door open along the way), that
+            # is the only way from one side to the other: a person points at that.
+            elongated = length_m >= PASSAGE_MIN_ELONGATION * width_m
+            if not elongated:
+                thing = _beside_a_wall(sub, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res, WALL_RUN_M / res)
+                if (thing is None
+                        or not _deep(sub, pts[bounded], np.array([-axis[1], axis[0]]) * (2 * thing - 1),
+                                     sides[bounded, thing], params.door_max_depth_m / res)
+                        or _way_round(fits, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res)):
+                    continue
             cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
             centre = (float(cx), float(cy))
             ax_w = np.subtract(grid.grid_to_world(r0 + centre_g[1] + axis[1], c0 + centre_g[0] + axis[0]), centre)
             axis_w = (float(ax_w[0]), float(ax_w[1]))
             if any(_is_the_door(d, centre, axis_w, length_m, width_m, params) for d in doors):
+                continue
+            # A short squeeze with a door at it is that door's opening (a door leaf, open along
+            # the way, lengthens its jamb).
+            if not elongated and any(math.dist(d.center, centre) <= length_m / 2 + params.door_max_depth_m
+                                     for d in doors):
                 continue
             ends_w: list[tuple[float, float]] = []
             spaces: list[str] = []
@@ -267,6 +297,70 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             two_r, two_c = _two_sided(sub, long_r, long_c, dist_of[d2[long_r, long_c]] / res, SIDE_TOL_M / res)
             pieces = [(pr, pc, None) for pr, pc in _pieces(two_r, two_c, sub.shape, min_cells)]
     return tuple(passages)
+
+
+def _beside_a_wall(open_: BoolArray, centre_g: npt.NDArray[np.float64], axis: npt.NDArray[np.float64],
+                   half_len: float, width: float, run: float) -> int | None:
+    """Is the stretch (``centre_g``, unit ``axis``, ``half_len`` cells either way, ``width`` cells
+    wide) a squeeze between a wall and a thing beside it: past both of its mouths (from a
+    quarter of its width to ``run`` cells on) one side stays blocked within its width (the wall
+    runs on) along ``WALL_RUNS_ON_SHARE`` of the samples, and the other is open along as much
+    (the thing ends)? The thing's side (0: along -normal, 1: along +normal, the normal being
+    the axis turned a quarter anticlockwise), or None."""
+    normal = np.array([-axis[1], axis[0]])
+    t = np.arange(width / 4.0, run + 0.5, 0.5)
+    starts = np.concatenate([centre_g + (half_len + t)[:, None] * axis, centre_g - (half_len + t)[:, None] * axis])
+    sides = _side_distances(open_, starts, np.full(len(starts), width / 2.0), normal, width / 2.0)
+    blocked = np.isfinite(sides)
+    n = len(t)
+    on = [min(blocked[:n, j].mean(), blocked[n:, j].mean()) for j in (0, 1)]
+    off = [max(blocked[:n, j].mean(), blocked[n:, j].mean()) for j in (0, 1)]
+    for j in (0, 1):
+        if on[j] >= WALL_RUNS_ON_SHARE and off[1 - j] <= 1.0 - WALL_RUNS_ON_SHARE:
+            return 1 - j
+    return None
+
+
+def _deep(open_: BoolArray, pts: npt.NDArray[np.float64], outward: npt.NDArray[np.float64],
+          side: npt.NDArray[np.float64], depth: float) -> bool:
+    """Is the thing on one side of a squeeze (its points ``pts``, the side ``side`` cells away
+    along the unit ``outward``) deeper than ``depth`` cells: blocked along ``DEEP_SHARE`` of the
+    samples that far past where it starts (a scan dropout in its outline is no way into it),
+    at ``MIN_BOUNDED_FRACTION`` of the points?"""
+    h, w = open_.shape
+    t = side[:, None] + np.arange(0.0, depth + 0.5, 0.5)[None, :]
+    r = np.floor(pts[:, 1:2] + t * outward[1]).astype(int)
+    c = np.floor(pts[:, 0:1] + t * outward[0]).astype(int)
+    inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
+    blocked = ~inside
+    blocked[inside] = ~open_[r[inside], c[inside]]
+    return bool((blocked.mean(axis=1) >= DEEP_SHARE).mean() >= MIN_BOUNDED_FRACTION)
+
+
+def _way_round(fits: BoolArray, centre_g: npt.NDArray[np.float64], axis: npt.NDArray[np.float64],
+               half_len: float, width: float) -> bool:
+    """Can the robot get from one mouth of a squeeze (``centre_g``, unit ``axis``, ``half_len`` and
+    ``width`` in cells) to the other without going through it, anywhere in the map? Through the
+    cells where its centre ``fits``."""
+    h, w = fits.shape
+    # The squeeze's box (with a cell of slack at its ends) and the floor just beyond each mouth
+    # (within a width of its end, ahead of it), in a window around it.
+    pad = half_len + 2.0 * width + 2.0
+    r0, r1 = max(0, math.floor(centre_g[1] - pad)), min(h, math.ceil(centre_g[1] + pad) + 1)
+    c0, c1 = max(0, math.floor(centre_g[0] - pad)), min(w, math.ceil(centre_g[0] + pad) + 1)
+    rr, cc = np.mgrid[r0:r1, c0:c1]
+    dx, dy = cc + 0.5 - centre_g[0], rr + 0.5 - centre_g[1]
+    along = dx * axis[0] + dy * axis[1]
+    across = np.abs(-dx * axis[1] + dy * axis[0])
+    cut = (np.abs(along) <= half_len + 1.0) & (across <= width / 2.0 + 1.0)
+    ahead = (across <= width) & (np.abs(along) <= half_len + 1.0 + width) & ~cut
+    rest = fits.copy()
+    rest[r0:r1, c0:c1] &= ~cut
+    lab, _n = ndi.label(rest, structure=np.ones((3, 3), dtype=bool))
+    win = lab[r0:r1, c0:c1]
+    first = np.unique(win[ahead & (along > half_len + 1.0) & (win > 0)])
+    second = np.unique(win[ahead & (along < -half_len - 1.0) & (win > 0)])
+    return bool(np.intersect1d(first, second).size)
 
 
 def _crest(d2: npt.NDArray[np.integer]) -> BoolArray:

@@ -21,7 +21,10 @@ SPATIAL_WORDS: Final = frozenset(
      for w in phrase.split()}
     | set(HEADINGS_DEG) | {"hundred", "thousand", "halfway", "past", "beyond", "behind", "until", "till", "before",
                            "after", "across", "between", "along", "through", "around", "clockwise", "counterclockwise",
-                           "anticlockwise", "sideways", "far", "farther", "further", "closer", "nearer", "back"}
+                           "anticlockwise", "sideways", "far", "farther", "further", "closer", "nearer", "back",
+                           # amounts said relative to another one ("two more", "the same distance", "twice")
+                           "more", "less", "same", "distance", "amount", "longer", "shorter", "twice", "double",
+                           "triple"}
 ) - lx.STOPWORDS - {"a", "an", "the", "of", "to", "in", "on", "at", "up", "one", "way", "port", "positive",
                     "negative", "wall", "turn", "u", "face", "about", "other", "opposite", "direction", "came",
                     "we", "you", "your", "side", "hand", "closer", "nearer"} | {"wall", "walls", "door", "doors"}

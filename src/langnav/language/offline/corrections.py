@@ -26,14 +26,21 @@ from langnav.language.offline.patterns import GO_VERB_RE, ROTATE_VERB_RE, STOP_R
 CORRECTION_START_RE: Final = re.compile(
     r"^(?:(?:actually|no\s+wait|no(?!\s+(?:further|longer|more|need)\b)|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
     r"sorry|i\s+meant|i\s+mean|or\s+rather|rather|make\s+that|correction|oops)\b[\s,]*)+", re.IGNORECASE)
-#: Words that take back the instruction before ("never mind", "scratch that").
-CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|forget\s+(?:it|that)|cancel\s+that|ignore\s+that|"
-                              r"disregard\s+that)\b[\s,]*", re.IGNORECASE)
+#: Words that take back what was said before ("never mind", "scratch that").
+CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|forget\s+(?:it|that|everything|all\s+(?:of\s+)?that)|"
+                              r"cancel\s+that|ignore\s+that|disregard\s+that)\b[\s,]*", re.IGNORECASE)
+#: Of those, the words that drop the whole request so far, not only its last instruction: "never mind"
+#: dismisses what the speaker was asking for ("keep going two feet, go south, go two t- ... never mind,
+#: so go three feet, turn south"); "scratch that" takes back the last thing said.
+CANCEL_ALL_RE: Final = re.compile(r"\b(?:never\s*mind|forget\s+(?:everything|all\s+(?:of\s+)?that))\b", re.IGNORECASE)
 #: Words that give the side of a move or a turn (a fragment may carry one).
 SIDE_RE: Final = re.compile(
     r"(?:\b(?:to|on|towards?)\s+(?:the|your)\s+)?\b(?:left|right|clockwise|counter\s*clockwise|anti\s*clockwise|"
     r"forwards?|backwards?|ahead|straight)\b(?:\s+(?:hand\s+)?side)?")
 _HEAD_RE: Final = rx([*lx.ELEMENT_NOUNS], "head")
+#: "back" as the way of a move (not a verb of its own once a side replaces it).
+_BACK_RE: Final = re.compile(r"\b(?:back|in\s+reverse)\b")
+_BACK_VERB_RE: Final = re.compile(r"\b(?:back\s+up|back\s+off|reverse)\b")
 
 #: ``open(text)``: does the instruction miss an amount or a side a fragment may give?
 IsOpen = Callable[[str], bool]
@@ -108,33 +115,59 @@ def join_fragments(clauses: list[str], is_open: IsOpen) -> list[str]:
 
 
 def apply_corrections(clauses: list[str]) -> list[str]:
-    """The clauses with every self-correction applied to the instruction it corrects."""
+    """The clauses with every self-correction applied to the instruction it corrects.
+
+    A take-back followed by only an amount or a side corrects that part of the instruction before
+    ("move forward ten feet, scratch that, six feet" is six feet forward); followed by anything else,
+    it drops what it takes back ("never mind": everything so far; "scratch that": the last one)."""
     out: list[str] = []
-    pending = False  # "i'm sorry" alone: the next clause is the correction
+    correct_next = False  # "i'm sorry" alone: the next clause is the correction
+    take_back: bool | None = None  # a take-back alone, waiting for what follows: whether it drops everything
     for clause in clauses:
         cancel = CANCEL_RE.search(clause)
         start = CORRECTION_START_RE.match(clause)
+        everything: bool | None = None
         if cancel is not None and (cancel.start() == 0 or (start is not None and cancel.start() <= start.end())):
-            if out:
-                out.pop()  # "actually no, never mind": the instruction before is taken back
-            pending = False
+            everything = bool(take_back) or CANCEL_ALL_RE.search(clause[:cancel.end()]) is not None
+            correct_next = False
             clause = clause[cancel.end():].strip()
-            if clause:
+            while (again := CANCEL_RE.match(clause) or CORRECTION_START_RE.match(clause)) and again.end() > 0:
+                clause = clause[again.end():].strip()  # "never mind, forget that": one take-back
+            if not clause:
+                take_back = everything  # "..., scratch that, six feet": what follows decides
+                continue
+        elif take_back is not None:
+            everything = take_back
+        take_back = None
+        if everything is not None:
+            if out and is_fragment(clause):
+                out[-1] = _corrected(out[-1], clause)
+            else:
+                _take_back(out, everything)
                 out.append(clause)
             continue
-        correcting = pending
-        pending = False
+        correcting = correct_next
+        correct_next = False
         if start is not None:
             clause = clause[start.end():].strip()
             if not clause:
-                pending = bool(out)
+                correct_next = bool(out)
                 continue
             correcting = True
         if correcting and out:
-            out[-1] = _corrected(out[-1], clause) if is_fragment(clause) else clause
+            out[-1] = _corrected(out[-1], clause) if is_fragment(clause) else _restated(out[-1], clause)
             continue
         out.append(clause)
+    if take_back is not None:
+        _take_back(out, take_back)  # "turn left thirty five degrees, never mind": nothing is left
     return out
+
+
+def _take_back(out: list[str], everything: bool) -> None:
+    if everything:
+        out.clear()
+    elif out:
+        out.pop()
 
 
 def _corrected(previous: str, fragment: str) -> str:
@@ -143,7 +176,9 @@ def _corrected(previous: str, fragment: str) -> str:
     norm_prev = normalize(previous)
     norm_frag = normalize(fragment)
     if SIDE_RE.search(norm_frag):
-        norm_prev = SIDE_RE.sub(" ", norm_prev)
+        # the side said before goes, "back" too ("go back two feet, no, forward two feet"; "reverse
+        # one metre, actually forward")
+        norm_prev = _BACK_RE.sub(" ", _BACK_VERB_RE.sub("move", SIDE_RE.sub(" ", norm_prev)))
     if COMPASS_RE.search(norm_frag):
         norm_prev = COMPASS_RE.sub(" ", norm_prev)
     quantities = find_quantities(norm_frag)
@@ -151,3 +186,16 @@ def _corrected(previous: str, fragment: str) -> str:
         for q in reversed(find_quantities(norm_prev)):
             norm_prev = norm_prev[:q.start] + " " + norm_prev[q.end:]
     return " ".join(f"{norm_prev} {norm_frag}".split())
+
+
+def _restated(previous: str, correction: str) -> str:
+    """'reverse one metre, actually go forward': a correction that says the same kind of instruction
+    again (a move for a move, a turn for a turn) and leaves out the amount keeps the amount said
+    before; anything else replaces the instruction as said."""
+    norm_prev, norm_new = normalize(previous), normalize(correction)
+    same_kind = ((ROTATE_VERB_RE.search(norm_prev) is not None) == (ROTATE_VERB_RE.search(norm_new) is not None)
+                 and not _HEAD_RE.search(norm_new) and not _HEAD_RE.search(norm_prev))
+    if not same_kind or find_quantities(norm_new) or not SIDE_RE.search(norm_new):
+        return correction
+    amounts = " ".join(norm_prev[q.start:q.end] for q in find_quantities(norm_prev))
+    return f"{norm_new} {amounts}" if amounts else correction

@@ -342,7 +342,7 @@ EXPLORE_SCOPE_WORDS: Final = frozenset({
 MOVE_DIRECTIONS: Final[dict[str, Direction]] = {
     **{w: Direction.FORWARD for w in (
         "forward", "forwards", "ahead", "straight", "straight ahead", "straight on", "onward",
-        "onwards", "frontward", "frontwards", "to the front", "in front", "straight forward",
+        "onwards", "frontward", "frontwards", "to the front", "in front", "straight forward", "front",
         "up", "closer", "nearer")},
     **{w: Direction.BACKWARD for w in (
         "backward", "backwards", "back", "in reverse", "reverse", "rearward", "rearwards",
@@ -516,20 +516,20 @@ STOPWORDS: Final = frozenset({
     "are", "be", "it", "its", "that", "this", "there", "here", "now", "please", "for", "with", "from",
     "up", "me", "us", "we", "i", "my", "our", "so", "just", "also", "again", "way", "over", "all",
     "robot", "ok", "okay", "do", "can", "will", "would", "could", "by", "as", "one", "which", "who",
-    "what", "where", "some", "any", "about", "around", "directly", "exactly", "precisely",
-    "approximately", "roughly", "nearly", "almost", "more", "or", "that's", "well", "very", "really", "right", "currently", "going", "get", "got", "have", "has",
+    "what", "where", "some", "any", "about", "directly", "exactly", "precisely",
+    "approximately", "roughly", "nearly", "almost", "or", "that's", "well", "very", "really", "currently", "going", "get", "got", "have", "has",
     "let", "lets", "carefully", "slowly", "quickly", "safely", "smoothly", "gently", "straight",
-    "same", "other", "move", "go", "drive", "head", "towards", "toward", "into", "onto", "when",
+    "other", "move", "go", "drive", "head", "towards", "toward", "into", "onto", "when",
     "once", "after", "before", "until", "till", "while", "having", "been", "being", "am",
     "were", "was", "should", "must", "may", "might", "shall", "continue", "keep", "stay", "remain",
     "position", "self", "own", "like", "kind", "sort", "spot", "location", "place",
-    "point", "area", "side", "part", "bit", "steps", "step", "distance", "amount", "totally",
+    "point", "area", "side", "part", "bit", "steps", "step", "totally",
     "fully", "completely", "immediately", "soon", "afterward", "afterwards",
     "finally", "first", "second", "lastly", "next", "quick", "slow", "thanks", "thank",
     "hey", "hi", "hello", "sure", "fine", "good", "great", "nice", "cool", "man", "pal", "dude",
     "they", "their", "them", "those", "these", "if", "than", "how", "far", "long", "whole",
     "entire", "total", "altogether", "approx", "ca",
-    "circa", "degrees", "meters", "reached", "reach", "arrived", "arrive",
+    "circa", "reached", "reach", "arrived", "arrive",
     "passed", "pass", "gone", "through", "make", "want", "need", "wish", "able",
     # the -ing of the verb already read ("continue moving forward", "keep rolling")
     "moving", "driving", "rolling", "heading", "turning", "rotating", "travelling", "traveling", "proceeding",
@@ -576,6 +576,12 @@ TYPOS: Final[dict[str, str]] = {
     "arond": "around", "cm.": "cm", "mm.": "mm", "m.": "m", "infront": "in front",
     "inbetween": "in between", "nextto": "next to", "alot": "a lot", "abit": "a bit",
     "alittle": "a little", "wherer": "where", "sohw": "show", "shwo": "show", "mpa": "map",
+    # chat spelling and abbreviations of the words that say which way
+    "rt": "right", "rght": "right", "lt": "left", "lft": "left", "str8": "straight", "strait": "straight",
+    "staight": "straight", "bk": "back", "bwd": "backward", "bkwd": "backward", "bkwds": "backwards",
+    "fwrd": "forward", "frwd": "forward", "fwds": "forwards", "yr": "your", "thx": "thanks",
+    "acw": "anticlockwise", "aprox": "approximately", "abt": "about",
+    "arnd": "around", "til": "till", "untill": "until", "b4": "before",
 }
 
 #: Words that typo repair may aim at (edit distance 1, words of at least five letters).

@@ -13,6 +13,7 @@ from langnav.language.offline.details import as_detail
 from langnav.language.offline.phrases import KNOWN_WORDS
 from langnav.language.offline.reading import NAME_CONFIDENCE, Problem, Reading
 from langnav.language.offline.scratch import Clause
+from langnav.places.store import place_key
 
 _NAME_DETAIL_RE: Final = re.compile(lx.phrase_regex(lx.DETAIL_PHRASES, "detail")
                                      + r"\s+(?:(?:the|a|an|my|our|your)\s+)?$")
@@ -36,13 +37,13 @@ def unknown_destination(masked: str) -> str | None:
 def named(c: Clause, name: str, known_names: Sequence[str]) -> Reading:
     """A place the map cannot know: a step to it if the user named it before, else a question."""
     clean = re.sub(r"^(?:the|a|an|my|our)\s+", "", name).strip()
-    known = {n.lower().strip(): n for n in known_names}
-    if clean in known:
+    known = {place_key(n): n for n in known_names}  # the one rule for names (langnav.places)
+    if place_key(clean) in known:
         detail = Detail.TO
         m = _NAME_DETAIL_RE.search(c.s.text[:c.s.text.find(clean.split()[0])] if clean else "")
         if m is not None:
             detail = as_detail(lx.lookup(lx.DETAIL_PHRASES, m.group("detail")))
-        ref = ElementRef(kind=Element.NONE, name=known[clean][:80])
+        ref = ElementRef(kind=Element.NONE, name=known[place_key(clean)][:80])
         return Reading(steps=(Step(movement=Movement.NAVIGATE, detail=detail, target=ref, text=c.text[:500]),))
     if any(w in lx.UNKNOWABLE_ADJECTIVES for w in clean.split()[:-1]):
         # "the red door": a real element described by what a grid cannot show

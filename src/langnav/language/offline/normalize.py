@@ -59,6 +59,12 @@ _IDIOMS: Final = (
     (re.compile(r"\b(?:do|make|pull|perform)\s+(?:a|an)\s+(one\s+eighty|180|three\s+sixty|360)\b(?!\s*(?:degrees?|turn))"),
      r"turn \1 degrees"),
     (re.compile(r"\boutside\s+(?:of\s+)?(?=(?:the|this|that|your)\s+(?:room|hallway|corridor|hall)\b)"), "out of "),
+    # "more to the right", "further left": the same side, the amount is said elsewhere (or asked)
+    (re.compile(r"\b(?:a\s+)?(?:more|further|farther)\s+(?=(?:(?:to|towards?)\s+(?:the|your)\s+)?"
+                r"(?:left|right|forwards?|backwards?|ahead|clockwise|counter\s*clockwise|anti\s*clockwise)\b)"), ""),
+    # "in the same position you're in, move ...": from where the robot is (no place of its own)
+    (re.compile(r"\b(?:in|from|at)\s+(?:the\s+)?same\s+(?:position|place|spot|location)(?:\s+(?:that\s+)?(?:you|we)\s+"
+                r"are(?:\s+in)?)?\b"), ""),
 )
 #: Punctuation that carries no meaning inside one instruction (kept: . / - ' " in numbers and units).
 _NOISE: Final = re.compile(r"[^\w\s./'\"°-]|(?<!\d)\.|\.(?!\d)|(?<![\w])-|-(?![\w])|(?<!\d)(?<!pi)/|/(?!\d)")

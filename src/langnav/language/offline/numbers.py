@@ -43,13 +43,14 @@ LENGTH_UNITS_M: Final[dict[str, float]] = {
                     0.01),
     **dict.fromkeys(("mm", "millimeter", "millimeters", "millimetre", "millimetres"), 0.001),
     **dict.fromkeys(("dm", "decimeter", "decimeters", "decimetre", "decimetres"), 0.1),
-    **dict.fromkeys(("ft", "foot", "feet", "'"), 0.3048),
-    **dict.fromkeys(("inch", "inches", '"', "ins"), 0.0254),
-    **dict.fromkeys(("yard", "yards", "yd", "yds"), 0.9144),
+    # the plurals learners and fast typists write ("5 feets", "two inchs") are the same units
+    **dict.fromkeys(("ft", "foot", "feet", "'", "feets", "foots", "fts"), 0.3048),
+    **dict.fromkeys(("inch", "inches", '"', "ins", "inchs", "inche"), 0.0254),
+    **dict.fromkeys(("yard", "yards", "yd", "yds", "yardss"), 0.9144),
 }
 #: Angle units in degrees.
 ANGLE_UNITS_DEG: Final[dict[str, float]] = {
-    **dict.fromkeys(("degree", "degrees", "deg", "degs", "°", "º", "dgr"), 1.0),
+    **dict.fromkeys(("degree", "degrees", "deg", "degs", "°", "º", "dgr", "degreess"), 1.0),
     **dict.fromkeys(("rad", "rads", "radian", "radians"), math.degrees(1.0)),
 }
 #: Nouns of a whole rotation: "a quarter turn", "two full turns".
@@ -59,8 +60,11 @@ WHOLE_TURN_WORDS: Final = ("full", "complete", "whole", "entire", "360", "360 de
 
 _ONE_TO_NINE: Final = "one|two|three|four|five|six|seven|eight|nine"
 _TENS_WORDS: Final = "|".join(t for t in TENS if t != "fourty") + "|fourty"
-#: "one eighty", "two twenty five", "three sixty": spoken hundreds, a digit word then a tens word.
-_SPOKEN_HUNDREDS: Final = rf"(?:{_ONE_TO_NINE})[\s-]+(?:{_TENS_WORDS})(?:[\s-]+(?:{_ONE_TO_NINE}))?"
+_TEENS_WORDS: Final = "ten|eleven|twelve|thirteen|fourteen|fifteen|sixteen|seventeen|eighteen|nineteen"
+#: "one eighty", "two twenty five", "three sixty", "three fifteen", "one oh five": spoken hundreds, a
+#: digit word then a two-digit number said as tens, as a teen, or as "oh" and a digit.
+_SPOKEN_HUNDREDS: Final = (rf"(?:{_ONE_TO_NINE})[\s-]+(?:(?:{_TENS_WORDS})(?:[\s-]+(?:{_ONE_TO_NINE}))?|(?:{_TEENS_WORDS})"
+                           rf"|(?:oh|o|zero)[\s-]+(?:{_ONE_TO_NINE}))")
 _WORD_INT: Final = (rf"(?:{_SPOKEN_HUNDREDS}|(?:{_TENS_WORDS})(?:[\s-]+(?:{_ONE_TO_NINE}))?"
                     rf"|{'|'.join(sorted(ONES, key=len, reverse=True))})")
 _HUNDREDS: Final = (rf"(?:(?:a|one|two|three|four|five|six|seven|eight|nine)\s+)?hundred"
@@ -79,6 +83,13 @@ _LEAD_FRACTION: Final = (r"(?:(?:a|one)\s+)?(?:half|quarter|third|three\s+quarte
 #: Words between an amount and its unit that only say it adds to what was done ("two more feet",
 #: "forty five further degrees"): the amount is the same.
 _MORE: Final = r"(?:more|further|additional|extra|other|another)"
+#: Words before an amount that say it adds to what was done, or that it is roughly said ("another
+#: two feet", "a further three metres", "an extra 20 cm", "around five feet", "about another
+#: foot"): the amount is the number said.
+_AMOUNT_LEAD: Final = (r"(?:(?:another|a\s+further|an?\s+additional|an?\s+extra|further|additional|extra|"
+                       r"around|about|roughly|approximately|approx|circa|some|nearly|almost|like)\s+){0,2}")
+#: Words after an amount that say it adds to what was done ("five feet more", "ten degrees further").
+_AMOUNT_TAIL: Final = r"(?:\s+(?:more|further|extra|again))?"
 
 
 #: "N turns" with N at least this is N degrees ("a one eighty turn"); nobody asks for 30 whole turns.
@@ -117,17 +128,18 @@ _E: Final = r"(?![\w.]*\w)"
 
 _UNIT_PATTERNS: Final[tuple[tuple[QuantityKind, re.Pattern[str]], ...]] = (
     # "a metre and a half", "a meter", "an inch", "another metre", "one more foot"
-    *((kind, re.compile(rf"{_B}(?P<lead>a|an|one|another)\s+(?:(?:single|{_MORE})\s+)?(?P<unit>{unit})"
-                        rf"(?P<tail>\s+and\s+a\s+(?:half|quarter))?"))
+    *((kind, re.compile(rf"{_B}{_AMOUNT_LEAD}(?P<lead>a|an|one|another)\s+(?:(?:single|{_MORE})\s+)?(?P<unit>{unit})"
+                        rf"(?P<tail>\s+and\s+a\s+(?:half|quarter))?{_AMOUNT_TAIL}"))
       for kind, unit in ((QuantityKind.LENGTH, _LENGTH_UNIT), (QuantityKind.ANGLE, _ANGLE_UNIT))),
     # "half a meter", "a quarter of a metre", "three quarters of a meter"
-    *((kind, re.compile(rf"{_B}(?P<frac>{_LEAD_FRACTION})\s*(?P<unit>{unit})"))
+    *((kind, re.compile(rf"{_B}{_AMOUNT_LEAD}(?P<frac>{_LEAD_FRACTION})\s*(?P<unit>{unit}){_AMOUNT_TAIL}"))
       for kind, unit in ((QuantityKind.LENGTH, _LENGTH_UNIT), (QuantityKind.ANGLE, _ANGLE_UNIT))),
     # "2 metres", "1.5m", "sixty centimetres", "two and a half meters", "a couple of meters",
     # "two more feet", "forty five more degrees"; "three or four feet" (a range: the smaller counts)
-    *((kind, re.compile(rf"{_B}(?:(?P<low>{NUMBER})\s+(?:or|to)\s+|(?P<low_digits>\d+(?:\.\d+)?)\s*-\s*(?=\d))?(?P<num>{NUMBER}|{_VAGUE})"
+    *((kind, re.compile(rf"{_B}{_AMOUNT_LEAD}(?:(?P<low>{NUMBER})\s+(?:or|to)\s+|(?P<low_digits>\d+(?:\.\d+)?)\s*-\s*(?=\d))?"
+                        rf"(?P<num>{NUMBER}|{_VAGUE})"
                         rf"(?:\s+{_MORE})?\s*-?\s*(?P<unit>{unit})"
-                        rf"(?P<tail>\s+and\s+a\s+(?:half|quarter))?"))
+                        rf"(?P<tail>\s+and\s+a\s+(?:half|quarter))?{_AMOUNT_TAIL}"))
       for kind, unit in ((QuantityKind.LENGTH, _LENGTH_UNIT), (QuantityKind.ANGLE, _ANGLE_UNIT))),
 )
 #: "pi/2 radians", "pi radians", "half pi"
@@ -143,7 +155,7 @@ _TURN_PATTERN: Final = re.compile(
     rf"[\s-]*(?:full\s+|complete\s+|whole\s+)?(?P<noun>{_TURN_NOUN})")
 #: Words after a number that make it no distance or angle ("5 seconds", "3 times").
 _NOT_UNITS: Final = r"(?:seconds?|secs?|minutes?|mins?|hours?|times|steps?|percent|%|x|people|persons?|doors?)"
-_BARE_PATTERN: Final = re.compile(rf"{_B}(?P<num>{NUMBER})(?!\s*(?:st|nd|rd|th)\b)(?![\w])(?!\s*{_NOT_UNITS}\b)")
+_BARE_PATTERN: Final = re.compile(rf"{_B}{_AMOUNT_LEAD}(?P<num>{NUMBER})(?!\s*(?:st|nd|rd|th)\b)(?![\w])(?!\s*{_NOT_UNITS}\b)")
 #: "1 m 50", "2 metres 30": metres and centimetres.
 _METRES_CENTIMETRES: Final = re.compile(
     r"(?<![\w.])(?P<m>\d+)\s*(?:m|meters?|metres?)\s+(?:and\s+)?(?P<cm>\d{1,2})"
@@ -223,9 +235,13 @@ def _word_integer(t: str) -> int:
     words = [w for w in t.split() if w != "and"]
     if not words:
         raise ValueError(f"{t!r} is not a number")
-    if len(words) >= 2 and words[0] in ONES and 1 <= ONES[words[0]] <= 9 and words[1] in TENS:
-        # "one eighty" is 180, "two twenty five" 225 (spoken hundreds)
+    if len(words) >= 2 and words[0] in ONES and 1 <= ONES[words[0]] <= 9 and (
+            words[1] in TENS or 10 <= ONES.get(words[1], 0) <= 19):
+        # "one eighty" is 180, "two twenty five" 225, "three fifteen" 315 (spoken hundreds)
         return 100 * ONES[words[0]] + _word_integer(" ".join(words[1:]))
+    if len(words) == 3 and words[0] in ONES and 1 <= ONES[words[0]] <= 9 and words[1] in ("oh", "o", "zero") \
+            and 1 <= ONES.get(words[2], 0) <= 9:
+        return 100 * ONES[words[0]] + ONES[words[2]]  # "one oh five" is 105
     total = 0
     current = 0
     for w in words:

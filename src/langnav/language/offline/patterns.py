@@ -23,6 +23,7 @@ EXPLORE_RE: Final = any_of(lx.EXPLORE_PATTERNS)
 STOP_RE: Final = rx(lx.STOP_PHRASES)
 ROTATE_VERB_RE: Final = rx(lx.ROTATE_VERBS, "verb")
 GO_VERB_RE: Final = rx(lx.GO_VERBS, "verb")
-LITTLE_RE: Final = rx(lx.LITTLE_PHRASES)
+#: "a little bit more", "a tad further": a little (it adds to what was done).
+LITTLE_RE: Final = re.compile(lx.phrase_regex(lx.LITTLE_PHRASES) + r"(?:\s+(?:more|further|farther|extra|again)\b)?")
 MOVE_DIR_RE: Final = rx(lx.MOVE_DIRECTIONS, "dir")
 ROTATE_DIR_RE: Final = rx(lx.ROTATE_DIRECTIONS, "dir")

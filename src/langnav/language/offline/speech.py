@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 from typing import Final
 
+from langnav.language.offline.lexicon import TYPOS
 from langnav.language.offline.vocabulary import VOCABULARY
 
 #: Hesitation sounds: no meaning in any position.
@@ -68,7 +69,8 @@ def plain_speech(prompt: str) -> str:
         bare = token.lower().strip(",.;:!?\"'")
         punct = token[len(token.rstrip(",.;:!?")):]
         after_number = bool(kept) and _NUMBER_WORD.match(kept[-1].lower()) is not None
-        if bare in HESITATIONS or (_NOISE.match(bare) and bare not in VOCABULARY) \
+        # chat spellings ("fwd", "rt") are words, not noise
+        if bare in HESITATIONS or (_NOISE.match(bare) and bare not in VOCABULARY and bare not in TYPOS) \
                 or (bare in _UNIT_SOUNDS and not after_number):
             _carry(kept, punct)
             continue
@@ -91,7 +93,7 @@ def _break_before_marker(m: re.Match[str]) -> str:
 
 
 #: Words that may be said twice on purpose ("turn left, left": no; "very very slowly": harmless).
-_REPEATABLE: Final = frozenset({"very", "no"})
+_REPEATABLE: Final = frozenset({"very", "no", "right"})  # "turn right right now": a side, then "right now"
 
 
 def _carry(kept: list[str], punct: str) -> None:

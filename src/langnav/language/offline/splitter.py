@@ -30,7 +30,9 @@ _AND: Final = re.compile(r"\s+(?:and|&|plus|\+)\s+", re.IGNORECASE)
 _LEAD_FILLER: Final = frozenset({"please", "also", "then", "now", "just", "immediately", "kindly",
                                  "finally", "afterwards", "quickly", "slowly", "carefully", "once",
                                  "there", "when", "you", "get", "are", "through", "done", "arrived",
-                                 "reached", "try", "to", "next", "straight", "again"})
+                                 "reached", "try", "to", "next", "straight", "again",
+                                 # "and after turn right": "after" with no event after it is "then"
+                                 "after"})
 #: Verbs that start an instruction (the first word of each multi-word verb is enough).
 _STEP_VERBS: Final = frozenset(
     {v.split()[0] for v in (*GO_VERBS, *ROTATE_VERBS, *STOP_PHRASES)}

@@ -167,8 +167,10 @@ def _clauses(text: str) -> tuple[list[str], bool]:
         photo = photo or without.asked
         if without.rest and not is_hedge(without.rest):
             kept.append(without.rest)
-    joined = join_fragments(kept, _is_open)
-    return apply_corrections(joined), photo
+    # fragments join the instruction they complete both before and after the corrections: "move five
+    # meters, I mean five feet, forward" is corrected first, then completed
+    joined = join_fragments(apply_corrections(join_fragments(kept, _is_open)), _is_open)
+    return joined, photo
 
 
 def _is_open(clause: str) -> bool:
