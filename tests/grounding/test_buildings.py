@@ -124,28 +124,12 @@ def test_the_l_floor_is_what_the_tests_expect(name: str, turn: float) -> None:
 
 
 @pytest.mark.parametrize(("name", "turn"), CASES)
-def test_the_last_room_on_your_left_is_the_last_along_the_way_ahead(name: str, turn: float) -> None:
-    # in leg B facing up it: the rooms south of leg A are also on the left (behind, and farther by
-    # straight line); the last one ahead is room 5, at the end of leg B
+@pytest.mark.parametrize("words", ["first", "nearest"])
+def test_the_first_room_on_your_left_is_by_straight_line(name: str, turn: float, words: str) -> None:
+    # the contract's order: straight-line distance to the room's nearest cell (room 2's wall runs
+    # beside the robot in leg B, though its door is back in leg A)
     a, frame = floor(name)
-    r = plan("go into the last room on your left", a, pose_in(frame, 11.0, 8.0, 90.0, turn))
-    assert a.room_at(*last_goal(r)) is room_holding(a, frame, 8.0, 14.0)
-
-
-@pytest.mark.parametrize(("name", "turn"), CASES)
-def test_the_first_room_on_your_left_is_the_first_met_walking(name: str, turn: float) -> None:
-    # room 2's wall runs beside the robot (straight-line nearest), but its door is far back in leg A;
-    # walking on, room 5's door is the first on the left
-    a, frame = floor(name)
-    r = plan("go into the first room on your left", a, pose_in(frame, 11.0, 10.0, 90.0, turn))
-    assert a.room_at(*last_goal(r)) is room_holding(a, frame, 8.0, 14.0)
-
-
-@pytest.mark.parametrize(("name", "turn"), CASES)
-def test_the_nearest_room_on_your_left_is_by_straight_line(name: str, turn: float) -> None:
-    # the contract's "nearest": straight-line distance to the room's nearest cell
-    a, frame = floor(name)
-    r = plan("go into the nearest room on your left", a, pose_in(frame, 11.0, 10.0, 90.0, turn))
+    r = plan(f"go into the {words} room on your left", a, pose_in(frame, 11.0, 10.0, 90.0, turn))
     assert a.room_at(*last_goal(r)) is room_holding(a, frame, 5.0, 9.0)
 
 
@@ -209,3 +193,67 @@ def test_a_room_seen_through_a_doorway_is_not_part_of_the_room(half: MapAnalysis
     assert a_room is not None and b_room is not None
     assert unscanned_part_m2(a_room, half) == 0.0  # room G, behind A's door
     assert unscanned_part_m2(b_room, half) == pytest.approx(8.9 * 6.5, rel=0.05)
+
+
+# ------------------------------------------------------------------------------ following the L
+#: The robot's centre rounds the inner corner of the L (x 10, y 7) at about its radius.
+INNER_CORNER = (10.2, 6.8)
+#: The walk's lattice may make the way a little longer than the shortest one (a lattice step).
+WAY_SLACK_M = 0.3
+
+
+def drawn_point(name: str, p: Point) -> Point:
+    """A point of the map back on the drawn floor (the quarter turn undone)."""
+    return p if name == "drawn" else (18.0 - p[1], p[0])
+
+
+def walked(a: Point, b: Point) -> float:
+    """The shortest walk on the drawn L from a point of leg A to a point of either leg."""
+    if b[1] > INNER_CORNER[1] and b[0] > INNER_CORNER[0]:
+        return math.dist(a, INNER_CORNER) + math.dist(INNER_CORNER, b)
+    return math.dist(a, b)
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+@pytest.mark.parametrize("fraction", [("a quarter of the way", 0.25), ("halfway", 0.5),
+                                      ("three quarters of the way", 0.75)])
+def test_a_fraction_down_the_l_corridor_is_measured_round_the_bend(name: str, turn: float,
+                                                                   fraction: tuple[str, float]) -> None:
+    a, frame = floor(name)
+    hall = room_holding(a, frame, 6.0, 6.0)
+    words, f = fraction
+    r = plan(f"go {words} down the corridor", a, pose_in(frame, 2.0, 6.0, 0.0, turn))
+    goal = drawn_point(name, last_goal(r))
+    assert a.room_at(*last_goal(r)) is hall
+    far_end = (11.0, max(drawn_point(name, (float(x), float(y)))[1] for x, y in hall.cells_xy))
+    way = walked((2.0, 6.0), far_end)
+    assert walked((2.0, 6.0), goal) <= f * way + WAY_SLACK_M  # never farther than asked
+    assert walked((2.0, 6.0), goal) >= f * way - 1.0
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+def test_following_the_l_corridor_ends_at_its_far_end_in_the_hallway(name: str, turn: float) -> None:
+    a, frame = floor(name)
+    hall = room_holding(a, frame, 6.0, 6.0)
+    r = plan("follow the corridor", a, pose_in(frame, 2.0, 6.0, 0.0, turn))
+    assert r.ok, r.clarification
+    (c,) = r.commands
+    assert isinstance(c, NavigateThroughPoses) and len(c.poses) >= 3
+    for p in c.poses:
+        assert a.room_at(p[0], p[1]) is hall
+    x, y = drawn_point(name, last_goal(r))
+    assert 10.0 < x < 12.0 and y >= 15.5
+    # and back the other way from leg B, facing down it
+    back = plan("follow the corridor", a, pose_in(frame, 11.0, 12.0, 270.0, turn))
+    x, y = drawn_point(name, last_goal(back))
+    assert x <= 2.5 and 5.0 < y < 7.0
+
+
+def test_doors_are_counted_among_those_of_the_space_the_robot_is_in(half: MapAnalysis) -> None:
+    # in the hallway facing east: its two doors are on the right; the door between room A and the
+    # unscanned room G is no door of the hallway, so there is no third door on the right
+    second = plan("go to the second door on your right", half, (2.0, 11.0, 0.0))
+    assert math.dist(last_goal(second), (12.0, 10.0)) <= 0.75
+    third = plan("go to the third door on your right", half, (2.0, 11.0, 0.0))
+    assert not third.ok and third.commands == ()
+    assert "only two doors on your right" in (third.clarification or "")

@@ -4,13 +4,9 @@ The meanings follow ``../shared/bench/README.md``:
 
 * left / right: the element's reference point has a positive / negative lateral offset;
   ahead: within +-60 deg of the heading; behind: beyond +-120 deg;
-* nearest: straight-line distance from the robot to the element's reference point (door: centre;
-  room: nearest cell; obstacle: nearest cell; unexplored area: nearest frontier cell), among the
-  elements the other words select; "the X on your left" = the nearest;
-* first, second ..., last / farthest: the order the robot meets them walking there (the shortest
-  path through free space, ``walking_order``): the straight-line order in an open room or a straight
-  hallway, and the order along the way round the bend of an L-shaped corridor; "the last" is the
-  last of those met walking on, not turning back (``met_turning_back``), when there are any;
+* nearest / farthest and first, second ...: straight-line distance from the robot to the element's
+  reference point (door: centre; room: nearest cell; obstacle: nearest cell; unexplored area: nearest
+  frontier cell), among the elements the other words select; "the X on your left" = the nearest;
 * biggest / smallest: by area (a room's counting its unscanned part, ``floor_area_m2``); "this room":
   the room holding the robot; a corner with no room named is a corner of the robot's room; "the
   left corner": of the room's corners ahead, the farthest left.
@@ -23,7 +19,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Final
 
@@ -46,12 +42,10 @@ from langnav.analysis.elements import (
 from langnav.grounding.errors import GroundingError
 from langnav.grounding.geometry import (
     AHEAD_HALF_ANGLE_DEG,
-    BEHIND_HALF_ANGLE_DEG,
     Point,
     Pose,
     bearing_rad,
     closest_on_segment,
-    free_space_for,
     is_ahead,
     is_behind,
     is_left,
@@ -60,7 +54,6 @@ from langnav.grounding.geometry import (
     nearest_point,
     to_robot_frame,
 )
-from langnav.grounding.walking import walk_from
 from langnav.language.intent import Element as Kind
 from langnav.language.intent import ElementRef, Landmark, Place, Relation, Side, Superlative
 from langnav.maps.grid import UNKNOWN
@@ -289,30 +282,6 @@ def distance_to(e: Element, xy: Point) -> float:
     return math.dist(xy, reference_point(e))
 
 
-def walking_order(analysis: MapAnalysis, pose: Pose) -> Callable[[Element], float]:
-    """How far the robot walks to reach each element (its reference point; a room's nearest cell, an
-    area's frontier, an obstacle's cells): the order in which one meets them along the way. "The
-    second door on your left", "the last room on the right" count in this order: in an open room or
-    a straight hallway it is the straight-line order, and around the bend of an L-shaped corridor or
-    behind a wall it is the order a person walking there meets them. Straight-line distance when the
-    robot stands on no passable cell (nothing is reachable: the order is all there is to go by)."""
-    walk = walk_from(free_space_for(analysis.grid, analysis.params), pose.xy)
-    if walk is None:
-        return lambda e: distance_to(e, pose.xy)
-    return lambda e: walk.to(_cells(e))
-
-
-def met_turning_back(analysis: MapAnalysis, pose: Pose, pool: Sequence[Element]) -> set[int]:
-    """The ``id``s of the elements of ``pool`` whose walk sets off behind the robot (beyond +-120 deg
-    of its heading, the contract's "behind"): "the last room on your left" is the last one met
-    walking on, not a room back the way the robot came that happens to be farther."""
-    walk = walk_from(free_space_for(analysis.grid, analysis.params), pose.xy)
-    if walk is None:
-        return set()
-    limit = math.radians(BEHIND_HALF_ANGLE_DEG)
-    return {id(e) for e in pool if abs(walk.sets_off_bearing(_cells(e), pose)) > limit}
-
-
 def side_point(e: Element, pose: Pose) -> Point:
     """The point whose side of the robot decides 'on your left' (the reference point)."""
     if isinstance(e, UnexploredArea) and len(e.frontier):
@@ -509,20 +478,21 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
             return 0
         return 0 if _in_space(e, here, analysis) else 1
 
+    if ref.ordinal is not None and ref.kind in (Kind.DOOR, Kind.NARROW_PASSAGE) and here is not None \
+            and space is None and any(local_first(e) == 0 for e in elements_of_kind(analysis, ref.kind)):
+        # "the fourth door on your left" counts the doors of the space the robot is in (README): with
+        # three of them on that side there is no fourth, whatever doors of other rooms it could see
+        pool = [e for e in pool if local_first(e) == 0]
+
     sup = ref.superlative
     if sup in (Superlative.BIGGEST, Superlative.SMALLEST):
         ordered = sorted(pool, key=lambda e: floor_area_m2(e, analysis), reverse=sup == Superlative.BIGGEST)
     elif sup in (Superlative.WIDEST, Superlative.NARROWEST):
         ordered = sorted(pool, key=width_of, reverse=sup == Superlative.WIDEST)
-    elif sup == Superlative.FARTHEST:  # "the last room on the right": the last one met walking on
-        walk = walking_order(analysis, pose)
-        back = met_turning_back(analysis, pose, pool)
-        ordered = sorted(pool, key=lambda e: (local_first(e), id(e) in back, -walk(e)))
+    elif sup == Superlative.FARTHEST:
+        ordered = sorted(pool, key=lambda e: (local_first(e), -distance_to(e, pose.xy)))
     elif by_landmark is not None and sup is None and ref.ordinal is None:
         ordered = sorted(pool, key=lambda e: by_landmark[id(e)])  # "the door next to the box": nearest to it
-    elif ref.ordinal is not None and sup is None:  # "the second door on your left": counted walking
-        walk = walking_order(analysis, pose)
-        ordered = sorted(pool, key=lambda e: (local_first(e), walk(e)))
     else:
         ordered = sorted(pool, key=lambda e: (local_first(e), distance_to(e, pose.xy)))
 

@@ -1,6 +1,6 @@
-"""How far the robot walks to things, and which way the walk sets off: the order in which a person
-walking from the robot meets the doors and rooms ("the second door on your left", "the last room on
-the right"), not the order of straight lines through walls.
+"""How far the robot walks to places, and the way it walks there: "follow the corridor" and
+"halfway down the hallway" are measured along the way the hallway leads, round the bend of an
+L-shaped corridor, not along a straight line through its walls.
 
 The walk is the shortest path through passable cells (clearance at least the robot's radius, in
 the robot's component), measured on the lattice of every ``k``-th cell (``lattice_stride``): two
@@ -25,11 +25,11 @@ import numpy.typing as npt
 from scipy import ndimage
 from skimage.graph import MCP_Geometric
 
-from langnav.grounding.geometry import FloatArray, FreeSpace, Point, Pose, bearing_rad
+from langnav.grounding.geometry import FloatArray, FreeSpace, Point
 
-#: The walk sets off in the direction of its first point this far from the robot (past the cells
-#: round the robot, where a lattice path bends to reach the lattice).
-SET_OFF_M: Final = 1.0
+#: With a way onward, the cells closed behind the robot begin this far back (the start's own
+#: lattice neighbours stay open).
+CLOSED_FROM_M: Final = 0.1
 #: Walks kept per free space (the starts of the steps of a few prompts).
 WALK_CACHE_SIZE: Final = 8
 
@@ -76,44 +76,63 @@ class Walk:
         li, lj, gap = self._lattice(a)
         return float(np.min(self.metres[li, lj] + gap))
 
-    def sets_off_bearing(self, pts: FloatArray, pose: Pose) -> float:
-        """The bearing (radians from the heading, left > 0) in which the shortest walk to ``pts``
-        sets off from ``pose``: towards its first point ``SET_OFF_M`` away (the target itself when it
-        is nearer)."""
-        a = np.asarray(pts, dtype=float).reshape(-1, 2)
-        li, lj, gap = self._lattice(a)
-        i = int(np.argmin(self.metres[li, lj] + gap))
-        end = (int(self.via_row[li[i], lj[i]]), int(self.via_col[li[i], lj[i]]))
+    def reached(self, xs: FloatArray, ys: FloatArray) -> npt.NDArray[np.bool_]:
+        """Whether the walk reaches each point's lattice cell itself (not only a cell near it)."""
+        pts = np.column_stack([np.ravel(xs), np.ravel(ys)])
+        if len(pts) == 0:
+            return np.zeros(np.shape(xs), dtype=bool)
+        li, lj, _ = self._lattice(pts)
+        hit = (self.via_row[li, lj] == li) & (self.via_col[li, lj] == lj)
+        return np.asarray(hit.reshape(np.shape(xs)), dtype=bool)
+
+    def each(self, xs: FloatArray, ys: FloatArray) -> FloatArray:
+        """The walk to each point (x, y arrays of one shape), in metres."""
+        pts = np.column_stack([np.ravel(xs), np.ravel(ys)])
+        if len(pts) == 0:
+            return np.zeros(np.shape(xs), dtype=np.float64)
+        li, lj, gap = self._lattice(pts)
+        return np.asarray((self.metres[li, lj] + gap).reshape(np.shape(xs)), dtype=np.float64)
+
+    def path_to(self, pt: Point) -> list[Point]:
+        """The shortest walk to ``pt`` as world points: the start, the lattice cells walked through,
+        and ``pt``."""
+        li, lj, _ = self._lattice(np.asarray([pt], dtype=float))
+        end = (int(self.via_row[li[0], lj[0]]), int(self.via_col[li[0], lj[0]]))
         grid = self.space.grid
+        out: list[Point] = [self.start]
         for r, c in self.mcp.traceback(end):
             x, y = grid.cell_to_world(self.row0 + r * self.stride, self.col0 + c * self.stride)
-            p = (float(x), float(y))
-            if math.dist(p, pose.xy) >= SET_OFF_M:
-                return bearing_rad(pose, p)
-        return bearing_rad(pose, (float(a[i, 0]), float(a[i, 1])))
+            out.append((float(x), float(y)))
+        out.append((float(pt[0]), float(pt[1])))
+        return out
 
 
-_CACHE: weakref.WeakKeyDictionary[FreeSpace, dict[tuple[int, int], Walk]] = weakref.WeakKeyDictionary()
+_Key = tuple[tuple[int, int], tuple[float, float, float] | None]
+_CACHE: weakref.WeakKeyDictionary[FreeSpace, dict[_Key, Walk]] = weakref.WeakKeyDictionary()
 
 
-def walk_from(space: FreeSpace, xy: Point) -> Walk | None:
+def walk_from(space: FreeSpace, xy: Point, *, onward: Point | None = None, onward_m: float = 0.0) -> Walk | None:
     """The walks from the robot at ``xy``; None when it stands on no passable cell (nothing is
-    reachable). Cached per free space and start cell."""
+    reachable). With ``onward`` (a unit direction), the walks that set off that way: the passable
+    cells within ``onward_m`` of the robot behind it (against ``onward``) are closed, so that the
+    way back is shut (``onward_m`` a hallway's width: "down the corridor" is the way it faces).
+    Cached per free space, start cell and closure."""
     start = space.start_cell(*xy)
     if start is None:
         return None
+    key = (start, None if onward is None else (round(onward[0], 3), round(onward[1], 3), round(onward_m, 2)))
     per_space = _CACHE.setdefault(space, {})
-    hit = per_space.get(start)
+    hit = per_space.get(key)
     if hit is not None:
         return hit
-    walk = _walk(space, start, xy)
+    walk = _walk(space, start, xy, onward, onward_m)
     if len(per_space) >= WALK_CACHE_SIZE:
         per_space.clear()
-    per_space[start] = walk
+    per_space[key] = walk
     return walk
 
 
-def _walk(space: FreeSpace, start: tuple[int, int], xy: Point) -> Walk:
+def _walk(space: FreeSpace, start: tuple[int, int], xy: Point, onward: Point | None, onward_m: float) -> Walk:
     k = lattice_stride(space.grid.resolution_m, space.robot_radius_m)
     comp = int(space.components[start])
     rs, cs = space.component_box(comp)
@@ -122,6 +141,12 @@ def _walk(space: FreeSpace, start: tuple[int, int], xy: Point) -> Walk:
     col0 = start[1] - ((start[1] - cs.start) // k) * k
     lattice = space.components[row0:rs.stop:k, col0:cs.stop:k] == comp
     s = ((start[0] - row0) // k, (start[1] - col0) // k)
+    if onward is not None and onward_m > 0:
+        rr, cc = np.indices(lattice.shape)
+        xs, ys = space.grid.cell_to_world(row0 + rr * k, col0 + cc * k)
+        dx, dy = xs - space.xs[start], ys - space.ys[start]
+        behind = (dx * onward[0] + dy * onward[1] < -CLOSED_FROM_M) & (np.hypot(dx, dy) <= onward_m)
+        lattice = lattice & ~behind
     costs = np.where(lattice, 1.0, np.inf)
     mcp = MCP_Geometric(costs, fully_connected=True)
     cum, _ = mcp.find_costs([s])
@@ -132,4 +157,4 @@ def _walk(space: FreeSpace, start: tuple[int, int], xy: Point) -> Walk:
     return Walk(space, xy, k, row0, col0, metres, vi.astype(np.intp), vj.astype(np.intp), mcp)
 
 
-__all__ = ["SET_OFF_M", "Walk", "lattice_stride", "walk_from"]
+__all__ = ["Walk", "lattice_stride", "walk_from"]
