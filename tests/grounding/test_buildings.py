@@ -257,3 +257,46 @@ def test_doors_are_counted_among_those_of_the_space_the_robot_is_in(half: MapAna
     third = plan("go to the third door on your right", half, (2.0, 11.0, 0.0))
     assert not third.ok and third.commands == ()
     assert "only two doors on your right" in (third.clarification or "")
+
+
+# ------------------------------------------------------------------------------ staggered rooms
+def build_staggered() -> MapAnalysis:
+    """A hallway (y 5-7, x 1-17); rooms south (x 1-6, 6-11, 11-17; doors at their west ends) and
+    north (x 1-4, 4-9, 9-17; doors at their east ends): rooms wider than their doors, doors far from
+    straight across each other."""
+    b = MapBuilder(18.0, 12.0)
+    b.room(1.0, 1.0, 17.0, 11.0)
+    b.wall(1.0, 5.0, 17.0, 5.0)
+    b.wall(1.0, 7.0, 17.0, 7.0)
+    for x in (6.0, 11.0):
+        b.wall(x, 1.0, x, 5.0)
+    for x in (4.0, 9.0):
+        b.wall(x, 7.0, x, 11.0)
+    for x in (2.0, 7.0, 12.0):
+        b.door_h(x, 5.0, 0.9)
+    for x in (3.5, 8.5, 16.0):
+        b.door_h(x, 7.0, 0.9)
+    return analyze(b.build("staggered"), DEFAULT_PARAMS)
+
+
+@pytest.fixture(scope="module")
+def staggered() -> MapAnalysis:
+    return build_staggered()
+
+
+@pytest.mark.parametrize(("prompt", "pose"), [
+    ("go into the room across the hall", (5.0, 5.6, 90.0)),     # near the middle, facing north
+    ("go into the room across the hall", (5.0, 5.3, 270.0)),    # by the south wall, facing it
+    ("turn around, then go into the room across the hall", (5.0, 6.0, 270.0)),
+])
+def test_the_room_across_the_hall_is_judged_by_its_extent(staggered: MapAnalysis, prompt: str,
+                                                          pose: tuple[float, float, float]) -> None:
+    # the north room x 4-9 spans the robot's place along the hallway, though its door is 3.5 m on
+    x, y = last_goal(plan(prompt, staggered, pose))
+    assert staggered.room_at(x, y) is staggered.room_at(6.5, 9.0)
+
+
+def test_two_rooms_equally_across_are_asked_about(staggered: MapAnalysis) -> None:
+    # at x 9 the wall between the north rooms x 4-9 and 9-17 is straight across
+    r = plan("go into the room across the hall", staggered, (9.0, 6.0, 90.0))
+    assert not r.ok and r.commands == () and "which one" in (r.clarification or "")
