@@ -364,3 +364,24 @@ def test_aisle_between_a_long_shelf_and_the_wall_is_a_passage() -> None:
     assert p.center == pytest.approx((7.65, 3.0), abs=0.06)
     assert p.width_m == pytest.approx(0.7, abs=0.051)
     assert p.length_m == pytest.approx(4.0, abs=0.15)
+
+
+def test_a_door_in_a_side_wall_leads_off_the_passage() -> None:
+    # The passage with a doorway in its south wall, that doorway read as a door (its normal
+    # across the passage's axis): the passage stays; the same door turned across the way is the
+    # passage's own gap.
+    grid = passage_with_doorway()
+    labels, n = labels_for_free_components(grid)
+    layers = GridLayers(grid)
+
+    def door(normal: tuple[float, float]) -> Door:
+        return Door(id="door_1", center=(4.25, 0.925), width_m=1.0, jambs=((3.75, 0.925), (4.75, 0.925)),
+                    normal=normal, connects=("space_1", "space_2"))
+
+    def found(d: Door) -> tuple:
+        return find_passages(grid, P, labels, {k: f"space_{k}" for k in range(1, n + 1)}, [d],
+                             layers.occupied | layers.unknown, layers=layers)
+
+    (p,) = found(door((0.0, 1.0)))
+    assert p.center == pytest.approx((4.25, 1.45), abs=0.06)
+    assert found(door((1.0, 0.0))) == ()

@@ -86,6 +86,9 @@ WALL_RUN_M: Final = 0.6
 #: ... and the thing is deeper than a wall is thick (door_max_depth_m): blocked along this share
 #: of that depth past its face (its outline may have a scan dropout).
 DEEP_SHARE: Final = 0.8
+#: A door lies across a passage when its normal (the way through it) is within 45 degrees of
+#: the passage's axis; farther round, it is in a side wall.
+DOOR_ACROSS_COS: Final = math.cos(math.radians(45.0))
 #: Look this far beyond a mouth for the space the passage opens into.
 MOUTH_SEARCH_M: Final = 1.0
 #: A passage leaves the robot at least this much room on each side (about a robot's
@@ -538,10 +541,15 @@ def _side_distances_each(open_: BoolArray, pts: Sequence[npt.NDArray[np.float64]
 def _is_the_door(door: Door, centre: tuple[float, float], axis: tuple[float, float], length_m: float,
                  width_m: float, params: AnalysisParams) -> bool:
     """Is a passage (``centre``, unit ``axis`` in world metres) the gap of ``door``? When the door
-    lies across it away from its mouths: a door at one of its mouths is how one enters a passage
-    (a short corridor between two rooms with a door at its end), not the passage itself."""
+    lies across it (one goes through the door going along the passage) away from its mouths: a
+    door at one of its mouths is how one enters a passage (a short corridor between two rooms
+    with a door at its end), and a door in one of its side walls leads off it; neither is the
+    passage itself."""
     n = math.hypot(*axis) or 1.0
     ux, uy = axis[0] / n, axis[1] / n
+    dn = math.hypot(*door.normal)
+    if dn > 0 and abs(door.normal[0] * ux + door.normal[1] * uy) / dn < DOOR_ACROSS_COS:
+        return False
     dx, dy = door.center[0] - centre[0], door.center[1] - centre[1]
     along, across = dx * ux + dy * uy, abs(-dx * uy + dy * ux)
     if across > width_m / 2 + params.door_max_depth_m:
