@@ -296,3 +296,92 @@ def test_strip_between_a_shelf_and_an_unexplored_area_is_no_passage() -> None:
     assert passages_of(hall(unscanned=True)) == ()
     (p,) = passages_of(hall(unscanned=False))
     assert p.center == pytest.approx((4.0, 2.3), abs=0.05)
+
+
+def sofa_squeeze(shelf_to_wall: bool = True) -> OccupancyGrid:
+    """An 8 x 6 m room split by furniture: a 2.4 x 0.7 m sofa (outline scanned, inside unknown)
+    0.6 m from the west wall (x 0.6 to 3.0, y 3.0 to 3.7), and a 0.3 m deep shelf from the sofa
+    to the east wall (or stopping 1.5 m short of it: ``shelf_to_wall=False``). The 0.6 m
+    squeeze between the sofa and the west wall is the way into the north part of the room."""
+    b = MapBuilder(10.0, 8.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 8.0, 6.0)
+    b.box(0.6, 3.0, 3.0, 3.7).unknown(0.65, 3.05, 2.95, 3.65)
+    b.box(3.0, 3.2, 8.0 if shelf_to_wall else 6.5, 3.5)
+    return b.build(source=f"sofa_squeeze_{shelf_to_wall}")
+
+
+def test_squeeze_between_furniture_and_a_wall_that_is_the_only_way_is_a_passage() -> None:
+    # Shorter than twice its width (0.7 x 0.6 m), but the only way past the sofa and the shelf.
+    (p,) = passages_of(sofa_squeeze())
+    assert p.center == pytest.approx((0.3, 3.35), abs=0.06)
+    assert p.width_m == pytest.approx(0.6, abs=0.051)
+    assert p.length_m == pytest.approx(0.7, abs=0.15)
+
+
+def test_the_same_squeeze_with_a_way_round_is_no_passage() -> None:
+    # The shelf stops short of the east wall: one walks round the other end; the squeeze is a
+    # gap beside a sofa.
+    assert passages_of(sofa_squeeze(shelf_to_wall=False)) == ()
+
+
+@pytest.mark.parametrize("degrees", [8.0, 23.0])
+def test_rotated_noisy_squeeze_is_still_the_only_way(degrees: float) -> None:
+    found = passages_of(with_lidar_noise(rotated(sofa_squeeze(), degrees)))
+    assert len(found) == 1
+    assert found[0].width_m == pytest.approx(0.6, abs=0.1)
+
+
+def test_door_open_along_the_way_beside_a_wall_is_no_squeeze() -> None:
+    # A partition wall across an 8 x 6 m room leaves a 0.8 m doorway at the west wall, its
+    # door leaf (0.05 m thick) open northwards along the way: the only way north, and the west
+    # wall runs on past it, but what stands beside the way is a jamb and a door leaf, no deeper
+    # than a wall: a door, not a squeeze past furniture.
+    b = MapBuilder(10.0, 8.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 8.0, 6.0)
+    b.rect(0.8, 3.0, 8.0, 3.15, OCCUPIED)
+    b.rect(0.8, 3.15, 0.85, 3.95, OCCUPIED)
+    assert passages_of(b.build(source="door_leaf")) == ()
+
+
+def beside_east_wall(x0: float, y0: float, x1: float, y1: float) -> OccupancyGrid:
+    """An 8 x 6 m room with one box (x0..x1, y0..y1) standing free near its east wall (x = 8)."""
+    b = MapBuilder(10.0, 8.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 8.0, 6.0)
+    b.box(x0, y0, x1, y1)
+    return b.build(source="beside_east_wall")
+
+
+def test_gap_between_a_pallet_and_the_wall_is_walked_round() -> None:
+    # A 1.0 x 1.2 m pallet 0.5 m from the wall: the 0.5 x 1.2 m gap is longer than twice its
+    # width, but one walks round the pallet.
+    assert passages_of(beside_east_wall(6.5, 2.0, 7.5, 3.2)) == ()
+
+
+def test_aisle_between_a_long_shelf_and_the_wall_is_a_passage() -> None:
+    # A 0.4 x 4 m shelf 0.7 m from the wall: as elongated as a corridor, an aisle along the shelf
+    # (though one could walk round the shelf too).
+    (p,) = passages_of(beside_east_wall(6.9, 1.0, 7.3, 5.0))
+    assert p.center == pytest.approx((7.65, 3.0), abs=0.06)
+    assert p.width_m == pytest.approx(0.7, abs=0.051)
+    assert p.length_m == pytest.approx(4.0, abs=0.15)
+
+
+def test_a_door_in_a_side_wall_leads_off_the_passage() -> None:
+    # The passage with a doorway in its south wall, that doorway read as a door (its normal
+    # across the passage's axis): the passage stays; the same door turned across the way is the
+    # passage's own gap.
+    grid = passage_with_doorway()
+    labels, n = labels_for_free_components(grid)
+    layers = GridLayers(grid)
+
+    def door(normal: tuple[float, float]) -> Door:
+        return Door(id="door_1", center=(4.25, 0.925), width_m=1.0, jambs=((3.75, 0.925), (4.75, 0.925)),
+                    normal=normal, connects=("space_1", "space_2"))
+
+    def found(d: Door) -> tuple:
+        return find_passages(grid, P, labels, {k: f"space_{k}" for k in range(1, n + 1)}, [d],
+                             layers.occupied | layers.unknown, layers=layers)
+
+    (p,) = found(door((0.0, 1.0)))
+    assert p.center == pytest.approx((4.25, 1.45), abs=0.06)
+    assert found(door((1.0, 0.0))) == ()

@@ -109,6 +109,17 @@ class AnalysisParams:
     seg_claim_free_m: float = 3.0
     #: Segmentation: clearance (m) below which a free cell cannot start a space (about a robot radius).
     seg_min_peak_m: float = 0.15
+    # -- wall lines (langnav.analysis.wall_lines): door-wide gaps in the building's walls --
+    #: Segmentation: a gap in a wall line from door_min_width_m up to this width (m: a double
+    #: door, an open office front) parts the spaces on its two sides before the flood, with a
+    #: doorway in it (0 switches it off). Wider openings are an open plan's arches, judged by
+    #: the flood alone.
+    seg_wall_line_gap_max_m: float = 2.0
+    #: Segmentation: ... when the wall line runs on past both ends of the gap for this length
+    #: (m: a wall, not a cabinet's corner), occupied on at least this share of it (a dashed
+    #: line: glass, laser gaps, open door leaves).
+    seg_wall_line_side_m: float = 1.0
+    seg_wall_line_side_share: float = 0.5
     # -- unexplored areas a person would send the robot to look at (not furniture insides) --
     #: An unknown region is worth a trip from this size (m2): a square about two robot widths
     #: across (0.7 m), room for the robot to drive in and turn; smaller pockets are the shadows

@@ -1,20 +1,28 @@
-"""Narrow passages: corridor-like constrictions of free space that are not doors.
+"""Narrow passages: tight ways through between two free areas that are not doors.
 
 On the skeleton of the navigable space, the clear width at a skeleton cell is twice its distance
-to the nearest blocking cell (occupied, or unknown beyond a noise speck). Skeleton cells whose
-width is between the robot's diameter and ``params.passage_max_width_m`` form candidate chains.
-A chain's *core* is where the width stays close to its narrowest (the stretch between two
-parallel sides, without the flaring mouths). A core is a passage when it is longer than
-``params.passage_min_length_m`` and clearly longer than wide (a short gap beside a chair is a
-gap, not a passage), wide enough for the robot with a margin, has sides along most of its
-length (or a wall along one side and a single doorway in the other: a passage with a door off
-it), solid ones (walls, furniture, a shelf's unscanned inside: not laser-ray stripes of unknown,
-nor the unscanned world beyond a sliver outside a wall), leads somewhere (both mouths open into free
-space wider than any passage: a dead-end slot does not), and it is not a door's own gap (a door
-across its middle; a door at one of its mouths is how it is entered). A passage
-along a wall (between the wall and a long shelf) shares its skeleton line with the one-sided
-strip along the rest of the room's walls: a core without sides along most of its length is
-split into its two-sided stretches, and each is judged on its own.
+to the nearest blocking cell (occupied, or unknown beyond a noise speck; isolated occupied scan
+specks do not block). Skeleton cells whose width is between the robot's diameter and
+``params.passage_max_width_m`` form candidate chains. A chain's *core* is where the width stays
+close to its typical width (the stretch over which the way stays tight, between two near-parallel
+sides, without the flaring mouths; one pinch point does not shorten it). A core is a passage when
+it is longer than ``params.passage_min_length_m``, wide enough for the robot with a margin, has
+sides along most of its length (or a wall along one side and a single doorway in the other: a
+passage with a door off it), solid ones (walls, furniture, a shelf's unscanned inside: not
+laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
+unexplored area), leads somewhere (both mouths open into free space wider than any passage: a
+dead-end slot does not), is not a door's own gap (a door across its middle; a door at one of its
+mouths is how it is entered), and is
+
+* clearly longer than wide (``PASSAGE_MIN_ELONGATION``: an aisle, a checkout lane, a corridor),
+  except a strip between a wall and a thing one can walk round (a pallet), which is one only when
+  as elongated as a corridor (an aisle along a shelf); or
+* a short squeeze between a wall and a piece of furniture deeper than any wall (a sofa, not a
+  door leaf) that is the only way from one side to the other.
+
+A passage along a wall (between the wall and a long shelf) shares its skeleton line with the
+one-sided strip along the rest of the room's walls: a core without sides along most of its length
+is split into its two-sided stretches, and each is judged on its own.
 """
 
 from __future__ import annotations
@@ -69,6 +77,18 @@ AXIS_SNAP_DEG: Final = 3.0
 #: each cell tried across this many directions over 180 degrees (22.5 degrees apart: the side
 #: of a passage at any angle is within 11.25 degrees, 2 % farther, of one of them).
 TWO_SIDED_DIRECTIONS: Final = 8
+#: A short squeeze beside a wall: the wall runs on past both mouths, blocked (within the
+#: squeeze's width) along this share of the samples there, and the thing beside it ends (open
+#: along as much).
+WALL_RUNS_ON_SHARE: Final = 0.7
+#: ... sampled this far past each mouth (m): a wall, not the corner of a jamb.
+WALL_RUN_M: Final = 0.6
+#: ... and the thing is deeper than a wall is thick (door_max_depth_m): blocked along this share
+#: of that depth past its face (its outline may have a scan dropout).
+DEEP_SHARE: Final = 0.8
+#: A door lies across a passage when its normal (the way through it) is within 45 degrees of
+#: the passage's axis; farther round, it is in a side wall.
+DOOR_ACROSS_COS: Final = math.cos(math.radians(45.0))
 #: Look this far beyond a mouth for the space the passage opens into.
 MOUTH_SEARCH_M: Final = 1.0
 #: A passage leaves the robot at least this much room on each side (about a robot's
@@ -158,6 +178,8 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     core_idx = idx[w <= ref[cid - 1] + CORE_WIDTH_TOL_M]
     core_id, m = label8_cells(core_idx, skel.shape)
     passages: list[NarrowPassage] = []
+    # Where the robot's centre fits with its margin (the distance table is exact that far).
+    fits = dist_of[d2] > params.robot_radius_m + PASSAGE_SIDE_MARGIN_M
     # Necessary conditions, vectorised, before the per-core work: a chain of n cells spans at
     # most n * sqrt(2) cells and at most its bounding box's diagonal.
     n_cells = np.bincount(core_id, minlength=m + 1)
@@ -203,8 +225,8 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 axis = np.array([0.0, math.copysign(1.0, axis[1])])
             proj = (pts - mean) @ axis
             length_m = (float(proj.max() - proj.min()) + 1.0) * res
-            rough_w = median(width_of[d2[rr, cc]])
-            if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * rough_w:
+            # Short ones too (a squeeze past furniture beside a wall is as deep as the furniture).
+            if length_m < params.passage_min_length_m:
                 continue
             measured.append((rr, cc, across, pts, mean, axis, proj, length_m))
         side_sets = _side_distances_each(sub, [m[3] for m in measured],
@@ -222,7 +244,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             # It runs where it has two sides: not on into its flaring mouths.
             lo, hi = float(proj[bounded].min()), float(proj[bounded].max())
             length_m = (hi - lo + 1.0) * res
-            if length_m < params.passage_min_length_m or length_m < PASSAGE_MIN_ELONGATION * width_m:
+            if length_m < params.passage_min_length_m:
                 continue
             # Wide enough for the robot to pass, and narrow (the band's test used the skeleton's
             # width, up to a cell off).
@@ -240,11 +262,38 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                        for sign, e in zip((-1.0, 1.0), ends_g, strict=True)):
                 continue
             centre_g = mean + 0.5 * (lo + hi) * axis
+            # Short (less than PASSAGE_MIN_ELONGATION times longer than wide), it is a gap: in a
+            # wall line (a door's business), between two objects or beside one (walked round).
+            # Except a squeeze between a wall and a thing standing beside it (the wall runs on
+            # past both mouths, the other side ends at both), a thing deeper than any wall or
+            # door leaf (a sofa, a cupboard: not a jamb with its door open along the way), that
+            # is the only way from one side to the other: a person points at that.
+            # Between a wall and a thing one can walk round (a pallet, a cabinet), a strip is a
+            # way of its own only when it is as elongated as a corridor (an aisle along a shelf).
+            elongated = length_m >= PASSAGE_MIN_ELONGATION * width_m
+            corridor_like = length_m >= params.hallway_min_elongation * width_m
+            if not corridor_like:
+                # (A short one needs the wall on past both of its mouths: it is a squeeze along a
+                # wall, not round the end of one.)
+                thing = _beside_a_wall(sub, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res, WALL_RUN_M / res,
+                                       both_mouths=not elongated)
+                if not elongated and (
+                        thing is None
+                        or not _deep(sub, pts[bounded], np.array([-axis[1], axis[0]]) * (2 * thing - 1),
+                                     sides[bounded, thing], params.door_max_depth_m / res)):
+                    continue
+                if thing is not None and _way_round(fits, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res):
+                    continue
             cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
             centre = (float(cx), float(cy))
             ax_w = np.subtract(grid.grid_to_world(r0 + centre_g[1] + axis[1], c0 + centre_g[0] + axis[0]), centre)
             axis_w = (float(ax_w[0]), float(ax_w[1]))
             if any(_is_the_door(d, centre, axis_w, length_m, width_m, params) for d in doors):
+                continue
+            # A short squeeze with a door at it is that door's opening (a door leaf, open along
+            # the way, lengthens its jamb).
+            if not elongated and any(math.dist(d.center, centre) <= length_m / 2 + params.door_max_depth_m
+                                     for d in doors):
                 continue
             ends_w: list[tuple[float, float]] = []
             spaces: list[str] = []
@@ -267,6 +316,72 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             two_r, two_c = _two_sided(sub, long_r, long_c, dist_of[d2[long_r, long_c]] / res, SIDE_TOL_M / res)
             pieces = [(pr, pc, None) for pr, pc in _pieces(two_r, two_c, sub.shape, min_cells)]
     return tuple(passages)
+
+
+def _beside_a_wall(open_: BoolArray, centre_g: npt.NDArray[np.float64], axis: npt.NDArray[np.float64],
+                   half_len: float, width: float, run: float, both_mouths: bool = True) -> int | None:
+    """Is the stretch (``centre_g``, unit ``axis``, ``half_len`` cells either way, ``width`` cells
+    wide) a squeeze between a wall and a thing beside it: past its mouths (from a quarter of its
+    width to ``run`` cells on) one side stays blocked within its width (the wall runs on) along
+    ``WALL_RUNS_ON_SHARE`` of the samples, past both mouths (or one, ``both_mouths=False``: a
+    wall that ends at a doorway), and the other is open along as much past both (the thing
+    ends)? The thing's side (0: along -normal, 1: along +normal, the normal being the axis
+    turned a quarter anticlockwise), or None."""
+    normal = np.array([-axis[1], axis[0]])
+    t = np.arange(width / 4.0, run + 0.5, 0.5)
+    starts = np.concatenate([centre_g + (half_len + t)[:, None] * axis, centre_g - (half_len + t)[:, None] * axis])
+    sides = _side_distances(open_, starts, np.full(len(starts), width / 2.0), normal, width / 2.0)
+    blocked = np.isfinite(sides)
+    n = len(t)
+    pick = min if both_mouths else max
+    on = [pick(blocked[:n, j].mean(), blocked[n:, j].mean()) for j in (0, 1)]
+    off = [max(blocked[:n, j].mean(), blocked[n:, j].mean()) for j in (0, 1)]
+    for j in (0, 1):
+        if on[j] >= WALL_RUNS_ON_SHARE and off[1 - j] <= 1.0 - WALL_RUNS_ON_SHARE:
+            return 1 - j
+    return None
+
+
+def _deep(open_: BoolArray, pts: npt.NDArray[np.float64], outward: npt.NDArray[np.float64],
+          side: npt.NDArray[np.float64], depth: float) -> bool:
+    """Is the thing on one side of a squeeze (its points ``pts``, the side ``side`` cells away
+    along the unit ``outward``) deeper than ``depth`` cells: blocked along ``DEEP_SHARE`` of the
+    samples that far past where it starts (a scan dropout in its outline is no way into it),
+    at ``MIN_BOUNDED_FRACTION`` of the points?"""
+    h, w = open_.shape
+    t = side[:, None] + np.arange(0.0, depth + 0.5, 0.5)[None, :]
+    r = np.floor(pts[:, 1:2] + t * outward[1]).astype(int)
+    c = np.floor(pts[:, 0:1] + t * outward[0]).astype(int)
+    inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
+    blocked = ~inside
+    blocked[inside] = ~open_[r[inside], c[inside]]
+    return bool((blocked.mean(axis=1) >= DEEP_SHARE).mean() >= MIN_BOUNDED_FRACTION)
+
+
+def _way_round(fits: BoolArray, centre_g: npt.NDArray[np.float64], axis: npt.NDArray[np.float64],
+               half_len: float, width: float) -> bool:
+    """Can the robot get from one mouth of a squeeze (``centre_g``, unit ``axis``, ``half_len`` and
+    ``width`` in cells) to the other without going through it, anywhere in the map? Through the
+    cells where its centre ``fits``."""
+    h, w = fits.shape
+    # The squeeze's box (with a cell of slack at its ends) and the floor just beyond each mouth
+    # (within a width of its end, ahead of it), in a window around it.
+    pad = half_len + 2.0 * width + 2.0
+    r0, r1 = max(0, math.floor(centre_g[1] - pad)), min(h, math.ceil(centre_g[1] + pad) + 1)
+    c0, c1 = max(0, math.floor(centre_g[0] - pad)), min(w, math.ceil(centre_g[0] + pad) + 1)
+    rr, cc = np.mgrid[r0:r1, c0:c1]
+    dx, dy = cc + 0.5 - centre_g[0], rr + 0.5 - centre_g[1]
+    along = dx * axis[0] + dy * axis[1]
+    across = np.abs(-dx * axis[1] + dy * axis[0])
+    cut = (np.abs(along) <= half_len + 1.0) & (across <= width / 2.0 + 1.0)
+    ahead = (across <= width) & (np.abs(along) <= half_len + 1.0 + width) & ~cut
+    rest = fits.copy()
+    rest[r0:r1, c0:c1] &= ~cut
+    lab, _n = ndi.label(rest, structure=np.ones((3, 3), dtype=bool))
+    win = lab[r0:r1, c0:c1]
+    first = np.unique(win[ahead & (along > half_len + 1.0) & (win > 0)])
+    second = np.unique(win[ahead & (along < -half_len - 1.0) & (win > 0)])
+    return bool(np.intersect1d(first, second).size)
 
 
 def _crest(d2: npt.NDArray[np.integer]) -> BoolArray:
@@ -426,10 +541,15 @@ def _side_distances_each(open_: BoolArray, pts: Sequence[npt.NDArray[np.float64]
 def _is_the_door(door: Door, centre: tuple[float, float], axis: tuple[float, float], length_m: float,
                  width_m: float, params: AnalysisParams) -> bool:
     """Is a passage (``centre``, unit ``axis`` in world metres) the gap of ``door``? When the door
-    lies across it away from its mouths: a door at one of its mouths is how one enters a passage
-    (a short corridor between two rooms with a door at its end), not the passage itself."""
+    lies across it (one goes through the door going along the passage) away from its mouths: a
+    door at one of its mouths is how one enters a passage (a short corridor between two rooms
+    with a door at its end), and a door in one of its side walls leads off it; neither is the
+    passage itself."""
     n = math.hypot(*axis) or 1.0
     ux, uy = axis[0] / n, axis[1] / n
+    dn = math.hypot(*door.normal)
+    if dn > 0 and abs(door.normal[0] * ux + door.normal[1] * uy) / dn < DOOR_ACROSS_COS:
+        return False
     dx, dy = door.center[0] - centre[0], door.center[1] - centre[1]
     along, across = dx * ux + dy * uy, abs(-dx * uy + dy * ux)
     if across > width_m / 2 + params.door_max_depth_m:

@@ -38,6 +38,7 @@ from langnav.analysis.precompute import (
     GridLayers,
     approximate_polygon,
     dilate8,
+    edt_scaled,
     fill_holes,
     maximum3,
     nonzero2,
@@ -52,6 +53,7 @@ from langnav.analysis.seg_core import (
     merge_basins,
 )
 from langnav.analysis.seg_doors import RawDoor, doors_between, label_max, openings_to_unknown
+from langnav.analysis.wall_lines import closure_mask, wall_gaps
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
 log = logging.getLogger(__name__)
@@ -72,6 +74,8 @@ WIDTH_MAX_CELLS: Final = 250_000
 #: A cell is on a space's centre line when its clearance is at least this share of the largest
 #: within half a hallway's width (a wall's bumps add spurs to the medial axis, lower than it).
 CENTRE_LINE_MIN_SHARE: Final = 0.8
+#: A closed wall gap is given back to the spaces found within this many cells of it.
+REOPEN_MARGIN_CELLS: Final = 4
 #: Id used in ``Door.connects`` for unexplored territory.
 UNKNOWN_ID: Final = "unknown"
 #: Openings between two spaces narrower than the robot can pass (``door_min_width_m``) but at
@@ -181,9 +185,20 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
         occupied, unknown = grid.cells == OCCUPIED, grid.cells == UNKNOWN
     else:
         occupied, unknown = layers.occupied, layers.unknown
-    raw_labels = basins(fl.clearance_m, fl.floor, params.seg_min_peak_m)
-    judge = JambJudge(fl.floor, fl.clearance_m, res, params) if params.seg_jamb_test else None
-    labels = merge_basins(raw_labels, fl.clearance_m, res, params, judge)
+    # Door-wide gaps in the building's wall lines part the spaces on their two sides: the flood
+    # runs on the floor with them closed, and they are opened again (as doorways) afterwards.
+    # The walls are what the cleaning left of the occupied cells (free-standing clutter
+    # standing in a row is no wall).
+    closed = closure_mask(wall_gaps(occupied & ~fl.floor, fl.floor, res, params), fl.floor)
+    split_floor, split_clear = fl.floor, fl.clearance_m
+    if closed.any():
+        split_floor = fl.floor & ~closed
+        split_clear = edt_scaled(split_floor, res)
+    raw_labels = basins(split_clear, split_floor, params.seg_min_peak_m)
+    judge = JambJudge(split_floor, split_clear, res, params) if params.seg_jamb_test else None
+    labels = merge_basins(raw_labels, split_clear, res, params, judge)
+    if closed.any():
+        labels = _reopen(labels, closed, params.seg_max_openings_between)
     if params.seg_claim_free_m > 0:
         labels = _claim_free(labels, fl.free, ~occupied, params.seg_claim_free_m / res)
     labels, exterior = _attach_enclosed_unknown(labels, fl, grid, params)
@@ -217,6 +232,55 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     wide = _doors(grid, raw_wide, ids, prefix="opening")
     return Segmentation(labels=labels, rooms=tuple(rooms), doors=tuple(doors), narrow_doors=tuple(narrow),
                         openings=tuple(wide))
+
+
+def _reopen(labels: npt.NDArray[np.int32], closed: npt.NDArray[np.bool_],
+            max_openings: int) -> npt.NDArray[np.int32]:
+    """Give the cells that closed the wall gaps back to the spaces on either side of them (each
+    to a space it touches, a band at a time): the gap becomes the doorway between the two.
+
+    Two spaces parted by more than ``max_openings`` closed gaps (0: no limit) are one space: a
+    wall has a door or two into the same room, a row of counters, desks or shelf units standing
+    in a line has a gap between every two of them (the same rule as for openings found by the
+    flood, ``seg_max_openings_between``)."""
+    todo = closed & (labels == 0)
+    if not todo.any():
+        return labels
+    if max_openings > 0:
+        gaps, _ = ndi.label(todo, structure=EIGHT)
+        grown = maximum3(np.where(todo, 0, labels))
+        low = -maximum3(np.where(todo | (labels == 0), -np.iinfo(np.int32).max, -labels))
+        count: dict[tuple[int, int], int] = {}
+        for _gap, a, b in set(zip(gaps[todo].tolist(), low[todo].tolist(), grown[todo].tolist(), strict=True)):
+            if 0 < a < b:
+                count[(a, b)] = count.get((a, b), 0) + 1
+        rows_of_clutter = [ab for ab, c in count.items() if c > max_openings]
+        if rows_of_clutter:
+            target = np.arange(int(labels.max()) + 1, dtype=np.int32)
+            for a, b in sorted(rows_of_clutter):
+                ra, rb = target[a], target[b]
+                target[target == max(ra, rb)] = min(ra, rb)
+            keep = np.unique(target)
+            renum = np.zeros(int(labels.max()) + 1, dtype=np.int32)
+            renum[keep] = np.arange(keep.size, dtype=np.int32)  # keep[0] is 0: no space stays 0
+            labels = renum[target][labels].astype(np.int32)
+    # Each cell goes to the nearest space (the gap's two sides meet in its middle), looked for
+    # in a window around each closure.
+    out = labels.copy()
+    pieces, _ = ndi.label(todo, structure=EIGHT)
+    h, w = labels.shape
+    for sl in ndi.find_objects(pieces):
+        if sl is None:
+            continue
+        win = (slice(max(sl[0].start - REOPEN_MARGIN_CELLS, 0), min(sl[0].stop + REOPEN_MARGIN_CELLS, h)),
+               slice(max(sl[1].start - REOPEN_MARGIN_CELLS, 0), min(sl[1].stop + REOPEN_MARGIN_CELLS, w)))
+        lab = labels[win]
+        if not (lab > 0).any():
+            continue  # a closure with no space beside it (its spaces were too small to keep)
+        _, (ri, ci) = ndi.distance_transform_edt(lab == 0, return_indices=True)
+        sub = todo[win]
+        out[win][sub] = lab[ri[sub], ci[sub]]
+    return out
 
 
 def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor, grid: OccupancyGrid,
@@ -432,8 +496,8 @@ def _typical_widths(labels: npt.NDArray[np.int32], clearance_m: npt.NDArray[np.f
 
 
 def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: float, openings: int,
-                   whole_width: Callable[[], float], res: float, params: AnalysisParams
-                   ) -> tuple[ElementKind, float, float]:
+                   whole_width: Callable[[], float], res: float, params: AnalysisParams,
+                   whole_wide_share: Callable[[], float] = lambda: 0.0) -> tuple[ElementKind, float, float]:
     """Hallway or room, with (length, width).
 
     A hallway is walked through (not a dead end entered through one doorway, unless it is
@@ -443,7 +507,9 @@ def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: 
     along its centre line) if it has two openings or more, is many times longer than that
     typical width and has little floor wider than a corridor. Its width is the one it was judged on; length = area / width.
     ``whole_width()``: the widest inscribed circle of the whole space, its furniture and
-    unscanned patches included.
+    unscanned patches included; ``whole_wide_share()``: the share of the whole space farther
+    than half a hallway's width from its edge (an open-plan floor's desk clusters narrow its
+    clearance to aisles, but not the floor a person sees: a room).
     """
     # Clearance is measured between cell centres: an opening of n cells has 2 x peak = (n + 1) cells.
     peak_width = max(2.0 * peak_m - res, res)
@@ -465,7 +531,8 @@ def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: 
     # an open floor's aisles between its desks and shelves are as narrow as a corridor.
     if typical_m > 0 and openings >= 2 and typical <= params.hallway_max_width_m \
             and area_m2 / typical >= params.hallway_long_elongation * typical \
-            and wide_share <= params.hallway_max_wide_share:
+            and wide_share <= params.hallway_max_wide_share \
+            and whole_wide_share() <= params.hallway_max_wide_share:
         return ElementKind.HALLWAY, area_m2 / typical, typical
     return ElementKind.ROOM, area_m2 / peak_width, peak_width
 
@@ -476,6 +543,17 @@ def _whole_width(mask: npt.NDArray[np.bool_], res: float) -> float:
     k = max(1, math.ceil(math.sqrt(mask.size / WIDTH_MAX_CELLS)))
     whole = np.pad(mask[::k, ::k], 1)
     return 2.0 * float(ndi.distance_transform_edt(whole, sampling=res * k).max()) - res * k
+
+
+def _whole_wide_share(mask: npt.NDArray[np.bool_], res: float, wide_m: float) -> float:
+    """The share of a whole space (its mask: furniture and pockets it encloses included) farther
+    than ``wide_m`` from its edge, on a coarser copy when it is large."""
+    k = max(1, math.ceil(math.sqrt(mask.size / WIDTH_MAX_CELLS)))
+    whole = np.pad(mask[::k, ::k], 1)
+    if not whole.any():
+        return 0.0
+    d = ndi.distance_transform_edt(whole, sampling=res * k)
+    return float((d[whole] > wide_m).mean())
 
 
 def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
@@ -502,7 +580,9 @@ def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
         area = float(sub.sum()) * res * res
         kind, length, width = _kind_and_size(area, float(peaks[k]), float(typical[k]), float(wide_share[k]),
                                              int(openings[k]) if k < openings.size else 0,
-                                             functools.partial(_whole_width, sub, res), res, params)
+                                             functools.partial(_whole_width, sub, res), res, params,
+                                             functools.partial(_whole_wide_share, sub, res,
+                                                               params.hallway_max_width_m / 2))
         prefix = "hallway" if kind == ElementKind.HALLWAY else "room"
         rooms.append(Room(
             id=f"{prefix}_{k}", label=k, kind=kind, area_m2=area,

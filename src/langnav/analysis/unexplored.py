@@ -190,6 +190,7 @@ def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayer
     candidate = np.zeros(n + 1, dtype=bool)
     candidate[inside] = sizes[inside] * grid.cell_area_m2 >= params.unexplored_worth_area_m2
     candidate &= _wide_enough(grid, params, layers, lab, candidate)
+    candidate &= ~_free_standing(grid, params, layers, lab, candidate, sizes)
     res = grid.resolution_m
     need = math.ceil(params.unexplored_min_frontier_m / res - 1e-9)
     worth = np.zeros(n + 1, dtype=bool)
@@ -221,6 +222,34 @@ def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayer
     return worth
 
 
+def _free_standing(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, lab: IntArray,
+                   candidate: BoolArray, sizes: npt.NDArray[np.int64]) -> BoolArray:
+    """Per unknown component (index = label; only ``candidate`` ones tested): is it a thing standing
+    free on the floor, no bigger with its scanned outline than a piece of furniture
+    (``params.seg_island_max_area_m2``: a table with its chairs, a cabinet), and touching no wall?
+    The robot's scans went all round it and none saw in (a glass table, a dark bin, a plant): it is
+    an object, not a place to look at. A bigger unscanned patch of floor is worth a look."""
+    out = np.zeros(len(candidate), dtype=bool)
+    island = params.seg_island_max_area_m2 / grid.cell_area_m2
+    small = candidate & (sizes <= island)
+    if not small.any():
+        return out
+    occ = layers.occupied_components
+    # (unknown cell of a small candidate, occupied component beside it) pairs.
+    pairs = adjacent_pairs(small[lab], occ.labels)
+    outline = np.zeros(len(candidate), dtype=np.int64)
+    big = np.zeros(len(candidate), dtype=bool)
+    if len(pairs):
+        region = lab.ravel()[pairs[:, 0]].astype(np.int64)
+        # Each (region, occupied component) once: its outline's cells count once.
+        codes = np.unique(region * (occ.n + 1) + pairs[:, 1])
+        reg, comp = np.divmod(codes, occ.n + 1)
+        np.add.at(outline, reg, occ.sizes[comp])
+        big[reg[occ.sizes[comp] > island]] = True
+    out[small] = ~big[small] & (sizes[small] + outline[small] <= island)
+    return out
+
+
 def _wide_enough(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, lab: IntArray,
                  candidate: BoolArray) -> BoolArray:
     """Per unknown component (index = label; only ``candidate`` ones tested, others False): does
@@ -245,9 +274,14 @@ def _wide_enough(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers
         r0, r1 = max(0, sr.start - pad), min(grid.height, sr.stop + pad)
         c0, c1 = max(0, sc.start - pad), min(grid.width, sc.stop + pad)
         own = lab[r0:r1, c0:c1] == k
-        # The region alone first (a room behind a door is wide by itself), then with the free
-        # cells about it that the robot's footprint (a free square of its diameter) never covers.
-        if int(truncated_sq_edt(own, reach)[own].max()) >= need * need:
+        # The region alone first (a room behind a door is wide by itself): a square that holds
+        # the disc (two separable passes, cheap on a large region), else the disc itself; then
+        # with the free cells about it that the robot's footprint (a free square of its
+        # diameter) never covers.
+        square = own
+        for axis in (0, 1):
+            square = ndi.minimum_filter1d(square, 2 * math.ceil(need) + 1, axis=axis, mode="constant", cval=False)
+        if square.any() or int(truncated_sq_edt(own, reach)[own].max()) >= need * need:
             out[k] = True
             continue
         free = layers.free[r0:r1, c0:c1]

@@ -1,0 +1,303 @@
+"""The building's wall lines, and the door-wide gaps in them that part two spaces.
+
+A building is laid out along a few wall directions (nearly always two at right angles, whatever
+the map's rotation), and its walls run on as straight lines across it: a corridor's side wall
+with the office doors in it, a glass front broken by laser gaps and open door leaves, a house's
+wall between its living room and the bedroom wing. A person sees such a wall line as one wall,
+and a door-wide gap in it as a doorway between the spaces on its two sides, however little
+those spaces narrow at the gap (an office front as wide as the corridor it opens onto). The
+clearance flood of :mod:`langnav.analysis.seg_core` cannot see that (two spaces that do not rise
+above an opening look like one), so the gaps are found here, from the walls themselves, and
+closed before the flood (ROSE², RA-L 2022, bounds rooms by the building's wall lines the same way).
+
+1. *Directions*: the wall cells' edge directions, folded modulo 90 degrees (a right-angled plan),
+   give the dominant direction as the peak of their histogram; other peaks nearly as strong
+   (a wing at 45 degrees) are directions too, each with its right angle.
+2. *Lines*: along each direction, the wall cells are binned by their offset across it (a band
+   of a cell either side: scanned walls are not ruled), and each line's occupied stretches are
+   read in order along it.
+3. *Gaps*: a gap between two stretches of a line is a doorway between two spaces when
+   - it is door-wide (``door_min_width_m`` to ``seg_wall_line_gap_max_m``);
+   - the wall line runs on past both of its ends, solid on at least ``seg_wall_line_side_share``
+     of ``seg_wall_line_side_m`` (a wall, not the corner of a piece of furniture);
+   - its floor is scanned (a gap into unknown is an opening into unexplored territory, left to
+     :mod:`langnav.analysis.seg_doors`);
+   - on both sides the space it opens onto runs on along the wall past one of its ends: a
+     doorway is narrower than the rooms it joins, whereas where a corridor meets another one
+     (a T or a crossing) the opening is the whole width of the branch, and there is no door.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Final
+
+import numpy as np
+import numpy.typing as npt
+from scipy import ndimage as ndi
+
+from langnav.analysis.params import AnalysisParams
+
+BoolArray = npt.NDArray[np.bool_]
+FloatArray = npt.NDArray[np.float64]
+
+#: Histogram of wall edge directions modulo 90 degrees, in bins of this many degrees.
+DIRECTION_BIN_DEG: Final = 0.5
+#: The histogram is smoothed over this many degrees (a noisy wall's edge wobbles a few degrees).
+DIRECTION_SMOOTH_DEG: Final = 2.0
+#: A second direction (a wing at an angle) counts when its peak has this share of the main one.
+SECOND_DIRECTION_MIN_SHARE: Final = 0.5
+#: ... and lies at least this many degrees (modulo 90) from every direction already taken.
+DIRECTION_MIN_SEPARATION_DEG: Final = 10.0
+#: Wall cells within this many cells across a line belong to it (scanned walls wobble a cell).
+LINE_BAND_CELLS: Final = 1
+#: Floor share of a gap's own cells: a doorway's floor is scanned (a few unknown specks aside).
+GAP_MIN_FLOOR_SHARE: Final = 0.8
+#: An interior wall is 0.1-0.3 m thick (a stud partition to a block wall): a doorway in it is no
+#: deeper; a slot between two cabinets, desks or shelf units standing in a row is as deep as
+#: they are (0.4 m and more).
+WALL_MAX_THICKNESS_M: Final = 0.3
+#: Share of the wall line past each end of a gap that must be a partition (thin, with floor on
+#: both sides); the rest may be a pillar, a cupboard against it, a perpendicular wall's end.
+PARTITION_MIN_SHARE: Final = 0.5
+#: Depths (m, from the line) at which the space beyond a gap is looked at: just past the wall's
+#: far face (walls are up to ``door_max_depth_m`` thick) and a little further in (a desk or a
+#: cupboard may stand against the wall beside the door).
+SIDE_DEPTHS_M: Final = (0.3, 0.5, 0.7)
+#: The space beyond a gap runs on along the wall at least this far (m) past one of the gap's ends
+#: (a corridor branch's side walls start at the gap's ends, a scanned wall a cell or two off).
+SIDE_PAST_JAMB_M: Final = 0.5
+
+
+@dataclass(frozen=True)
+class WallGap:
+    """A door-wide gap in a wall line, in grid coordinates (row, col; continuous): its two ends
+    on the line and its width."""
+
+    end_a_rc: tuple[float, float]
+    end_b_rc: tuple[float, float]
+    width_m: float
+
+
+def dominant_directions(wall: BoolArray) -> list[float]:
+    """The building's wall directions (radians in the (col, row) plane, in [0, pi)), main first:
+    the peaks of the wall edges' direction histogram modulo 90 degrees, each with its right angle."""
+    if wall.sum() < 2:
+        return []
+    rows = np.flatnonzero(wall.any(axis=1))
+    cols = np.flatnonzero(wall.any(axis=0))
+    sub = wall[max(rows[0] - 2, 0):rows[-1] + 3, max(cols[0] - 2, 0):cols[-1] + 3].astype(np.float64)
+    smooth = ndi.gaussian_filter(sub, 1.0)
+    gr = ndi.sobel(smooth, axis=0)
+    gc = ndi.sobel(smooth, axis=1)
+    mag = np.hypot(gr, gc)
+    on = mag > 0.1 * float(mag.max()) if mag.max() > 0 else mag > 0
+    if not on.any():
+        return []
+    # The edge runs across the gradient; modulo 90 degrees, both wall directions of a
+    # right-angled plan fall in one bin.
+    ang = np.degrees(np.arctan2(gr[on], gc[on])) % 90.0
+    nbins = round(90.0 / DIRECTION_BIN_DEG)
+    weights = mag[on]
+    hist = np.bincount((ang / DIRECTION_BIN_DEG).astype(np.int64) % nbins, weights=weights, minlength=nbins)
+    hist = ndi.gaussian_filter1d(hist, DIRECTION_SMOOTH_DEG / DIRECTION_BIN_DEG / 2, mode="wrap")
+    peaks = np.flatnonzero((hist >= np.roll(hist, 1)) & (hist > np.roll(hist, -1)))
+    peaks = peaks[np.argsort(-hist[peaks])]
+    taken: list[float] = []
+    for p in peaks.tolist():
+        if taken and hist[p] < SECOND_DIRECTION_MIN_SHARE * hist[peaks[0]]:
+            break
+        # The peak, refined to the weighted mean of the edge directions near it.
+        deg = (p + 0.5) * DIRECTION_BIN_DEG
+        off = (ang - deg + 45.0) % 90.0 - 45.0
+        near = np.abs(off) <= DIRECTION_SMOOTH_DEG
+        if near.any():
+            deg = float((deg + np.average(off[near], weights=weights[near])) % 90.0)
+        if all(min(abs(deg - t) % 90.0, 90.0 - abs(deg - t) % 90.0) >= DIRECTION_MIN_SEPARATION_DEG
+               for t in taken):
+            taken.append(deg)
+    out: list[float] = []
+    for deg in taken:
+        out += [math.radians(deg), math.radians(deg + 90.0)]
+    return out
+
+
+class _LineSampler:
+    """Reads a mask at (u, v): u along the direction (cos_t, sin_t) in the (col, row) plane, v
+    across it; off the grid reads False."""
+
+    def __init__(self, mask: BoolArray, cos_t: float, sin_t: float) -> None:
+        self.mask = mask
+        self.cos_t, self.sin_t = cos_t, sin_t
+
+    def rc(self, u: FloatArray, v: FloatArray) -> tuple[FloatArray, FloatArray]:
+        return u * self.sin_t + v * self.cos_t, u * self.cos_t - v * self.sin_t
+
+    def __call__(self, u: FloatArray, v: FloatArray) -> BoolArray:
+        r, c = self.rc(u, v)
+        ri, ci = np.rint(r).astype(np.int64), np.rint(c).astype(np.int64)
+        h, w = self.mask.shape
+        inside = (ri >= 0) & (ri < h) & (ci >= 0) & (ci < w)
+        out = np.zeros(ri.shape, dtype=bool)
+        out[inside] = self.mask[ri[inside], ci[inside]]
+        return out
+
+
+def _runs_on(floor_at: _LineSampler, u0: float, u1: float, v: float) -> bool:
+    """Is the floor continuous along the line at offset ``v`` from u0 to u1 (cells)?"""
+    n = max(2, math.ceil(abs(u1 - u0)) + 1)
+    u = np.linspace(u0, u1, n)
+    return bool(floor_at(u, np.full(n, v)).all())
+
+
+def _through_depth(wall_at: _LineSampler, ua: float, ub: float, v: float, reach: int) -> float:
+    """How deep (cells, across the line at ``v``) the gap between the wall cells at ``ua`` and
+    ``ub`` is: on each side of the line, the shorter of the two jambs' reaches across it (the
+    wall's own thickness at a doorway; a slot's length between two pieces standing in a row).
+    Each jamb's reach is the longest run of wall across the line through its last few cells."""
+    offs = np.arange(-reach, reach + 1, dtype=np.float64)
+    ends = []
+    for us in ((ua, ua - 1.0, ua - 2.0), (ub, ub + 1.0, ub + 2.0)):
+        plus = minus = 0
+        for u in us:
+            col = wall_at(np.full(offs.size, u), v + offs)
+            centre = np.flatnonzero(col[reach - LINE_BAND_CELLS:reach + LINE_BAND_CELLS + 1])
+            if centre.size == 0:
+                continue
+            hi = lo = reach - LINE_BAND_CELLS + int(centre[0])
+            while hi + 1 < col.size and col[hi + 1]:
+                hi += 1
+            while lo > 0 and col[lo - 1]:
+                lo -= 1
+            plus, minus = max(plus, hi - reach), max(minus, reach - lo)
+        ends.append((plus, minus))
+    (pa, ma), (pb, mb) = ends
+    return float(min(pa, pb) + min(ma, mb) + 1)
+
+
+def _partition_share(wall_at: _LineSampler, floor_at: _LineSampler, u_end: float, sign: float,
+                     v: float, side: int, reach: int, thin: int) -> float:
+    """Of the wall cells on the line at ``v`` over ``side`` cells from ``u_end`` on (towards
+    ``sign``), the share where the wall across the line is at most ``thin`` cells thick with
+    floor just beyond both of its faces (within two cells)."""
+    u = u_end + sign * np.arange(side, dtype=np.float64)
+    offs = np.arange(-reach, reach + 1, dtype=np.float64)
+    uu = np.repeat(u, offs.size)
+    vv = np.tile(v + offs, u.size)
+    w = wall_at(uu, vv).reshape(u.size, offs.size)
+    f = floor_at(uu, vv).reshape(u.size, offs.size)
+    band = slice(reach - LINE_BAND_CELLS, reach + LINE_BAND_CELLS + 1)
+    on = w[:, band].any(axis=1)
+    if not on.any():
+        return 0.0
+    good = 0
+    for i in np.flatnonzero(on).tolist():
+        row = w[i]
+        lo = hi = reach - LINE_BAND_CELLS + int(np.argmax(row[band]))
+        while hi + 1 < row.size and row[hi + 1]:
+            hi += 1
+        while lo > 0 and row[lo - 1]:
+            lo -= 1
+        if hi - lo + 1 <= thin and f[i, max(lo - 2, 0):lo].any() and f[i, hi + 1:hi + 3].any():
+            good += 1
+    return good / int(on.sum())
+
+
+def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: AnalysisParams,
+              directions: list[float] | None = None) -> list[WallGap]:
+    """The door-wide gaps in the wall lines of ``wall`` that part two spaces of ``floor`` (see
+    the module doc). ``directions``: the wall directions, when known (else found here)."""
+    if params.seg_wall_line_gap_max_m <= 0 or not wall.any():
+        return []
+    dirs = dominant_directions(wall) if directions is None else directions
+    res = resolution_m
+    gmin = (params.door_min_width_m - res) / res
+    gmax = (params.seg_wall_line_gap_max_m + res) / res
+    side = max(2, round(params.seg_wall_line_side_m / res))
+    past = SIDE_PAST_JAMB_M / res
+    depths = [d / res for d in SIDE_DEPTHS_M]
+    max_depth = WALL_MAX_THICKNESS_M / res + 1.0  # + the cell the line runs through
+    thin = round(WALL_MAX_THICKNESS_M / res) + 1
+    reach = math.ceil(2 * params.door_max_depth_m / res) + 2
+    rr, cc = np.nonzero(wall)
+    rr_f, cc_f = rr.astype(np.float64), cc.astype(np.float64)
+    out: list[WallGap] = []
+    for theta in dirs:
+        cos_t, sin_t = math.cos(theta), math.sin(theta)
+        u = np.rint(cc_f * cos_t + rr_f * sin_t).astype(np.int64)
+        v = np.rint(-cc_f * sin_t + rr_f * cos_t).astype(np.int64)
+        umin, vmin = int(u.min()), int(v.min()) - LINE_BAND_CELLS
+        span = int(u.max()) - umin + 1
+        # Each wall cell is on the lines within the band across it.
+        vv = np.concatenate([v + k for k in range(-LINE_BAND_CELLS, LINE_BAND_CELLS + 1)]) - vmin
+        uu = np.tile(u - umin, 2 * LINE_BAND_CELLS + 1)
+        key = np.unique(vv * span + uu)
+        line, pos = np.divmod(key, span)
+        gap = np.diff(pos) - 1
+        cand = np.flatnonzero((line[1:] == line[:-1]) & (gap >= gmin) & (gap <= gmax))
+        if cand.size == 0:
+            continue
+        # Solid share of the wall line over ``side`` cells before and after the gap.
+        lo_before = np.maximum(key[cand] - side + 1, line[cand] * span)
+        before = np.searchsorted(key, key[cand], side="right") - np.searchsorted(key, lo_before, side="left")
+        hi_after = np.minimum(key[cand + 1] + side - 1, line[cand + 1] * span + span - 1)
+        after = np.searchsorted(key, hi_after, side="right") - np.searchsorted(key, key[cand + 1], side="left")
+        share = params.seg_wall_line_side_share * side
+        cand = cand[(before >= share) & (after >= share)]
+        if cand.size == 0:
+            continue
+        floor_at = _LineSampler(floor, cos_t, sin_t)
+        wall_at = _LineSampler(wall, cos_t, sin_t)
+        for i in cand.tolist():
+            v_line = float(line[i] + vmin)
+            ua, ub = float(pos[i] + umin), float(pos[i + 1] + umin)  # the last / next wall cell
+            inner = np.arange(ua + 1.0, ub)
+            if floor_at(inner, np.full(inner.size, v_line)).mean() < GAP_MIN_FLOOR_SHARE:
+                continue
+            # A doorway is as deep as its wall: the slot between two cabinets or desks standing
+            # in a row is as deep as they are.
+            if _through_depth(wall_at, ua, ub, v_line, reach) > max_depth:
+                continue
+            # The wall runs on past both ends as a partition between two spaces: thin, floor
+            # on both sides (an outer wall has unknown outside it, a shelf row or a counter is
+            # thick, a wall with cupboards along it has them on one side only).
+            if min(_partition_share(wall_at, floor_at, ua, -1.0, v_line, side, reach, thin),
+                   _partition_share(wall_at, floor_at, ub, 1.0, v_line, side, reach, thin)) \
+                    < PARTITION_MIN_SHARE:
+                continue
+            mid = (ua + ub) / 2
+            if not all(any(all(_runs_on(floor_at, mid, end, v_line + sign * d) for d in depths)
+                           for end in (ua - past, ub + past))
+                       for sign in (-1.0, 1.0)):
+                continue
+            r2, c2 = floor_at.rc(np.array([ua, ub]), np.full(2, v_line))
+            out.append(WallGap((float(r2[0]), float(c2[0])), (float(r2[1]), float(c2[1])),
+                               (ub - ua - 1) * res))
+    return out
+
+
+def _draw(out: BoolArray, a_rc: tuple[float, float], b_rc: tuple[float, float], band: float) -> None:
+    """Set the cells of the segment a-b, ``band`` cells either side of it, in ``out``."""
+    (ra, ca), (rb, cb) = a_rc, b_rc
+    h, w = out.shape
+    length = math.hypot(rb - ra, cb - ca)
+    t = np.linspace(0.0, 1.0, max(2, math.ceil(2 * length) + 1))
+    nr, nc = ((cb - ca) / length, -(rb - ra) / length) if length > 0 else (0.0, 0.0)  # across
+    for off in np.arange(-band, band + 0.25, 0.5):
+        r = np.rint(ra + (rb - ra) * t + nr * off).astype(np.int64)
+        c = np.rint(ca + (cb - ca) * t + nc * off).astype(np.int64)
+        inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
+        out[r[inside], c[inside]] = True
+
+
+def closure_mask(gaps: list[WallGap], floor: BoolArray) -> BoolArray:
+    """The floor cells that close ``gaps``: each gap's segment, from one end's wall cell to the
+    other's, drawn a band of cells thick (a flood must not slip through diagonally)."""
+    out = np.zeros(floor.shape, dtype=bool)
+    for g in gaps:
+        _draw(out, g.end_a_rc, g.end_b_rc, LINE_BAND_CELLS)
+    return out & floor
+
+
+__all__ = ["WallGap", "closure_mask", "dominant_directions", "wall_gaps"]
