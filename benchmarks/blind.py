@@ -1,10 +1,10 @@
 """The blind test material (benchmarks/blind/README.md): prompts and buildings written by people
 who had not read the code they measure.
 
-* prompts: ``blind/prompts/spoken.jsonl`` (150 spoken motion commands, ten imagined speakers) and
-  ``blind/prompts/buildings.jsonl`` (80 place-grounded prompts in a clinic and an office), scored by
-  langnav's bench metrics (the same rules as the bench's score.py), with the overshoot count;
-* maps: ``blind/maps/maps`` (ten drawn SLAM-style buildings with a person's point annotations),
+* prompts: ``blind/prompts*/spoken.jsonl`` (spoken motion commands of imagined speakers) and
+  ``blind/prompts*/buildings.jsonl`` (place-grounded prompts in new buildings), one folder a round,
+  scored by langnav's bench metrics (the same rules as the bench's score.py), with the overshoot count;
+* maps: ``blind/maps*/maps`` (drawn and simulated-SLAM buildings with a person's point annotations),
   scored by ``../shared/maps/eval_points.py`` (skipped with the reason when ../shared is absent).
 """
 
@@ -52,15 +52,21 @@ def score_prompts(path: Path) -> None:
 
 
 def main() -> int:
-    for name in ("spoken.jsonl", "buildings.jsonl"):
-        score_prompts(BLIND / "prompts" / name)
+    # every round of blind material in its own folder: prompts*/ (spoken.jsonl, buildings.jsonl),
+    # maps*/maps (maps with their points); see blind/README.md for which round is which
+    for folder in sorted(BLIND.glob("prompts*/")):
+        for name in ("spoken.jsonl", "buildings.jsonl"):
+            if (folder / name).exists():
+                score_prompts(folder / name)
     if not EVAL_POINTS.exists():
         print(f"blind maps skipped: {EVAL_POINTS} not found (../shared is not on this machine)")
         return 0
     langnav = Path(sys.executable).with_name("langnav")
-    print("blind maps (doors, spaces, kind, narrow passages against a person's points):", flush=True)
-    subprocess.run([sys.executable, str(EVAL_POINTS), str(langnav), str(BLIND / "maps" / "maps")],
-                   check=True, timeout=ANALYSE_ALL_TIMEOUT_S)
+    for folder in sorted(BLIND.glob("maps*/maps")):
+        print(f"blind maps {folder.parent.name}/ (doors, spaces, kind, narrow passages against a person's points):",
+              flush=True)
+        subprocess.run([sys.executable, str(EVAL_POINTS), str(langnav), str(folder)],
+                       check=True, timeout=ANALYSE_ALL_TIMEOUT_S)
     return 0
 
 
