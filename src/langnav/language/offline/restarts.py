@@ -1,6 +1,7 @@
 """A spoken request is often started again or stopped on the way (README "Speech"). Read on the
 clauses before the steps are built:
 
+* a move said again with its amount is one move ("move left, move left a metre");
 * a turn said again with what it missed is one turn: "fifteen degrees turn, turn to your left" (the
   side added), "face up, face north" and "turn, um, turn right" (a false start), "turn left, turn left
   two hundred seventy degrees" (the amount added), "turn around, face south" and "turn left and face
@@ -52,8 +53,19 @@ def merge_restated_turns(clauses: list[str], read: ClauseReader) -> list[str]:
     return out
 
 
+def _only_move(reading: Reading) -> Step | None:
+    if len(reading.steps) != 1 or reading.problem is not None:
+        return None
+    step = reading.steps[0]
+    return step if step.movement == Movement.MOVE and step.target is None else None
+
+
 def _restated(first: str, second: str, read: ClauseReader) -> str | None:
     a_reading, b_reading = read(first), read(second)
+    a_move, b_move = _only_move(a_reading), _only_move(b_reading)
+    if a_move is not None and b_move is not None and a_move.direction == b_move.direction \
+            and a_move.amount == Amount.DEFAULT and b_move.distance_m is not None:
+        return second  # "move left, move left a metre": the move said again with its amount
     a, b = _only_turn(a_reading), _only_turn(b_reading)
     if a is None or b is None or _facing(a):
         return None
