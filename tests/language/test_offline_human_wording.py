@@ -511,3 +511,16 @@ def test_the_neighbouring_room_is_the_room_next_to_this_one(prompt: str) -> None
 ])
 def test_a_clockwise_fragment_is_a_turn(prompt: str, want: list[tuple[Movement, Direction, float]]) -> None:
     assert _plain(translate_offline(prompt)) == want
+
+
+@pytest.mark.parametrize(("prompt", "want"), [
+    ("sorry, I mean, um... go forward two feet. just two.", [_move(Direction.FORWARD, 2 * FT)]),
+    ("turn left 30 degrees. only 30 please", [_turn(Direction.LEFT, 30)]),
+])
+def test_a_number_said_again_insists_on_it(prompt: str, want: list[tuple[Movement, Direction, float]]) -> None:
+    assert _plain(translate_offline(prompt)) == want
+
+
+def test_a_new_bare_number_after_a_move_is_asked_about() -> None:
+    intent = translate_offline("go forward two feet, then 2")
+    assert intent.steps == [] and intent.clarification

@@ -6,6 +6,7 @@ clauses before the steps are built:
   side added), "face up, face north" and "turn, um, turn right" (a false start), "turn left, turn left
   two hundred seventy degrees" (the amount added), "turn around, face south" and "turn left and face
   the door" (a facing says where the turn ends: the turn before it, with no amount of its own, is it);
+* a number said again on its own insists on it: "go forward two feet. just two." is one move;
 * a "stop" between two instructions stops the motion before it when that motion had no amount: the
   speaker let it run and stopped it, and how far it went cannot be known, so it is not run ("turn
   right, stop, turn left" is the left turn). A motion with its amount ends on its own: "go forward
@@ -14,11 +15,13 @@ clauses before the steps are built:
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
+from typing import Final
 
 from langnav.language.intent import Amount, Direction, Movement, Step
 from langnav.language.offline.normalize import normalize
-from langnav.language.offline.numbers import find_quantities
+from langnav.language.offline.numbers import NUMBER, QuantityKind, find_quantities
 from langnav.language.offline.reading import ASK_SIDE, Reading
 
 #: Reads one clause on its own (the parser's ``read_clause``).
@@ -107,5 +110,25 @@ def drop_stopped(clauses: list[str], read: ClauseReader) -> list[str]:
             if _open_ended(read(out[-1])):
                 out.pop()
             continue  # the stop itself: what follows is the request now
+        out.append(clause)
+    return out
+
+
+#: "just two", "only two, I said": a number alone, said again to insist on it.
+_INSIST_RE: Final = re.compile(rf"^(?:(?:just|only|exactly|i\s+said|that\s+is|that's)\s+)*(?P<num>{NUMBER})"
+                               r"(?:\s+(?:only|i\s+said|please))*$")
+
+
+def drop_insisted_amounts(clauses: list[str]) -> list[str]:
+    """The clauses without a number said again on its own right after the instruction that said it
+    ("go forward two feet. just two."): it insists, it asks for no second move."""
+    out: list[str] = []
+    for clause in clauses:
+        m = _INSIST_RE.match(normalize(clause))
+        if out and m is not None:
+            said = normalize(out[-1])
+            quantities = [q for q in find_quantities(said) if q.kind != QuantityKind.BARE]
+            if any(re.search(rf"\b{re.escape(m.group('num'))}\b", said[q.start:q.end]) for q in quantities):
+                continue
         out.append(clause)
     return out
