@@ -10,7 +10,7 @@ import pytest
 
 from langnav.analysis.door_judge import constriction_depth, evidence, free_widths, is_door
 from langnav.analysis.params import DEFAULT_PARAMS
-from langnav.analysis.segmentation import Segmentation, segment_spaces
+from langnav.analysis.segmentation import UNKNOWN_ID, Segmentation, segment_spaces
 from langnav.maps.draw import MapBuilder
 from langnav.maps.grid import FREE, OCCUPIED, OccupancyGrid
 
@@ -94,3 +94,35 @@ def test_a_door_has_wall_at_both_jambs(x: float, door: bool) -> None:
     assert is_door(ev, DEFAULT_PARAMS, into_unknown=False) is door
     if door:
         assert min(ev.along) >= 0.9
+
+
+def room_with_a_door_to_a_ray_fan() -> OccupancyGrid:
+    """A 6 m x 4 m room with a 0.7 m gap in its east wall (0.1 m thick); beyond it the lidar saw
+    a fan of rays spreading 60 degrees for 0.8 m into unknown, with unscanned notches between
+    them, and the outside stays unknown."""
+    b = MapBuilder(12.0, 6.0)
+    b.room(0.5, 1.0, 6.5, 5.0, wall_m=0.1).door_v(6.55, 3.0, 0.7, depth_m=0.1)
+    grid = b.build("door to a ray fan")
+    cells = grid.cells.copy()
+    res = grid.resolution_m
+    for deg in range(-30, 31, 4):
+        a = math.radians(deg)
+        for i in range(int(0.8 / res) * 2):
+            x = 6.6 + math.cos(a) * i * res / 2
+            y = 3.0 + math.sin(a) * i * res / 2 * 1.0
+            r, c = grid.world_to_index(x, y)
+            cells[int(r), int(c)] = FREE
+    return OccupancyGrid(cells, res, grid.origin_x_m, grid.origin_y_m, source="door to a ray fan")
+
+
+def test_a_door_into_unexplored_beyond_a_ray_fan_is_found() -> None:
+    """The gap in the wall is the one door, from the room into unexplored territory; the fan of
+    rays beyond it (its notches taken into the room as unscanned wedges) hides no other."""
+    grid = room_with_a_door_to_a_ray_fan()
+    seg = segment_spaces(grid)
+    assert len(seg.rooms) == 1
+    assert len(seg.doors) == 1
+    door = seg.doors[0]
+    assert math.dist(door.center, (6.55, 3.0)) <= POS_TOL_M
+    assert door.width_m == pytest.approx(0.7, abs=POS_TOL_M)
+    assert door.connects == (seg.rooms[0].id, UNKNOWN_ID)

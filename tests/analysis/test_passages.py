@@ -341,3 +341,47 @@ def test_door_open_along_the_way_beside_a_wall_is_no_squeeze() -> None:
     b.rect(0.8, 3.0, 8.0, 3.15, OCCUPIED)
     b.rect(0.8, 3.15, 0.85, 3.95, OCCUPIED)
     assert passages_of(b.build(source="door_leaf")) == ()
+
+
+def beside_east_wall(x0: float, y0: float, x1: float, y1: float) -> OccupancyGrid:
+    """An 8 x 6 m room with one box (x0..x1, y0..y1) standing free near its east wall (x = 8)."""
+    b = MapBuilder(10.0, 8.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 8.0, 6.0)
+    b.box(x0, y0, x1, y1)
+    return b.build(source="beside_east_wall")
+
+
+def test_gap_between_a_pallet_and_the_wall_is_walked_round() -> None:
+    # A 1.0 x 1.2 m pallet 0.5 m from the wall: the 0.5 x 1.2 m gap is longer than twice its
+    # width, but one walks round the pallet.
+    assert passages_of(beside_east_wall(6.5, 2.0, 7.5, 3.2)) == ()
+
+
+def test_aisle_between_a_long_shelf_and_the_wall_is_a_passage() -> None:
+    # A 0.4 x 4 m shelf 0.7 m from the wall: as elongated as a corridor, an aisle along the shelf
+    # (though one could walk round the shelf too).
+    (p,) = passages_of(beside_east_wall(6.9, 1.0, 7.3, 5.0))
+    assert p.center == pytest.approx((7.65, 3.0), abs=0.06)
+    assert p.width_m == pytest.approx(0.7, abs=0.051)
+    assert p.length_m == pytest.approx(4.0, abs=0.15)
+
+
+def test_a_door_in_a_side_wall_leads_off_the_passage() -> None:
+    # The passage with a doorway in its south wall, that doorway read as a door (its normal
+    # across the passage's axis): the passage stays; the same door turned across the way is the
+    # passage's own gap.
+    grid = passage_with_doorway()
+    labels, n = labels_for_free_components(grid)
+    layers = GridLayers(grid)
+
+    def door(normal: tuple[float, float]) -> Door:
+        return Door(id="door_1", center=(4.25, 0.925), width_m=1.0, jambs=((3.75, 0.925), (4.75, 0.925)),
+                    normal=normal, connects=("space_1", "space_2"))
+
+    def found(d: Door) -> tuple:
+        return find_passages(grid, P, labels, {k: f"space_{k}" for k in range(1, n + 1)}, [d],
+                             layers.occupied | layers.unknown, layers=layers)
+
+    (p,) = found(door((0.0, 1.0)))
+    assert p.center == pytest.approx((4.25, 1.45), abs=0.06)
+    assert found(door((1.0, 0.0))) == ()

@@ -27,7 +27,18 @@ from langnav.analysis.pipeline import analyze
 from langnav.grounding import GroundingError, ground
 from langnav.grounding.geometry import Pose
 from langnav.grounding.selection import label_of
-from langnav.language.intent import Detail, Element, ElementRef, Intent, Movement, Offset, Step
+from langnav.language.intent import (
+    Detail,
+    Element,
+    ElementRef,
+    Intent,
+    Landmark,
+    Movement,
+    Offset,
+    Relation,
+    Side,
+    Step,
+)
 from langnav.language.translator import get_translator
 from langnav.maps.draw import MapBuilder
 from langnav.pipeline import Planner, PlanResult
@@ -264,6 +275,21 @@ def test_the_room_across_the_hall_from_the_hallway_is_the_side_it_faces(hall: Ma
     assert room_at(hall, x, y) is room_at(hall, 7.5, 9.0)
     r = plan("go to the room across the hall", hall, (7.5, 6.0, 0.0))
     assert not r.ok and "either side" in (r.clarification or "")
+
+
+@pytest.mark.parametrize(("ordinal", "upper_x"), [(1, 3.2), (2, 7.5), (3, 12.0)])
+def test_the_room_across_from_a_room_the_words_name(hall: MapAnalysis, ordinal: int, upper_x: float) -> None:
+    # "the room across from the second room on your left", from the hallway facing east: the rooms on
+    # the left are the upper ones; across from each is the lower room whose door faces its door
+    ref = ElementRef(kind=Element.ROOM, relation=Relation.ACROSS,
+                     near=Landmark(kind=Element.ROOM, ordinal=ordinal, side=Side.LEFT))
+    g = ground(Intent(steps=[Step(movement=Movement.NAVIGATE, detail=Detail.TO, target=ref)]), hall, (1.6, 6.0, 0.0))
+    (c,) = g.commands
+    assert isinstance(c, NavigateThroughPoses)
+    lower = room_at(hall, upper_x, 3.0)
+    assert room_at(hall, *c.poses[-1][:2]) is lower
+    assert g.steps[0].note.endswith("the room across from the " + ("first", "second", "third")[ordinal - 1]
+                                    + " room on your left")
 
 
 def test_the_room_next_to_the_one_you_are_in(hall: MapAnalysis) -> None:

@@ -74,8 +74,10 @@ class DoorEvidence:
     """What the cells around one candidate say (see module doc)."""
 
     #: Along the normal, the longest stretch (m) through the opening where the free width stays
-    #: within the door's width (the constriction's depth).
+    #: within the door's width (the constriction's depth) ...
     constriction_m: float
+    #: ... and its part on the side the normal comes from (space ``a``'s side).
+    constriction_back_m: float
     #: For each jamb: the share of a wall's length beyond it, along the opening's line, that is
     #: occupied; and the smaller of the same shares along the normal's two directions.
     along: tuple[float, float]
@@ -119,9 +121,10 @@ def free_widths(free: BoolArray, center_rc: tuple[float, float], normal_rc: tupl
 
 
 def constriction_depth(t_m: npt.NDArray[np.float64], width_m: npt.NDArray[np.float64],
-                       door_width_m: float) -> float:
+                       door_width_m: float, back_only: bool = False) -> float:
     """The length (m) of the stretch around t = 0 where the free width stays within the door's
-    width (widening by less than WIDEN_FACTOR / WIDEN_MIN_M); a blocked sample ends it too."""
+    width (widening by less than WIDEN_FACTOR / WIDEN_MIN_M); a blocked sample ends it too.
+    ``back_only``: only its part at t <= 0 (behind the opening's centre)."""
     limit = max(door_width_m * WIDEN_FACTOR, door_width_m + WIDEN_MIN_M)
     narrow = (width_m > 0) & (width_m <= limit)
     # The candidate's centre is its widest crossing, and a slanted crossing reads wider: start
@@ -136,6 +139,8 @@ def constriction_depth(t_m: npt.NDArray[np.float64], width_m: npt.NDArray[np.flo
     lo = mid
     while lo - 1 >= 0 and narrow[lo - 1]:
         lo -= 1
+    if back_only:
+        return float(max(0.0, -t_m[lo]))
     return float(t_m[hi] - t_m[lo])
 
 
@@ -199,9 +204,10 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     band_m = JAMB_BAND_M
     t, w = free_widths(free, center_rc, normal_rc, resolution_m, THROUGH_LOOK_M)
     depth = constriction_depth(t, w, width_m)
+    back = constriction_depth(t, w, width_m, back_only=True)
     jj = jamb_cells(occupied, center_rc, width_m, resolution_m)
     if jj is None:
-        return DoorEvidence(constriction_m=depth, along=(0.0, 0.0), across=(0.0, 0.0))
+        return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(0.0, 0.0), across=(0.0, 0.0))
     (r1, c1), (r2, c2) = jj
     # The opening's line runs from jamb to jamb (the candidate's own normal is the mean step
     # across a ragged boundary, often slanted).
@@ -217,7 +223,7 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
                          for a in _ALONG_ANGLES))
         across.append(min(wall_share(occupied, jamb, (nr, nc), resolution_m, wall_m, band_m),
                           wall_share(occupied, jamb, (-nr, -nc), resolution_m, wall_m, band_m)))
-    return DoorEvidence(constriction_m=depth, along=(along[0], along[1]), across=(across[0], across[1]))
+    return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]), across=(across[0], across[1]))
 
 
 def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool) -> bool:
@@ -225,7 +231,13 @@ def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool) -> boo
     unexplored territory, where only its own side was seen)."""
     # As deep as a wall (plus the shortest passage): a longer constriction is a passage or a
     # corridor running on.
-    if ev.constriction_m > params.door_max_depth_m + params.passage_min_length_m:
+    if into_unknown:
+        # Beyond an opening into unexplored territory only rays through it were seen (a strip
+        # as narrow as the opening, walled by unknown, not by walls): judge its depth on the
+        # side of the space it opens from, half a wall's thickness and a passage.
+        if ev.constriction_back_m > params.door_max_depth_m / 2 + params.passage_min_length_m:
+            return False
+    elif ev.constriction_m > params.door_max_depth_m + params.passage_min_length_m:
         return False
     # Both jambs are wall.
     return all(a >= JAMB_ALONG_MIN_SHARE or x >= JAMB_ACROSS_MIN_SHARE

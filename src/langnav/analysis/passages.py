@@ -1,20 +1,28 @@
-"""Narrow passages: corridor-like constrictions of free space that are not doors.
+"""Narrow passages: tight ways through between two free areas that are not doors.
 
 On the skeleton of the navigable space, the clear width at a skeleton cell is twice its distance
-to the nearest blocking cell (occupied, or unknown beyond a noise speck). Skeleton cells whose
-width is between the robot's diameter and ``params.passage_max_width_m`` form candidate chains.
-A chain's *core* is where the width stays close to its narrowest (the stretch between two
-parallel sides, without the flaring mouths). A core is a passage when it is longer than
-``params.passage_min_length_m`` and clearly longer than wide (a short gap beside a chair is a
-gap, not a passage), wide enough for the robot with a margin, has sides along most of its
-length (or a wall along one side and a single doorway in the other: a passage with a door off
-it), solid ones (walls, furniture, a shelf's unscanned inside: not laser-ray stripes of unknown,
-nor the unscanned world beyond a sliver outside a wall), leads somewhere (both mouths open into free
-space wider than any passage: a dead-end slot does not), and it is not a door's own gap (a door
-across its middle; a door at one of its mouths is how it is entered). A passage
-along a wall (between the wall and a long shelf) shares its skeleton line with the one-sided
-strip along the rest of the room's walls: a core without sides along most of its length is
-split into its two-sided stretches, and each is judged on its own.
+to the nearest blocking cell (occupied, or unknown beyond a noise speck; isolated occupied scan
+specks do not block). Skeleton cells whose width is between the robot's diameter and
+``params.passage_max_width_m`` form candidate chains. A chain's *core* is where the width stays
+close to its typical width (the stretch over which the way stays tight, between two near-parallel
+sides, without the flaring mouths; one pinch point does not shorten it). A core is a passage when
+it is longer than ``params.passage_min_length_m``, wide enough for the robot with a margin, has
+sides along most of its length (or a wall along one side and a single doorway in the other: a
+passage with a door off it), solid ones (walls, furniture, a shelf's unscanned inside: not
+laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
+unexplored area), leads somewhere (both mouths open into free space wider than any passage: a
+dead-end slot does not), is not a door's own gap (a door across its middle; a door at one of its
+mouths is how it is entered), and is
+
+* clearly longer than wide (``PASSAGE_MIN_ELONGATION``: an aisle, a checkout lane, a corridor),
+  except a strip between a wall and a thing one can walk round (a pallet), which is one only when
+  as elongated as a corridor (an aisle along a shelf); or
+* a short squeeze between a wall and a piece of furniture deeper than any wall (a sofa, not a
+  door leaf) that is the only way from one side to the other.
+
+A passage along a wall (between the wall and a long shelf) shares its skeleton line with the
+one-sided strip along the rest of the room's walls: a core without sides along most of its length
+is split into its two-sided stretches, and each is judged on its own.
 """
 
 from __future__ import annotations
@@ -78,6 +86,9 @@ WALL_RUN_M: Final = 0.6
 #: ... and the thing is deeper than a wall is thick (door_max_depth_m): blocked along this share
 #: of that depth past its face (its outline may have a scan dropout).
 DEEP_SHARE: Final = 0.8
+#: A door lies across a passage when its normal (the way through it) is within 45 degrees of
+#: the passage's axis; farther round, it is in a side wall.
+DOOR_ACROSS_COS: Final = math.cos(math.radians(45.0))
 #: Look this far beyond a mouth for the space the passage opens into.
 MOUTH_SEARCH_M: Final = 1.0
 #: A passage leaves the robot at least this much room on each side (about a robot's
@@ -257,13 +268,21 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             # past both mouths, the other side ends at both), a thing deeper than any wall or
             # door leaf (a sofa, a cupboard: not a jamb with its door open along the way), that
             # is the only way from one side to the other: a person points at that.
+            # Between a wall and a thing one can walk round (a pallet, a cabinet), a strip is a
+            # way of its own only when it is as elongated as a corridor (an aisle along a shelf).
             elongated = length_m >= PASSAGE_MIN_ELONGATION * width_m
-            if not elongated:
-                thing = _beside_a_wall(sub, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res, WALL_RUN_M / res)
-                if (thing is None
+            corridor_like = length_m >= params.hallway_min_elongation * width_m
+            if not corridor_like:
+                # (A short one needs the wall on past both of its mouths: it is a squeeze along a
+                # wall, not round the end of one.)
+                thing = _beside_a_wall(sub, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res, WALL_RUN_M / res,
+                                       both_mouths=not elongated)
+                if not elongated and (
+                        thing is None
                         or not _deep(sub, pts[bounded], np.array([-axis[1], axis[0]]) * (2 * thing - 1),
-                                     sides[bounded, thing], params.door_max_depth_m / res)
-                        or _way_round(fits, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res)):
+                                     sides[bounded, thing], params.door_max_depth_m / res)):
+                    continue
+                if thing is not None and _way_round(fits, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res):
                     continue
             cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
             centre = (float(cx), float(cy))
@@ -300,20 +319,22 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
 
 
 def _beside_a_wall(open_: BoolArray, centre_g: npt.NDArray[np.float64], axis: npt.NDArray[np.float64],
-                   half_len: float, width: float, run: float) -> int | None:
+                   half_len: float, width: float, run: float, both_mouths: bool = True) -> int | None:
     """Is the stretch (``centre_g``, unit ``axis``, ``half_len`` cells either way, ``width`` cells
-    wide) a squeeze between a wall and a thing beside it: past both of its mouths (from a
-    quarter of its width to ``run`` cells on) one side stays blocked within its width (the wall
-    runs on) along ``WALL_RUNS_ON_SHARE`` of the samples, and the other is open along as much
-    (the thing ends)? The thing's side (0: along -normal, 1: along +normal, the normal being
-    the axis turned a quarter anticlockwise), or None."""
+    wide) a squeeze between a wall and a thing beside it: past its mouths (from a quarter of its
+    width to ``run`` cells on) one side stays blocked within its width (the wall runs on) along
+    ``WALL_RUNS_ON_SHARE`` of the samples, past both mouths (or one, ``both_mouths=False``: a
+    wall that ends at a doorway), and the other is open along as much past both (the thing
+    ends)? The thing's side (0: along -normal, 1: along +normal, the normal being the axis
+    turned a quarter anticlockwise), or None."""
     normal = np.array([-axis[1], axis[0]])
     t = np.arange(width / 4.0, run + 0.5, 0.5)
     starts = np.concatenate([centre_g + (half_len + t)[:, None] * axis, centre_g - (half_len + t)[:, None] * axis])
     sides = _side_distances(open_, starts, np.full(len(starts), width / 2.0), normal, width / 2.0)
     blocked = np.isfinite(sides)
     n = len(t)
-    on = [min(blocked[:n, j].mean(), blocked[n:, j].mean()) for j in (0, 1)]
+    pick = min if both_mouths else max
+    on = [pick(blocked[:n, j].mean(), blocked[n:, j].mean()) for j in (0, 1)]
     off = [max(blocked[:n, j].mean(), blocked[n:, j].mean()) for j in (0, 1)]
     for j in (0, 1):
         if on[j] >= WALL_RUNS_ON_SHARE and off[1 - j] <= 1.0 - WALL_RUNS_ON_SHARE:
@@ -520,10 +541,15 @@ def _side_distances_each(open_: BoolArray, pts: Sequence[npt.NDArray[np.float64]
 def _is_the_door(door: Door, centre: tuple[float, float], axis: tuple[float, float], length_m: float,
                  width_m: float, params: AnalysisParams) -> bool:
     """Is a passage (``centre``, unit ``axis`` in world metres) the gap of ``door``? When the door
-    lies across it away from its mouths: a door at one of its mouths is how one enters a passage
-    (a short corridor between two rooms with a door at its end), not the passage itself."""
+    lies across it (one goes through the door going along the passage) away from its mouths: a
+    door at one of its mouths is how one enters a passage (a short corridor between two rooms
+    with a door at its end), and a door in one of its side walls leads off it; neither is the
+    passage itself."""
     n = math.hypot(*axis) or 1.0
     ux, uy = axis[0] / n, axis[1] / n
+    dn = math.hypot(*door.normal)
+    if dn > 0 and abs(door.normal[0] * ux + door.normal[1] * uy) / dn < DOOR_ACROSS_COS:
+        return False
     dx, dy = door.center[0] - centre[0], door.center[1] - centre[1]
     along, across = dx * ux + dy * uy, abs(-dx * uy + dy * ux)
     if across > width_m / 2 + params.door_max_depth_m:

@@ -167,7 +167,9 @@ def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
         win = (slice(r0, r1), slice(c0, c1))
         lab = labels[win]
         ext = exterior[win]
-        open_ = (floor[win] | ext) & ~obstacle[win]
+        # Every cell but a wall is open here: unknown notches between rays that a space took as
+        # its own still open onto what lies beyond them.
+        open_ = floor[win] | ~obstacle[win]
         clear2 = ndi.distance_transform_edt(open_, sampling=resolution_m)
         markers = np.where((lab > 0) & (clearance_m[win] >= CORE_FRACTION * peak[lab]), lab, 0)
         rim = np.zeros(lab.shape, dtype=bool)

@@ -26,12 +26,14 @@ The meanings (each a rule a person would state, not fitted to a map):
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Final, Literal, Protocol
 
 import numpy as np
+from skimage.measure import approximate_polygon
 
 from langnav.analysis.elements import (
     Corner,
@@ -305,6 +307,77 @@ def offset_goal(e: Element | Point, step: Step, pose: Pose, here: Room | None, d
     return goal, t_goal
 
 
+# ------------------------------------------------------------------------------ ways
+@dataclass(frozen=True)
+class Way:
+    """A way the robot walks, as a polyline from the robot: its corners and the length walked to
+    each. "Halfway down the corridor" and "along the hallway" are measured along it, so an L-shaped
+    corridor is followed round its bend."""
+
+    points: tuple[Point, ...]
+    lengths: tuple[float, ...]
+
+    @classmethod
+    def through(cls, pts: list[Point], tolerance_m: float) -> Way:
+        """The way through ``pts`` (first the robot), its small wiggles (under ``tolerance_m``, the
+        walk's lattice step) straightened."""
+        a = np.asarray(pts, dtype=float).reshape(-1, 2)
+        if len(a) > 2:
+            a = approximate_polygon(a, tolerance_m)
+        keep = [tuple(map(float, a[0]))]
+        for q in a[1:]:
+            if math.dist(keep[-1], (float(q[0]), float(q[1]))) > 1e-6:
+                keep.append((float(q[0]), float(q[1])))
+        lengths = [0.0]
+        for p0, p1 in itertools.pairwise(keep):
+            lengths.append(lengths[-1] + math.dist(p0, p1))
+        return cls(tuple((p[0], p[1]) for p in keep), tuple(lengths))
+
+    @property
+    def length_m(self) -> float:
+        return self.lengths[-1]
+
+    def point_at(self, s_m: float) -> Point:
+        """The point ``s_m`` along the way (clamped to its ends)."""
+        if len(self.points) == 1 or s_m <= 0:
+            return self.points[0]
+        for i in range(1, len(self.points)):
+            if s_m <= self.lengths[i] or i == len(self.points) - 1:
+                seg = self.lengths[i] - self.lengths[i - 1]
+                f = 1.0 if seg <= 0 else min(1.0, (s_m - self.lengths[i - 1]) / seg)
+                (x0, y0), (x1, y1) = self.points[i - 1], self.points[i]
+                return (x0 + (x1 - x0) * f, y0 + (y1 - y0) * f)
+        return self.points[-1]
+
+    def direction_at(self, s_m: float) -> Point:
+        """The unit direction of the way at ``s_m``."""
+        for i in range(1, len(self.points)):
+            if s_m <= self.lengths[i] or i == len(self.points) - 1:
+                return unit((self.points[i][0] - self.points[i - 1][0], self.points[i][1] - self.points[i - 1][1]))
+        return (1.0, 0.0)
+
+    def along(self, xs: FloatArray, ys: FloatArray) -> FloatArray:
+        """How far along the way each point is: on the segment nearest to it, the length to the
+        segment's start plus the point's projection on it."""
+        best_d = np.full(np.shape(xs), np.inf)
+        best_s = np.zeros(np.shape(xs))
+        for i in range(1, len(self.points)):
+            (x0, y0), (x1, y1) = self.points[i - 1], self.points[i]
+            seg = self.lengths[i] - self.lengths[i - 1]
+            if seg <= 0:
+                continue
+            ux, uy = (x1 - x0) / seg, (y1 - y0) / seg
+            t = (xs - x0) * ux + (ys - y0) * uy
+            last = i == len(self.points) - 1
+            tc = np.clip(t, 0.0, np.inf if last else seg)  # beyond the end, along its last segment
+            d = np.hypot(xs - (x0 + ux * tc), ys - (y0 + uy * tc))
+            closer = d < best_d
+            best_d = np.where(closer, d, best_d)
+            best_s = np.where(closer, self.lengths[i - 1] + np.clip(t, 0.0 if i > 1 else -np.inf,
+                                                                   np.inf if last else seg), best_s)
+        return np.asarray(best_s, dtype=np.float64)
+
+
 # ------------------------------------------------------------------------------ fractions
 def fraction_goal(full_goal: Point, fraction: float, pose: Pose,
                   safe_point: SafePointNear, comp: int, desc: str) -> Point:
@@ -462,6 +535,7 @@ def element_point(e: Element) -> Point:
 
 __all__ = [
     "Anchor",
+    "Way",
     "compass_word",
     "element_extent",
     "element_point",

@@ -189,6 +189,7 @@ class FreeSpace:
         xs, ys = grid.cell_to_world(rows, cols)
         self._xs: FloatArray = xs
         self._ys: FloatArray = ys
+        self._boxes: list[tuple[slice, ...] | None] | None = None
 
     # -- cells ---------------------------------------------------------------------------------
     def index(self, x_m: float, y_m: float) -> tuple[int, int] | None:
@@ -227,20 +228,33 @@ class FreeSpace:
 
     def component_at(self, x_m: float, y_m: float, snap_m: float = START_SNAP_M) -> int:
         """The passable component holding (x, y) or the nearest passable cell within ``snap_m``; 0 if none."""
+        cell = self.start_cell(x_m, y_m, snap_m)
+        return 0 if cell is None else int(self.components[cell])
+
+    def component_box(self, component: int) -> tuple[slice, slice]:
+        """The rows and columns of the grid that hold a passable component (its bounding box)."""
+        if self._boxes is None:
+            self._boxes = ndimage.find_objects(self.components)
+        box = self._boxes[component - 1] if 0 < component <= len(self._boxes) else None
+        if box is None:
+            raise ValueError(f"component_box: there is no passable component {component}")
+        return box[0], box[1]
+
+    def start_cell(self, x_m: float, y_m: float, snap_m: float = START_SNAP_M) -> tuple[int, int] | None:
+        """The passable cell the robot at (x, y) starts from: its own, or the nearest within ``snap_m``."""
         idx = self.index(x_m, y_m)
         if idx is not None and self.components[idx]:
-            return int(self.components[idx])
+            return idx
         win = self._window((x_m, y_m), snap_m)
         if win is None:
-            return 0
+            return None
         sl, xs, ys = win
-        comp = self.components[sl]
-        d2 = (xs - x_m) ** 2 + (ys - y_m) ** 2
-        d2 = np.where((comp > 0) & (d2 <= snap_m * snap_m), d2, np.inf)
+        d2 = np.where(self.components[sl] > 0, (xs - x_m) ** 2 + (ys - y_m) ** 2, np.inf)
+        d2[d2 > snap_m * snap_m] = np.inf
         if not np.isfinite(d2).any():
-            return 0
-        i = np.unravel_index(int(np.argmin(d2)), d2.shape)
-        return int(comp[i])
+            return None
+        r, c = np.unravel_index(int(np.argmin(d2)), d2.shape)
+        return int(r) + sl[0].start, int(c) + sl[1].start
 
     def is_goal_ok(self, x_m: float, y_m: float, component: int | None = None) -> bool:
         """Free, clear of occupied/unknown by goal_clearance_m and (if given) in ``component``."""

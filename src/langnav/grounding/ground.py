@@ -44,6 +44,7 @@ from langnav.grounding.geometry import (
     unit,
 )
 from langnav.grounding.history import EMPTY_HISTORY, HistoryView
+from langnav.grounding.relations import hall_axis
 from langnav.grounding.selection import (
     WallLine,
     describe_ref,
@@ -53,6 +54,7 @@ from langnav.grounding.selection import (
     select_wall,
     space_of,
 )
+from langnav.grounding.walking import walk_from
 from langnav.language.intent import (
     Amount,
     Detail,
@@ -110,6 +112,19 @@ ALONG_SPACING_M: Final = 2.5
 ALONG_END_MARGIN_M: Final = 0.5
 ALONG_MIN_RUN_M: Final = 1.0
 ALONG_BACKOFF_M: Final = 0.2
+#: "follow the hallway": facing within ~78 deg of across it (cos 0.2), the robot faces neither way
+#: along it, and the longer way is taken.
+FACING_ALONG_MIN: Final = 0.2
+#: ... the way back is shut within the hallway's width and this much more of the robot, so the walk
+#: sets off the way the robot faces.
+FOLLOW_CLOSE_MARGIN_M: Final = 0.5
+#: ... each pose within this much along the way of its point (half a hallway's width) ...
+FOLLOW_BAND_M: Final = 0.5
+#: ... and within this distance of it, in the hallway.
+FOLLOW_SNAP_M: Final = 1.0
+#: A point is moved onto the hallway's middle line only where the hallway runs along the way (within
+#: ~25 deg): at a bend the local direction of the hallway is no direction of the way.
+MIDDLE_LINE_MIN_COS: Final = 0.9
 #: "a little": README 0.15-0.5 m and 10-40 deg.
 LITTLE_MOVE_M: Final = 0.3
 LITTLE_TURN_DEG: Final = 20.0
@@ -934,6 +949,8 @@ def _follow_space(step: Step, ref: ElementRef, ctx: GroundingContext, pose: Pose
         room = select(ref, ctx.analysis, pose)
     assert isinstance(room, Room)
     desc = describe_ref(ref)
+    if room.kind == ElementKind.HALLWAY and len(room.cells_xy) >= 3:
+        return _follow_hallway(step, desc, room, ctx, pose, comp, index)
     mask = _room_cells_mask(ctx, room)
     xs, ys = ctx.space.xs[mask], ctx.space.ys[mask]
     if xs.size < 2:
@@ -976,6 +993,75 @@ def _follow_space(step: Step, ref: ElementRef, ctx: GroundingContext, pose: Pose
     if not poses:
         raise GroundingError(f"I cannot follow {desc}: none of it is reachable from here.")
     return _nav_step(step, pose, index, poses, f"follow {desc}", (room.id,))
+
+
+def _follow_hallway(step: Step, desc: str, hall: Room, ctx: GroundingContext, pose: Pose, comp: int,
+                    index: int) -> GroundedStep:
+    """'Follow the corridor', 'halfway down the hallway': along the way the hallway leads from here in
+    the direction the robot faces (round the bend of an L-shaped corridor), to its far end or that
+    part of the way; poses on the hallway's middle line, never past the part asked for."""
+    _, axis = hall_axis(hall, pose.xy)
+    hx, hy = pose.heading()
+    dot = axis[0] * hx + axis[1] * hy
+    ways = [(axis[0], axis[1]), (-axis[0], -axis[1])] if abs(dot) < FACING_ALONG_MIN else \
+        [(axis[0], axis[1]) if dot > 0 else (-axis[0], -axis[1])]
+    found = [w for w in (_way_down(hall, d, ctx, pose) for d in ways) if w is not None]
+    if not found:
+        raise GroundingError(f"I cannot follow {desc}: none of it is reachable from here.")
+    way = max(found, key=lambda w: w.length_m)  # facing across it: the longer way
+    if step.fraction is not None:
+        s_goal = way.length_m * step.fraction
+        if s_goal < compose.MIN_OFFSET_RUN_M:
+            raise GroundingError(f"I am already {compose.fraction_words(step.fraction)} along {desc} or past it.")
+    else:
+        s_goal = way.length_m - ALONG_END_MARGIN_M
+        if s_goal < ALONG_MIN_RUN_M:
+            raise GroundingError(f"I am already at the end of {desc}; turn around to follow it the other way.")
+    in_hall = _in_label(ctx, hall.label)
+    k = max(2, math.ceil(s_goal / ALONG_SPACING_M))
+    poses: list[Point] = []
+    for i in range(1, k + 1):
+        s_i = s_goal * i / k
+        target = _on_middle_line(hall, way.point_at(s_i), way.direction_at(s_i))
+        lo, hi = s_i - FOLLOW_BAND_M, min(s_i + FOLLOW_BAND_M, s_goal + compose.ALONG_SLACK_M)
+
+        def where(xs: FloatArray, ys: FloatArray, lo: float = lo, hi: float = hi) -> BoolArray:
+            along = way.along(xs, ys)  # never past the part of the way asked for
+            return np.asarray(in_hall(xs, ys) & (along >= lo) & (along <= hi), dtype=bool)
+
+        p = ctx.space.safe_point_near(target, comp, FOLLOW_SNAP_M, prefer=target, where=where)
+        if p is not None and (not poses or math.dist(p, poses[-1]) > 0.3):
+            poses.append(p)
+    if not poses:
+        raise GroundingError(f"I cannot follow {desc}: none of it is reachable from here.")
+    return _nav_step(step, pose, index, poses, f"follow {desc}", (hall.id,))
+
+
+def _way_down(hall: Room, direction: Point, ctx: GroundingContext, pose: Pose) -> compose.Way | None:
+    """The way down the hallway setting off in ``direction``: the walk to the hallway's farthest cell
+    with the way back shut, ending on the hallway's middle line."""
+    walk = walk_from(ctx.space, pose.xy, onward=direction, onward_m=hall.width_m + FOLLOW_CLOSE_MARGIN_M)
+    if walk is None:
+        return None
+    cells = np.asarray(hall.cells_xy, dtype=float).reshape(-1, 2)
+    xs, ys = cells[:, 0], cells[:, 1]
+    metres = np.where(walk.reached(xs, ys), walk.each(xs, ys), -np.inf)
+    i = int(np.argmax(metres))
+    if not np.isfinite(metres[i]):
+        return None
+    far = (float(xs[i]), float(ys[i]))
+    end = _on_middle_line(hall, far, None)
+    return compose.Way.through(walk.path_to(end), walk.stride * ctx.space.grid.resolution_m)
+
+
+def _on_middle_line(hall: Room, p: Point, direction: Point | None) -> Point:
+    """``p`` moved across the hallway onto its middle line, where the hallway runs along
+    ``direction`` there (at a bend it does not: ``p`` stays)."""
+    c, a = hall_axis(hall, p)
+    if direction is not None and abs(a[0] * direction[0] + a[1] * direction[1]) < MIDDLE_LINE_MIN_COS:
+        return p
+    t = (p[0] - c[0]) * a[0] + (p[1] - c[1]) * a[1]
+    return (c[0] + a[0] * t, c[1] + a[1] * t)
 
 
 # ------------------------------------------------------------------------------ explore

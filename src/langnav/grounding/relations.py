@@ -5,8 +5,12 @@
   The reference is ``ref.near`` or, without one, the space the robot is in. When several spaces
   fit and no other word picks one, the robot asks which (it does not guess).
 * **across the hall** (``Relation.ACROSS``): a space whose door opens onto the same hallway on the
-  other side of it, straight across (along the hallway within ``ACROSS_ALONG_MAX_M``) from the
-  robot's door (the robot in a room) or from the robot (the robot in the hallway).
+  other side of it, straight across from the door of the room named ("the room across from the
+  first room on your left", ``ref.near``), of the robot's room (the robot in a room) or from the
+  robot (the robot in the hallway: the side it faces, or, standing by one wall, the other side).
+  Straight across: the room's own extent along the hallway comes within ``ACROSS_ALONG_MAX_M`` of
+  that point (rooms are wider than their doors and staggered); the nearest such room, or a question
+  when two are about as near (``ACROSS_TIE_M``).
 """
 
 from __future__ import annotations
@@ -26,6 +30,7 @@ from langnav.grounding.selection import (
     describe_ref,
     distance_to,
     elements_of_kind,
+    floor_area_m2,
     label_of,
     landmark_ref,
     matches_side,
@@ -39,9 +44,16 @@ from langnav.language.intent import ElementRef, Relation, Side, Superlative
 #: Two spaces whose free cells come this close have only a wall between them (interior walls are
 #: 0.1-0.3 m thick; the free cells stop a cell or two short of them).
 WALL_APART_MAX_M: Final = 0.6
-#: "Straight across": the two doors lie within this distance of each other along the hallway
-#: (about a door's width and a half: doors opposite each other are rarely perfectly aligned).
+#: "Straight across": the room's side on the hallway comes within this distance, along the
+#: hallway, of the robot's place (or its room's door): rooms along a hall are staggered, and a room
+#: a door's width and a half further along is still the one across.
 ACROSS_ALONG_MAX_M: Final = 2.0
+#: Two rooms on the other side whose distances along the hallway differ by less than this (half a
+#: door's width) are equally "across": the robot asks which one.
+ACROSS_TIE_M: Final = 0.5
+#: Standing this share of the hallway's width or more off its middle line, the robot stands by one
+#: wall: across is the other side, whichever way it faces; nearer the middle, the side it faces.
+BY_A_WALL_SHARE: Final = 0.25
 #: The hallway's local direction is taken from its cells within this distance of the reference.
 HALL_AXIS_RADIUS_M: Final = 3.0
 #: Windows taken for the hallway's direction: the first finds the middle of the hallway near the
@@ -115,7 +127,8 @@ def select_related_spaces(ref: ElementRef, analysis: MapAnalysis, pose: Pose, co
                              f"Say e.g. 'go to {label_of(options[0])}'.")
     sup = ref.superlative
     if sup in (Superlative.BIGGEST, Superlative.SMALLEST, Superlative.WIDEST, Superlative.NARROWEST):
-        ordered = sorted(pool, key=size_of, reverse=sup in (Superlative.BIGGEST, Superlative.WIDEST))
+        ordered = sorted(pool, key=lambda r: floor_area_m2(r, analysis) if sup in (Superlative.BIGGEST,
+                         Superlative.SMALLEST) else size_of(r), reverse=sup in (Superlative.BIGGEST, Superlative.WIDEST))
     else:
         ordered = sorted(pool, key=lambda r: distance_to(r, pose.xy), reverse=sup == Superlative.FARTHEST)
     k = (ref.ordinal or 1) - 1
@@ -155,25 +168,33 @@ def hall_axis(hall: Room, around: Point) -> tuple[Point, Point]:
 def _across(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room:
     here = space_of(analysis, pose.xy)
     halls = [r for r in analysis.rooms if r.kind == ElementKind.HALLWAY]
+    # the room across from which to look: "across from the first room on your left", else the robot's
+    base = here
+    if ref.near is not None and ref.near.kind == Kind.ROOM and not ref.near.in_current_room:
+        mark = select(landmark_ref(ref.near), analysis, pose)
+        if not isinstance(mark, Room):
+            raise GroundingError(f"I cannot tell which room is across from {describe_ref(landmark_ref(ref.near))}.")
+        base = mark
     if ref.near is not None and ref.near.kind == Kind.HALLWAY and not ref.near.in_current_room:
         hall_e = select(landmark_ref(ref.near), analysis, pose)
         assert isinstance(hall_e, Room)
         hall = hall_e
-    elif here is not None and here.kind == ElementKind.HALLWAY:
+    elif base is here and here is not None and here.kind == ElementKind.HALLWAY:
         hall = here
     else:
-        joined = [h for h in halls if here is not None and spaces_joined(h, here, analysis)]
+        joined = [h for h in halls if base is not None and spaces_joined(h, base, analysis)]
         if not joined:
-            raise GroundingError("I see no hallway next to the room I am in, so I cannot tell which room is "
-                                 "across it.")
+            what = "the room I am in" if base is here else label_of(base) if base is not None else "me"
+            raise GroundingError(f"I see no hallway next to {what}, so I cannot tell which room is across it.")
         hall = min(joined, key=lambda h: nearest_point(pose.xy, h.cells_xy)[0])
-    # the point across from which to look: the robot in the hallway, else its room's door onto it
-    if here is hall or here is None:
+    # the point across from which to look: the robot in the hallway, else the room's door onto it
+    from_door = base is not None and base is not hall
+    if base is None or base is hall:
         origin = pose.xy
     else:
-        doors = [d for d in analysis.doors if {hall.id, here.id} <= set(d.connects)]
+        doors = [d for d in analysis.doors if {hall.id, base.id} <= set(d.connects)]
         if not doors:
-            raise GroundingError(f"I see no door from this room onto {label_of(hall)}.")
+            raise GroundingError(f"I see no door from {label_of(base)} onto {label_of(hall)}.")
         origin = min(doors, key=lambda d: math.dist(d.center, pose.xy)).center
     centre, axis = hall_axis(hall, origin)
     normal = (-axis[1], axis[0])
@@ -185,38 +206,55 @@ def _across(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room:
         return (p[0] - centre[0]) * axis[0] + (p[1] - centre[1]) * axis[1]
 
     facing = math.cos(pose.yaw_rad) * normal[0] + math.sin(pose.yaw_rad) * normal[1]
+    by_a_wall = hall.width_m * BY_A_WALL_SHARE
     if ref.side in (Side.LEFT, Side.RIGHT):
         # "the room across the hall on your left": that side of the robot is the far side
         left_is_plus = (-math.sin(pose.yaw_rad)) * normal[0] + math.cos(pose.yaw_rad) * normal[1] > 0
         far_plus = left_is_plus if ref.side == Side.LEFT else not left_is_plus
         own = -1.0 if far_plus else 1.0
-    elif abs(across(origin)) >= CENTRE_LINE_EPS_M:
-        own = across(origin)
+    elif from_door or abs(across(origin)) >= max(by_a_wall, CENTRE_LINE_EPS_M):
+        own = across(origin)  # from a room's door, or standing by one wall: across is the other side
     elif abs(facing) >= FACING_ACROSS_MIN:
         own = -1.0 if facing > 0 else 1.0  # in the middle of the hallway: across is the side it faces
+    elif abs(across(origin)) >= CENTRE_LINE_EPS_M:
+        own = across(origin)
     else:
         raise GroundingError(f"I am in the middle of {label_of(hall)}, facing along it, so 'across' could be "
                              "either side; say 'the room across the hall on your left' (or right).")
-    candidates: list[tuple[float, Room]] = []
+    here_along = along(origin)
+    candidates: dict[str, tuple[float, Room]] = {}
     for d in analysis.doors:
         if hall.id not in d.connects:
             continue
         other_id = next((c for c in d.connects if c != hall.id), None)
-        if other_id is None or (here is not None and other_id == here.id):
+        if other_id is None or (base is not None and other_id == base.id):
             continue
         other = next((r for r in analysis.rooms if r.id == other_id), None)
         if other is None or (ref.kind == Kind.ROOM and other.kind != ElementKind.ROOM):
             continue
         if across(d.center) * own >= 0:
             continue  # a door on the robot's own side of the hallway
-        candidates.append((abs(along(d.center) - along(origin)), other))
+        # how far along the hallway the room is from here: 0 when its side on the hallway spans here
+        cells = np.asarray(other.cells_xy, float).reshape(-1, 2)
+        if len(cells):
+            t = (cells[:, 0] - centre[0]) * axis[0] + (cells[:, 1] - centre[1]) * axis[1]
+            gap = max(0.0, float(t.min()) - here_along, here_along - float(t.max()))
+        else:
+            gap = abs(along(d.center) - here_along)
+        if other.id not in candidates or gap < candidates[other.id][0]:
+            candidates[other.id] = (gap, other)
     if not candidates:
         raise GroundingError(f"I see no room on the other side of {label_of(hall)}.")
-    gap, best = min(candidates, key=lambda t: t[0])
+    ranked = sorted(candidates.values(), key=lambda t: t[0])
+    gap, best = ranked[0]
     if gap > ACROSS_ALONG_MAX_M:
         raise GroundingError(f"No room is straight across {label_of(hall)} from here: the nearest on the other "
                              f"side, {label_of(best)}, is {gap:.1f} m further along. Say 'go to {label_of(best)}' "
                              "if you mean that one.")
+    if len(ranked) > 1 and ranked[1][0] - gap < ACROSS_TIE_M:
+        other = ranked[1][1]
+        raise GroundingError(f"Two rooms are across {label_of(hall)} from here, {label_of(best)} and "
+                             f"{label_of(other)}; which one do you mean? Say e.g. 'go to {label_of(best)}'.")
     return best
 
 

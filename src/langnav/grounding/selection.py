@@ -7,8 +7,9 @@ The meanings follow ``../shared/bench/README.md``:
 * nearest / farthest and first, second ...: straight-line distance from the robot to the element's
   reference point (door: centre; room: nearest cell; obstacle: nearest cell; unexplored area: nearest
   frontier cell), among the elements the other words select; "the X on your left" = the nearest;
-* biggest / smallest: by area; "this room": the room holding the robot; a corner with no room named
-  is a corner of the robot's room; "the left corner": of the room's corners ahead, the farthest left.
+* biggest / smallest: by area (a room's counting its unscanned part, ``floor_area_m2``); "this room":
+  the room holding the robot; a corner with no room named is a corner of the robot's room; "the
+  left corner": of the room's corners ahead, the farthest left.
 
 Doors and passages of the space the robot is in are counted before the others: "the third door on
 your left" in a hallway means the hallway's doors, not one seen through a wall.
@@ -55,6 +56,7 @@ from langnav.grounding.geometry import (
 )
 from langnav.language.intent import Element as Kind
 from langnav.language.intent import ElementRef, Landmark, Place, Relation, Side, Superlative
+from langnav.maps.grid import UNKNOWN
 
 #: A robot standing in a doorway belongs to the nearest space within this distance.
 SPACE_SNAP_M: Final = 0.6
@@ -142,6 +144,8 @@ def describe_ref(ref: ElementRef) -> str:
         noun = KIND_NOUN[ref.kind][0]
         other = "this one" if ref.near is None or ref.near.in_current_room else describe_ref(landmark_ref(ref.near))
         if ref.relation == Relation.ACROSS:
+            if ref.near is not None and ref.near.kind == Kind.ROOM and not ref.near.in_current_room:
+                return f"the {noun} across from {other}"
             hall = "the hallway" if ref.near is None or ref.near.kind != Kind.HALLWAY else other
             return f"the {noun} across {hall}"
         words = ["the"]
@@ -287,6 +291,52 @@ def side_point(e: Element, pose: Pose) -> Point:
     return reference_point(e)
 
 
+def unscanned_part_m2(room: Room, analysis: MapAnalysis) -> float:
+    """The floor of a room the map has not seen yet: the unexplored areas inside the building that
+    open onto this room only, along more than a doorway's width (``params.door_max_width_m``). A
+    room half scanned shows its unknown half across the whole room; an unscanned room behind a
+    door shows it through the doorway only, and is a room of its own, not part of this one."""
+    total = 0.0
+    for u in analysis.unexplored:
+        if not u.interior or len(u.frontier) == 0:
+            continue
+        f = np.asarray(u.frontier, dtype=float).reshape(-1, 2)
+        rr, cc = analysis.grid.world_to_index(f[:, 0], f[:, 1])
+        ok = analysis.grid.in_bounds(rr, cc)
+        labels = analysis.labels[rr[ok], cc[ok]]
+        labels = labels[labels > 0]
+        if labels.size == 0 or bool(np.any(labels != room.label)):
+            continue
+        span = math.hypot(float(np.ptp(f[:, 0])), float(np.ptp(f[:, 1])))
+        if span > analysis.params.door_max_width_m and not _counted_in(u, room, analysis):
+            total += u.area_m2
+    return total
+
+
+def _counted_in(u: UnexploredArea, room: Room, analysis: MapAnalysis) -> bool:
+    """The analysis already gave the area's unknown cells to the room (its ``area_m2`` counts them):
+    most unknown cells next to the area's frontier carry the room's label."""
+    grid = analysis.grid
+    f = np.asarray(u.frontier, dtype=float).reshape(-1, 2)
+    rr, cc = grid.world_to_index(f[:, 0], f[:, 1])
+    near_r = (rr[:, None] + np.array([-1, -1, -1, 0, 0, 1, 1, 1])[None, :]).ravel()
+    near_c = (cc[:, None] + np.array([-1, 0, 1, -1, 1, -1, 0, 1])[None, :]).ravel()
+    ok = grid.in_bounds(near_r, near_c)
+    near_r, near_c = near_r[ok], near_c[ok]
+    unknown = grid.cells[near_r, near_c] == UNKNOWN
+    if not np.any(unknown):
+        return False
+    return bool(np.mean(analysis.labels[near_r[unknown], near_c[unknown]] == room.label) > 0.5)
+
+
+def floor_area_m2(e: Element, analysis: MapAnalysis) -> float:
+    """"The biggest room": a room's floor area counting its unexplored cells (README), including the
+    part not scanned yet (``unscanned_part_m2``); other elements by ``size_of``."""
+    if isinstance(e, Room):
+        return e.area_m2 + unscanned_part_m2(e, analysis)
+    return size_of(e)
+
+
 def size_of(e: Element) -> float:
     if isinstance(e, Room | Obstacle | UnexploredArea):
         return e.area_m2
@@ -428,9 +478,15 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
             return 0
         return 0 if _in_space(e, here, analysis) else 1
 
+    if ref.ordinal is not None and ref.kind in (Kind.DOOR, Kind.NARROW_PASSAGE) and here is not None \
+            and space is None and any(local_first(e) == 0 for e in elements_of_kind(analysis, ref.kind)):
+        # "the fourth door on your left" counts the doors of the space the robot is in (README): with
+        # three of them on that side there is no fourth, whatever doors of other rooms it could see
+        pool = [e for e in pool if local_first(e) == 0]
+
     sup = ref.superlative
     if sup in (Superlative.BIGGEST, Superlative.SMALLEST):
-        ordered = sorted(pool, key=size_of, reverse=sup == Superlative.BIGGEST)
+        ordered = sorted(pool, key=lambda e: floor_area_m2(e, analysis), reverse=sup == Superlative.BIGGEST)
     elif sup in (Superlative.WIDEST, Superlative.NARROWEST):
         ordered = sorted(pool, key=width_of, reverse=sup == Superlative.WIDEST)
     elif sup == Superlative.FARTHEST:

@@ -1,0 +1,302 @@
+"""Grounding on buildings other than the bench's, analysed by the real analysis and read by the
+offline translator end to end: an L-shaped corridor with rooms on both sides, the same floor turned
+a quarter turn (north-south becomes east-west: no rule may lean on the map's axes) and a floor
+with one room half unscanned. Each test asserts the region the goal lies in.
+
+The L (``build_l``), metres; hallway = leg A (y 5-7, x 1-12) + leg B (x 10-12, y 7-17):
+
+    y=17 +   unknown   +---------+--+---------+
+         |             | room 5  |  | room 3  |
+    y=11 +-------------+   D(10,14) D(12,13)  |
+         |   room 2 (x 1-10, y 7-11) |B |     |
+    y=7  +----D(4,7)-------------+  |  +------+ y=9
+         |          leg A           D(12,6)   |
+    y=5  +--D(3,5)----D(7,5)---D(10.5,5)------+ room 4 (x 12-16, y 1-9)
+         | room 6  | room 7  | room 8  |      |
+    y=1  +---------+---------+---------+------+
+        x=1       x=5       x=9       x=12   x=16
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+import pytest
+
+from langnav.analysis.elements import ElementKind, MapAnalysis, Room
+from langnav.analysis.params import DEFAULT_PARAMS
+from langnav.analysis.pipeline import analyze
+from langnav.grounding.selection import unscanned_part_m2
+from langnav.language.translator import get_translator
+from langnav.maps.draw import MapBuilder
+from langnav.maps.grid import OccupancyGrid
+from langnav.pipeline import Planner, PlanResult
+from langnav.plan.commands import NavigateThroughPoses
+
+Point = tuple[float, float]
+#: A frame change of the floor: world point of the drawn floor -> world point of the map.
+Frame = Callable[[Point], Point]
+
+
+def build_l_grid() -> OccupancyGrid:
+    b = MapBuilder(18.0, 18.0)
+    b.room(1.0, 1.0, 16.0, 17.0)
+    b.unknown(1.0, 11.0, 6.0, 17.0)  # the north-west block is not part of the building
+    b.wall(1.0, 11.0, 6.0, 11.0, 0.3)
+    b.wall(6.0, 11.0, 6.0, 17.0, 0.3)
+    b.wall(1.0, 5.0, 12.0, 5.0)
+    b.wall(1.0, 7.0, 10.0, 7.0)
+    b.wall(10.0, 7.0, 10.0, 17.0)
+    b.wall(12.0, 1.0, 12.0, 17.0)
+    b.wall(5.0, 1.0, 5.0, 5.0)
+    b.wall(9.0, 1.0, 9.0, 5.0)
+    b.wall(6.0, 11.0, 10.0, 11.0)
+    b.wall(12.0, 9.0, 16.0, 9.0)
+    for x in (3.0, 7.0, 10.5):
+        b.door_h(x, 5.0, 0.9)
+    b.door_h(4.0, 7.0, 0.9)
+    b.door_v(10.0, 14.0, 0.9)
+    b.door_v(12.0, 6.0, 0.9)
+    b.door_v(12.0, 13.0, 0.9)
+    return b.build("l_corridor")
+
+
+def quarter_turn(grid: OccupancyGrid) -> tuple[OccupancyGrid, Frame]:
+    """The floor turned a quarter turn clockwise, as a map of its own (exact: cells map to cells;
+    headings turn by -90 degrees), and where a point of the drawn floor is on it."""
+    width_m = grid.cells.shape[1] * grid.resolution_m
+    cells = np.rot90(grid.cells).copy()  # row 0 is the bottom: (x, y) -> (y, width - x)
+    turned = OccupancyGrid(cells, grid.resolution_m, 0.0, 0.0, 0.0, f"{grid.source}_turned")
+    return turned, lambda p: (p[1], width_m - p[0])
+
+
+def identity(p: Point) -> Point:
+    return p
+
+
+FLOORS: dict[str, tuple[MapAnalysis, Frame]] = {}
+
+
+def floor(name: str) -> tuple[MapAnalysis, Frame]:
+    if name not in FLOORS:
+        grid = build_l_grid()
+        frame: Frame = identity
+        if name == "turned":
+            grid, frame = quarter_turn(grid)
+        FLOORS[name] = (analyze(grid, DEFAULT_PARAMS), frame)
+    return FLOORS[name]
+
+
+def pose_in(frame: Frame, x: float, y: float, yaw_deg: float, turn_deg: float) -> tuple[float, float, float]:
+    fx, fy = frame((x, y))
+    return (fx, fy, (yaw_deg + turn_deg) % 360.0)
+
+
+def plan(prompt: str, a: MapAnalysis, pose: tuple[float, float, float]) -> PlanResult:
+    return Planner(get_translator("offline")).plan(prompt, a, pose)
+
+
+def last_goal(r: PlanResult) -> Point:
+    assert r.ok, r.clarification
+    navs = [c for c in r.commands if isinstance(c, NavigateThroughPoses)]
+    assert navs, r.commands
+    return (navs[-1].poses[-1][0], navs[-1].poses[-1][1])
+
+
+def room_holding(a: MapAnalysis, frame: Frame, x: float, y: float) -> Room:
+    r = a.room_at(*frame((x, y)))
+    assert r is not None, f"the analysis has no space at ({x}, {y})"
+    return r
+
+
+CASES = [("drawn", 0.0), ("turned", -90.0)]
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+def test_the_l_floor_is_what_the_tests_expect(name: str, turn: float) -> None:
+    a, frame = floor(name)
+    assert sorted(r.kind.value for r in a.rooms) == ["hallway"] + ["room"] * 7
+    assert len(a.doors) == 7
+    hall = room_holding(a, frame, 6.0, 6.0)
+    assert hall.kind == ElementKind.HALLWAY and room_holding(a, frame, 11.0, 15.0) is hall
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+@pytest.mark.parametrize("words", ["first", "nearest"])
+def test_the_first_room_on_your_left_is_by_straight_line(name: str, turn: float, words: str) -> None:
+    # the contract's order: straight-line distance to the room's nearest cell (room 2's wall runs
+    # beside the robot in leg B, though its door is back in leg A)
+    a, frame = floor(name)
+    r = plan(f"go into the {words} room on your left", a, pose_in(frame, 11.0, 10.0, 90.0, turn))
+    assert a.room_at(*last_goal(r)) is room_holding(a, frame, 5.0, 9.0)
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+def test_the_last_door_on_your_right_down_leg_a(name: str, turn: float) -> None:
+    a, frame = floor(name)
+    r = plan("go to the last door on your right", a, pose_in(frame, 2.0, 6.0, 0.0, turn))
+    assert math.dist(last_goal(r), frame((10.5, 5.0))) <= 0.75
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+def test_a_metre_past_a_door_stays_in_the_hallway(name: str, turn: float) -> None:
+    # 1 m past the door of room 8 (x 10.5) runs down leg A to the bend, in the hallway's middle
+    a, frame = floor(name)
+    start = (3.0, 6.0)
+    r = plan("go 1 metre past the third door on your right", a, pose_in(frame, *start, 0.0, turn))
+    goal = last_goal(r)
+    hall = room_holding(a, frame, 6.0, 6.0)
+    assert a.room_at(*goal) is hall
+    door = frame((10.5, 5.0))
+    along = math.dist(frame(start), goal) if turn else goal[0] - start[0]
+    assert along <= (10.5 - start[0]) + 1.0 + 0.06  # never farther than asked
+    assert math.dist(goal, door) >= 0.9
+
+
+# ------------------------------------------------------------------------------ a room half scanned
+def build_half_scanned() -> MapAnalysis:
+    """A hallway (y 10-12) with room A (x 1-8, y 6-10) and room B (x 8-17, y 1-10) south of it; B's
+    south part (y 1-7.5) is not scanned yet, and behind A's south door is room G (y 1-6), never
+    entered: unknown seen through a doorway only."""
+    b = MapBuilder(18.0, 13.0)
+    b.room(1.0, 1.0, 17.0, 12.0)
+    b.wall(1.0, 10.0, 17.0, 10.0)
+    b.wall(8.0, 1.0, 8.0, 10.0)
+    b.wall(1.0, 6.0, 8.0, 6.0)
+    b.door_h(4.0, 10.0, 0.9)
+    b.door_h(12.0, 10.0, 0.9)
+    b.door_h(4.0, 6.0, 0.9)
+    b.unknown(1.0, 1.0, 7.9, 5.9)
+    b.unknown(8.1, 1.0, 17.0, 7.5)
+    return analyze(b.build("half_scanned"), DEFAULT_PARAMS)
+
+
+@pytest.fixture(scope="module")
+def half() -> MapAnalysis:
+    return build_half_scanned()
+
+
+def test_the_biggest_room_counts_its_unscanned_part(half: MapAnalysis) -> None:
+    a_room, b_room = half.room_at(4.0, 8.0), half.room_at(12.0, 9.0)
+    assert a_room is not None and b_room is not None
+    assert b_room.area_m2 < a_room.area_m2  # scanned so far, B is the smaller
+    x, y = last_goal(plan("go into the biggest room", half, (2.0, 11.0, 0.0)))
+    assert half.room_at(x, y) is b_room
+    x, y = last_goal(plan("go into the smallest room", half, (2.0, 11.0, 0.0)))
+    assert half.room_at(x, y) is a_room
+
+
+def test_a_room_seen_through_a_doorway_is_not_part_of_the_room(half: MapAnalysis) -> None:
+    a_room, b_room = half.room_at(4.0, 8.0), half.room_at(12.0, 9.0)
+    assert a_room is not None and b_room is not None
+    assert unscanned_part_m2(a_room, half) == 0.0  # room G, behind A's door
+    assert unscanned_part_m2(b_room, half) == pytest.approx(8.9 * 6.5, rel=0.05)
+
+
+# ------------------------------------------------------------------------------ following the L
+#: The robot's centre rounds the inner corner of the L (x 10, y 7) at about its radius.
+INNER_CORNER = (10.2, 6.8)
+#: The walk's lattice may make the way a little longer than the shortest one (a lattice step).
+WAY_SLACK_M = 0.3
+
+
+def drawn_point(name: str, p: Point) -> Point:
+    """A point of the map back on the drawn floor (the quarter turn undone)."""
+    return p if name == "drawn" else (18.0 - p[1], p[0])
+
+
+def walked(a: Point, b: Point) -> float:
+    """The shortest walk on the drawn L from a point of leg A to a point of either leg."""
+    if b[1] > INNER_CORNER[1] and b[0] > INNER_CORNER[0]:
+        return math.dist(a, INNER_CORNER) + math.dist(INNER_CORNER, b)
+    return math.dist(a, b)
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+@pytest.mark.parametrize("fraction", [("a quarter of the way", 0.25), ("halfway", 0.5),
+                                      ("three quarters of the way", 0.75)])
+def test_a_fraction_down_the_l_corridor_is_measured_round_the_bend(name: str, turn: float,
+                                                                   fraction: tuple[str, float]) -> None:
+    a, frame = floor(name)
+    hall = room_holding(a, frame, 6.0, 6.0)
+    words, f = fraction
+    r = plan(f"go {words} down the corridor", a, pose_in(frame, 2.0, 6.0, 0.0, turn))
+    goal = drawn_point(name, last_goal(r))
+    assert a.room_at(*last_goal(r)) is hall
+    far_end = (11.0, max(drawn_point(name, (float(x), float(y)))[1] for x, y in hall.cells_xy))
+    way = walked((2.0, 6.0), far_end)
+    assert walked((2.0, 6.0), goal) <= f * way + WAY_SLACK_M  # never farther than asked
+    assert walked((2.0, 6.0), goal) >= f * way - 1.0
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+def test_following_the_l_corridor_ends_at_its_far_end_in_the_hallway(name: str, turn: float) -> None:
+    a, frame = floor(name)
+    hall = room_holding(a, frame, 6.0, 6.0)
+    r = plan("follow the corridor", a, pose_in(frame, 2.0, 6.0, 0.0, turn))
+    assert r.ok, r.clarification
+    (c,) = r.commands
+    assert isinstance(c, NavigateThroughPoses) and len(c.poses) >= 3
+    for p in c.poses:
+        assert a.room_at(p[0], p[1]) is hall
+    x, y = drawn_point(name, last_goal(r))
+    assert 10.0 < x < 12.0 and y >= 15.5
+    # and back the other way from leg B, facing down it
+    back = plan("follow the corridor", a, pose_in(frame, 11.0, 12.0, 270.0, turn))
+    x, y = drawn_point(name, last_goal(back))
+    assert x <= 2.5 and 5.0 < y < 7.0
+
+
+def test_doors_are_counted_among_those_of_the_space_the_robot_is_in(half: MapAnalysis) -> None:
+    # in the hallway facing east: its two doors are on the right; the door between room A and the
+    # unscanned room G is no door of the hallway, so there is no third door on the right
+    second = plan("go to the second door on your right", half, (2.0, 11.0, 0.0))
+    assert math.dist(last_goal(second), (12.0, 10.0)) <= 0.75
+    third = plan("go to the third door on your right", half, (2.0, 11.0, 0.0))
+    assert not third.ok and third.commands == ()
+    assert "only two doors on your right" in (third.clarification or "")
+
+
+# ------------------------------------------------------------------------------ staggered rooms
+def build_staggered() -> MapAnalysis:
+    """A hallway (y 5-7, x 1-17); rooms south (x 1-6, 6-11, 11-17; doors at their west ends) and
+    north (x 1-4, 4-9, 9-17; doors at their east ends): rooms wider than their doors, doors far from
+    straight across each other."""
+    b = MapBuilder(18.0, 12.0)
+    b.room(1.0, 1.0, 17.0, 11.0)
+    b.wall(1.0, 5.0, 17.0, 5.0)
+    b.wall(1.0, 7.0, 17.0, 7.0)
+    for x in (6.0, 11.0):
+        b.wall(x, 1.0, x, 5.0)
+    for x in (4.0, 9.0):
+        b.wall(x, 7.0, x, 11.0)
+    for x in (2.0, 7.0, 12.0):
+        b.door_h(x, 5.0, 0.9)
+    for x in (3.5, 8.5, 16.0):
+        b.door_h(x, 7.0, 0.9)
+    return analyze(b.build("staggered"), DEFAULT_PARAMS)
+
+
+@pytest.fixture(scope="module")
+def staggered() -> MapAnalysis:
+    return build_staggered()
+
+
+@pytest.mark.parametrize(("prompt", "pose"), [
+    ("go into the room across the hall", (5.0, 5.6, 90.0)),     # near the middle, facing north
+    ("go into the room across the hall", (5.0, 5.3, 270.0)),    # by the south wall, facing it
+    ("turn around, then go into the room across the hall", (5.0, 6.0, 270.0)),
+])
+def test_the_room_across_the_hall_is_judged_by_its_extent(staggered: MapAnalysis, prompt: str,
+                                                          pose: tuple[float, float, float]) -> None:
+    # the north room x 4-9 spans the robot's place along the hallway, though its door is 3.5 m on
+    x, y = last_goal(plan(prompt, staggered, pose))
+    assert staggered.room_at(x, y) is staggered.room_at(6.5, 9.0)
+
+
+def test_two_rooms_equally_across_are_asked_about(staggered: MapAnalysis) -> None:
+    # at x 9 the wall between the north rooms x 4-9 and 9-17 is straight across
+    r = plan("go into the room across the hall", staggered, (9.0, 6.0, 90.0))
+    assert not r.ok and r.commands == () and "which one" in (r.clarification or "")
