@@ -84,6 +84,9 @@ ROW_OF_CLUTTER_MIN_OPEN_SHARE: Final = 0.4
 #: ... and when there are at least this many: a room may have a door at each end and one in
 #: the middle onto the same corridor; a row of racks or desks has a gap every few metres.
 ROW_OF_CLUTTER_MIN_GAPS: Final = 4
+#: ... and when the gaps lie on one line: their centres within this distance (m, rms) of it,
+#: half an interior wall's thickness.
+ROW_OF_CLUTTER_MAX_OFF_LINE_M: Final = 0.15
 #: Id used in ``Door.connects`` for unexplored territory.
 UNKNOWN_ID: Final = "unknown"
 #: Openings between two spaces narrower than the robot can pass (``door_min_width_m``) but at
@@ -206,7 +209,7 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     judge = JambJudge(split_floor, split_clear, res, params) if params.seg_jamb_test else None
     labels = merge_basins(raw_labels, split_clear, res, params, judge)
     if closed.any():
-        labels = _reopen(labels, closed, params.seg_max_openings_between)
+        labels = _reopen(labels, closed, params.seg_max_openings_between, res)
     if params.seg_claim_free_m > 0:
         labels = _claim_free(labels, fl.free, ~occupied, params.seg_claim_free_m / res)
     labels, exterior = _attach_enclosed_unknown(labels, fl, grid, params)
@@ -243,7 +246,7 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
 
 
 def _reopen(labels: npt.NDArray[np.int32], closed: npt.NDArray[np.bool_],
-            max_openings: int) -> npt.NDArray[np.int32]:
+            max_openings: int, resolution_m: float) -> npt.NDArray[np.int32]:
     """Give the cells that closed the wall gaps back to the spaces on either side of them (each
     to the nearest: the two sides meet in the gap's middle): the gap becomes the doorway
     between the two.
@@ -285,6 +288,12 @@ def _reopen(labels: npt.NDArray[np.int32], closed: npt.NDArray[np.bool_],
     rows_of_clutter = []
     for ab, sls in boxes.items():
         if len(sls) < max(max_openings + 1, ROW_OF_CLUTTER_MIN_GAPS):
+            continue
+        # A row stands on one line (a room with doors in two of its walls is no row).
+        centres = np.array([((a.start + a.stop) / 2, (b.start + b.stop) / 2) for a, b in sls])
+        centred = centres - centres.mean(axis=0)
+        off_line = float(np.linalg.svd(centred, compute_uv=False)[-1]) / math.sqrt(len(sls))
+        if off_line * resolution_m > ROW_OF_CLUTTER_MAX_OFF_LINE_M:
             continue
         open_cells = sum(math.hypot(a.stop - a.start, b.stop - b.start) for a, b in sls)
         span = math.hypot(max(a.stop for a, _ in sls) - min(a.start for a, _ in sls),
