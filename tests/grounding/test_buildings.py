@@ -300,3 +300,12 @@ def test_two_rooms_equally_across_are_asked_about(staggered: MapAnalysis) -> Non
     # at x 9 the wall between the north rooms x 4-9 and 9-17 is straight across
     r = plan("go into the room across the hall", staggered, (9.0, 6.0, 90.0))
     assert not r.ok and r.commands == () and "which one" in (r.clarification or "")
+
+
+@pytest.mark.parametrize(("yaw", "end_x"), [(0.0, 17.0), (180.0, 1.0)])
+@pytest.mark.parametrize("words", ["go to the end of the hall", "go to the end of the corridor"])
+def test_the_end_of_the_hall_is_the_end_ahead(staggered: MapAnalysis, yaw: float, end_x: float, words: str) -> None:
+    # the last metre before the end wall ahead, in the hallway
+    x, y = last_goal(plan(words, staggered, (5.0, 6.0, yaw)))
+    assert staggered.room_at(x, y) is staggered.room_at(5.0, 6.0)
+    assert 0.2 <= abs(end_x - x) <= 1.0 and 5.0 < y < 7.0

@@ -801,6 +801,16 @@ def _room_goal(step: Step, ref: ElementRef, room: Room, detail: Detail, ctx: Gro
     mask = _room_cells_mask(ctx, room)
     in_room = _in_label(ctx, room.label)
     messages: tuple[str, ...] = ()
+    if detail == Detail.OPPOSITE_SIDE_OF and room.kind == ElementKind.HALLWAY and len(room.cells_xy) >= 3:
+        # "the end of the hall": the end ahead along the way the hallway leads, before its end wall
+        way = _hallway_way(room, ctx, pose, desc)
+        s_end = way.length_m - ALONG_END_MARGIN_M
+        if s_end < ALONG_MIN_RUN_M:
+            raise GroundingError(f"I am already at the end of {desc}; turn around to go to its other end.")
+        goal = _on_the_way(room, way, s_end, s_end, ctx, comp)
+        if goal is None:
+            raise GroundingError(f"I cannot reach the end of {desc}: no free space I can get to there.")
+        return _nav_step(step, pose, index, [goal], f"to the end of {desc}", (room.id,))
     if detail == Detail.OPPOSITE_SIDE_OF:
         goal = _opposite_side(room, mask, ctx, pose, comp)
         if goal is None:
@@ -1000,15 +1010,7 @@ def _follow_hallway(step: Step, desc: str, hall: Room, ctx: GroundingContext, po
     """'Follow the corridor', 'halfway down the hallway': along the way the hallway leads from here in
     the direction the robot faces (round the bend of an L-shaped corridor), to its far end or that
     part of the way; poses on the hallway's middle line, never past the part asked for."""
-    _, axis = hall_axis(hall, pose.xy)
-    hx, hy = pose.heading()
-    dot = axis[0] * hx + axis[1] * hy
-    ways = [(axis[0], axis[1]), (-axis[0], -axis[1])] if abs(dot) < FACING_ALONG_MIN else \
-        [(axis[0], axis[1]) if dot > 0 else (-axis[0], -axis[1])]
-    found = [w for w in (_way_down(hall, d, ctx, pose) for d in ways) if w is not None]
-    if not found:
-        raise GroundingError(f"I cannot follow {desc}: none of it is reachable from here.")
-    way = max(found, key=lambda w: w.length_m)  # facing across it: the longer way
+    way = _hallway_way(hall, ctx, pose, desc)
     if step.fraction is not None:
         s_goal = way.length_m * step.fraction
         if s_goal < compose.MIN_OFFSET_RUN_M:
@@ -1017,24 +1019,42 @@ def _follow_hallway(step: Step, desc: str, hall: Room, ctx: GroundingContext, po
         s_goal = way.length_m - ALONG_END_MARGIN_M
         if s_goal < ALONG_MIN_RUN_M:
             raise GroundingError(f"I am already at the end of {desc}; turn around to follow it the other way.")
-    in_hall = _in_label(ctx, hall.label)
     k = max(2, math.ceil(s_goal / ALONG_SPACING_M))
     poses: list[Point] = []
     for i in range(1, k + 1):
-        s_i = s_goal * i / k
-        target = _on_middle_line(hall, way.point_at(s_i), way.direction_at(s_i))
-        lo, hi = s_i - FOLLOW_BAND_M, min(s_i + FOLLOW_BAND_M, s_goal + compose.ALONG_SLACK_M)
-
-        def where(xs: FloatArray, ys: FloatArray, lo: float = lo, hi: float = hi) -> BoolArray:
-            along = way.along(xs, ys)  # never past the part of the way asked for
-            return np.asarray(in_hall(xs, ys) & (along >= lo) & (along <= hi), dtype=bool)
-
-        p = ctx.space.safe_point_near(target, comp, FOLLOW_SNAP_M, prefer=target, where=where)
+        p = _on_the_way(hall, way, s_goal * i / k, s_goal, ctx, comp)
         if p is not None and (not poses or math.dist(p, poses[-1]) > 0.3):
             poses.append(p)
     if not poses:
         raise GroundingError(f"I cannot follow {desc}: none of it is reachable from here.")
     return _nav_step(step, pose, index, poses, f"follow {desc}", (hall.id,))
+
+
+def _hallway_way(hall: Room, ctx: GroundingContext, pose: Pose, desc: str) -> compose.Way:
+    """The way down the hallway the robot faces (facing across it: the longer way)."""
+    _, axis = hall_axis(hall, pose.xy)
+    hx, hy = pose.heading()
+    dot = axis[0] * hx + axis[1] * hy
+    ways = [(axis[0], axis[1]), (-axis[0], -axis[1])] if abs(dot) < FACING_ALONG_MIN else \
+        [(axis[0], axis[1]) if dot > 0 else (-axis[0], -axis[1])]
+    found = [w for w in (_way_down(hall, d, ctx, pose) for d in ways) if w is not None]
+    if not found:
+        raise GroundingError(f"I cannot follow {desc}: none of it is reachable from here.")
+    return max(found, key=lambda w: w.length_m)
+
+
+def _on_the_way(hall: Room, way: compose.Way, s_m: float, s_max: float, ctx: GroundingContext,
+                comp: int) -> Point | None:
+    """A goal in the hallway ``s_m`` along the way, on its middle line, never past ``s_max``."""
+    target = _on_middle_line(hall, way.point_at(s_m), way.direction_at(s_m))
+    lo, hi = s_m - FOLLOW_BAND_M, min(s_m + FOLLOW_BAND_M, s_max + compose.ALONG_SLACK_M)
+    in_hall = _in_label(ctx, hall.label)
+
+    def where(xs: FloatArray, ys: FloatArray) -> BoolArray:
+        along = way.along(xs, ys)  # never past the part of the way asked for
+        return np.asarray(in_hall(xs, ys) & (along >= lo) & (along <= hi), dtype=bool)
+
+    return ctx.space.safe_point_near(target, comp, FOLLOW_SNAP_M, prefer=target, where=where)
 
 
 def _way_down(hall: Room, direction: Point, ctx: GroundingContext, pose: Pose) -> compose.Way | None:
