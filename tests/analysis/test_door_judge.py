@@ -7,12 +7,21 @@ import math
 
 import numpy as np
 import pytest
+from scipy import ndimage as ndi
 
-from langnav.analysis.door_judge import constriction_depth, evidence, free_widths, is_door
+from langnav.analysis.door_judge import (
+    BEYOND_MIN_FLOOR_SHARE,
+    SEEN_FLOOR_MIN_M,
+    constriction_depth,
+    evidence,
+    floor_beyond,
+    free_widths,
+    is_door,
+)
 from langnav.analysis.params import DEFAULT_PARAMS
 from langnav.analysis.segmentation import UNKNOWN_ID, Segmentation, segment_spaces
 from langnav.maps.draw import MapBuilder
-from langnav.maps.grid import FREE, OCCUPIED, OccupancyGrid
+from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
 #: Door positions within two cells plus the half-cell of a door's centre.
 POS_TOL_M = 0.15
@@ -126,3 +135,15 @@ def test_a_door_into_unexplored_beyond_a_ray_fan_is_found() -> None:
     assert math.dist(door.center, (6.55, 3.0)) <= POS_TOL_M
     assert door.width_m == pytest.approx(0.7, abs=POS_TOL_M)
     assert door.connects == (seg.rooms[0].id, UNKNOWN_ID)
+
+
+def test_beyond_a_door_lies_seen_floor_beyond_a_gap_to_a_ray_fan_only_streaks() -> None:
+    """The room side of the ray-fan door is seen floor; the fan beyond is free streaks with
+    unknown between them, next to no floor 0.25 m from the unknown."""
+    grid = room_with_a_door_to_a_ray_fan()
+    free = grid.cells == FREE
+    far = ndi.distance_transform_edt(grid.cells != UNKNOWN) * grid.resolution_m >= SEEN_FLOOR_MIN_M
+    r, c = grid.world_to_cell(6.55, 3.0)
+    centre, normal = (float(r), float(c)), (0.0, 1.0)  # normal along +x: room -> fan
+    assert floor_beyond(free, far, centre, normal, -1.0, grid.resolution_m) >= 0.9
+    assert floor_beyond(free, far, centre, normal, 1.0, grid.resolution_m) < BEYOND_MIN_FLOOR_SHARE

@@ -279,16 +279,16 @@ def test_a_pinch_at_one_end_does_not_shorten_the_passage() -> None:
 
 
 def test_strip_between_a_shelf_and_an_unexplored_area_is_no_passage() -> None:
-    # A 9 x 7 m hall; a 4 x 0.4 m shelf and, 0.8 m north of it, a 4 x 3.3 m part of the hall
-    # the scan never reached (an unexplored area, open to the hall on three sides). Nothing is
-    # known to stand along the strip's north side: no passage. Control: the same strip with a
-    # second shelf in place of the unscanned part is an aisle.
+    # A 9 x 7 m hall; a 4 x 0.4 m shelf and, 0.8 m north of it, a 4 x 4.3 m part of the hall
+    # the scan never reached, up to its north wall (an unexplored area, open to the hall on
+    # three sides). Nothing is known to stand along the strip's north side: no passage.
+    # Control: the same strip with a second shelf in place of the unscanned part is an aisle.
     def hall(unscanned: bool) -> OccupancyGrid:
         b = MapBuilder(11.0, 9.0, origin=(-1.0, -1.0))
         b.room(0.0, 0.0, 9.0, 7.0)
         b.box(2.0, 1.5, 6.0, 1.9)
         if unscanned:
-            b.unknown(2.0, 2.7, 6.0, 6.0)
+            b.unknown(2.0, 2.7, 6.0, 7.0)
         else:
             b.box(2.0, 2.7, 6.0, 3.1)
         return b.build(source=f"hall_unscanned_{unscanned}")
@@ -332,14 +332,14 @@ def test_rotated_noisy_squeeze_is_still_the_only_way(degrees: float) -> None:
 
 
 def test_door_open_along_the_way_beside_a_wall_is_no_squeeze() -> None:
-    # A partition wall across an 8 x 6 m room leaves a 0.8 m doorway at the west wall, its
+    # A partition wall across an 8 x 6 m room leaves a 0.7 m doorway at the west wall, its
     # door leaf (0.05 m thick) open northwards along the way: the only way north, and the west
     # wall runs on past it, but what stands beside the way is a jamb and a door leaf, no deeper
     # than a wall: a door, not a squeeze past furniture.
     b = MapBuilder(10.0, 8.0, origin=(-1.0, -1.0))
     b.room(0.0, 0.0, 8.0, 6.0)
-    b.rect(0.8, 3.0, 8.0, 3.15, OCCUPIED)
-    b.rect(0.8, 3.15, 0.85, 3.95, OCCUPIED)
+    b.rect(0.7, 3.0, 8.0, 3.15, OCCUPIED)
+    b.rect(0.7, 3.15, 0.75, 3.85, OCCUPIED)
     assert passages_of(b.build(source="door_leaf")) == ()
 
 

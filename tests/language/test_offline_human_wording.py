@@ -198,3 +198,267 @@ def test_a_correction_replaces_what_it_corrects(prompt: str, want: list[tuple[Mo
 def test_a_take_back_at_the_end_runs_nothing(prompt: str) -> None:
     intent = translate_offline(prompt)
     assert intent.steps == [] and intent.clarification, intent
+
+
+# ------------------------------------------------------------------------------ clock directions
+@pytest.mark.parametrize(("hour", "want"), [
+    (1, (Direction.RIGHT, 30)), (2, (Direction.RIGHT, 60)), (3, (Direction.RIGHT, 90)), (4, (Direction.RIGHT, 120)),
+    (5, (Direction.RIGHT, 150)), (6, (Direction.AROUND, 180)), (7, (Direction.LEFT, 150)), (8, (Direction.LEFT, 120)),
+    (9, (Direction.LEFT, 90)), (10, (Direction.LEFT, 60)), (11, (Direction.LEFT, 30)),
+])
+def test_clock_hours_are_turns(hour: int, want: tuple[Direction, float]) -> None:
+    """Twelve o'clock is ahead, each hour 30 degrees; one to five to the right, seven to eleven to the
+    left, six behind. Said in digits or words, with or without 'your', after 'turn to' or 'face'."""
+    words = ["", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven"]
+    for prompt in (f"turn to your {words[hour]} o'clock", f"face your {hour} o'clock", f"rotate to {hour} oclock",
+                   f"could you turn towards your {words[hour]} o clock please"):
+        assert _plain(translate_offline(prompt)) == [_turn(*want)], prompt
+
+
+@pytest.mark.parametrize(("prompt", "want"), [
+    ("go 3 metres toward your nine o'clock", [_turn(Direction.LEFT, 90), _move(Direction.FORWARD, 3)]),
+    ("go two feet at your three o'clock", [_turn(Direction.RIGHT, 90), _move(Direction.FORWARD, 2 * FT)]),
+    ("head towards your 11 oclock, then 2 metres", [_turn(Direction.LEFT, 30), _move(Direction.FORWARD, 2)]),
+    ("drive five feet to your one o'clock", [_turn(Direction.RIGHT, 30), _move(Direction.FORWARD, 5 * FT)]),
+])
+def test_going_towards_a_clock_hour_is_that_turn_then_forward(
+        prompt: str, want: list[tuple[Movement, Direction, float]]) -> None:
+    assert _plain(translate_offline(prompt)) == want
+
+
+# ------------------------------------------------------------------------------ speech recognition
+@pytest.mark.parametrize(("prompt", "want"), [
+    ("move forward to feet", [_move(Direction.FORWARD, 2 * FT)]),
+    ("back up too metres", [_move(Direction.BACKWARD, 2)]),
+    ("turn write ninety degrees", [_turn(Direction.RIGHT, 90)]),
+    ("turn lift for degrees", [_turn(Direction.LEFT, 4)]),
+    ("go forward won meter period then turn left 90", [_move(Direction.FORWARD, 1), _turn(Direction.LEFT, 90)]),
+    ("move forward too metres comma turn to your write 45 degrees",
+     [_move(Direction.FORWARD, 2), _turn(Direction.RIGHT, 45)]),
+    ("go ate feet forward new line turn left 90", [_move(Direction.FORWARD, 8 * FT), _turn(Direction.LEFT, 90)]),
+])
+def test_misheard_words_in_their_slot(prompt: str, want: list[tuple[Movement, Direction, float]]) -> None:
+    """A homophone is the number, side or mark the slot expects ('to feet', 'turn write', 'comma')."""
+    assert _plain(translate_offline(prompt)) == want
+
+
+@pytest.mark.parametrize("prompt", ["go to the door", "take the lift", "go through the door for me"])
+def test_homophones_keep_their_meaning_elsewhere(prompt: str) -> None:
+    intent = translate_offline(prompt)
+    assert not any(s.movement in (Movement.MOVE, Movement.ROTATE) for s in intent.steps), intent
+
+
+# ------------------------------------------------------------------------------ vowels dropped
+@pytest.mark.parametrize(("prompt", "want"), [
+    ("trn lft 90 dgrs", [_turn(Direction.LEFT, 90)]),
+    ("go bak 2 ft", [_move(Direction.BACKWARD, 2 * FT)]),
+    ("mov fwd 1.2 m thn trn rght 45 deg", [_move(Direction.FORWARD, 1.2), _turn(Direction.RIGHT, 45)]),
+    ("go bckwrds 3 ft", [_move(Direction.BACKWARD, 3 * FT)]),
+    ("go fwd 1m n trn lft 90", [_move(Direction.FORWARD, 1), _turn(Direction.LEFT, 90)]),
+    ("rotate clckwse 30", [_turn(Direction.RIGHT, 30)]),
+    ("go strght 2 metres", [_move(Direction.FORWARD, 2)]),
+])
+def test_words_typed_by_their_consonants(prompt: str, want: list[tuple[Movement, Direction, float]]) -> None:
+    assert _plain(translate_offline(prompt)) == want
+
+
+@pytest.mark.parametrize("word", ["red", "cold", "rat", "bin", "fan", "wet", "gun", "bike", "den", "pc"])
+def test_short_real_words_are_not_read_as_skeletons(word: str) -> None:
+    from langnav.language.offline.normalize import normalize
+    assert normalize(f"the {word}") == f"the {word}"
+
+
+# ------------------------------------------------------------------------------ small amounts
+@pytest.mark.parametrize("prompt", ["could you turn right... just a little bit?", "turn left, a teeny bit",
+                                    "spin to the left a teeny bit", "move forward a lil bit",
+                                    "go back just a teeny tiny bit", "rotate right a tiny touch",
+                                    "nudge forward an itsy bitsy bit"])
+def test_small_amounts_are_a_little(prompt: str) -> None:
+    """'A teeny bit', 'a lil bit', '... just a little bit' (after a pause): a little, never the 90 degrees
+    of a bare turn."""
+    intent = translate_offline(prompt)
+    assert len(intent.steps) == 1 and intent.steps[0].amount == Amount.LITTLE, intent
+
+
+@pytest.mark.parametrize(("prompt", "heading"), [("face nor east", 45.0), ("turn to the nor'west", 135.0),
+                                                 ("head sou west", 225.0), ("face the north-east", 45.0)])
+def test_short_forms_of_the_compass_diagonals(prompt: str, heading: float) -> None:
+    intent = translate_offline(prompt)
+    assert [s.heading_deg for s in intent.steps] == [heading], intent
+
+
+# ------------------------------------------------------------------------------ amounts that continue
+@pytest.mark.parametrize(("prompt", "want"), [
+    ("back up 2 m and then another 3 feet", [_move(Direction.BACKWARD, 2), _move(Direction.BACKWARD, 3 * FT)]),
+    ("turn left 45 degrees, then another 20 degrees", [_turn(Direction.LEFT, 45), _turn(Direction.LEFT, 20)]),
+    ("go left 1 m, then 2 more metres", [_move(Direction.LEFT, 1), _move(Direction.LEFT, 2)]),
+    ("move forward two metres and then another three feet", [_move(Direction.FORWARD, 2),
+                                                             _move(Direction.FORWARD, 3 * FT)]),
+])
+def test_an_amount_alone_goes_on_the_way_before(prompt: str, want: list[tuple[Movement, Direction, float]]) -> None:
+    assert _plain(translate_offline(prompt)) == want
+
+
+@pytest.mark.parametrize(("prompt", "metres"), [
+    ("move 2 foot 6 forward", 2 * FT + 6 * IN), ("go forward five feet three", 5 * FT + 3 * IN),
+    ("move forward 1 metre 6 inches", 1 + 6 * IN), ("go forward 1 m and 6 inches", 1 + 6 * IN),
+    ("walk forward four feets", 4 * FT), ("move forward 2 m 30", 2.3),
+])
+def test_compound_lengths_add_up(prompt: str, metres: float) -> None:
+    assert _plain(translate_offline(prompt)) == [_move(Direction.FORWARD, metres)]
+
+
+# ------------------------------------------------------------------------------ polite frames, remarks
+@pytest.mark.parametrize(("prompt", "want"), [
+    ("is it okay if you back up, um, half a metre? sorry", [_move(Direction.BACKWARD, 0.5)]),
+    ("Would it be possible for you to reverse by roughly one metre so that I can see the door?",
+     [_move(Direction.BACKWARD, 1)]),
+    ("is it possible to turn left 30 degrees?", [_turn(Direction.LEFT, 30)]),
+    ("I'd be most grateful if you could turn left 90 degrees and then move forward 2 metres",
+     [_turn(Direction.LEFT, 90), _move(Direction.FORWARD, 2)]),
+    ("i was wondering if you could go forward 3 feet", [_move(Direction.FORWARD, 3 * FT)]),
+    ("do you think you could turn right 45 degrees?", [_turn(Direction.RIGHT, 45)]),
+    ("could you possibly move back 1 m", [_move(Direction.BACKWARD, 1)]),
+    ("turn left 90 degrees, is that a thing you can do?", [_turn(Direction.LEFT, 90)]),
+    ("turn right 17 degrees, sorry if that's a weird number", [_turn(Direction.RIGHT, 17)]),
+    ("Would you mind going forward about, oh, let's say two and a half feet?", [_move(Direction.FORWARD, 2.5 * FT)]),
+    ("go forward, hmm, let me think, one and a half metres", [_move(Direction.FORWARD, 1.5)]),
+    ("I don't want to crash it... move forward maybe thirty centimetres?", [_move(Direction.FORWARD, 0.3)]),
+    ("drive forward 2 m, careful not to bump into anything", [_move(Direction.FORWARD, 2)]),
+    ("Could you possibly turn all the way around, so that you are facing the other direction?",
+     [(Movement.ROTATE, Direction.AROUND, 180.0)]),
+])
+def test_polite_frames_and_side_remarks_change_nothing(prompt: str,
+                                                       want: list[tuple[Movement, Direction, float]]) -> None:
+    """A request wrapped in a polite question ('is it okay if you ...', 'may I ask you to ...') is the
+    request; a remark beside it ('is that a thing you can do?', 'so that I can see ...', a worry about
+    crashing) asks for nothing."""
+    intent = translate_offline(prompt)
+    assert _plain(intent) == want
+    assert intent.clarification is None or "camera" in intent.clarification
+
+
+def test_may_i_ask_you_to_move_slightly() -> None:
+    intent = translate_offline("May I ask you to move slightly forward?")
+    assert [(s.movement, s.direction, s.amount) for s in intent.steps] == [
+        (Movement.MOVE, Direction.FORWARD, Amount.LITTLE)]
+
+
+@pytest.mark.parametrize("prompt", ["crash into the wall", "please ram the box", "I want you to crash into it"])
+def test_a_request_to_crash_is_still_refused(prompt: str) -> None:
+    intent = translate_offline(prompt)
+    assert intent.steps == [] and intent.clarification
+
+
+# ------------------------------------------------------------------------------ restarts
+@pytest.mark.parametrize(("prompt", "want"), [
+    ("move three feet forward, and fifteen degrees turn, turn to your left",
+     [_move(Direction.FORWARD, 3 * FT), _turn(Direction.LEFT, 15)]),
+    ("rotate thirty degrees, rotate to the right", [_turn(Direction.RIGHT, 30)]),
+    ("turn left, turn left two hundred seventy degrees", [_turn(Direction.LEFT, 270)]),
+    ("turn right, uh, turn right forty degrees", [_turn(Direction.RIGHT, 40)]),
+    ("robot turn right, robot stop, robot turn left 90", [_turn(Direction.LEFT, 90)]),
+    ("move forward, stop, back up 2 feet", [_move(Direction.BACKWARD, 2 * FT)]),
+    ("robot turn left, uh, robot stop, robot turn left forty five degrees, and then turn left ninety degrees",
+     [_turn(Direction.LEFT, 45), _turn(Direction.LEFT, 90)]),
+    ("turn right forty five degrees, go forward three feet, stop, turn left forty five degrees",
+     [_turn(Direction.RIGHT, 45), _move(Direction.FORWARD, 3 * FT), _turn(Direction.LEFT, 45)]),
+])
+def test_a_turn_said_again_or_stopped_is_one_turn(prompt: str, want: list[tuple[Movement, Direction, float]]) -> None:
+    """A turn started again with what it missed is one turn; a 'stop' between instructions takes back
+    the motion before it when that had no amount (how far it ran cannot be known); a motion with its
+    amount is kept."""
+    assert _plain(translate_offline(prompt)) == want
+
+
+@pytest.mark.parametrize(("prompt", "heading"), [("face up, face north", 90.0), ("turn around, face south", 270.0),
+                                                 ("turn left, face west", 180.0), ("turn, um, face east", 0.0),
+                                                 ("turn so that you face north", 90.0)])
+def test_a_facing_after_a_bare_turn_is_that_turn(prompt: str, heading: float) -> None:
+    intent = translate_offline(prompt)
+    assert [(s.movement, s.heading_deg) for s in intent.steps] == [(Movement.ROTATE, heading)], intent
+
+
+@given(st.sampled_from(["left", "right"]), st.sampled_from(["", "uh, ", "robot "]),
+       st.integers(min_value=10, max_value=170))
+def test_a_restated_turn_never_turns_more_than_the_amount_said(side: str, filler: str, n: int) -> None:
+    intent = translate_offline(f"turn {side}, {filler}turn {side} {n} degrees")
+    assert _plain(intent) == [_turn(Direction(side), n)]
+
+
+# ------------------------------------------------------------------------------ place phrases
+@pytest.mark.parametrize(("prompt", "kind"), [
+    ("go to the, uh, the first door", Element.DOOR), ("go to the nearest, um, corner", Element.CORNER),
+    ("go over towards the bit that hasn't been mapped yet", Element.UNEXPLORED_AREA),
+    ("go check out the part of the map that hasn't been scanned yet", Element.UNEXPLORED_AREA),
+    ("head for the area we have not explored", Element.UNEXPLORED_AREA),
+    ("go out into the hallway", Element.HALLWAY), ("go bak out thru the door", Element.DOOR),
+])
+def test_place_phrases_as_people_say_them(prompt: str, kind: Element) -> None:
+    """Fillers inside a noun phrase, a negation inside a relative clause (it describes the place), 'out
+    into': the place is read, and nothing is asked."""
+    intent = translate_offline(prompt)
+    assert [s.target.kind if s.target else None for s in intent.steps] == [kind], intent
+    assert intent.clarification is None
+
+
+@pytest.mark.parametrize("prompt", ["point yourself at the door", "aim at the door", "turn to face the door"])
+def test_pointing_at_an_element_is_facing_it(prompt: str) -> None:
+    intent = translate_offline(prompt)
+    assert [(s.movement, s.target.kind if s.target else None) for s in intent.steps] == [
+        (Movement.ROTATE, Element.DOOR)], intent
+
+
+# ------------------------------------------------------------------------------ doors along a hallway
+@pytest.mark.parametrize(("prompt", "count", "side"), [
+    ("go to the room 2 doors down", 2, None),
+    ("please go to the room that's two doors down from here", 2, None),
+    ("go into the office three doors down the hall on the left", 3, "left"),
+    ("head to the room a couple of doors back", 2, "behind"),
+    ("go to the one 2 doors down", 2, None),
+    ("drive to the room one door further down on your right", 1, "right"),
+])
+def test_a_count_of_doors_picks_one_room(prompt: str, count: int, side: str | None) -> None:
+    """'The room two doors down' is one room (a relation along the hallway), not a room and then a door."""
+    from langnav.language.intent import Relation
+
+    intent = translate_offline(prompt)
+    assert len(intent.steps) == 1, intent
+    target = intent.steps[0].target
+    assert target is not None and target.kind == Element.ROOM
+    assert (target.relation, target.ordinal, target.side.value if target.side else None) == (
+        Relation.DOORS_ALONG, count, side)
+
+
+# ------------------------------------------------------------------------------ appositions, "across from"
+@pytest.mark.parametrize(("prompt", "ordinal", "side"), [
+    ("go to the door on your left, the one after the first", 2, "left"),
+    ("go to the second door, the one on your right", 2, "right"),
+    ("drive to the doorway on the right, I mean the one after the second", 3, "right"),
+])
+def test_an_apposition_names_the_same_place_more_exactly(prompt: str, ordinal: int, side: str) -> None:
+    """'X, the one ...' is one place, not a second trip; 'the one after the first' is the second."""
+    intent = translate_offline(prompt)
+    assert len(intent.steps) == 1, intent
+    target = intent.steps[0].target
+    assert target is not None and (target.ordinal, target.side.value if target.side else None) == (ordinal, side)
+
+
+def test_the_one_after_a_connective_is_a_step_of_its_own() -> None:
+    intent = translate_offline("go to the door, then the one after the second")
+    assert [s.target.ordinal if s.target else None for s in intent.steps] == [None, 3]
+
+
+@pytest.mark.parametrize(("prompt", "near"), [
+    ("pls go into the room across from the first room on your left", {"ordinal": 1, "side": "left"}),
+    ("go to the room opposite room 3", {"label": 3}),
+    ("go to the room across the hall from the biggest room", {"superlative": "biggest"}),
+])
+def test_across_from_another_room(prompt: str, near: dict[str, object]) -> None:
+    from langnav.language.intent import Relation
+
+    intent = translate_offline(prompt)
+    assert len(intent.steps) == 1, intent
+    target = intent.steps[0].target
+    assert target is not None and target.relation == Relation.ACROSS and target.near is not None
+    assert target.near.model_dump(mode="json", exclude_defaults=True) == {"kind": "room", **near}

@@ -31,6 +31,7 @@ from typing import Final
 
 import numpy as np
 import numpy.typing as npt
+from scipy import ndimage as ndi
 
 from langnav.analysis.params import AnalysisParams
 from langnav.analysis.seg_doors import RawDoor
@@ -61,6 +62,18 @@ JAMB_BAND_M: Final = 0.1
 #: A jamb's wall may leave the jamb-to-jamb line by up to this angle (degrees): ragged wall
 #: ends over a door's width tilt that short baseline; a corner (90 degrees) is no run-on wall.
 ALONG_MAX_TURN_DEG: Final = 25
+#: Seen floor: a free cell at least this far (m) from unscanned cells (a fan of laser rays is
+#: free streaks a few cells wide with unknown between them).
+SEEN_FLOOR_MIN_M: Final = 0.25
+#: Beyond an opening, the place it opens onto is looked at from a wall's thickness ...
+BEYOND_FROM_M: Final = 0.3
+#: ... to this far (m) ...
+BEYOND_LOOK_M: Final = 2.0
+#: ... and this far (m) either side of the opening's centre line (about a door's width each way).
+BEYOND_HALF_WIDTH_M: Final = 1.0
+#: A place was seen beyond an opening when at least this share of its free cells there is seen
+#: floor; a fan of rays through a gap in a wall has next to none.
+BEYOND_MIN_FLOOR_SHARE: Final = 0.3
 #: A jamb lies at most this far (m) beyond the end of the opening as measured (the opening's
 #: width is its clearance at one crossing; a ragged jamb stands back from it).
 JAMB_REACH_M: Final = 0.3
@@ -244,15 +257,43 @@ def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool) -> boo
                for a, x in zip(ev.along, ev.across, strict=True))
 
 
+def floor_beyond(free: BoolArray, far_from_unknown: BoolArray, center_rc: tuple[float, float],
+                 normal_rc: tuple[float, float], side: float, resolution_m: float) -> float:
+    """Share of the free cells beyond the opening on ``side`` (+1: along the normal; from a
+    wall's thickness to BEYOND_LOOK_M, BEYOND_HALF_WIDTH_M either side of its centre line) that
+    lie in ``far_from_unknown`` (seen floor, not a ray with unknown beside it)."""
+    nr, nc = normal_rc
+    tr, tc = -nc, nr
+    t = np.arange(BEYOND_FROM_M, BEYOND_LOOK_M, resolution_m) / resolution_m
+    sv = np.arange(-BEYOND_HALF_WIDTH_M, BEYOND_HALF_WIDTH_M + 1e-9, resolution_m) / resolution_m
+    rows = center_rc[0] + side * t[:, None] * nr + sv[None, :] * tr
+    cols = center_rc[1] + side * t[:, None] * nc + sv[None, :] * tc
+    f = _sample(free, rows, cols, outside=False)
+    if not f.any():
+        return 0.0
+    return float(_sample(far_from_unknown, rows, cols, outside=False)[f].mean())
+
+
 def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray, resolution_m: float,
-                params: AnalysisParams) -> tuple[list[RawDoor], list[RawDoor]]:
-    """Split ``candidates`` into (doors, the rest) by the rules of the module doc."""
+                params: AnalysisParams, unknown: BoolArray | None = None) -> tuple[list[RawDoor], list[RawDoor]]:
+    """Split ``candidates`` into (doors, the rest) by the rules of the module doc (``unknown``:
+    the unscanned cells, for the place beyond each side)."""
     doors: list[RawDoor] = []
     rest: list[RawDoor] = []
+    far: BoolArray | None = None
+    if unknown is not None and unknown.any() and candidates:
+        far = np.asarray(ndi.distance_transform_edt(~unknown) * resolution_m >= SEEN_FLOOR_MIN_M)
     for d in candidates:
         ev = evidence(free, occupied, d.center_rc, d.normal_rc, d.width_m, resolution_m, params)
-        (doors if is_door(ev, params, into_unknown=d.b == 0) else rest).append(d)
+        ok = is_door(ev, params, into_unknown=d.b == 0)
+        if ok and far is not None:
+            # A place on each side that is a space: its floor was seen, not only rays through
+            # the opening (into unexplored territory: the space's own side).
+            sides = (-1.0,) if d.b == 0 else (-1.0, 1.0)
+            ok = all(floor_beyond(free, far, d.center_rc, d.normal_rc, sd, resolution_m) >= BEYOND_MIN_FLOOR_SHARE
+                     for sd in sides)
+        (doors if ok else rest).append(d)
     return doors, rest
 
 
-__all__ = ["DoorEvidence", "constriction_depth", "evidence", "free_widths", "is_door", "judge_doors"]
+__all__ = ["DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "judge_doors"]

@@ -138,6 +138,11 @@ class AnalysisParams:
     #: a fan of rays is one wide region). The unknown inside a shelf, a rack or a cabinet, and the
     #: slivers between a wall and the rays along it, are thinner however long they are.
     unexplored_min_width_m: float = 0.7
+    #: ... and when it is not a thing the robot scanned all round: an unknown region with free
+    #: floor on every side (touching no wall) narrower than this (m; twice the 3.5 m range of the
+    #: shortest-ranged common robot lidar, a TurtleBot3's) would have been seen into from the
+    #: floor around it had nothing stood in the way: a group of desks, a glass table, a plant.
+    unexplored_enclosed_max_width_m: float = 7.0
     #: Straight wall segments shorter than this are not reported.
     wall_min_length_m: float = 0.5
     #: Maximum deviation of wall points from their fitted segment.

@@ -81,6 +81,9 @@ TWO_SIDED_DIRECTIONS: Final = 8
 #: squeeze's width) along this share of the samples there, and the thing beside it ends (open
 #: along as much).
 WALL_RUNS_ON_SHARE: Final = 0.7
+#: A short squeeze is tighter than this (m; a standard interior door's clear width): as wide as
+#: a door, a short gap is walked through like one, nothing a person calls tight.
+SQUEEZE_MAX_WIDTH_M: Final = 0.8
 #: ... sampled this far past each mouth (m): a wall, not the corner of a jamb.
 WALL_RUN_M: Final = 0.6
 #: ... and the thing is deeper than a wall is thick (door_max_depth_m): blocked along this share
@@ -278,7 +281,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 thing = _beside_a_wall(sub, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res, WALL_RUN_M / res,
                                        both_mouths=not elongated)
                 if not elongated and (
-                        thing is None
+                        thing is None or width_m >= SQUEEZE_MAX_WIDTH_M
                         or not _deep(sub, pts[bounded], np.array([-axis[1], axis[0]]) * (2 * thing - 1),
                                      sides[bounded, thing], params.door_max_depth_m / res)):
                     continue

@@ -232,7 +232,7 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
                                      fl.clearance_m, res, params, peaks)
     # Only openings cut in a wall are doors (door_judge); the others between two spaces are
     # still ways between them.
-    raw_doors, not_doors = judge_doors(raw_doors, fl.free, occupied & ~fl.floor, res, params)
+    raw_doors, not_doors = judge_doors(raw_doors, fl.free, occupied & ~fl.floor, res, params, unknown=unknown)
     raw_wide += [d for d in not_doors if d.b != 0]
     openings = np.bincount(np.array([x for d in raw_doors + raw_wide for x in (d.a, d.b) if x > 0], dtype=np.int64),
                            minlength=int(labels.max()) + 1)

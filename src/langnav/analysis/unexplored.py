@@ -4,7 +4,9 @@ The unknown world outside the building (every unknown region touching the grid b
 area, ``interior=False``, and counts only where an opening the robot can reach leads into it.
 An unknown region inside the map is an area when it is worth a trip: at least
 ``params.unexplored_worth_area_m2`` large, ``params.unexplored_min_width_m`` wide (room to drive in
-and turn: not a shelf's or a rack's unknown inside, however long), with at least ``params.unexplored_min_frontier_m`` of
+and turn: not a shelf's or a rack's unknown inside, however long), not a thing the robot scanned
+all round (free floor on every side and narrower than ``params.unexplored_enclosed_max_width_m``:
+a group of desks, a glass table), with at least ``params.unexplored_min_frontier_m`` of
 frontier the robot can come up to in one opening (a door, a room's open side: not the gaps in the
 scanned outline of a shelf, a cabinet or a pallet whose inside is unknown, nor laser holes).
 Unknown specks smaller than
@@ -190,7 +192,7 @@ def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayer
     candidate = np.zeros(n + 1, dtype=bool)
     candidate[inside] = sizes[inside] * grid.cell_area_m2 >= params.unexplored_worth_area_m2
     candidate &= _wide_enough(grid, params, layers, lab, candidate)
-    candidate &= ~_free_standing(grid, params, layers, lab, candidate, sizes)
+    candidate &= ~_seen_all_round(grid, params, layers, lab, candidate)
     res = grid.resolution_m
     need = math.ceil(params.unexplored_min_frontier_m / res - 1e-9)
     worth = np.zeros(n + 1, dtype=bool)
@@ -222,31 +224,45 @@ def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayer
     return worth
 
 
-def _free_standing(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, lab: IntArray,
-                   candidate: BoolArray, sizes: npt.NDArray[np.int64]) -> BoolArray:
-    """Per unknown component (index = label; only ``candidate`` ones tested): is it a thing standing
-    free on the floor, no bigger with its scanned outline than a piece of furniture
-    (``params.seg_island_max_area_m2``: a table with its chairs, a cabinet), and touching no wall?
-    The robot's scans went all round it and none saw in (a glass table, a dark bin, a plant): it is
-    an object, not a place to look at. A bigger unscanned patch of floor is worth a look."""
+def _seen_all_round(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, lab: IntArray,
+                    candidate: BoolArray) -> BoolArray:
+    """Per unknown component (index = label; only ``candidate`` ones tested): did the robot's scans
+    go all round it? It touches no wall (every occupied piece beside it is no bigger than a piece
+    of furniture, ``params.seg_island_max_area_m2``: scanned legs and edges), so free floor
+    surrounds it, and it is narrower than ``params.unexplored_enclosed_max_width_m``, so a lidar
+    on that floor would have seen into it had nothing stood in the way: it is a thing (a group of
+    desks, a glass table, a plant), and sending the robot there shows nothing more."""
     out = np.zeros(len(candidate), dtype=bool)
-    island = params.seg_island_max_area_m2 / grid.cell_area_m2
-    small = candidate & (sizes <= island)
-    if not small.any():
+    if not candidate.any():
         return out
     occ = layers.occupied_components
-    # (unknown cell of a small candidate, occupied component beside it) pairs.
-    pairs = adjacent_pairs(small[lab], occ.labels)
-    outline = np.zeros(len(candidate), dtype=np.int64)
-    big = np.zeros(len(candidate), dtype=bool)
+    island = params.seg_island_max_area_m2 / grid.cell_area_m2
+    # (unknown cell of a candidate, occupied piece beside it): a candidate beside a bigger piece
+    # touches a wall.
+    pairs = adjacent_pairs(candidate[lab], occ.labels)
+    walled = np.zeros(len(candidate), dtype=bool)
     if len(pairs):
-        region = lab.ravel()[pairs[:, 0]].astype(np.int64)
-        # Each (region, occupied component) once: its outline's cells count once.
-        codes = np.unique(region * (occ.n + 1) + pairs[:, 1])
-        reg, comp = np.divmod(codes, occ.n + 1)
-        np.add.at(outline, reg, occ.sizes[comp])
-        big[reg[occ.sizes[comp] > island]] = True
-    out[small] = ~big[small] & (sizes[small] + outline[small] <= island)
+        walled[lab.ravel()[pairs[occ.sizes[pairs[:, 1]] > island, 0]]] = True
+    ids = np.flatnonzero(candidate & ~walled)
+    if len(ids) == 0:
+        return out
+    rows, cols = nonzero2(np.isin(lab, ids))
+    boxes = component_boxes(lab[rows, cols], rows, cols, ids)
+    res = grid.resolution_m
+    # The disc's centre this far (cells, centre to centre) from every cell outside the region.
+    need = (params.unexplored_enclosed_max_width_m / res + 1.0) / 2.0
+    side = 2 * math.ceil(need) + 1
+    for k in ids.tolist():
+        sr, sc = boxes[k]
+        if min(sr.stop - sr.start, sc.stop - sc.start) < 2.0 * need - 1.0:
+            out[k] = True  # too narrow a box to hold the disc
+            continue
+        own = np.pad(lab[sr, sc] == k, 1)
+        # A square that holds the disc (two separable passes), else the disc itself.
+        square = own
+        for axis in (0, 1):
+            square = ndi.minimum_filter1d(square, side, axis=axis, mode="constant", cval=False)
+        out[k] = not (square.any() or float(ndi.distance_transform_edt(own).max()) >= need)
     return out
 
 

@@ -1,9 +1,16 @@
-"""Relations between spaces: "the room next to this one", "the room across the hall".
+"""Relations between spaces: "the room next to this one", "the room across the hall", "the room two
+doors down".
 
 * **next to** (``Relation.ADJACENT``): a space joined to the reference space by a door or narrow
   passage, or separated from it only by a wall (their free cells come within ``WALL_APART_MAX_M``).
   The reference is ``ref.near`` or, without one, the space the robot is in. When several spaces
   fit and no other word picks one, the robot asks which (it does not guess).
+* **N doors down** (``Relation.DOORS_ALONG``, ``ordinal`` N): from the robot's own place on the hallway
+  (its room's door, or the robot in the hallway), the doors of the hallway are counted the way the robot
+  faces along it ("back": the other way); the room behind the Nth is meant. From a room, the doors on its
+  own side of the hallway are counted (as "two doors down the street" counts one side); a side said
+  ("on the left") picks that side of the hallway. Facing across the hallway, "down" names no way: a side
+  said gives it ("two doors down on your right"), else the robot asks.
 * **across the hall** (``Relation.ACROSS``): a space whose door opens onto the same hallway on the
   other side of it, straight across from the door of the room named ("the room across from the
   first room on your left", ``ref.near``), of the robot's room (the robot in a room) or from the
@@ -108,6 +115,8 @@ def select_related_spaces(ref: ElementRef, analysis: MapAnalysis, pose: Pose, co
     """The spaces "next to" or "across" the reference space, as the words pick them."""
     if ref.relation == Relation.ACROSS:
         return [_across(ref, analysis, pose)]
+    if ref.relation == Relation.DOORS_ALONG:
+        return [_doors_along(ref, analysis, pose)]
     mark = _reference_space(ref, analysis, pose)
     pool: list[Room] = [r for r in _kind_pool(ref, analysis)
                         if r is not mark and (spaces_joined(r, mark, analysis) or wall_apart(r, mark))]
@@ -165,8 +174,84 @@ def hall_axis(hall: Room, around: Point) -> tuple[Point, Point]:
     return (float(c[0]), float(c[1])), (float(axis[0]), float(axis[1]))
 
 
+#: A door this close along the hallway to where the counting starts is the robot's own (its room's door,
+#: or the door it stands by): it is not counted.
+OWN_DOOR_ALONG_M: Final = 0.5
+
+
+def _hall_and_origin(analysis: MapAnalysis, pose: Pose, what: str) -> tuple[Room, Room | None, Point]:
+    """The hallway the robot is in or its room opens onto, its room (None in the hallway), and the point
+    relations along the hallway start from (the robot in the hallway, else its room's door onto it)."""
+    here = space_of(analysis, pose.xy)
+    if here is not None and here.kind == ElementKind.HALLWAY:
+        return here, None, pose.xy
+    halls = [r for r in analysis.rooms if r.kind == ElementKind.HALLWAY]
+    joined = [h for h in halls if here is not None and spaces_joined(h, here, analysis)]
+    if here is None or not joined:
+        raise GroundingError(f"I see no hallway next to the room I am in, so I cannot tell {what}.")
+    hall = min(joined, key=lambda h: nearest_point(pose.xy, h.cells_xy)[0])
+    doors = [d for d in analysis.doors if {hall.id, here.id} <= set(d.connects)]
+    if not doors:
+        raise GroundingError(f"I see no door from this room onto {label_of(hall)}.")
+    return hall, here, min(doors, key=lambda d: math.dist(d.center, pose.xy)).center
+
+
+def _doors_along(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room:
+    """'The room two doors down': see the module docstring."""
+    n = ref.ordinal or 1
+    hall, here, origin = _hall_and_origin(analysis, pose, f"which room is {n} doors down")
+    centre, axis = hall_axis(hall, origin)
+    heading = (math.cos(pose.yaw_rad), math.sin(pose.yaw_rad))
+    facing_along = heading[0] * axis[0] + heading[1] * axis[1]
+    side = ref.side
+    if abs(facing_along) >= FACING_ACROSS_MIN:
+        way = 1.0 if facing_along > 0 else -1.0
+        if side == Side.BEHIND:
+            way, side = -way, None
+    elif side in (Side.LEFT, Side.RIGHT):
+        # facing across the hallway: "down on your right" is the way along it to the robot's right
+        left = (-heading[1], heading[0])
+        to_left = left[0] * axis[0] + left[1] * axis[1]
+        way = (1.0 if to_left > 0 else -1.0) * (1.0 if side == Side.LEFT else -1.0)
+        side = None
+    else:
+        raise GroundingError(f"I am facing across {label_of(hall)}, so 'down' could be either way; say e.g. "
+                             f"'the room {n} doors down on your left' (or right).")
+    d_axis = (axis[0] * way, axis[1] * way)
+
+    def along(p: Point) -> float:
+        return (p[0] - origin[0]) * d_axis[0] + (p[1] - origin[1]) * d_axis[1]
+
+    def lateral(p: Point) -> float:  # > 0: left of the way along the hallway
+        return d_axis[0] * (p[1] - centre[1]) - d_axis[1] * (p[0] - centre[0])
+
+    doors = [d for d in analysis.doors if hall.id in d.connects and (here is None or here.id not in d.connects)
+             and along(d.center) > OWN_DOOR_ALONG_M]
+    if side in (Side.LEFT, Side.RIGHT):
+        doors = [d for d in doors if (lateral(d.center) > 0) == (side == Side.LEFT)]
+    elif here is not None:
+        own = lateral(origin)
+        doors = [d for d in doors if (lateral(d.center) > 0) == (own > 0)]  # the robot's own side
+    doors.sort(key=lambda d: along(d.center))
+    if len(doors) < n:
+        raise GroundingError(f"I see only {len(doors)} door{'s' if len(doors) != 1 else ''} further along "
+                             f"{label_of(hall)} that way, so there is no room {n} doors down.")
+    door = doors[n - 1]
+    rooms = {r.id: r for r in analysis.rooms}
+    behind = [rooms[c] for c in door.connects if c != hall.id and c in rooms]
+    if not behind or behind[0].kind != ElementKind.ROOM:
+        raise GroundingError(f"{label_of(door)}, {n} doors down, leads to no room I know.")
+    return behind[0]
+
+
 def _across(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room:
     here = space_of(analysis, pose.xy)
+    if ref.near is not None and ref.near.kind == Kind.ROOM and not ref.near.in_current_room:
+        # "the room across from the first room on your left": across from that room's door
+        mark = select(landmark_ref(ref.near), analysis, pose)
+        if not isinstance(mark, Room):
+            raise GroundingError(f"'{describe_ref(ref)}' needs a room to look across from.")
+        here = mark
     halls = [r for r in analysis.rooms if r.kind == ElementKind.HALLWAY]
     # the room across from which to look: "across from the first room on your left", else the robot's
     base = here

@@ -148,6 +148,10 @@ def describe_ref(ref: ElementRef) -> str:
                 return f"the {noun} across from {other}"
             hall = "the hallway" if ref.near is None or ref.near.kind != Kind.HALLWAY else other
             return f"the {noun} across {hall}"
+        if ref.relation == Relation.DOORS_ALONG:
+            n = ref.ordinal or 1
+            way = "back" if ref.side == Side.BEHIND else "down" + (f" {SIDE_WORDS[ref.side]}" if ref.side else "")
+            return f"the {noun} {n} door{'s' if n != 1 else ''} {way}"
         words = ["the"]
         if ref.ordinal is not None:
             words.append(ORDINAL_WORDS.get(ref.ordinal, f"{ref.ordinal}th"))

@@ -109,6 +109,10 @@ class Relation(StrEnum):
 
     ADJACENT = "adjacent"  # "the room next to this one": joined by a door or only a wall apart
     ACROSS = "across"      # "the room across the hall": on the far side of the hallway
+    #: "the room two doors down (the hall)": counting the doors of the hallway from the robot's own space
+    #: (its room's door, or the robot in the hallway) the way it faces, the room behind the Nth door
+    #: (``ordinal`` = N; ``side`` the hallway side when said, "behind" for "two doors back")
+    DOORS_ALONG = "doors_along"
 
 
 class _Model(BaseModel):
@@ -156,7 +160,8 @@ class ElementRef(_Model):
         "(the element door_2); not an order by distance")
     relation: Relation | None = Field(
         default=None, description="rooms and hallways: 'adjacent' ('the room next to this one') or 'across' "
-        "('the room across the hall') relative to the space in 'near' (default: the robot's)")
+        "('the room across the hall') relative to the space in 'near' (default: the robot's); 'doors_along' "
+        "('the room two doors down': ordinal 2, counted along the hallway the way the robot faces)")
     passed: bool = Field(
         default=False, description="'the door you just passed': the last such element the robot's way went "
         "by or through")

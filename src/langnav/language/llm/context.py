@@ -93,8 +93,26 @@ north 90, west 180, south 270; northeast 45, northwest 135, southwest 225, south
 - Fillers ("uh", "um", "like", "maybe"), cut-off words ("nin-", "deg-"), repeated words and politeness or \
 questions around a command ("can you", "could you please") mean nothing. Commas do not split an instruction: \
 "rotate, ninety degrees left" and "turn thirty degrees, to the left" are one turn each.
+- Clock directions: twelve o'clock is straight ahead, each hour 30 degrees, one to five o'clock to the \
+right, seven to eleven to the left, six behind. "turn to your two o'clock" -> rotate right 60; "face your ten \
+o'clock" -> rotate left 60; "go 3 metres toward your nine o'clock" -> rotate left 90, then move forward 3.
+- Speech recognition slips in the slot that expects them: "move forward to feet" = two feet, "for degrees" = \
+four, "won" = one, "ate" = eight, "turn write" = right, "turn lift" = left; dictated "comma", "period", "new \
+line" are punctuation. Chat spelling: "fwd", "bak", "lft", "rght", "trn", "mov", "bckwrds", "thn", "n" (and), \
+"lil", "str8", "rt", "lt". "2 foot 6" is 2 ft 6 in; "1 metre 6 inches" is 1.1524 m; "feets" are feet. "a teeny \
+bit", "a lil bit", "just a little bit" -> amount little (never the 90 degrees of a bare turn).
+- An amount alone after a move or turn goes the same way: "back up 2 m and then another 3 feet" -> two \
+moves backward; "turn left 45, then another 20 degrees" -> two left turns.
+- Polite frames and remarks change nothing: "is it okay if you ...", "would it be possible for you to ...", \
+"may I ask you to ...", "I'd be grateful if you could ...", "is that a thing you can do?", "sorry if that's a \
+weird number", "so that I can see ...", "I don't want to crash it" (a worry, not a request to crash).
 - Self-corrections: only the last version counts ("ninety degrees right, actually left" -> left 90; "turn \
-left, sorry, turn right" -> right); "never mind" takes back the instruction before it.
+left, sorry, turn right" -> right; "move forward ten feet, scratch that, six feet" -> six feet; "reverse one \
+metre, actually forward" -> forward 1 m). "scratch that" takes back the instruction before it, "never mind" \
+everything said before it. A turn said again with what it missed is one turn ("fifteen degrees turn, turn \
+to your left" -> left 15; "turn left, turn left 270 degrees" -> left 270; "turn around, face south" -> face \
+south). A "stop" between instructions takes back the motion before it when that motion had no amount \
+("turn right, stop, turn left" -> only the left turn).
 - No camera: leave out "take a picture", "send me a photo", "what do you see?". Alone: no steps and a \
 clarification saying there is no camera. With motions: the motions, and a clarification saying no picture \
 was taken. "take a picture to your left" -> rotate left (the turn is the part the robot can do).
@@ -116,7 +134,9 @@ movement rotate, heading_deg 90 (east 0, north 90, west 180, south 270).
 - Returning: "come back here", "back to where you started" -> target kind none, place start; "back to \
 where you were" -> place previous; "the door you just passed" -> target kind door, passed true.
 - Spaces: "the room across the hall" -> kind room, relation across; "the room next to this one" -> kind \
-room, relation adjacent, near {kind room, in_current_room true}; "next to room 3" -> near {kind room, label 3}.
+room, relation adjacent, near {kind room, in_current_room true}; "next to room 3" -> near {kind room, label 3}; \
+"the room two doors down" -> kind room, relation doors_along, ordinal 2 ("on the left" -> side left; "two doors \
+back" -> side behind).
 - Named places: "call this spot the kitchen", "this is the kitchen", "remember this place as the kitchen" \
 -> movement name_place, place_name kitchen, no target (the robot's spot); "name this room the office" -> \
 name_place with target {kind room, in_current_room true}; "forget the kitchen" -> movement forget_place, \
@@ -178,6 +198,11 @@ EXAMPLES: Final[tuple[tuple[str, dict[str, Any]], ...]] = (
      {"steps": [{"movement": "rotate", "heading_deg": 90},
                 {"movement": "move", "direction": "forward", "distance_m": 0.6096}],
       "clarification": "I did the motion but took no picture: I have no camera."}),
+    ("could you turn to your two o'clock and then go fwd another 3 ft",
+     {"steps": [{"movement": "rotate", "direction": "right", "angle_deg": 60},
+                {"movement": "move", "direction": "forward", "distance_m": 0.9144}]}),
+    ("move forward ten feet, scratch that, six feet",
+     {"steps": [{"movement": "move", "direction": "forward", "distance_m": 1.8288}]}),
     ("move forward five",
      {"steps": [], "clarification": "I understood: move forward 5. Five what: metres or feet? Nothing was run."}),
     ("Where are you right now?",

@@ -22,7 +22,8 @@ HEADINGS_DEG: Final[dict[str, float]] = {
     "east": 0.0, "northeast": 45.0, "north": 90.0, "northwest": 135.0, "west": 180.0, "southwest": 225.0,
     "south": 270.0, "southeast": 315.0,
 }
-_POINT: Final = r"(?:north|south)(?:\s*(?:east|west))?|east|west"
+#: "nor'east", "sou west": the sailors' and speakers' short forms of the diagonals.
+_POINT: Final = r"(?:north|south|nor|sou)\s*'?\s*(?:east|west)|north|south|east|west"
 #: "to the north", "towards due east", "facing north west", "in the direction of the south",
 #: "northwards", "to your north".
 COMPASS_RE: Final = re.compile(
@@ -37,7 +38,9 @@ _FACING_SIDE_RE: Final = re.compile(r"\s+(?:wall|side|end)\b")
 
 
 def heading_of(point: str) -> float:
-    return HEADINGS_DEG["".join(point.split())]
+    word = "".join(point.replace("'", " ").split())
+    word = re.sub(r"^nor(?=east|west)", "north", re.sub(r"^sou(?=east|west)", "south", word))
+    return HEADINGS_DEG[word]
 
 
 def compass_steps(c: Clause) -> tuple[list[Step], bool] | None:
@@ -51,7 +54,7 @@ def compass_steps(c: Clause) -> tuple[list[Step], bool] | None:
     go = c.s.find(GO_VERB_RE)
     turn = c.s.find(ROTATE_VERB_RE)
     if turn is not None:
-        c.s.use(turn.start(), turn.end())
+        c.s.take_all(ROTATE_VERB_RE)  # "turn so that you face north": one turn
         side = _FACING_SIDE_RE.match(c.s.text, m.end())
         if side is not None:
             c.s.use(side.start(), side.end())  # "face the north wall": facing it is facing north

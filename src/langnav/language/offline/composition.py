@@ -37,11 +37,13 @@ from langnav.language.intent import (
     Place,
     Query,
     Relation,
+    Side,
     Step,
 )
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import ONES, QuantityKind, find_quantities
 from langnav.language.offline.parser import Reading, read_clause
+from langnav.language.offline.phrases import as_landmark
 from langnav.places.store import place_key
 
 #: The clause reader this stage wraps: (clause, previous step, known names, previous target) -> Reading.
@@ -135,11 +137,27 @@ _LIST_RE: Final = re.compile(
     r"(?:list|show(?:\s+me)?|tell\s+me)\s+(?:the\s+|my\s+|your\s+|all\s+(?:the\s+)?)?(?:named\s+|saved\s+|known\s+)?"
     r"(?:places|spots|locations)(?:\s+you\s+know)?\s*$|(?:what|which)\s+places\s+have\s+names)")
 _FORGET_NOT_PLACES: Final = re.compile(r"^(?:that|it|this|everything|all|the\s+map|map|what\s+i\s+said)$")
+#: "the room across from the first room on your left", "the office opposite room 3": across the hallway
+#: from another room (named by its own words, read as a place).
+_ACROSS_FROM_RE: Final = re.compile(
+    r"\b(?:room|office)\s+(?:(?:that|which)\s+is\s+|that\s*'s\s+)?(?:directly\s+|right\s+|just\s+|straight\s+)?"
+    r"(?:across|opposite)\s+(?:(?:the\s+)?(?:hall|hallway|corridor)\s+)?(?:from\s+)?"
+    r"(?P<other>(?:the|room)\b(?!\s+(?:hall|hallway|corridor)\b)(?!\s+one\s+(?:you|we)\b).+?)\s*$")
+#: "the room two doors down", "the office 3 doors along the hall on the left", "the room a couple of doors
+#: back": a count of doors along the hallway picks one room (``Relation.DOORS_ALONG``).
+_DOORS_ALONG_RE: Final = re.compile(
+    r"\b(?P<noun>room|office|one|space)\s+(?:(?:that|which)\s+is\s+|that\s*'s\s+)?(?:just\s+)?"
+    r"(?P<n>\d{1,2}|" + _NUMBER_WORDS + r"|a\s+couple\s+of|a\s+couple)\s+doors?\s+"
+    r"(?P<way>(?:further\s+|farther\s+)?(?:down|up|along|on|away|over)|back|behind(?:\s+you)?)"
+    r"(?:\s+(?:the|this)\s+(?:hall|hallway|corridor))?(?:\s+from\s+(?:here|us|you|me|this\s+(?:one|room)))?"
+    r"(?:\s+(?:on|to)\s+(?:the|your)\s+(?P<side>left|right)(?:\s+(?:hand\s+)?side)?)?\b")
 
 
 #: An element is named in at most this many words ("the second door on your left in the hallway"):
 #: longer heads are not tried when splitting "call <element> <name>".
 MAX_TARGET_WORDS: Final = 12
+#: The most doors one counts along a hallway ("the room 20 doors down"): the schema's ordinal bound.
+MAX_DOORS_ALONG: Final = 20
 #: A place word that fit no step halves the reading's confidence (and is reported unread: the
 #: planner asks instead of running a plan that ignores it).
 LEFT_OVER_FACTOR: Final = 0.5
@@ -150,6 +168,10 @@ class Marks:
     """What was taken out of a clause, to attach to its steps."""
 
     offset: tuple[Offset, float, str] | None = None
+    #: "across from the first room on your left": the words of that room, and all the words
+    across_from: tuple[str, str] | None = None
+    #: "two doors down (on the left)": the count and the side of the hallway, with the words
+    doors_along: tuple[int, Side | None, str] | None = None
     fraction: tuple[float, str] | None = None
     labels: list[tuple[Element, int, str]] = field(default_factory=list)
     passed: list[str] = field(default_factory=list)
@@ -161,7 +183,7 @@ class Marks:
     @property
     def any(self) -> bool:
         return bool(self.offset or self.fraction or self.labels or self.passed or self.previous or self.relation
-                    or self.rewritten)
+                    or self.rewritten or self.doors_along or self.across_from)
 
 
 def _number(word: str) -> int:
@@ -185,8 +207,21 @@ def extract(norm: str) -> tuple[str, Marks]:
             near = Landmark(kind=kind, label=_number(m.group("label")))
         marks.relation = (Relation.ADJACENT, near, m.group(0))
         text = _cut(text, m.start(), m.end(), noun)
-    m = _ACROSS_RE.search(text)
+    m = _DOORS_ALONG_RE.search(text)
     if m is not None and marks.relation is None:
+        word = m.group("n")
+        count = 2 if word.startswith("a couple") else _number(word)
+        way = m.group("way")
+        side = Side.BEHIND if way.startswith(("back", "behind")) else (
+            Side.LEFT if m.group("side") == "left" else Side.RIGHT if m.group("side") == "right" else None)
+        marks.doors_along = (count, side, m.group(0))
+        text = _cut(text, m.start(), m.end(), "room")  # "the office two doors down": one of the rooms
+    m = _ACROSS_FROM_RE.search(text)
+    if m is not None and marks.relation is None:
+        marks.across_from = (m.group("other"), m.group(0))  # read by read_composed, which knows elements
+        text = _cut(text, m.start(), m.end(), "room")
+    m = _ACROSS_RE.search(text)
+    if m is not None and marks.relation is None and marks.across_from is None:
         marks.relation = (Relation.ACROSS, None, m.group(0))
         text = _cut(text, m.start(), m.end(), m.group("noun"))
     for q in find_quantities(text):
@@ -283,6 +318,18 @@ def attach(steps: tuple[Step, ...], marks: Marks) -> tuple[tuple[Step, ...], lis
             kind = Element.HALLWAY if ref.kind == Element.HALLWAY and relation == Relation.ADJACENT else Element.ROOM
             update_ref(i, key, ref.model_copy(update={"relation": relation, "near": near, "kind": kind,
                                                       "in_current_room": False}))
+            if out[i].detail in (Detail.OPPOSITE_SIDE_OF, Detail.THROUGH, Detail.ALONG):
+                out[i] = out[i].model_copy(update={"detail": Detail.TO, "movement": Movement.NAVIGATE})
+    if marks.doors_along is not None:
+        count, side, words = marks.doors_along
+        hit = first_ref(lambda r: r.kind in (Element.ROOM, Element.HALLWAY) and r.relation is None)
+        if hit is None or count < 1 or count > MAX_DOORS_ALONG:
+            left.append(words)
+        else:
+            i, key, ref = hit
+            update_ref(i, key, ref.model_copy(update={"kind": Element.ROOM, "relation": Relation.DOORS_ALONG,
+                                                      "ordinal": count, "side": side, "superlative": None,
+                                                      "in_current_room": False, "near": None}))
             if out[i].detail in (Detail.OPPOSITE_SIDE_OF, Detail.THROUGH, Detail.ALONG):
                 out[i] = out[i].model_copy(update={"detail": Detail.TO, "movement": Movement.NAVIGATE})
     if marks.previous:
@@ -436,6 +483,14 @@ def read_composed(text: str, previous: Step | None = None, known_names: Sequence
     if between is not None:
         return Reading(steps=(between,))
     rewritten, marks = extract(norm)
+    if marks.across_from is not None:
+        other, words = marks.across_from
+        mark = _target_of(other, previous, known_names, previous_target, reader)
+        if mark is not None and mark.kind == Element.ROOM:
+            marks.relation = (Relation.ACROSS, as_landmark(mark), words)
+        else:
+            rewritten = norm  # not a room the words name: read as said (and asked about)
+            marks.across_from = None
     rewritten, stand_ins = _stand_in_names(rewritten, known_names)
     face = _FACE_NAMED_RE.match(rewritten) if stand_ins else None
     if face is not None and face.group("token") in stand_ins:

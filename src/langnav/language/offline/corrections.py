@@ -17,10 +17,11 @@ from collections.abc import Callable
 from typing import Final
 
 from langnav.language.offline import lexicon as lx
+from langnav.language.offline.clock import CLOCK_RE
 from langnav.language.offline.compass import COMPASS_RE
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import find_quantities
-from langnav.language.offline.patterns import GO_VERB_RE, ROTATE_VERB_RE, STOP_RE, rx
+from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE, STOP_RE, rx
 
 #: Words that open a correction of the instruction before ("actually", "no wait", "i'm sorry").
 CORRECTION_START_RE: Final = re.compile(
@@ -38,6 +39,8 @@ SIDE_RE: Final = re.compile(
     r"(?:\b(?:to|on|towards?)\s+(?:the|your)\s+)?\b(?:left|right|clockwise|counter\s*clockwise|anti\s*clockwise|"
     r"forwards?|backwards?|ahead|straight)\b(?:\s+(?:hand\s+)?side)?")
 _HEAD_RE: Final = rx([*lx.ELEMENT_NOUNS], "head")
+#: "the one after the second": says which place more exactly (an apposition), does not replace it.
+_ONE_RE: Final = re.compile(r"^\s*(?:the|that)\s+one\b", re.IGNORECASE)
 #: "back" as the way of a move (not a verb of its own once a side replaces it).
 _BACK_RE: Final = re.compile(r"\b(?:back|in\s+reverse)\b")
 _BACK_VERB_RE: Final = re.compile(r"\b(?:back\s+up|back\s+off|reverse)\b")
@@ -53,12 +56,13 @@ def is_fragment(clause: str) -> bool:
         return False
     if GO_VERB_RE.search(norm) or ROTATE_VERB_RE.search(norm) or STOP_RE.search(norm) or _HEAD_RE.search(norm):
         return False
-    return bool(find_quantities(norm) or SIDE_RE.search(norm) or COMPASS_RE.search(norm))
+    return bool(find_quantities(norm) or SIDE_RE.search(norm) or COMPASS_RE.search(norm) or CLOCK_RE.search(norm)
+                or LITTLE_RE.search(norm))
 
 
 #: Words of a request around a bare verb ("just", "can you", "robot").
 _REQUEST_WORDS: Final = frozenset({"can", "could", "will", "would", "you", "robot", "just", "okay", "ok", "please",
-                                   "and", "now", "so", "then", "yourself"})
+                                   "and", "now", "so", "then", "yourself", "let", "us", "try"})
 _BARE_VERBS: Final = frozenset(v for v in (*lx.GO_VERBS, *lx.ROTATE_VERBS) if " " not in v) - {"stop", "wait"}
 
 
@@ -100,7 +104,7 @@ def join_fragments(clauses: list[str], is_open: IsOpen) -> list[str]:
             i += 1  # "face, face east", "turn and face east": a false start of the next instruction
             continue
         if is_fragment(clause):
-            if out and is_open(out[-1]):
+            if out and (is_open(out[-1]) or is_bare_verb(out[-1])):
                 out[-1] = f"{out[-1]} {clause}"
                 i += 1
                 continue
@@ -154,6 +158,9 @@ def apply_corrections(clauses: list[str]) -> list[str]:
                 correct_next = bool(out)
                 continue
             correcting = True
+        if correcting and out and _ONE_RE.match(clause):
+            out.append(clause)  # "the doorway on the right, I mean the one after the second": it says more
+            continue
         if correcting and out:
             out[-1] = _corrected(out[-1], clause) if is_fragment(clause) else _restated(out[-1], clause)
             continue

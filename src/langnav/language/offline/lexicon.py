@@ -241,7 +241,8 @@ VERB_DETAILS: Final[dict[str, Detail]] = {
     **{w: Detail.TO for w in ("reach", "enter", "approach", "visit", "find", "get to", "arrive at", "take me",
                               "take us", "bring me", "bring us",
                               "swing by", "drop by", "pop by", "come by", "pop over to", "nip to",
-                              "return to", "come to", "go into", "park at", "head into")},
+                              "return to", "come to", "go into", "park at", "head into", "check out", "go check out",
+                              "go and check out", "go check", "go see", "go and see")},
     **{w: Detail.ALONG for w in ("follow", "hug", "trace", "track", "skirt", "shadow", "follow along",
                                  "keep to", "stick to", "stay along", "keep along", "stay close to",
                                  "keep close to", "stick close to", "run along", "keep following")},
@@ -387,6 +388,11 @@ LITTLE_PHRASES: Final = (
     "little bit", "a fraction", "a tiny amount", "ever so slightly", "a couple of centimeters",
     "a couple of centimetres", "a couple of degrees", "a smidgen", "gently", "a small bit",
     "just slightly", "very slightly", "only slightly",
+    # "a teeny bit", "just a tiny touch", "a teeny tiny bit", "a lil bit": a small word before a small noun
+    *(f"{pre}{size}{noun}" for pre in ("a ", "just a ", "only a ", "") for size in (
+        "", "little ", "tiny ", "teeny ", "teeny tiny ", "teensy ", "teensy weensy ", "teeny weeny ", "wee ",
+        "itsy bitsy ", "small ", "very small ", "very little ", "tiny little ", "little tiny ")
+      for noun in ("bit", "touch", "tad", "smidge", "nudge", "amount")),
 )
 
 # ------------------------------------------------------------------------------ filler & safety
@@ -417,12 +423,18 @@ FILLER_PATTERNS: Final = (
     r"\bover\s+there\b(?=.*\b(?:to|through)\b)", r"\bmy\s+friend\b", r"\bsir\b", r"\bmister\b",
     r"\bwhat\s+i\s+want\s+is\s+(?:for\s+you\s+)?(?:to\s+)?", r"\bdo\s+me\s+a\s+favou?r\s+and\b",
     r"\bi\s+(?:would\s+)?appreciate\s+(?:it\s+)?if\s+you\s+(?:would|could)?\b", r"\byou\s+(?:should|must|need\s+to|have\s+to|can|may)\b",
-    r"\bmake\s+sure\s+(?:to|you)\b", r"\btry\s+(?:to|and)\b", r"\bplease\s+do\b", r"\bgo\s+on\b(?=\s+and\b)",
+    r"\bmake\s+sure\s+(?:to|you)\b", r"\btry\s+(?:to|and)\b", r"\btry\s+(?=\w+ing\b)", r"\bplease\s+do\b", r"\bgo\s+on\b(?=\s+and\b)",
     r"\bfrom\s+(?:here|there|where\s+you\s+are(?:\s+now)?)\b", r"\bstarting\s+from\s+here\b",
 )
 
 #: Phrases that mention walls or obstacles only to avoid them: removed before the safety check.
 SAFE_AVOIDANCE_PATTERNS: Final = (
+    # a worry is no request: "I don't want to crash it", "careful not to bump into anything"
+    r"\b(?:i|we)\s+(?:do\s+not|dont)\s+want\s+(?:you\s+|it\s+|us\s+)?to\s+(?:crash|hit|bump|collide|smash|run\s+into)\b"
+    r"(?:\s+(?:it|into\s+(?:it|anything|something|the\s+\w+)|anything|something))?",
+    r"\b(?:careful|make\s+sure|be\s+sure)\s+(?:not\s+to|you\s+do\s+not|that\s+you\s+do\s+not)\s+(?:crash|hit|bump|collide|smash|"
+    r"run\s+into)\b(?:\s+(?:into\s+)?(?:it|anything|something|the\s+\w+))?",
+    r"\bwithout\s+(?:crashing|colliding|bumping)(?:\s+into\s+(?:it|anything|something|the\s+\w+))?\b",
     r"\bwithout\s+(?:hitting|touching|bumping\s+into|crashing\s+into|colliding\s+with|running\s+into)\s+"
     r"(?:the\s+|any\s+|a\s+)?(?:\w+\s+)?(?:walls?|obstacles?|objects?|things?|boxes?|anything|doors?|doorframes?|furniture)\b",
     r"\b(?:while\s+)?avoiding\s+(?:the\s+|any\s+)?(?:obstacles?|walls?|objects?|things?|collisions?)\b",
@@ -580,7 +592,8 @@ TYPOS: Final[dict[str, str]] = {
     "rt": "right", "rght": "right", "lt": "left", "lft": "left", "str8": "straight", "strait": "straight",
     "staight": "straight", "bk": "back", "bwd": "backward", "bkwd": "backward", "bkwds": "backwards",
     "fwrd": "forward", "frwd": "forward", "fwds": "forwards", "yr": "your", "thx": "thanks",
-    "acw": "anticlockwise", "aprox": "approximately", "abt": "about",
+    "acw": "anticlockwise", "aprox": "approximately", "abt": "about", "lil": "little", "litle": "little",
+    "thn": "then", "nd": "and", "rly": "really",
     "arnd": "around", "til": "till", "untill": "until", "b4": "before",
 }
 
@@ -610,5 +623,5 @@ NOT_TYPOS: Final = frozenset({
     "centers", "centres", "turned", "turning", "rooms", "doors", "walls", "corners", "throw",
     "though", "thorough", "thought", "tough", "bought", "father", "farther", "further", "closer",
     "sixths", "eights", "eighty", "fifth", "fifty", "fourth", "forty", "fourty", "nearer",
-    "navigator", "explorer", "explored", "exploring", "follows", "follower", "middles",
+    "navigator", "explorer", "explored", "exploring", "follows", "follower", "middles", "cold",
 })

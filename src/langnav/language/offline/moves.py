@@ -37,6 +37,15 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
     directions = _move_directions(c, vm)
     direction = directions[0] if directions else None
     c.amends = verb == Verb.NONE and direction is None and bool(quantities)
+    prev = c.previous
+    if verb == Verb.NONE and direction is None and prev is not None and prev.target is None:
+        # "back up 2 m, then another 3 feet", "turn left 45 degrees, then 20 more": an amount alone
+        # goes on the way the move or turn before it went
+        if lengths and prev.movement == Movement.MOVE and prev.direction is not None:
+            direction = prev.direction
+        elif angles and not lengths and prev.movement == Movement.ROTATE \
+                and prev.direction in (Direction.LEFT, Direction.RIGHT):
+            return [rotation_from(c, prev.direction, quantities, [])]
     if angles and not lengths:
         # "move back forty five degrees to your left": an angle goes with the side said
         direction = next((d for d in directions if d in (Direction.LEFT, Direction.RIGHT)), direction)

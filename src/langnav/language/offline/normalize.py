@@ -8,16 +8,23 @@ from typing import Final
 
 from langnav.language.offline.lexicon import (
     ELEMENT_NOUNS,
+    MOVE_DIRECTIONS,
     NOT_TYPOS,
     ORDINALS,
     OTHER_FLOOR_PATTERNS,
     OUT_OF_SCOPE_PATTERNS,
+    ROTATE_DIRECTIONS,
     SIDE_ADJECTIVES,
     SUPERLATIVES,
     TYPO_TARGETS,
     TYPOS,
+    UNKNOWABLE_ADJECTIVES,
     UNSAFE_PATTERNS,
 )
+
+#: Length units spelt out (the units' table lives with the numbers, which import this module's peers).
+LENGTH_UNIT_WORDS: Final = ("meter", "meters", "metre", "metres", "feet", "foot", "inch", "inches", "yard", "yards",
+                            "centimeters", "centimetres")
 
 #: Shortest word that edit-distance repair touches (shorter words have too many neighbours).
 MIN_TYPO_REPAIR_LEN: Final = 6
@@ -59,6 +66,19 @@ _IDIOMS: Final = (
     (re.compile(r"\b(?:do|make|pull|perform)\s+(?:a|an)\s+(one\s+eighty|180|three\s+sixty|360)\b(?!\s*(?:degrees?|turn))"),
      r"turn \1 degrees"),
     (re.compile(r"\boutside\s+(?:of\s+)?(?=(?:the|this|that|your)\s+(?:room|hallway|corridor|hall)\b)"), "out of "),
+    # "so that you are facing north": the facing is the instruction ("so that" is no pronoun "that")
+    (re.compile(r"\bso\s+(?:that\s+)?(?:you|it)(?:\s+are|\s+will\s+be)?\s+(?:fac(?:e|es|ing)|looking|pointing)\b"), "face"),
+    # "point yourself at the door", "aim at the corner": face it
+    (re.compile(r"\b(?:point|aim|orient)(?:\s+yourself)?\s+(?:at|towards?|to)\b"), "face"),
+    # "go out into the hallway": into it
+    (re.compile(r"\bout\s+(?=(?:into|to|onto)\b)"), ""),
+    # "the bit that hasn't been mapped yet": the unexplored area (a negation inside a relative clause
+    # describes the place; it does not negate the request)
+    (re.compile(r"\b(?:the\s+|a\s+|an\s+|any\s+|some\s+)?(?:bit|bits|part|parts|area|areas|region|regions|section|sections|"
+                r"place|places|space|spaces|zone|zones|spot|spots)(?:\s+of\s+(?:the|this)\s+(?:map|building|floor|room|place))?"
+                r"\s+(?:that|which|where|you|we|i)\s+(?:(?:you|we|i)\s+)?(?:has|have|had|is|are|was|were|did|do)\s+(?:not|never)\s+"
+                r"(?:yet\s+)?(?:been\s+)?(?:yet\s+)?(?:mapped|explored|scanned|visited|seen|covered|checked|surveyed|map|explore|"
+                r"scan|visit|see|cover|check|survey)(?:\s+yet)?\b"), "the unexplored area"),
     # "more to the right", "further left": the same side, the amount is said elsewhere (or asked)
     (re.compile(r"\b(?:a\s+)?(?:more|further|farther)\s+(?=(?:(?:to|towards?)\s+(?:the|your)\s+)?"
                 r"(?:left|right|forwards?|backwards?|ahead|clockwise|counter\s*clockwise|anti\s*clockwise)\b)"), ""),
@@ -122,7 +142,63 @@ def _repair(word: str) -> str:
         found = _closest_target(word)
         if found is not None:
             return found
-    return _typing_slip(word) or word
+    return _typing_slip(word) or _skeleton_word(word) or word
+
+
+_VOWELS_RE: Final = re.compile(r"[aeiou]")
+#: A word typed by its consonants has at most this many vowels left ("bak", "mov"; "trn", "bckwrds").
+MAX_SKELETON_VOWELS: Final = 1
+
+
+def _skeleton(word: str) -> str:
+    """The consonants of a word in order, as they sound: "ck" is "k" and a doubled letter one ("bak" and
+    "back" are both "bk")."""
+    bones = (word[:1] + _VOWELS_RE.sub("", word[1:])).replace("ck", "k")
+    return re.sub(r"(.)\1+", r"\1", bones)
+
+
+@lru_cache(maxsize=4096)
+def _skeleton_word(word: str) -> str | None:
+    """Chat spelling by dropped vowels ("trn", "bckwrds", "rght", "bak", "mov"): the one vocabulary word,
+    longer and with the same first letter, whose consonants are the typed ones in order. A typed word
+    that keeps two vowels is a word of its own ("bike" is not "back"), and two candidates are no answer."""
+    from langnav.language.offline.vocabulary import VOCABULARY
+
+    vowels = _VOWELS_RE.findall(word[1:])
+    if word in VOCABULARY or word in _REQUEST_WORDS or word in UNKNOWABLE_ADJECTIVES or len(vowels) > MAX_SKELETON_VOWELS:
+        return None
+    bones = _skeleton(word)
+    if len(word) < MIN_SLIP_REPAIR_LEN or len(bones) < 2:
+        return None
+    hits = {v for v in _skeletons().get(bones, ()) if len(v) > len(word) and v[:1] == word[:1]}
+    if vowels:
+        # a vowel kept ("bak", "mov") may be a short real word ("red", "cold", "rat"): only the words
+        # of a motion, with that vowel first, are meant
+        hits = {v for v in hits if v in _MOTION_WORDS and (_VOWELS_RE.findall(v[1:])[:1] == vowels
+                                                          or word[-1] == v[-1] == "e")}  # a silent e kept
+    return hits.pop() if len(hits) == 1 else None
+
+
+#: The words of a motion (its verb, way, amount and unit): what a vowel-dropped word with one vowel
+#: left may stand for.
+_MOTION_WORDS: Final = frozenset(
+    w for phrase in (*MOVE_DIRECTIONS, *ROTATE_DIRECTIONS, *LENGTH_UNIT_WORDS, "go", "move", "drive", "turn",
+                     "rotate", "spin", "back", "head", "walk", "degrees", "then", "and", "little", "around",
+                     "straight", "forward", "backward", "north", "south", "east", "west")
+    for w in phrase.split() if w.isalpha())
+
+
+@lru_cache(maxsize=1)
+def _skeletons() -> dict[str, frozenset[str]]:
+    """Every vocabulary word by its consonant skeleton (built on first use: the vocabulary is made
+    from the parser's tables)."""
+    from langnav.language.offline.vocabulary import VOCABULARY
+
+    table: dict[str, set[str]] = {}
+    for v in VOCABULARY:
+        if v.isalpha() and len(v) >= MIN_SLIP_REPAIR_LEN:
+            table.setdefault(_skeleton(v), set()).add(v)
+    return {k: frozenset(v) for k, v in table.items()}
 
 
 @lru_cache(maxsize=4096)

@@ -48,6 +48,9 @@ LENGTH_UNITS_M: Final[dict[str, float]] = {
     **dict.fromkeys(("inch", "inches", '"', "ins", "inchs", "inche"), 0.0254),
     **dict.fromkeys(("yard", "yards", "yd", "yds", "yardss"), 0.9144),
 }
+#: A number said after feet without a unit is inches when it is below this ("5 foot 6").
+INCHES_PER_FOOT: Final = 12
+
 #: Angle units in degrees.
 ANGLE_UNITS_DEG: Final[dict[str, float]] = {
     **dict.fromkeys(("degree", "degrees", "deg", "degs", "°", "º", "dgr", "degreess"), 1.0),
@@ -154,12 +157,19 @@ _TURN_PATTERN: Final = re.compile(
     rf"|(?P<count>{NUMBER}))"
     rf"[\s-]*(?:full\s+|complete\s+|whole\s+)?(?P<noun>{_TURN_NOUN})")
 #: Words after a number that make it no distance or angle ("5 seconds", "3 times").
-_NOT_UNITS: Final = r"(?:seconds?|secs?|minutes?|mins?|hours?|times|steps?|percent|%|x|people|persons?|doors?)"
+_NOT_UNITS: Final = (r"(?:seconds?|secs?|minutes?|mins?|hours?|times|steps?|percent|%|x|people|persons?|doors?|"
+                     r"o\s*'?\s*clock|oclock)")
 _BARE_PATTERN: Final = re.compile(rf"{_B}{_AMOUNT_LEAD}(?P<num>{NUMBER})(?!\s*(?:st|nd|rd|th)\b)(?![\w])(?!\s*{_NOT_UNITS}\b)")
 #: "1 m 50", "2 metres 30": metres and centimetres.
 _METRES_CENTIMETRES: Final = re.compile(
     r"(?<![\w.])(?P<m>\d+)\s*(?:m|meters?|metres?)\s+(?:and\s+)?(?P<cm>\d{1,2})"
-    rf"(?!\s*(?:cm|mm|m|degrees?|deg|\.|\d|{_NOT_UNITS}\b))(?![\w.])")
+    rf"(?!\s*(?:cm|mm|m|degrees?|deg|inch(?:es|s)?|ins?|feets?|foot|ft|yards?|yds?|\.|\d|{_NOT_UNITS}\b))(?![\w.])")
+
+
+#: "2 foot 6", "five feet three", "six foot and two": feet and then inches, the inch unit left unsaid.
+_FEET_INCHES: Final = re.compile(
+    rf"(?<![\w.])(?P<ft>\d+|{_WORD_INT})\s*(?:feet|foot|ft|')\s+(?:and\s+)?(?P<inch>\d{{1,2}}|{_WORD_INT})"
+    rf"(?!\s*(?:cm|mm|m|meters?|metres?|feet|foot|ft|degrees?|deg|\.|\d|{_NOT_UNITS}\b))(?![\w.])")
 
 
 #: "1e3", "2.5E-1": scientific notation, written out before anything else reads the digits.
@@ -296,6 +306,14 @@ def find_quantities(text: str) -> list[Quantity]:
                    for m in _PI_PATTERN.finditer(text)]
     candidates += [Quantity(QuantityKind.LENGTH, int(m.group("m")) + int(m.group("cm")) / 100, m.start(), m.end())
                    for m in _METRES_CENTIMETRES.finditer(text)]
+    for m in _FEET_INCHES.finditer(text):
+        try:
+            inches = number_value(m.group("inch"))
+            if inches < INCHES_PER_FOOT:
+                candidates.append(Quantity(QuantityKind.LENGTH, number_value(m.group("ft")) * LENGTH_UNITS_M["ft"]
+                                           + inches * LENGTH_UNITS_M["inch"], m.start(), m.end()))
+        except ValueError:
+            continue
     for kind, pattern in _UNIT_PATTERNS:
         for m in pattern.finditer(text):
             q = _unit_quantity(kind, m)

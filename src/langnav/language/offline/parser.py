@@ -47,6 +47,7 @@ from langnav.language.intent import (
     Step,
 )
 from langnav.language.offline import lexicon as lx
+from langnav.language.offline.clock import clock_steps
 from langnav.language.offline.compass import compass_steps
 from langnav.language.offline.details import assign_details
 from langnav.language.offline.moves import move_steps
@@ -125,6 +126,9 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
     compass = compass_steps(c)
     if compass is not None:
         return _compass_reading(c, *compass)
+    clock = clock_steps(c)
+    if clock is not None:
+        return _compass_reading(c, *clock)
     start_place = c.s.find(START_PLACE_RE)
     if start_place is not None:
         c.s.use(start_place.start(), start_place.end())

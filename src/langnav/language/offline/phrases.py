@@ -32,6 +32,10 @@ _POST_SUPERLATIVE_RE: Final = re.compile(r"\s*(?:(?:that|which)\s+(?:is|are)\s+)
 _ROOM_YOU_ARE_IN_RE: Final = re.compile(r"\s*" + lx.phrase_regex(lx.ROOM_YOU_ARE_IN))
 _NUMBER_POST_RE: Final = re.compile(r"\s*(?:number|no|#)\s*(?P<n>\d{1,2}|one|two|three|four|five|six|seven|"
                                     r"eight|nine|ten)(?!\w)")
+#: "the one after the first", "the door after the second one": the next in the order counted.
+_AFTER_ORDINAL_RE: Final = re.compile(r"\s*(?:(?:right|just|immediately)\s+)?after\s+the\s+(?P<ord>"
+                                      + "|".join(sorted((w for w in lx.ORDINALS if w.isalpha()), key=len, reverse=True))
+                                      + r")(?:\s+(?:one|door|room|corner|obstacle))?\b")
 _FAR_END_LINK_RE: Final = re.compile(r"\s*" + lx.phrase_regex(lx.FAR_END_LINKS) + r"\s*")
 _CONTAINER_LINK_RE: Final = re.compile(r"\s*" + lx.phrase_regex(lx.CONTAINER_LINKS) + r"\s*$")
 _CURRENT_ROOM_POST_RE: Final = re.compile(
@@ -41,6 +45,9 @@ _ACROSS_LINK_RE: Final = re.compile(r"\s*(?:(?:right|directly|just)\s+)?(?:acros
 _BETWEEN_AND_RE: Final = re.compile(r"^\s*(?:and|&|,)\s*$")
 _ORDINAL_WORDS: Final = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7,
                          "eight": 8, "nine": 9, "ten": 10}
+
+#: The largest ordinal the intent holds ("the twentieth door").
+MAX_ORDINAL: Final = 20
 
 #: Every word the lexicon knows (a word outside it, before an element noun, is part of a name).
 KNOWN_WORDS: Final = frozenset(
@@ -241,6 +248,11 @@ def _read_post_modifiers(text: str, phrase: Phrase) -> None:
             ref = ref.model_copy(update={"in_current_room": True})
             phrase.end += m.end()
             continue
+        m = _AFTER_ORDINAL_RE.match(rest)
+        if m and ref.ordinal is None and lx.ORDINALS[m.group("ord")] < MAX_ORDINAL:
+            ref = ref.model_copy(update={"ordinal": lx.ORDINALS[m.group("ord")] + 1})
+            phrase.end += m.end()
+            continue
         m = _NUMBER_POST_RE.match(rest)
         if m and ref.ordinal is None:
             n = m.group("n")
@@ -302,7 +314,7 @@ def _resolve_containers(text: str, phrases: list[Phrase]) -> list[Phrase]:
 def as_landmark(ref: ElementRef) -> Landmark:
     """The properties of an element reference that a landmark holds."""
     return Landmark(kind=ref.kind, ordinal=ref.ordinal, superlative=ref.superlative, side=ref.side,
-                    in_current_room=ref.in_current_room, within=ref.within)
+                    in_current_room=ref.in_current_room, within=ref.within, label=ref.label)
 
 
 def _contain(ref: ElementRef, container: Phrase) -> ElementRef:

@@ -28,7 +28,8 @@ _HEDGES: Final = re.compile(
     r"(?:you'?re|you\s+are|that'?s|that\s+is|thats)\s+(?:right|correct)|at\s+(?:least|most)|"
     r"(?:go\s+ahead|go\s+on|come\s+on)\s+and|"
     r"(?:until|till)\s+i\s+(?:tell\s+you(?:\s+(?:to\s+stop|otherwise))?|say\s+(?:so|stop|otherwise))|"
-    r"(?:what|how)\s+about(?=\s+(?:you\s+)?(?:move|go|turn|rotate|head|drive|face|pivot|back|proceed)\b))\b",
+    r"(?:what|how)\s+about(?=\s+(?:you\s+)?(?:move|go|turn|rotate|head|drive|face|pivot|back|proceed)\b)|"
+    r"let'?s\s+say|let\s+us\s+say|shall\s+we\s+say|i'?d\s+say|oh(?=\s*,)|let\s+me\s+think)\b",
     re.IGNORECASE)
 #: A word cut off in the middle: letters and a dash before a space or the end ("nin-", "c-").
 _CUT_OFF: Final = re.compile(r"(?<![\w-])[a-z]+-(?=[\s,.;!?]|$)", re.IGNORECASE)
@@ -57,10 +58,76 @@ _MARKER_LEAD: Final = frozenset({"i'm", "im", "i", "am", "oh", "actually", "no",
 _WORD: Final = re.compile(r"\S+")
 
 
+_UNIT_WORD: Final = (r"(?:feet|foot|ft|inch(?:es)?|yards?|met(?:er|re)s?|centimet(?:er|re)s?|degrees?|deg|"
+                    r"o\s*'?\s*clock|oclock)")
+_SIDE_SLOT: Final = (r"(?:turn|turning|rotate|spin|pivot|swivel|veer|bear|hang|swing|to\s+your|on\s+your|hard|sharp|"
+                     r"your)")
+#: Words speech recognition writes for the number, side or punctuation that was said, each only in a
+#: place where that word is expected (README "Speech"): "move forward to feet" is two feet, "turn
+#: write" is right, "turn lift" is left; dictated punctuation ("comma", "period", "new line") is the
+#: mark itself. Outside those places the words keep their meaning ("go to the door", "take the lift").
+HOMOPHONES: Final = (
+    (re.compile(rf"\b(?:to|too)\s+(?={_UNIT_WORD}\b)", re.IGNORECASE), "two "),
+    (re.compile(rf"\bfor\s+(?={_UNIT_WORD}\b)", re.IGNORECASE), "four "),
+    (re.compile(r"\bwon\b", re.IGNORECASE), "one"),
+    (re.compile(r"\bate\b", re.IGNORECASE), "eight"),
+    (re.compile(rf"\b(?P<slot>{_SIDE_SLOT}|go|move|head|drive|slide|step|to\s+the|on\s+the|a)\s+(?:write|rite|wright)\b",
+                re.IGNORECASE), r"\g<slot> right"),
+    (re.compile(rf"\b(?P<slot>{_SIDE_SLOT})\s+lift\b", re.IGNORECASE), r"\g<slot> left"),
+    (re.compile(r"\s*\b(?:comma)\b\s*", re.IGNORECASE), ", "),
+    (re.compile(r"(?<=[a-z0-9])\s+n\s+(?=[a-z])", re.IGNORECASE), " and "),  # chat "n" between two words
+    (re.compile(r"\b(?:thn|thne|hten|tehn)\b", re.IGNORECASE), "then"),  # the connective, before the split
+    (re.compile(r"\s*\b(?:period(?!\s+of\b)|full\s+stop|new\s*line|new\s+paragraph|semicolon|question\s+mark|"
+                r"exclamation\s+(?:mark|point))\b\s*", re.IGNORECASE), ". "),
+)
+
+
+#: Polite frames around a request: they ask for the request, they are not a question to answer
+#: ("is it okay if you back up half a metre?", "would it be possible for you to reverse ...", "may I
+#: ask you to ...", "I'd be most grateful if you could ...", "could you possibly ...").
+REQUEST_FRAMES: Final = re.compile(
+    r"\b(?:(?:is|would|will)\s+it\s+be\s+|is\s+it\s+)(?:ok(?:ay)?|alright|all\s+right|possible|fine|cool)\s+"
+    r"(?:(?:for\s+you\s+)?to|if\s+(?:you|u)(?:\s+(?:could|can|would))?)\b"
+    r"|\b(?:may|can|could|might)\s+i\s+(?:ask|get|have)\s+(?:you\s+)?to\b"
+    r"|\bi(?:'d|\s+would)\s+(?:be\s+)?(?:(?:most|very|really|so|truly|extremely)\s+)?(?:grateful|thankful|happy|glad)"
+    r"\s+if\s+(?:you|u)(?:\s+(?:could|would|can))?\b"
+    r"|\bi\s+(?:was|am)\s+wondering\s+if\s+(?:you|u)\s+(?:could|would|can)\b"
+    r"|\bdo\s+you\s+think\s+(?:you|u)\s+(?:could|can)\b"
+    r"|\bwould\s+(?:you|u)\s+(?:be\s+so\s+kind\s+as|be\s+able)\s+to\b"
+    r"|\b(?:could|can|would|will)\s+(?:you|u)\s+(?:possibly|perhaps|maybe|please|kindly)\b"
+    r"|\bif\s+(?:you|u)\s+(?:do\s+not|don't|dont)\s+mind\b",
+    re.IGNORECASE)
+#: Remarks around a request that ask or say nothing about the motion: "is that a thing you can do?",
+#: "sorry if that's a weird number", "so that I can see the door", "I don't want to crash it": each is
+#: taken out with its own words, up to the next mark.
+REMARKS: Final = re.compile(
+    r"(?:^|(?<=[,.;!?])|\b(?=(?:is|would|will)\s+(?:that|this)\b))\s*(?:(?:is|would|will)\s+(?:that|this|it)\s+(?:be\s+)?"
+    r"(?:ok(?:ay)?|alright|possible|fine|doable|a\s+(?:thing|problem)|something|too\s+much)\b[^,.;!?]*"
+    r"|sorry\s+if\b[^,.;!?]*|(?:sorry|apologies)\s+(?:about|for)\s+(?:that|this)\b|my\s+(?:bad|mistake)\b"
+    r"|(?:i|we)\s+(?:do\s+not|don't|dont)\s+want\s+(?:you\s+|it\s+)?to\s+(?:crash|hit|bump|collide|smash|run\s+into)\b"
+    r"[^,.;!?]*"
+    r"|(?:and\s+)?(?:be\s+)?careful\s+not\s+to\s+(?:crash|hit|bump|collide|smash|run\s+into|touch)\b[^,.;!?]*)"
+    r"|\bso\s+(?:that\s+)?(?:i|we)\s+(?:can|could|may|might|will)\b[^,.;!?]*",
+    re.IGNORECASE)
+#: Words after which a comma is no clause break: the phrase goes on after the pause ("go to the, uh,
+#: the first door", "the nearest, um, corner").
+_OPEN_WORDS: Final = frozenset({
+    "the", "a", "an", "to", "into", "towards", "toward", "through", "of", "your", "my", "our", "at", "by", "near", "past", "between", "nearest", "closest", "farthest", "furthest", "first", "second",
+    "third", "fourth", "last", "biggest", "largest", "smallest", "next", "other", "opposite", "along",
+})
+
+
 def plain_speech(prompt: str) -> str:
-    """``prompt`` with hesitations, hedges, cut-off words, stutters and noise tokens removed, and a
-    comma before each self-correction marker."""
-    text = _CUT_OFF.sub(" ", prompt)
+    """``prompt`` with hesitations, hedges, cut-off words, stutters and noise tokens removed, a comma
+    before each self-correction marker, the words speech recognition mistook put right, and polite
+    frames and side remarks taken out."""
+    text = prompt
+    for pattern, repl in HOMOPHONES:
+        text = pattern.sub(repl, text)
+    text = REQUEST_FRAMES.sub(" ", text)
+    text = REMARKS.sub(" ", text)
+    text = _ABANDONED.sub(_drop_abandoned, text)
+    text = _CUT_OFF.sub(" ", text)
     text = _HEDGES.sub(" ", text)
     text = _RESTART.sub("", text)
     tokens = _WORD.findall(text)
@@ -81,8 +148,35 @@ def plain_speech(prompt: str) -> str:
         if bare.isalpha() and not punct and bare == nxt and bare not in _REPEATABLE:
             continue  # "a a left", "the the door": a stutter
         kept.append(token)
+    for i in range(len(kept) - 1):
+        word = kept[i].lower()
+        if word.endswith(",") and word.rstrip(",") in _OPEN_WORDS:
+            kept[i] = kept[i].rstrip(",")  # "the, uh, the first door": one phrase
+    kept = [t for i, t in enumerate(kept) if not (i + 1 < len(kept) and t.lower() in _OPEN_WORDS
+                                                  and t.lower() == kept[i + 1].lower().strip(",.;:!?"))]
     text = " ".join(kept)
     return _MARKER_INSIDE.sub(_break_before_marker, text)
+
+
+#: A stretch of speech that ends in a cut-off word ("and take another ph-", "send me a phot-"): the
+#: speaker gave it up.
+_ABANDONED: Final = re.compile(r"(?:(?<=[,.;!?])|^)(?P<part>[^,.;!?]*?[a-z]+-)(?=\s*(?:[,.;!?]|$))", re.IGNORECASE)
+
+
+def _drop_abandoned(m: re.Match[str]) -> str:
+    """A stretch given up with no word of where or how far in it is dropped whole ("take another ph-"
+    asks for nothing); one with such words keeps them, cut-off word removed, so that the reading sees
+    them (and asks if they make no instruction)."""
+    from langnav.language.offline.ask import spatial  # the ask stage's words of where and how far
+
+    part = m.group("part")
+    words = _CUT_OFF.sub(" ", part)
+    return part if spatial(words) or _RESTART_WORDS.search(words) else " "
+
+
+#: An instruction verb in a stretch that was cut off keeps it ("move six- six metres"): only a
+#: stretch that asks for nothing the robot does is dropped.
+_RESTART_WORDS: Final = re.compile(r"\b(?:move|go|turn|rotate|drive|back|face|head|spin|stop|reverse)\b", re.IGNORECASE)
 
 
 def _break_before_marker(m: re.Match[str]) -> str:

@@ -21,6 +21,8 @@ _CONNECTIVE_SPLIT: Final = re.compile(
     r"once\s+finished|when\s+finished|once\s+you\s+are\s+done|and\s+when\s+you\s+are\s+done|"
     r"and\s+once\s+there|and\s+when\s+there|and\s+from\s+there)\b",
     re.IGNORECASE)
+#: A piece that opens with "the one" / "that one": after a connective it is a step of its own.
+_ONE_RE: Final = re.compile(r"^\s*(?:the|that)\s+one\b", re.IGNORECASE)
 _DECIMAL_COMMA: Final = re.compile(r"(?<=\d),(?=\d{1,2}(?!\d))")
 _LEAD_IN: Final = re.compile(r"^\s*(?:(?:please|now|ok(?:ay)?|yeah|yes|alright|so|well|just|robot|um|uh)\s+)*"
                              r"(?:go\s+ahead|go\s+on|come\s+on|try|"
@@ -52,7 +54,9 @@ def split_steps(prompt: str) -> list[str]:
     text = _DECIMAL_COMMA.sub(".", prompt)
     pieces: list[str] = []
     for sentence in _PUNCTUATION_SPLIT.split(text):
-        for part in _CONNECTIVE_SPLIT.split(sentence):
+        for i, part in enumerate(_CONNECTIVE_SPLIT.split(sentence)):
+            if i and _ONE_RE.match(part):
+                part = f"then {part}"  # "..., then the one after the second": a step, not an apposition
             pieces.extend(_split_on_and(part))
     return [p for p in (_trim(p) for p in pieces) if p]
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import logging
+import re
 from collections.abc import Sequence
 from typing import Final
 
@@ -12,6 +13,7 @@ from langnav.language.offline.composition import read_composed
 from langnav.language.offline.corrections import (
     CANCEL_RE,
     apply_corrections,
+    is_bare_verb,
     is_hedge,
     join_fragments,
 )
@@ -19,6 +21,7 @@ from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.photos import without_photo
 from langnav.language.offline.reading import ASK_CONFIDENCE
+from langnav.language.offline.restarts import drop_stopped, merge_restated_turns
 from langnav.language.offline.speech import plain_speech
 from langnav.language.offline.splitter import split_steps
 from langnav.language.translator import Context, clean_prompt
@@ -113,6 +116,10 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
         if reading.steps or reading.problem in UNREAD_PROBLEMS:
             blocking.extend(u for u in reading.unread if u and spatial(u))
         new_steps = list(reading.steps)
+        if steps and _refines(clause, steps[-1], new_steps):
+            # "go to the door on your left, the one after the first": the same place, said more exactly
+            steps[-1] = steps[-1].model_copy(update={"target": _merged(steps[-1].target, new_steps.pop(0).target),
+                                                     "text": f"{steps[-1].text}, {clause}"[:500]})
         if reading.through_previous and steps and steps[-1].movement == Movement.NAVIGATE:
             steps[-1] = steps[-1].model_copy(update={"detail": Detail.THROUGH,
                                                      "text": f"{steps[-1].text}, {clause}"[:500]})
@@ -165,12 +172,18 @@ def _clauses(text: str) -> tuple[list[str], bool]:
     for clause in split_steps(text):
         without = without_photo(clause)
         photo = photo or without.asked
+        if without.asked and is_bare_verb(without.rest):
+            continue  # "then turn take picture": a verb cut short by the photo request
         if without.rest and not is_hedge(without.rest):
             kept.append(without.rest)
     # fragments join the instruction they complete both before and after the corrections: "move five
     # meters, I mean five feet, forward" is corrected first, then completed
     joined = join_fragments(apply_corrections(join_fragments(kept, _is_open)), _is_open)
-    return joined, photo
+    return merge_restated_turns(drop_stopped(joined, _read), _read), photo
+
+
+def _read(clause: str) -> Reading:
+    return read_clause(clause)
 
 
 def _is_open(clause: str) -> bool:
@@ -180,6 +193,27 @@ def _is_open(clause: str) -> bool:
 def _clarify(message: str, *, confidence: float, unread: list[str]) -> Intent:
     return Intent(steps=[], clarification=message[:500], translator=TRANSLATOR_NAME,
                   confidence=round(confidence, 3), unread=unread)
+
+
+#: An apposition: "the one ..." (or "I mean the one ...") with no verb of its own.
+_APPOSITION_RE: Final = re.compile(r"^(?:(?:i\s+mean|i\s+meant|that\s+is|namely|i\.e\.?)\s*,?\s*)?(?:the|that)\s+one\b",
+                                   re.IGNORECASE)
+
+
+def _merged(said: ElementRef | None, again: ElementRef | None) -> ElementRef | None:
+    """The place said first, with what the apposition says more exactly ("the second door, the one on
+    your right": the second, on the right)."""
+    if said is None or again is None:
+        return again or said
+    update = {k: v for k, v in again.model_dump(exclude_defaults=True).items() if k != "kind"}
+    return said.model_copy(update={k: getattr(again, k) for k in update})
+
+
+def _refines(clause: str, previous: Step, new: list[Step]) -> bool:
+    """The clause only names again, more exactly, the place the step before goes to."""
+    return (_APPOSITION_RE.match(clause.strip()) is not None and len(new) == 1 and previous.target is not None
+            and previous.movement == Movement.NAVIGATE and new[0].movement == Movement.NAVIGATE
+            and new[0].target is not None and new[0].target.kind == previous.target.kind)
 
 
 def _amendable(previous: Step, fragment: Step) -> bool:

@@ -1,0 +1,99 @@
+"""A spoken request is often started again or stopped on the way (README "Speech"). Read on the
+clauses before the steps are built:
+
+* a turn said again with what it missed is one turn: "fifteen degrees turn, turn to your left" (the
+  side added), "face up, face north" and "turn, um, turn right" (a false start), "turn left, turn left
+  two hundred seventy degrees" (the amount added), "turn around, face south" and "turn left and face
+  the door" (a facing says where the turn ends: the turn before it, with no amount of its own, is it);
+* a "stop" between two instructions stops the motion before it when that motion had no amount: the
+  speaker let it run and stopped it, and how far it went cannot be known, so it is not run ("turn
+  right, stop, turn left" is the left turn). A motion with its amount ends on its own: "go forward
+  three feet, stop, turn left" keeps all three.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from langnav.language.intent import Amount, Direction, Movement, Step
+from langnav.language.offline.normalize import normalize
+from langnav.language.offline.numbers import find_quantities
+from langnav.language.offline.reading import ASK_SIDE, Reading
+
+#: Reads one clause on its own (the parser's ``read_clause``).
+ClauseReader = Callable[[str], Reading]
+
+
+def _only_turn(reading: Reading) -> Step | None:
+    if len(reading.steps) != 1 or reading.problem is not None:
+        return None
+    step = reading.steps[0]
+    return step if step.movement == Movement.ROTATE else None
+
+
+def _no_amount_said(clause: str) -> bool:
+    return not find_quantities(normalize(clause))
+
+
+def _facing(step: Step) -> bool:
+    return step.heading_deg is not None or step.target is not None
+
+
+def merge_restated_turns(clauses: list[str], read: ClauseReader) -> list[str]:
+    """The clauses with each turn said again (see the module docstring) read as one."""
+    out: list[str] = []
+    for clause in clauses:
+        if out:
+            merged = _restated(out[-1], clause, read)
+            if merged is not None:
+                out[-1] = merged
+                continue
+        out.append(clause)
+    return out
+
+
+def _restated(first: str, second: str, read: ClauseReader) -> str | None:
+    a_reading, b_reading = read(first), read(second)
+    a, b = _only_turn(a_reading), _only_turn(b_reading)
+    if a is None or b is None or _facing(a):
+        return None
+    a_bare = _no_amount_said(first)
+    if _facing(b):
+        return second if a_bare else None  # "turn around, face south": the facing is the turn
+    a_sideless = ASK_SIDE in a_reading.asks
+    b_bare = _no_amount_said(second)
+    if a_sideless and not a_bare and b_bare and b.direction in (Direction.LEFT, Direction.RIGHT) \
+            and ASK_SIDE not in b_reading.asks:
+        amounts = normalize(first)
+        said = " ".join(amounts[q.start:q.end] for q in find_quantities(amounts))
+        return f"{second} {said}"  # "fifteen degrees turn, turn to your left"
+    if a_sideless and a_bare and ASK_SIDE not in b_reading.asks:
+        return second  # "face up, face north", "turn, um, turn right": a false start
+    if a_bare and not b_bare and a.direction == b.direction and a.direction in (Direction.LEFT, Direction.RIGHT):
+        return second  # "turn left, turn left two hundred seventy degrees"
+    if a_bare and b_bare and a.direction == b.direction == Direction.AROUND:
+        return first  # "turn all the way around, so that you face the other direction"
+    return None
+
+
+def _bare_stop(reading: Reading) -> bool:
+    return (len(reading.steps) == 1 and reading.steps[0].movement == Movement.STOP
+            and reading.steps[0].target is None and reading.problem is None)
+
+
+def _open_ended(reading: Reading) -> bool:
+    return (len(reading.steps) == 1 and reading.steps[0].movement in (Movement.MOVE, Movement.ROTATE)
+            and reading.steps[0].amount == Amount.DEFAULT and reading.steps[0].target is None
+            and reading.steps[0].heading_deg is None)
+
+
+def drop_stopped(clauses: list[str], read: ClauseReader) -> list[str]:
+    """The clauses without each open-ended motion stopped by a 'stop' that more instructions follow."""
+    out: list[str] = []
+    for i, clause in enumerate(clauses):
+        if out and i + 1 < len(clauses) and _bare_stop(read(clause)):
+            if _open_ended(read(out[-1])):
+                out.pop()
+            continue  # the stop itself: what follows is the request now
+        out.append(clause)
+    return out
