@@ -139,13 +139,7 @@ def test_a_corridor_t_junction_is_not_cut_at_the_gap_in_the_wall_line() -> None:
         assert set(d.connects) == {corridor.id, office.id}
 
 
-_STAIRCASE = pytest.mark.xfail(strict=True, reason="the edge-gradient histogram of a rasterised wall "
-                               "is biased towards 45 degrees (its pixel staircase); needs a "
-                               "projection (Hough-like) estimate of the directions")
-
-
-@pytest.mark.parametrize("angle_deg", [0.0, pytest.param(23.0, marks=_STAIRCASE),
-                                       pytest.param(49.0, marks=_STAIRCASE)])
+@pytest.mark.parametrize("angle_deg", [0.0, 23.0, 49.0, 87.0])
 def test_the_wall_directions_of_a_rotated_building_are_found(angle_deg: float) -> None:
     """Two walls at right angles, rotated by ``angle_deg``: the directions are that angle and
     its right angle, to a fraction of a degree."""
@@ -157,7 +151,8 @@ def test_the_wall_directions_of_a_rotated_building_are_found(angle_deg: float) -
     wall = ((np.abs(v) <= 1.5) & (np.abs(u) <= 80)) | ((np.abs(u - 30) <= 1.5) & (np.abs(v) <= 60))
     dirs = [math.degrees(d) for d in dominant_directions(wall)]
     assert len(dirs) == 2
-    assert dirs[0] % 90.0 == pytest.approx(angle_deg % 90.0, abs=0.5)
+    off = (dirs[0] - angle_deg + 45.0) % 90.0 - 45.0  # the same direction modulo 90 degrees
+    assert abs(off) <= 0.2
     assert dirs[1] - dirs[0] == pytest.approx(90.0)
 
 
@@ -189,3 +184,29 @@ def test_a_room_off_a_narrow_hallway_through_a_narrow_doorway_is_a_room_of_its_o
         d = door_near(seg.doors, x, 1.6)
         assert set(d.connects) == {hallway.id, room.id}
         assert d.width_m == pytest.approx(width, abs=POS_TOL_M)
+
+
+def hall_with_a_rack_row() -> OccupancyGrid:
+    """A 20 m x 12 m hall crossed from wall to wall by a row of rack uprights: 0.8 m pieces,
+    0.1 m thick, with 1.2 m gaps between them (the lidar sees the uprights and beams at its
+    height, not the goods)."""
+    b = MapBuilder(22.0, 14.0)
+    b.room(1.0, 1.0, 21.0, 13.0)
+    x = 1.0
+    while x < 21.0:
+        b.box(x, 6.95, min(x + 0.8, 21.0), 7.05)
+        x += 2.0
+    return b.build("hall with a rack row")
+
+
+def test_a_row_of_racks_with_a_gap_every_few_metres_does_not_split_a_hall() -> None:
+    """The row is a dashed line with door-wide gaps and floor on both sides, as a glass wall
+    would be, but it is open for more than half its length, every two metres: a row of things
+    standing in the hall, not a wall with doors. One room, no doors."""
+    grid = hall_with_a_rack_row()
+    seg = segment_spaces(grid)
+    assert len(seg.rooms) == 1
+    assert seg.rooms[0].kind == ElementKind.ROOM
+    assert space_at(seg, grid, 10.0, 3.0) is space_at(seg, grid, 10.0, 11.0)
+    assert seg.doors == ()
+    assert seg.openings == ()

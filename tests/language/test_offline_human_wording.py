@@ -462,3 +462,65 @@ def test_across_from_another_room(prompt: str, near: dict[str, object]) -> None:
     target = intent.steps[0].target
     assert target is not None and target.relation == Relation.ACROSS and target.near is not None
     assert target.near.model_dump(mode="json", exclude_defaults=True) == {"kind": "room", **near}
+
+
+# ------------------------------------------------------------------------------ more corrections and words
+@pytest.mark.parametrize(("prompt", "want"), [
+    ("move forward three- no, wait, two metres", [_move(Direction.FORWARD, 2)]),
+    ("back up two feet, actually, make it one foot", [_move(Direction.BACKWARD, FT)]),
+    ("turn right ninety, sorry, I meant to say left ninety", [_turn(Direction.LEFT, 90)]),
+    ("turn around silly", [(Movement.ROTATE, Direction.AROUND, 180.0)]),
+    ("rotate counter clock wise ninety", [_turn(Direction.LEFT, 90)]),
+    ("spin clock wise 45 degrees", [_turn(Direction.RIGHT, 45)]),
+])
+def test_more_spoken_corrections_and_words(prompt: str, want: list[tuple[Movement, Direction, float]]) -> None:
+    assert _plain(translate_offline(prompt)) == want
+
+
+@pytest.mark.parametrize(("prompt", "heading"), [("turn around to face north", 90.0), ("swing round to face east", 0.0),
+                                                 ("turn around and face north", 90.0),
+                                                 ("spin round to the west", 180.0)])
+def test_turning_around_to_face_a_point_is_facing_it(prompt: str, heading: float) -> None:
+    intent = translate_offline(prompt)
+    assert [(s.movement, s.heading_deg) for s in intent.steps] == [(Movement.ROTATE, heading)], intent
+
+
+@pytest.mark.parametrize(("prompt", "want"), [
+    ("move right- left, move left a metre", [_move(Direction.LEFT, 1)]),
+    ("go forward, go forward 2 metres", [_move(Direction.FORWARD, 2)]),
+    ("back up, uh, back up three feet", [_move(Direction.BACKWARD, 3 * FT)]),
+])
+def test_a_move_said_again_with_its_amount_is_one_move(prompt: str,
+                                                       want: list[tuple[Movement, Direction, float]]) -> None:
+    assert _plain(translate_offline(prompt)) == want
+
+
+@pytest.mark.parametrize("prompt", ["go to the neighbouring room", "drive into the adjoining room",
+                                    "go to the room next door"])
+def test_the_neighbouring_room_is_the_room_next_to_this_one(prompt: str) -> None:
+    from langnav.language.intent import Relation
+
+    intent = translate_offline(prompt)
+    assert [(s.target.relation if s.target else None) for s in intent.steps] == [Relation.ADJACENT], intent
+
+
+@pytest.mark.parametrize(("prompt", "want"), [
+    ("fwd 2.5 m, cw 90", [_move(Direction.FORWARD, 2.5), _turn(Direction.RIGHT, 90)]),
+    ("2 m forward, then counterclockwise 90", [_move(Direction.FORWARD, 2), _turn(Direction.LEFT, 90)]),
+    ("forward 1 m, clockwise 45 degrees", [_move(Direction.FORWARD, 1), _turn(Direction.RIGHT, 45)]),
+])
+def test_a_clockwise_fragment_is_a_turn(prompt: str, want: list[tuple[Movement, Direction, float]]) -> None:
+    assert _plain(translate_offline(prompt)) == want
+
+
+@pytest.mark.parametrize(("prompt", "want"), [
+    ("sorry, I mean, um... go forward two feet. just two.", [_move(Direction.FORWARD, 2 * FT)]),
+    ("turn left 30 degrees. only 30 please", [_turn(Direction.LEFT, 30)]),
+])
+def test_a_number_said_again_insists_on_it(prompt: str, want: list[tuple[Movement, Direction, float]]) -> None:
+    assert _plain(translate_offline(prompt)) == want
+
+
+def test_a_new_bare_number_after_a_move_is_asked_about() -> None:
+    intent = translate_offline("go forward two feet, then 2")
+    assert intent.steps == [] and intent.clarification

@@ -76,6 +76,17 @@ WIDTH_MAX_CELLS: Final = 250_000
 CENTRE_LINE_MIN_SHARE: Final = 0.8
 #: A closed wall gap is given back to the spaces found within this many cells of it.
 REOPEN_MARGIN_CELLS: Final = 4
+#: Two spaces parted by more closed wall gaps than a wall has doors into one room are one space
+#: when the gaps take at least this share of the line they lie on: a row of shelf units,
+#: counters or desks is open for about as much of its length as it is solid, a wall with a
+#: few doors into the same room is mostly wall.
+ROW_OF_CLUTTER_MIN_OPEN_SHARE: Final = 0.4
+#: ... and when there are at least this many: a room may have a door at each end and one in
+#: the middle onto the same corridor; a row of racks or desks has a gap every few metres.
+ROW_OF_CLUTTER_MIN_GAPS: Final = 4
+#: ... and when the gaps lie on one line: their centres within this distance (m, rms) of it,
+#: half an interior wall's thickness.
+ROW_OF_CLUTTER_MAX_OFF_LINE_M: Final = 0.15
 #: Id used in ``Door.connects`` for unexplored territory.
 UNKNOWN_ID: Final = "unknown"
 #: Openings between two spaces narrower than the robot can pass (``door_min_width_m``) but at
@@ -198,7 +209,7 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     judge = JambJudge(split_floor, split_clear, res, params) if params.seg_jamb_test else None
     labels = merge_basins(raw_labels, split_clear, res, params, judge)
     if closed.any():
-        labels = _reopen(labels, closed, params.seg_max_openings_between)
+        labels = _reopen(labels, closed, params.seg_max_openings_between, res)
     if params.seg_claim_free_m > 0:
         labels = _claim_free(labels, fl.free, ~occupied, params.seg_claim_free_m / res)
     labels, exterior = _attach_enclosed_unknown(labels, fl, grid, params)
@@ -235,41 +246,23 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
 
 
 def _reopen(labels: npt.NDArray[np.int32], closed: npt.NDArray[np.bool_],
-            max_openings: int) -> npt.NDArray[np.int32]:
+            max_openings: int, resolution_m: float) -> npt.NDArray[np.int32]:
     """Give the cells that closed the wall gaps back to the spaces on either side of them (each
-    to a space it touches, a band at a time): the gap becomes the doorway between the two.
+    to the nearest: the two sides meet in the gap's middle): the gap becomes the doorway
+    between the two.
 
-    Two spaces parted by more than ``max_openings`` closed gaps (0: no limit) are one space: a
-    wall has a door or two into the same room, a row of counters, desks or shelf units standing
-    in a line has a gap between every two of them (the same rule as for openings found by the
-    flood, ``seg_max_openings_between``)."""
+    Two spaces parted by more than ``max_openings`` closed gaps (0: no limit) that take a large
+    share of the line they lie on are one space: a wall has a door or two into the same room, a
+    row of counters, desks or shelf units standing in a line has a gap between every two of
+    them (see ``seg_max_openings_between`` for openings found by the flood)."""
     todo = closed & (labels == 0)
     if not todo.any():
         return labels
-    if max_openings > 0:
-        gaps, _ = ndi.label(todo, structure=EIGHT)
-        grown = maximum3(np.where(todo, 0, labels))
-        low = -maximum3(np.where(todo | (labels == 0), -np.iinfo(np.int32).max, -labels))
-        count: dict[tuple[int, int], int] = {}
-        for _gap, a, b in set(zip(gaps[todo].tolist(), low[todo].tolist(), grown[todo].tolist(), strict=True)):
-            if 0 < a < b:
-                count[(a, b)] = count.get((a, b), 0) + 1
-        rows_of_clutter = [ab for ab, c in count.items() if c > max_openings]
-        if rows_of_clutter:
-            target = np.arange(int(labels.max()) + 1, dtype=np.int32)
-            for a, b in sorted(rows_of_clutter):
-                ra, rb = target[a], target[b]
-                target[target == max(ra, rb)] = min(ra, rb)
-            keep = np.unique(target)
-            renum = np.zeros(int(labels.max()) + 1, dtype=np.int32)
-            renum[keep] = np.arange(keep.size, dtype=np.int32)  # keep[0] is 0: no space stays 0
-            labels = renum[target][labels].astype(np.int32)
-    # Each cell goes to the nearest space (the gap's two sides meet in its middle), looked for
-    # in a window around each closure.
     out = labels.copy()
     pieces, _ = ndi.label(todo, structure=EIGHT)
     h, w = labels.shape
-    for sl in ndi.find_objects(pieces):
+    objs = ndi.find_objects(pieces)
+    for sl in objs:
         if sl is None:
             continue
         win = (slice(max(sl[0].start - REOPEN_MARGIN_CELLS, 0), min(sl[0].stop + REOPEN_MARGIN_CELLS, h)),
@@ -280,7 +273,43 @@ def _reopen(labels: npt.NDArray[np.int32], closed: npt.NDArray[np.bool_],
         _, (ri, ci) = ndi.distance_transform_edt(lab == 0, return_indices=True)
         sub = todo[win]
         out[win][sub] = lab[ri[sub], ci[sub]]
-    return out
+    if max_openings <= 0:
+        return out
+    # Per pair of spaces: the closed gaps' (row, col) extents, to tell a row of clutter (open for
+    # a large share of its length) from a wall with several doors (mostly solid).
+    boxes: dict[tuple[int, int], list[tuple[slice, slice]]] = {}
+    for k, sl in enumerate(objs, start=1):
+        if sl is None:
+            continue
+        got = np.unique(out[sl][pieces[sl] == k])
+        got = got[got > 0]
+        if got.size == 2:
+            boxes.setdefault((int(got[0]), int(got[1])), []).append(sl)
+    rows_of_clutter = []
+    for ab, sls in boxes.items():
+        if len(sls) < max(max_openings + 1, ROW_OF_CLUTTER_MIN_GAPS):
+            continue
+        # A row stands on one line (a room with doors in two of its walls is no row).
+        centres = np.array([((a.start + a.stop) / 2, (b.start + b.stop) / 2) for a, b in sls])
+        centred = centres - centres.mean(axis=0)
+        off_line = float(np.linalg.svd(centred, compute_uv=False)[-1]) / math.sqrt(len(sls))
+        if off_line * resolution_m > ROW_OF_CLUTTER_MAX_OFF_LINE_M:
+            continue
+        open_cells = sum(math.hypot(a.stop - a.start, b.stop - b.start) for a, b in sls)
+        span = math.hypot(max(a.stop for a, _ in sls) - min(a.start for a, _ in sls),
+                          max(b.stop for _, b in sls) - min(b.start for _, b in sls))
+        if open_cells >= ROW_OF_CLUTTER_MIN_OPEN_SHARE * span:
+            rows_of_clutter.append(ab)
+    if not rows_of_clutter:
+        return out
+    target = np.arange(int(out.max()) + 1, dtype=np.int32)
+    for a, b in sorted(rows_of_clutter):
+        ra, rb = target[a], target[b]
+        target[target == max(ra, rb)] = min(ra, rb)
+    keep = np.unique(target)
+    renum = np.zeros(target.size, dtype=np.int32)
+    renum[keep] = np.arange(keep.size, dtype=np.int32)  # keep[0] is 0: no space stays 0
+    return renum[target][out].astype(np.int32)
 
 
 def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor, grid: OccupancyGrid,

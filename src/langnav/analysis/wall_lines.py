@@ -35,18 +35,18 @@ from typing import Final
 
 import numpy as np
 import numpy.typing as npt
-from scipy import ndimage as ndi
 
 from langnav.analysis.params import AnalysisParams
 
 BoolArray = npt.NDArray[np.bool_]
 FloatArray = npt.NDArray[np.float64]
 
-#: Histogram of wall edge directions modulo 90 degrees, in bins of this many degrees.
-DIRECTION_BIN_DEG: Final = 0.5
-#: The histogram is smoothed over this many degrees (a noisy wall's edge wobbles a few degrees).
-DIRECTION_SMOOTH_DEG: Final = 2.0
-#: A second direction (a wing at an angle) counts when its peak has this share of the main one.
+#: Candidate wall directions are tried every this many degrees (then refined to a tenth).
+DIRECTION_BIN_DEG: Final = 1.0
+#: At most this many wall cells (an even sample) are used to find the directions.
+DIRECTION_MAX_CELLS: Final = 20_000
+#: A second direction (a wing at an angle) counts when its peak rises this share of the main
+#: one's height above the worst direction's score.
 SECOND_DIRECTION_MIN_SHARE: Final = 0.5
 #: ... and lies at least this many degrees (modulo 90) from every direction already taken.
 DIRECTION_MIN_SEPARATION_DEG: Final = 10.0
@@ -80,40 +80,47 @@ class WallGap:
     width_m: float
 
 
+def _line_score(rows: FloatArray, cols: FloatArray, deg: float) -> float:
+    """How well the cells line up along ``deg`` and its right angle: the sum of squared counts
+    of cells per one-cell line across each direction (a wall along a direction puts its cells
+    on few lines), over the number of cells."""
+    t = math.radians(deg)
+    score = 0.0
+    for c, s in ((math.cos(t), math.sin(t)), (-math.sin(t), math.cos(t))):
+        v = np.rint(-cols * s + rows * c).astype(np.int64)
+        counts = np.bincount(v - v.min())
+        score += float((counts.astype(np.float64) ** 2).sum())
+    return score / rows.size
+
+
 def dominant_directions(wall: BoolArray) -> list[float]:
-    """The building's wall directions (radians in the (col, row) plane, in [0, pi)), main first:
-    the peaks of the wall edges' direction histogram modulo 90 degrees, each with its right angle."""
-    if wall.sum() < 2:
+    """The building's wall directions (radians in the (col, row) plane, in [0, pi)), main first.
+
+    Each candidate direction modulo 90 degrees (a right-angled plan: a direction and its right
+    angle together) is scored by how many wall cells line up along it (:func:`_line_score`,
+    a Hough transform's peak in short); the best one, refined, is the building's; other
+    peaks nearly as strong (a wing at an angle) are directions too. The edge directions of
+    the cells themselves would not do: a wall's pixel staircase turns them towards 45 degrees.
+    """
+    rr, cc = np.nonzero(wall)
+    if rr.size < 2:
         return []
-    rows = np.flatnonzero(wall.any(axis=1))
-    cols = np.flatnonzero(wall.any(axis=0))
-    sub = wall[max(rows[0] - 2, 0):rows[-1] + 3, max(cols[0] - 2, 0):cols[-1] + 3].astype(np.float64)
-    smooth = ndi.gaussian_filter(sub, 1.0)
-    gr = ndi.sobel(smooth, axis=0)
-    gc = ndi.sobel(smooth, axis=1)
-    mag = np.hypot(gr, gc)
-    on = mag > 0.1 * float(mag.max()) if mag.max() > 0 else mag > 0
-    if not on.any():
-        return []
-    # The edge runs across the gradient; modulo 90 degrees, both wall directions of a
-    # right-angled plan fall in one bin.
-    ang = np.degrees(np.arctan2(gr[on], gc[on])) % 90.0
-    nbins = round(90.0 / DIRECTION_BIN_DEG)
-    weights = mag[on]
-    hist = np.bincount((ang / DIRECTION_BIN_DEG).astype(np.int64) % nbins, weights=weights, minlength=nbins)
-    hist = ndi.gaussian_filter1d(hist, DIRECTION_SMOOTH_DEG / DIRECTION_BIN_DEG / 2, mode="wrap")
-    peaks = np.flatnonzero((hist >= np.roll(hist, 1)) & (hist > np.roll(hist, -1)))
-    peaks = peaks[np.argsort(-hist[peaks])]
+    if rr.size > DIRECTION_MAX_CELLS:  # a fixed, even sample of the cells is as good
+        pick = np.linspace(0, rr.size - 1, DIRECTION_MAX_CELLS).astype(np.int64)
+        rr, cc = rr[pick], cc[pick]
+    rows, cols = rr.astype(np.float64), cc.astype(np.float64)
+    grid_deg = np.arange(0.0, 90.0, DIRECTION_BIN_DEG)
+    score = np.array([_line_score(rows, cols, d) for d in grid_deg])
+    base = float(score.min())
+    peaks = np.flatnonzero((score >= np.roll(score, 1)) & (score > np.roll(score, -1)))
+    peaks = peaks[np.argsort(-score[peaks])]
     taken: list[float] = []
     for p in peaks.tolist():
-        if taken and hist[p] < SECOND_DIRECTION_MIN_SHARE * hist[peaks[0]]:
+        if taken and score[p] - base < SECOND_DIRECTION_MIN_SHARE * (score[peaks[0]] - base):
             break
-        # The peak, refined to the weighted mean of the edge directions near it.
-        deg = (p + 0.5) * DIRECTION_BIN_DEG
-        off = (ang - deg + 45.0) % 90.0 - 45.0
-        near = np.abs(off) <= DIRECTION_SMOOTH_DEG
-        if near.any():
-            deg = float((deg + np.average(off[near], weights=weights[near])) % 90.0)
+        # Refined to a tenth of a bin around the peak.
+        fine = grid_deg[p] + np.linspace(-DIRECTION_BIN_DEG, DIRECTION_BIN_DEG, 21)
+        deg = float(fine[int(np.argmax([_line_score(rows, cols, d) for d in fine]))] % 90.0)
         if all(min(abs(deg - t) % 90.0, 90.0 - abs(deg - t) % 90.0) >= DIRECTION_MIN_SEPARATION_DEG
                for t in taken):
             taken.append(deg)

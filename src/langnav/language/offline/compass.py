@@ -34,6 +34,7 @@ _FORWARD_RE: Final = re.compile(r"\b(?:forwards?|straight|ahead|directly|yoursel
                                 r"back(?=\s+(?:to\s+)?(?:the\s+)?(?:north|south|east|west)))\b")
 
 
+_ROUND_RE: Final = re.compile(r"\b(?:a)?round\b")
 _FACING_SIDE_RE: Final = re.compile(r"\s+(?:wall|side|end)\b")
 
 
@@ -55,6 +56,7 @@ def compass_steps(c: Clause) -> tuple[list[Step], bool] | None:
     turn = c.s.find(ROTATE_VERB_RE)
     if turn is not None:
         c.s.take_all(ROTATE_VERB_RE)  # "turn so that you face north": one turn
+        c.s.take_all(_ROUND_RE)  # "turn around to face north", "swing round to the east": the facing is the turn
         side = _FACING_SIDE_RE.match(c.s.text, m.end())
         if side is not None:
             c.s.use(side.start(), side.end())  # "face the north wall": facing it is facing north

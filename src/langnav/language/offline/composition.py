@@ -109,7 +109,7 @@ _ADJACENT_RE: Final = re.compile(
     r"\b" + _SPACE_NOUN + r"\s+(?:(?:that|which)\s+is\s+)?(?:right\s+|just\s+|directly\s+|immediately\s+)?"
     r"(?:next\s+to|beside|adjacent\s+to|next\s+door\s+to|alongside|neighbou?ring)\s+"
     r"(?:(?P<this>" + _THIS_SPACE + r")|(?P<lnoun>room|hallway|corridor)\s+(?P<label>\d{1,4}|" + _NUMBER_WORDS
-    + r"))\b|\b(?P<noun2>room)\s+next\s+door\b")
+    + r"))\b|\b(?P<noun2>room)\s+next\s+door\b|\b(?:neighbou?ring|adjoining|adjacent|next\s+door)\s+(?P<noun3>room)\b")
 # -- named places --------------------------------------------------------------------------------
 _NAME_TAIL: Final = r"(?P<name>[^,;]+?)(?:\s+(?:please|for\s+me|now|from\s+now\s+on))*\s*$"
 _SPOT: Final = (r"(?:this\s+(?:spot|place|position|point|location|pose)|here|where\s+(?:you|we)\s+are(?:\s+now)?|"
@@ -200,7 +200,7 @@ def extract(norm: str) -> tuple[str, Marks]:
     text = norm
     m = _ADJACENT_RE.search(text)
     if m is not None:
-        noun = m.group("noun") or m.group("noun2")
+        noun = m.group("noun") or m.group("noun2") or m.group("noun3")
         near: Landmark | None = Landmark(kind=Element.ROOM, in_current_room=True)
         if m.group("label"):
             kind = LABEL_NOUNS[m.group("lnoun")]

@@ -26,7 +26,8 @@ from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB
 #: Words that open a correction of the instruction before ("actually", "no wait", "i'm sorry").
 CORRECTION_START_RE: Final = re.compile(
     r"^(?:(?:actually|no\s+wait|no(?!\s+(?:further|longer|more|need)\b)|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
-    r"sorry|i\s+meant|i\s+mean|or\s+rather|rather|make\s+that|correction|oops)\b[\s,]*)+", re.IGNORECASE)
+    r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|or\s+rather|rather|make\s+that|make\s+it|correction|"
+    r"oops)\b[\s,]*)+", re.IGNORECASE)
 #: Words that take back what was said before ("never mind", "scratch that").
 CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|forget\s+(?:it|that|everything|all\s+(?:of\s+)?that)|"
                               r"cancel\s+that|ignore\s+that|disregard\s+that)\b[\s,]*", re.IGNORECASE)
@@ -36,9 +37,11 @@ CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|forget\s+(?:it|
 CANCEL_ALL_RE: Final = re.compile(r"\b(?:never\s*mind|forget\s+(?:everything|all\s+(?:of\s+)?that))\b", re.IGNORECASE)
 #: Words that give the side of a move or a turn (a fragment may carry one).
 SIDE_RE: Final = re.compile(
-    r"(?:\b(?:to|on|towards?)\s+(?:the|your)\s+)?\b(?:left|right|clockwise|counter\s*clockwise|anti\s*clockwise|"
+    r"(?:\b(?:to|on|towards?)\s+(?:the|your)\s+)?\b(?:left|right|clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw|"
     r"forwards?|backwards?|ahead|straight)\b(?:\s+(?:hand\s+)?side)?")
 _HEAD_RE: Final = rx([*lx.ELEMENT_NOUNS], "head")
+#: Words a speaker holds the floor with while correcting ("no, wait, ..."): no instruction of their own.
+_HOLD_RE: Final = re.compile(r"^\s*(?:wait|hold\s+on|hang\s+on|one\s+sec(?:ond)?|let\s+me\s+think)\s*$", re.IGNORECASE)
 #: "the one after the second": says which place more exactly (an apposition), does not replace it.
 _ONE_RE: Final = re.compile(r"^\s*(?:the|that)\s+one\b", re.IGNORECASE)
 #: "back" as the way of a move (not a verb of its own once a side replaces it).
@@ -150,6 +153,8 @@ def apply_corrections(clauses: list[str]) -> list[str]:
                 _take_back(out, everything)
                 out.append(clause)
             continue
+        if correct_next and _HOLD_RE.match(clause):
+            continue  # "no, wait, two metres": "wait" belongs to the correction, it is no stop
         correcting = correct_next
         correct_next = False
         if start is not None:

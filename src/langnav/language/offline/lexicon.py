@@ -271,7 +271,7 @@ GO_VERBS: Final = (
     "go and stand", "go and", "sit", "wait",
 )
 
-ROTATE_VERBS: Final = ("turn", "rotate", "spin", "pivot", "swivel", "face", "look", "twist", "yaw",
+ROTATE_VERBS: Final = ("turn", "rotate", "spin", "pivot", "swivel", "swing round", "swing around", "face", "look", "twist", "yaw",
                        "turn yourself", "rotate yourself", "orient", "orient yourself", "veer",
                        "turn your body", "point", "do", "make", "perform", "execute", "give me", "give us",
                        "give", "have", "take a", "try", "turn on the spot", "u turn", "uturn", "about face", "about turn", "make a u turn",
@@ -351,12 +351,12 @@ MOVE_DIRECTIONS: Final[dict[str, Direction]] = {
     **{w: Direction.LEFT for w in (
         "left", "to the left", "to your left", "leftward", "leftwards", "sideways left",
         "sideways to the left", "to the left side", "left side", "on the left", "on your left",
-        "toward the left", "towards the left", "toward your left", "towards your left", "port")},
+        "toward the left", "towards the left", "toward your left", "towards your left", "port", "on left")},
     **{w: Direction.RIGHT for w in (
         "right", "to the right", "to your right", "rightward", "rightwards", "sideways right",
         "sideways to the right", "to the right side", "right side", "on the right", "on your right",
         "toward the right", "towards the right", "toward your right", "towards your right",
-        "starboard")},
+        "starboard", "on right")},
 }
 
 ROTATE_DIRECTIONS: Final[dict[str, Direction]] = {
@@ -365,12 +365,12 @@ ROTATE_DIRECTIONS: Final[dict[str, Direction]] = {
         "counter clockwise", "counter-clockwise", "anticlockwise", "anti clockwise",
         "anti-clockwise", "ccw", "to the left side", "toward the left", "towards the left",
         "toward your left", "towards your left", "your left", "the left", "port", "left side",
-        "left hand side", "on the left", "on your left", "positive")},
+        "left hand side", "on the left", "on your left", "positive", "on left")},
     **{w: Direction.RIGHT for w in (
         "right", "to the right", "to your right", "rightward", "rightwards", "clockwise", "cw",
         "to the right side", "toward the right", "towards the right", "toward your right",
         "towards your right", "your right", "the right", "starboard", "right side",
-        "right hand side", "on the right", "on your right", "negative")},
+        "right hand side", "on the right", "on your right", "negative", "on right")},
     **{w: Direction.AROUND for w in (
         "around", "round", "back", "backwards", "backward", "about", "the other way", "the opposite way",
         "the other direction", "the opposite direction", "behind", "behind you", "to face behind",
@@ -425,6 +425,8 @@ FILLER_PATTERNS: Final = (
     r"\bi\s+(?:would\s+)?appreciate\s+(?:it\s+)?if\s+you\s+(?:would|could)?\b", r"\byou\s+(?:should|must|need\s+to|have\s+to|can|may)\b",
     r"\bmake\s+sure\s+(?:to|you)\b", r"\btry\s+(?:to|and)\b", r"\btry\s+(?=\w+ing\b)", r"\bplease\s+do\b", r"\bgo\s+on\b(?=\s+and\b)",
     r"\bfrom\s+(?:here|there|where\s+you\s+are(?:\s+now)?)\b", r"\bstarting\s+from\s+here\b",
+    # a name for the robot said in passing ("turn around, silly")
+    r"\b(?:you\s+)?(?:silly|sweetie|dummy|little\s+guy|little\s+buddy)(?:\s+(?:robot|thing|billy))?\s*$",
 )
 
 #: Phrases that mention walls or obstacles only to avoid them: removed before the safety check.

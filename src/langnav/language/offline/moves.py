@@ -25,6 +25,8 @@ from langnav.language.offline.scratch import Clause
 from langnav.language.offline.turns import repeat_count, rotation
 from langnav.language.offline.verbs import Verb
 
+#: Sides only a turn has ("clockwise"): a fragment with one of them is a turn.
+_TURN_ONLY_SIDE_RE: Final = re.compile(r"\b(?:clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw)\b")
 _BACKWARD_VERBS: Final = frozenset({"back up", "reverse", "back off", "go back", "head back"})
 
 
@@ -46,6 +48,8 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
         elif angles and not lengths and prev.movement == Movement.ROTATE \
                 and prev.direction in (Direction.LEFT, Direction.RIGHT):
             return [rotation_from(c, prev.direction, quantities, [])]
+    if verb == Verb.NONE and not lengths and _TURN_ONLY_SIDE_RE.search(text):
+        return [rotation(c, None)]  # "cw 90", "then counterclockwise 45": only a turn goes clockwise
     if angles and not lengths:
         # "move back forty five degrees to your left": an angle goes with the side said
         direction = next((d for d in directions if d in (Direction.LEFT, Direction.RIGHT)), direction)

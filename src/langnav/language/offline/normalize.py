@@ -66,6 +66,8 @@ _IDIOMS: Final = (
     (re.compile(r"\b(?:do|make|pull|perform)\s+(?:a|an)\s+(one\s+eighty|180|three\s+sixty|360)\b(?!\s*(?:degrees?|turn))"),
      r"turn \1 degrees"),
     (re.compile(r"\boutside\s+(?:of\s+)?(?=(?:the|this|that|your)\s+(?:room|hallway|corridor|hall)\b)"), "out of "),
+    # "clock wise", "counter clock wise": one word each
+    (re.compile(r"\b(?:(counter|anti)\s*)?clock\s+wise\b"), r"\1clockwise"),
     # "so that you are facing north": the facing is the instruction ("so that" is no pronoun "that")
     (re.compile(r"\bso\s+(?:that\s+)?(?:you|it)(?:\s+are|\s+will\s+be)?\s+(?:fac(?:e|es|ing)|looking|pointing)\b"), "face"),
     # "point yourself at the door", "aim at the corner": face it

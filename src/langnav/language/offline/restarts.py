@@ -1,10 +1,12 @@
 """A spoken request is often started again or stopped on the way (README "Speech"). Read on the
 clauses before the steps are built:
 
+* a move said again with its amount is one move ("move left, move left a metre");
 * a turn said again with what it missed is one turn: "fifteen degrees turn, turn to your left" (the
   side added), "face up, face north" and "turn, um, turn right" (a false start), "turn left, turn left
   two hundred seventy degrees" (the amount added), "turn around, face south" and "turn left and face
   the door" (a facing says where the turn ends: the turn before it, with no amount of its own, is it);
+* a number said again on its own insists on it: "go forward two feet. just two." is one move;
 * a "stop" between two instructions stops the motion before it when that motion had no amount: the
   speaker let it run and stopped it, and how far it went cannot be known, so it is not run ("turn
   right, stop, turn left" is the left turn). A motion with its amount ends on its own: "go forward
@@ -13,11 +15,13 @@ clauses before the steps are built:
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
+from typing import Final
 
 from langnav.language.intent import Amount, Direction, Movement, Step
 from langnav.language.offline.normalize import normalize
-from langnav.language.offline.numbers import find_quantities
+from langnav.language.offline.numbers import NUMBER, QuantityKind, find_quantities
 from langnav.language.offline.reading import ASK_SIDE, Reading
 
 #: Reads one clause on its own (the parser's ``read_clause``).
@@ -52,8 +56,19 @@ def merge_restated_turns(clauses: list[str], read: ClauseReader) -> list[str]:
     return out
 
 
+def _only_move(reading: Reading) -> Step | None:
+    if len(reading.steps) != 1 or reading.problem is not None:
+        return None
+    step = reading.steps[0]
+    return step if step.movement == Movement.MOVE and step.target is None else None
+
+
 def _restated(first: str, second: str, read: ClauseReader) -> str | None:
     a_reading, b_reading = read(first), read(second)
+    a_move, b_move = _only_move(a_reading), _only_move(b_reading)
+    if a_move is not None and b_move is not None and a_move.direction == b_move.direction \
+            and a_move.amount == Amount.DEFAULT and b_move.distance_m is not None:
+        return second  # "move left, move left a metre": the move said again with its amount
     a, b = _only_turn(a_reading), _only_turn(b_reading)
     if a is None or b is None or _facing(a):
         return None
@@ -95,5 +110,25 @@ def drop_stopped(clauses: list[str], read: ClauseReader) -> list[str]:
             if _open_ended(read(out[-1])):
                 out.pop()
             continue  # the stop itself: what follows is the request now
+        out.append(clause)
+    return out
+
+
+#: "just two", "only two, I said": a number alone, said again to insist on it.
+_INSIST_RE: Final = re.compile(rf"^(?:(?:just|only|exactly|i\s+said|that\s+is|that's)\s+)*(?P<num>{NUMBER})"
+                               r"(?:\s+(?:only|i\s+said|please))*$")
+
+
+def drop_insisted_amounts(clauses: list[str]) -> list[str]:
+    """The clauses without a number said again on its own right after the instruction that said it
+    ("go forward two feet. just two."): it insists, it asks for no second move."""
+    out: list[str] = []
+    for clause in clauses:
+        m = _INSIST_RE.match(normalize(clause))
+        if out and m is not None:
+            said = normalize(out[-1])
+            quantities = [q for q in find_quantities(said) if q.kind != QuantityKind.BARE]
+            if any(re.search(rf"\b{re.escape(m.group('num'))}\b", said[q.start:q.end]) for q in quantities):
+                continue
         out.append(clause)
     return out

@@ -47,7 +47,9 @@ _RESTART: Final = re.compile(r"\b(?:can|could|will|would)\s+you\s+(?:(?!(?:and|t
 #: Words that open a self-correction; a clause break is put before them so that the correction is
 #: read as a clause of its own ("turn ninety degrees right actually left").
 CORRECTION_MARKERS: Final = (
-    r"actually(?:\s+no)?(?:\s+i\s+meant|\s+i\s+mean)?", r"no\s+wait", r"no\s+no", r"wait\s+no", r"oh\s+wait",
+    r"actually(?:\s+no)?(?:\s+i\s+meant|\s+i\s+mean)?", r"no,?\s+wait", r"no\s+no", r"wait,?\s+no", r"oh\s+wait",
+    r"i\s+meant\s+to\s+say", r"i\s+mean\s+to\s+say", r"make\s+it(?=\s+(?:\d|a\b|an\b|one|two|three|four|five|six|"
+    r"seven|eight|nine|ten|half|just|only|twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety))",
     r"(?:i'?m|i\s+am|im)\s+sorry", r"sorry", r"i\s+meant", r"i\s+mean", r"or\s+rather", r"make\s+that",
     r"scratch\s+that", r"never\s*mind", r"correction", r"oops",
 )

@@ -21,7 +21,11 @@ from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.photos import without_photo
 from langnav.language.offline.reading import ASK_CONFIDENCE
-from langnav.language.offline.restarts import drop_stopped, merge_restated_turns
+from langnav.language.offline.restarts import (
+    drop_insisted_amounts,
+    drop_stopped,
+    merge_restated_turns,
+)
 from langnav.language.offline.speech import plain_speech
 from langnav.language.offline.splitter import split_steps
 from langnav.language.translator import Context, clean_prompt
@@ -179,7 +183,7 @@ def _clauses(text: str) -> tuple[list[str], bool]:
     # fragments join the instruction they complete both before and after the corrections: "move five
     # meters, I mean five feet, forward" is corrected first, then completed
     joined = join_fragments(apply_corrections(join_fragments(kept, _is_open)), _is_open)
-    return merge_restated_turns(drop_stopped(joined, _read), _read), photo
+    return merge_restated_turns(drop_stopped(drop_insisted_amounts(joined), _read), _read), photo
 
 
 def _read(clause: str) -> Reading:
