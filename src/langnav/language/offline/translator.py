@@ -85,6 +85,7 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
         return _clarify(NEGATIVE_MESSAGE.format(number=shown), confidence=1.0, unread=[])
     text = plain_speech(canonical_numbers(text))
     clauses, photo = _clauses(text)
+    sequenced = _SEQUENCE_RE.search(text) is not None
     steps: list[Step] = []
     unread: list[str] = []
     problems: list[tuple[Problem, str, Reading]] = []
@@ -129,6 +130,8 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
                                                      "text": f"{steps[-1].text}, {clause}"[:500]})
         if reading.amends_previous and steps and new_steps and _amendable(steps[-1], new_steps[0]):
             steps[-1] = _amend(steps[-1], new_steps.pop(0), clause)
+        if steps and new_steps and not sequenced and _restates(steps[-1], new_steps[0], clause):
+            new_steps.pop(0)  # "forward two metres. forward two metres.": said again, done once
         steps.extend(new_steps)
         if steps:
             previous = steps[-1]
@@ -218,6 +221,34 @@ def _refines(clause: str, previous: Step, new: list[Step]) -> bool:
     return (_APPOSITION_RE.match(clause.strip()) is not None and len(new) == 1 and previous.target is not None
             and previous.movement == Movement.NAVIGATE and new[0].movement == Movement.NAVIGATE
             and new[0].target is not None and new[0].target.kind == previous.target.kind)
+
+
+#: Words that ask for a motion once more ("again", "another metre", "two more", "a second time").
+_REPEAT_RE: Final = re.compile(r"\b(?:again|another|more|further|twice|second\s+time|repeat|once\s+more)\b",
+                               re.IGNORECASE)
+#: Words that put instructions in a sequence: with them, the same instruction twice is meant twice
+#: ("turn left 90 degrees, then turn left 90 degrees").
+_SEQUENCE_RE: Final = re.compile(r"\b(?:then|after\s+that|afterwards|next|followed\s+by)\b", re.IGNORECASE)
+#: Two amounts closer than this are the same amount said again (less than one 3 cm / 10 degree step).
+_SAME_AMOUNT_TOL: Final = 1e-6
+
+
+def _restates(previous: Step, step: Step, clause: str) -> bool:
+    """The same move or turn, with the same amount, said again right after it with no word asking
+    for it once more, in a prompt with no word that sequences its instructions: a speaker repeating or confirming an instruction ("move forward. Two metres.
+    Forward two metres."; "fifty. fifty degrees left.") means it once. Doing it twice would take the
+    robot farther than asked; doing it once never does, and the user can ask again."""
+    if step.movement not in (Movement.MOVE, Movement.ROTATE) or step.movement != previous.movement:
+        return False
+    if step.target is not None or previous.target is not None or step.heading_deg is not None:
+        return False
+    if step.direction != previous.direction or _REPEAT_RE.search(clause):
+        return False
+    if step.movement == Movement.MOVE:
+        a, b = previous.distance_m, step.distance_m
+    else:
+        a, b = previous.angle_deg, step.angle_deg
+    return a is not None and b is not None and abs(a - b) <= _SAME_AMOUNT_TOL
 
 
 def _amendable(previous: Step, fragment: Step) -> bool:
