@@ -12,9 +12,9 @@ import re
 from typing import Final
 
 from langnav.language.intent import Direction, Movement, Step
-from langnav.language.offline.numbers import ONES, QuantityKind, find_quantities
+from langnav.language.offline.compass import distance_said, forward_move
+from langnav.language.offline.numbers import ONES
 from langnav.language.offline.patterns import GO_VERB_RE, ROTATE_VERB_RE
-from langnav.language.offline.reading import MAX_MOVE_M, VAGUE_NUMBER_FACTOR
 from langnav.language.offline.scratch import Clause
 
 #: Degrees between two hours of a clock face (360 / 12).
@@ -62,23 +62,15 @@ def clock_steps(c: Clause) -> tuple[list[Step], bool] | None:
     if turn is not None:
         direction, angle = turn
         steps.append(Step(movement=Movement.ROTATE, direction=direction, angle_deg=angle, text=c.text[:500]))
-    distance: float | None = None
-    for q in find_quantities(c.s.masked()):
-        c.s.use(q.start, q.end)
-        if q.kind == QuantityKind.LENGTH:
-            distance = (distance or 0.0) + q.value
-            if q.approximate:
-                c.doubt(VAGUE_NUMBER_FACTOR)
-        else:
-            c.lost.append(c.s.text[q.start:q.end])  # "turn 90 degrees to your two o'clock": which one?
+    distance = distance_said(c)
     if go is not None and (turn_verb is None or go.start() < turn_verb.start()):
         c.s.use(go.start(), go.end())
         c.had_verb = True
         if distance is None:
             return steps, True
     if distance is not None:
-        if distance > MAX_MOVE_M:
-            c.out_of_range = True
+        move = forward_move(c, distance)
+        if move is None:
             return [], False
-        steps.append(Step(movement=Movement.MOVE, direction=Direction.FORWARD, distance_m=distance, text=c.text[:500]))
+        steps.append(move)
     return steps, False

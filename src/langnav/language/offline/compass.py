@@ -38,6 +38,31 @@ _ROUND_RE: Final = re.compile(r"\b(?:a)?round\b")
 _FACING_SIDE_RE: Final = re.compile(r"\s+(?:wall|side|end)\b")
 
 
+def distance_said(c: Clause) -> float | None:
+    """The length said in a clause that turns to a heading or an hour and may then go on ("go north
+    five feet six inches": summed), its words taken. Any other amount is left unread: an angle beside
+    a heading or a clock hour is a second turn, and which one is meant cannot be told."""
+    distance: float | None = None
+    for q in find_quantities(c.s.masked()):
+        c.s.use(q.start, q.end)
+        if q.kind == QuantityKind.LENGTH:
+            distance = (distance or 0.0) + q.value
+            if q.approximate:
+                c.doubt(VAGUE_NUMBER_FACTOR)
+        else:
+            c.lost.append(c.s.text[q.start:q.end])  # "go north 90 degrees", "turn 90 to your two o'clock"
+    return distance
+
+
+def forward_move(c: Clause, distance_m: float) -> Step | None:
+    """The move ahead after such a turn, or None (and the clause marked out of range) when it is
+    farther than any move langnav runs."""
+    if distance_m > MAX_MOVE_M:
+        c.out_of_range = True
+        return None
+    return Step(movement=Movement.MOVE, direction=Direction.FORWARD, distance_m=distance_m, text=c.text[:500])
+
+
 def heading_of(point: str) -> float:
     word = "".join(point.replace("'", " ").split())
     word = re.sub(r"^nor(?=east|west)", "north", re.sub(r"^sou(?=east|west)", "south", word))
@@ -62,15 +87,7 @@ def compass_steps(c: Clause) -> tuple[list[Step], bool] | None:
             c.s.use(side.start(), side.end())  # "face the north wall": facing it is facing north
     c.s.take_all(_FORWARD_RE)
     steps = [Step(movement=Movement.ROTATE, heading_deg=heading, text=c.text[:500])]
-    distance: float | None = None
-    for q in find_quantities(c.s.masked()):
-        c.s.use(q.start, q.end)
-        if q.kind == QuantityKind.LENGTH:
-            distance = (distance or 0.0) + q.value
-            if q.approximate:
-                c.doubt(VAGUE_NUMBER_FACTOR)
-        else:
-            c.lost.append(c.s.text[q.start:q.end])  # "go north 90 degrees": an angle to a heading
+    distance = distance_said(c)
     if go is not None and (turn is None or go.start() < turn.start()):
         c.s.use(go.start(), go.end())
         c.had_verb = True
@@ -81,8 +98,8 @@ def compass_steps(c: Clause) -> tuple[list[Step], bool] | None:
     elif distance is None:
         return steps, True  # "north," then "five feet": no verb yet, a distance may follow
     if distance is not None:
-        if distance > MAX_MOVE_M:
-            c.out_of_range = True
+        move = forward_move(c, distance)
+        if move is None:
             return [], False
-        steps.append(Step(movement=Movement.MOVE, direction=Direction.FORWARD, distance_m=distance, text=c.text[:500]))
+        steps.append(move)
     return steps, False
