@@ -2,8 +2,31 @@
 
 from __future__ import annotations
 
+import math
+
+from langnav.analysis.elements import Door, Room
+from langnav.analysis.segmentation import Segmentation
 from langnav.maps.draw import MapBuilder
 from langnav.maps.grid import OCCUPIED, OccupancyGrid
+
+#: Door positions within two cells plus the half-cell of a door's centre.
+POS_TOL_M = 0.15
+
+
+def space_at(seg: Segmentation, grid: OccupancyGrid, x: float, y: float) -> Room:
+    """The space holding the world point (x, y) (the test fails if none does)."""
+    r, c = grid.world_to_index(x, y)
+    room = seg.room_by_label(int(seg.labels[int(r), int(c)]))
+    assert room is not None, f"no space at ({x}, {y})"
+    return room
+
+
+def door_near(doors: tuple[Door, ...], x: float, y: float, tol: float = POS_TOL_M) -> Door:
+    """The one door within ``tol`` of (x, y) (the test fails if there are none or several)."""
+    near = [d for d in doors if math.dist(d.center, (x, y)) <= tol]
+    assert len(near) == 1, f"{len(near)} doors near ({x}, {y}): {[d.center for d in doors]}"
+    return near[0]
+
 
 
 def room_with_door() -> OccupancyGrid:

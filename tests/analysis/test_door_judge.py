@@ -7,6 +7,7 @@ import math
 
 import numpy as np
 import pytest
+from analysis_maps import POS_TOL_M
 from scipy import ndimage as ndi
 
 from langnav.analysis.door_judge import (
@@ -22,9 +23,6 @@ from langnav.analysis.params import DEFAULT_PARAMS
 from langnav.analysis.segmentation import UNKNOWN_ID, Segmentation, segment_spaces
 from langnav.maps.draw import MapBuilder
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
-
-#: Door positions within two cells plus the half-cell of a door's centre.
-POS_TOL_M = 0.15
 
 
 def label_at(seg: Segmentation, grid: OccupancyGrid, x: float, y: float) -> int:

@@ -9,30 +9,15 @@ import math
 
 import numpy as np
 import pytest
+from analysis_maps import POS_TOL_M, door_near, space_at
 from scipy import ndimage as ndi
 
-from langnav.analysis.elements import Door, ElementKind, Room
+from langnav.analysis.elements import ElementKind
 from langnav.analysis.params import AnalysisParams
 from langnav.analysis.pipeline import analyze
-from langnav.analysis.segmentation import UNKNOWN_ID, Segmentation, segment_spaces
+from langnav.analysis.segmentation import UNKNOWN_ID, segment_spaces
 from langnav.maps.draw import MapBuilder
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
-
-#: Door positions within two cells plus the half-cell of a door's centre.
-POS_TOL_M = 0.15
-
-
-def space_at(seg: Segmentation, grid: OccupancyGrid, x: float, y: float) -> Room:
-    r, c = grid.world_to_index(x, y)
-    room = seg.room_by_label(int(seg.labels[int(r), int(c)]))
-    assert room is not None, f"no space at ({x}, {y})"
-    return room
-
-
-def door_near(doors: tuple[Door, ...], x: float, y: float, tol: float = POS_TOL_M) -> Door:
-    near = [d for d in doors if math.dist(d.center, (x, y)) <= tol]
-    assert len(near) == 1, f"{len(near)} doors near ({x}, {y}): {[d.center for d in doors]}"
-    return near[0]
 
 
 def corridor_with_wide_junction() -> OccupancyGrid:

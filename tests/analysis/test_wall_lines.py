@@ -9,28 +9,13 @@ import math
 
 import numpy as np
 import pytest
+from analysis_maps import POS_TOL_M, door_near, space_at
 
-from langnav.analysis.elements import Door, ElementKind, Room
-from langnav.analysis.segmentation import Segmentation, segment_spaces
+from langnav.analysis.elements import ElementKind
+from langnav.analysis.segmentation import segment_spaces
 from langnav.analysis.wall_lines import dominant_directions
 from langnav.maps.draw import MapBuilder
 from langnav.maps.grid import OccupancyGrid
-
-#: Door positions within two cells plus the half-cell of a door's centre.
-POS_TOL_M = 0.15
-
-
-def space_at(seg: Segmentation, grid: OccupancyGrid, x: float, y: float) -> Room:
-    r, c = grid.world_to_index(x, y)
-    room = seg.room_by_label(int(seg.labels[int(r), int(c)]))
-    assert room is not None, f"no space at ({x}, {y})"
-    return room
-
-
-def door_near(doors: tuple[Door, ...], x: float, y: float) -> Door:
-    near = [d for d in doors if math.dist(d.center, (x, y)) <= POS_TOL_M]
-    assert len(near) == 1, f"{len(near)} doors near ({x}, {y}): {[d.center for d in doors]}"
-    return near[0]
 
 
 def glass_fronted_offices() -> tuple[OccupancyGrid, list[float]]:
