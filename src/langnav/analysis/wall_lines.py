@@ -46,8 +46,6 @@ IntArray = npt.NDArray[np.int64]
 DIRECTION_BIN_DEG: Final = 1.0
 #: At most this many wall cells (an even sample) are used to find the directions.
 DIRECTION_MAX_CELLS: Final = 20_000
-#: Directions scored together (one array of this many times the cells: bounded memory).
-SCORE_BLOCK: Final = 16
 #: Candidate gaps judged together (their samples across the line in one array: bounded memory).
 CANDIDATE_BLOCK: Final = 256
 #: A second direction (a wing at an angle) counts when its peak rises this share of the main
@@ -85,24 +83,17 @@ class WallGap:
     width_m: float
 
 
-def _line_scores(rows: FloatArray, cols: FloatArray, degs: FloatArray) -> FloatArray:
-    """How well the cells line up along each direction of ``degs`` and its right angle: the sum
-    of squared counts of cells per one-cell line across each direction (a wall along a direction
-    puts its cells on few lines), over the number of cells. All directions at once, a block of
-    them at a time (bounded memory)."""
-    out = np.zeros(len(degs))
-    for b0 in range(0, len(degs), SCORE_BLOCK):
-        ts = [math.radians(float(d)) for d in degs[b0:b0 + SCORE_BLOCK]]
-        for c, s in (([math.cos(t) for t in ts], [math.sin(t) for t in ts]),
-                     ([-math.sin(t) for t in ts], [math.cos(t) for t in ts])):
-            cs, ss = np.array(c)[:, None], np.array(s)[:, None]
-            v = np.rint(-cols[None, :] * ss + rows[None, :] * cs).astype(np.int64)
-            v -= v.min(axis=1, keepdims=True)
-            span = int(v.max()) + 1
-            v += np.arange(len(ts))[:, None] * span  # one bincount for the block
-            counts = np.bincount(v.ravel(), minlength=len(ts) * span).reshape(len(ts), span)
-            out[b0:b0 + len(ts)] += (counts.astype(np.float64) ** 2).sum(axis=1)
-    return out / rows.size
+def _line_score(rows: FloatArray, cols: FloatArray, deg: float) -> float:
+    """How well the cells line up along ``deg`` and its right angle: the sum of squared counts
+    of cells per one-cell line across each direction (a wall along a direction puts its cells
+    on few lines), over the number of cells."""
+    t = math.radians(deg)
+    score = 0.0
+    for c, s in ((math.cos(t), math.sin(t)), (-math.sin(t), math.cos(t))):
+        v = np.rint(-cols * s + rows * c).astype(np.int64)
+        counts = np.bincount(v - v.min())
+        score += float((counts.astype(np.float64) ** 2).sum())
+    return score / rows.size
 
 
 def dominant_directions(wall: BoolArray) -> list[float]:
@@ -122,7 +113,7 @@ def dominant_directions(wall: BoolArray) -> list[float]:
         rr, cc = rr[pick], cc[pick]
     rows, cols = rr.astype(np.float64), cc.astype(np.float64)
     grid_deg = np.arange(0.0, 90.0, DIRECTION_BIN_DEG)
-    score = _line_scores(rows, cols, grid_deg)
+    score = np.array([_line_score(rows, cols, d) for d in grid_deg])
     base = float(score.min())
     peaks = np.flatnonzero((score >= np.roll(score, 1)) & (score > np.roll(score, -1)))
     peaks = peaks[np.argsort(-score[peaks])]
@@ -132,7 +123,7 @@ def dominant_directions(wall: BoolArray) -> list[float]:
             break
         # Refined to a tenth of a bin around the peak.
         fine = grid_deg[p] + np.linspace(-DIRECTION_BIN_DEG, DIRECTION_BIN_DEG, 21)
-        deg = float(fine[int(np.argmax(_line_scores(rows, cols, fine)))] % 90.0)
+        deg = float(fine[int(np.argmax([_line_score(rows, cols, d) for d in fine]))] % 90.0)
         if all(min(abs(deg - t) % 90.0, 90.0 - abs(deg - t) % 90.0) >= DIRECTION_MIN_SEPARATION_DEG
                for t in taken):
             taken.append(deg)
