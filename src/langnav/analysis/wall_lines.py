@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Final
+from typing import Final, Generic, TypeVar
 
 import numpy as np
 import numpy.typing as npt
@@ -41,6 +41,7 @@ from langnav.analysis.params import AnalysisParams
 BoolArray = npt.NDArray[np.bool_]
 FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.int64]
+_Cell = TypeVar("_Cell", np.bool_, np.uint8)
 
 #: Candidate wall directions are tried every this many degrees (then refined to a tenth).
 DIRECTION_BIN_DEG: Final = 1.0
@@ -48,6 +49,9 @@ DIRECTION_BIN_DEG: Final = 1.0
 DIRECTION_MAX_CELLS: Final = 20_000
 #: Candidate gaps judged together (their samples across the line in one array: bounded memory).
 CANDIDATE_BLOCK: Final = 256
+#: Bits of the cell code that reads the wall and the floor masks with one lookup.
+WALL_BIT: Final = 1
+FLOOR_BIT: Final = 2
 #: A second direction (a wing at an angle) counts when its peak rises this share of the main
 #: one's height above the worst direction's score.
 SECOND_DIRECTION_MIN_SHARE: Final = 0.5
@@ -133,23 +137,23 @@ def dominant_directions(wall: BoolArray) -> list[float]:
     return out
 
 
-class _LineSampler:
-    """Reads a mask at (u, v): u along the direction (cos_t, sin_t) in the (col, row) plane, v
-    across it; off the grid reads False."""
+class _LineSampler(Generic[_Cell]):
+    """Reads a mask (or a code per cell) at (u, v): u along the direction (cos_t, sin_t) in the
+    (col, row) plane, v across it; off the grid reads False (0)."""
 
-    def __init__(self, mask: BoolArray, cos_t: float, sin_t: float) -> None:
-        self.mask = mask
+    def __init__(self, mask: npt.NDArray[_Cell], cos_t: float, sin_t: float) -> None:
+        self.mask: npt.NDArray[_Cell] = mask
         self.cos_t, self.sin_t = cos_t, sin_t
 
     def rc(self, u: FloatArray, v: FloatArray) -> tuple[FloatArray, FloatArray]:
         return u * self.sin_t + v * self.cos_t, u * self.cos_t - v * self.sin_t
 
-    def __call__(self, u: FloatArray, v: FloatArray) -> BoolArray:
+    def __call__(self, u: FloatArray, v: FloatArray) -> npt.NDArray[_Cell]:
         r, c = self.rc(u, v)
         ri, ci = np.rint(r).astype(np.int64), np.rint(c).astype(np.int64)
         h, w = self.mask.shape
         inside = (ri >= 0) & (ri < h) & (ci >= 0) & (ci < w)
-        out = np.zeros(ri.shape, dtype=bool)
+        out = np.zeros(ri.shape, dtype=self.mask.dtype)
         out[inside] = self.mask[ri[inside], ci[inside]]
         return out
 
@@ -161,7 +165,7 @@ def _ragged(counts: IntArray) -> tuple[IntArray, IntArray]:
     return group, np.arange(int(counts.sum())) - starts[group]
 
 
-def _runs_on(floor_at: _LineSampler, u0: FloatArray, u1: FloatArray, v: FloatArray) -> BoolArray:
+def _runs_on(floor_at: _LineSampler[np.bool_], u0: FloatArray, u1: FloatArray, v: FloatArray) -> BoolArray:
     """Per candidate: is the floor continuous along the line at offset ``v`` from u0 to u1
     (cells; sampled as ``np.linspace(u0, u1, n)`` with n = the cells spanned, at least 2)?"""
     n = np.maximum(2, np.ceil(np.abs(u1 - u0)).astype(np.int64) + 1)
@@ -189,7 +193,7 @@ def _band_runs(on: BoolArray, reach: int) -> tuple[BoolArray, IntArray, IntArray
     return has, lo, hi
 
 
-def _through_depth(wall_at: _LineSampler, ua: FloatArray, ub: FloatArray, v: FloatArray,
+def _through_depth(wall_at: _LineSampler[np.bool_], ua: FloatArray, ub: FloatArray, v: FloatArray,
                    reach: int) -> FloatArray:
     """Per candidate: how deep (cells, across the line at ``v``) the gap between the wall cells
     at ``ua`` and ``ub`` is: on each side of the line, the shorter of the two jambs' reaches
@@ -206,15 +210,16 @@ def _through_depth(wall_at: _LineSampler, ua: FloatArray, ub: FloatArray, v: Flo
     return (plus.min(axis=1) + minus.min(axis=1) + 1).astype(np.float64)
 
 
-def _partition_share(wall_at: _LineSampler, floor_at: _LineSampler, u_end: FloatArray, sign: float,
-                     v: FloatArray, side: int, reach: int, thin: int) -> FloatArray:
+def _partition_share(both_at: _LineSampler[np.uint8], u_end: FloatArray, sign: float, v: FloatArray, side: int,
+                     reach: int, thin: int) -> FloatArray:
     """Per candidate: of the wall cells on the line at ``v`` over ``side`` cells from ``u_end``
     on (towards ``sign``), the share where the wall across the line is at most ``thin`` cells
-    thick with floor just beyond both of its faces (within two cells); 0 with no wall cell."""
+    thick with floor just beyond both of its faces (within two cells); 0 with no wall cell.
+    ``both_at`` reads WALL_BIT and FLOOR_BIT of a cell at once."""
     u = (u_end[:, None] + sign * np.arange(side, dtype=np.float64))[..., None]
     vv = (v[:, None] + np.arange(-reach, reach + 1, dtype=np.float64))[:, None, :]
-    w = wall_at(u, vv)  # (candidate, cell along, cell across)
-    f = floor_at(u, vv)
+    both = both_at(u, vv)  # (candidate, cell along, cell across)
+    w, f = (both & WALL_BIT) > 0, (both & FLOOR_BIT) > 0
     on, lo, hi = _band_runs(w, reach)
     idx = np.arange(w.shape[-1])
     floor_before = (f & (idx >= (lo - 2)[..., None]) & (idx < lo[..., None])).any(axis=-1)
@@ -242,6 +247,7 @@ def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: An
     reach = math.ceil(2 * params.door_max_depth_m / res) + 2
     rr, cc = np.nonzero(wall)
     rr_f, cc_f = rr.astype(np.float64), cc.astype(np.float64)
+    both = np.where(wall, WALL_BIT, 0).astype(np.uint8) | np.where(floor, FLOOR_BIT, 0).astype(np.uint8)
     out: list[WallGap] = []
     for theta in dirs:
         cos_t, sin_t = math.cos(theta), math.sin(theta)
@@ -252,7 +258,11 @@ def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: An
         # Each wall cell is on the lines within the band across it.
         vv = np.concatenate([v + k for k in range(-LINE_BAND_CELLS, LINE_BAND_CELLS + 1)]) - vmin
         uu = np.tile(u - umin, 2 * LINE_BAND_CELLS + 1)
-        key = np.unique(vv * span + uu)
+        # The distinct (line, position) keys in order: a mark per key, cheaper than np.unique.
+        flat = vv * span + uu
+        seen = np.zeros(int(flat.max()) + 1, dtype=bool)
+        seen[flat] = True
+        key = np.flatnonzero(seen)
         line, pos = np.divmod(key, span)
         gap = np.diff(pos) - 1
         cand = np.flatnonzero((line[1:] == line[:-1]) & (gap >= gmin) & (gap <= gmax))
@@ -269,8 +279,9 @@ def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: An
             continue
         floor_at = _LineSampler(floor, cos_t, sin_t)
         wall_at = _LineSampler(wall, cos_t, sin_t)
+        both_at = _LineSampler(both, cos_t, sin_t)
         for b0 in range(0, cand.size, CANDIDATE_BLOCK):
-            out += _gaps_kept(cand[b0:b0 + CANDIDATE_BLOCK], line, pos, umin, vmin, floor_at, wall_at,
+            out += _gaps_kept(cand[b0:b0 + CANDIDATE_BLOCK], line, pos, umin, vmin, floor_at, wall_at, both_at,
                               _GapScales(past, depths, max_depth, thin, reach, side), res)
     return out
 
@@ -288,7 +299,8 @@ class _GapScales:
 
 
 def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: int,
-               floor_at: _LineSampler, wall_at: _LineSampler, k: _GapScales, res: float) -> list[WallGap]:
+               floor_at: _LineSampler[np.bool_], wall_at: _LineSampler[np.bool_],
+               both_at: _LineSampler[np.uint8], k: _GapScales, res: float) -> list[WallGap]:
     """The candidate gaps (between ``pos[i]`` and ``pos[i + 1]`` on ``line[i]``, i in ``cand``)
     that are doorways between two spaces (see the module doc), all candidates at once."""
     v_line = (line[cand] + vmin).astype(np.float64)
@@ -307,8 +319,8 @@ def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: i
     # thick, a wall with cupboards along it has them on one side only).
     idx = np.flatnonzero(keep)
     keep[idx] = np.minimum(
-        _partition_share(wall_at, floor_at, ua[idx], -1.0, v_line[idx], k.side, k.reach, k.thin),
-        _partition_share(wall_at, floor_at, ub[idx], 1.0, v_line[idx], k.side, k.reach, k.thin)) \
+        _partition_share(both_at, ua[idx], -1.0, v_line[idx], k.side, k.reach, k.thin),
+        _partition_share(both_at, ub[idx], 1.0, v_line[idx], k.side, k.reach, k.thin)) \
         >= PARTITION_MIN_SHARE
     # On both sides the space runs on along the wall past one of the gap's ends.
     idx = np.flatnonzero(keep)
