@@ -31,9 +31,9 @@ from typing import Final
 
 import numpy as np
 import numpy.typing as npt
-from scipy import ndimage as ndi
 
 from langnav.analysis.params import AnalysisParams
+from langnav.analysis.precompute import truncated_sq_edt
 from langnav.analysis.seg_doors import RawDoor
 
 BoolArray = npt.NDArray[np.bool_]
@@ -188,12 +188,19 @@ def wall_share(occupied: BoolArray, start_rc: tuple[float, float], direction_rc:
                resolution_m: float, length_m: float, band_m: float) -> float:
     """Share of the steps along ``direction_rc`` from ``start_rc`` (up to ``length_m``) with an
     occupied cell within ``band_m`` either side of the line (walls are not ruled lines)."""
-    dr, dc = direction_rc
-    s = np.arange(_STEP_CELLS, length_m / resolution_m + 1e-9, _STEP_CELLS)
-    b = np.arange(-band_m / resolution_m, band_m / resolution_m + 1e-9, _STEP_CELLS)
-    rows = start_rc[0] + s[:, None] * dr - b[None, :] * dc
-    cols = start_rc[1] + s[:, None] * dc + b[None, :] * dr
-    return float(_sample(occupied, rows, cols, outside=False).any(axis=1).mean())
+    return float(wall_shares(occupied, start_rc, [direction_rc], resolution_m, length_m, band_m)[0])
+
+
+def wall_shares(occupied: BoolArray, start_rc: tuple[float, float], directions_rc: list[tuple[float, float]],
+                resolution_m: float, length_m: float, band_m: float) -> npt.NDArray[np.float64]:
+    """:func:`wall_share` along each of ``directions_rc``, all at once."""
+    dr = np.array([d[0] for d in directions_rc])[:, None, None]
+    dc = np.array([d[1] for d in directions_rc])[:, None, None]
+    s = np.arange(_STEP_CELLS, length_m / resolution_m + 1e-9, _STEP_CELLS)[None, :, None]
+    b = np.arange(-band_m / resolution_m, band_m / resolution_m + 1e-9, _STEP_CELLS)[None, None, :]
+    rows = start_rc[0] + s * dr - b * dc
+    cols = start_rc[1] + s * dc + b * dr
+    return np.asarray(_sample(occupied, rows, cols, outside=False).any(axis=2).mean(axis=1), dtype=np.float64)
 
 
 def _turned(dr: float, dc: float, angle: float) -> tuple[float, float]:
@@ -232,10 +239,10 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     for jamb, sign in (((r1, c1), -1.0), ((r2, c2), 1.0)):
         # The wall runs on along (nearly) the opening's line: jamb to jamb is a short baseline
         # across ragged wall ends, so the wall may leave it at a small angle.
-        along.append(max(wall_share(occupied, jamb, _turned(sign * tr, sign * tc, a), resolution_m, wall_m, band_m)
-                         for a in _ALONG_ANGLES))
-        across.append(min(wall_share(occupied, jamb, (nr, nc), resolution_m, wall_m, band_m),
-                          wall_share(occupied, jamb, (-nr, -nc), resolution_m, wall_m, band_m)))
+        shares = wall_shares(occupied, jamb, [*(_turned(sign * tr, sign * tc, a) for a in _ALONG_ANGLES),
+                                              (nr, nc), (-nr, -nc)], resolution_m, wall_m, band_m)
+        along.append(float(shares[:-2].max()))
+        across.append(float(shares[-2:].min()))
     return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]), across=(across[0], across[1]))
 
 
@@ -282,7 +289,10 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
     rest: list[RawDoor] = []
     far: BoolArray | None = None
     if unknown is not None and unknown.any() and candidates:
-        far = np.asarray(ndi.distance_transform_edt(~unknown) * resolution_m >= SEEN_FLOOR_MIN_M)
+        # Only distances up to SEEN_FLOOR_MIN_M matter: the exact truncated transform (bit for
+        # bit the full one's distances up to its bound; farther cells read farther).
+        bound = math.ceil(SEEN_FLOOR_MIN_M / resolution_m) + 1
+        far = np.sqrt(truncated_sq_edt(~unknown, bound).astype(np.float64)) * resolution_m >= SEEN_FLOOR_MIN_M
     for d in candidates:
         ev = evidence(free, occupied, d.center_rc, d.normal_rc, d.width_m, resolution_m, params)
         ok = is_door(ev, params, into_unknown=d.b == 0)
