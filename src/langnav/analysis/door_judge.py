@@ -11,6 +11,12 @@ thickness the free width along the wall widens into the space beyond. The mouth 
 way between two wings) stays as narrow for longer than any wall is thick: a narrow passage or a
 corridor continuing, not a door.
 
+*A door lies along its wall.* Walls run along a few directions (the building's, or a wing's
+at an angle), and a door is a gap in one: the line from jamb to jamb runs along a direction of
+the walls around it, give or take the tilt of ragged jambs. A slanted gap, from the end of one
+wall to the corner of another (a wall's end beside an unscanned corner, a ray leaking past a
+wall's end into the next room), is in no wall.
+
 *A door's jambs are wall.* Each end of the opening is the end of a wall that carries on along
 the opening's line (scanned, occupied cells for a wall's length, allowing for the holes a scan
 leaves in walls), or a wall the opening's wall abuts, crossing its line (a door beside a room's
@@ -35,6 +41,7 @@ import numpy.typing as npt
 from langnav.analysis.params import AnalysisParams
 from langnav.analysis.precompute import truncated_sq_edt
 from langnav.analysis.seg_doors import RawDoor
+from langnav.analysis.wall_lines import dominant_directions
 
 BoolArray = npt.NDArray[np.bool_]
 
@@ -83,6 +90,9 @@ JAMB_REACH_M: Final = 0.3
 #: ... or the jamb is a wall crossing the opening's line: occupied on at least this share of a
 #: wall's length on both sides of the line (a T or a corner the door stands beside).
 JAMB_ACROSS_MIN_SHARE: Final = 0.8
+#: The walls around a door, whose directions its line must follow: those within this distance
+#: (m) of it (the room or corridor it opens from; a wing at an angle has its own directions).
+LOCAL_WALLS_M: Final = 3.0
 
 
 @dataclass(frozen=True)
@@ -98,6 +108,9 @@ class DoorEvidence:
     #: occupied; and the smaller of the same shares along the normal's two directions.
     along: tuple[float, float]
     across: tuple[float, float]
+    #: The angle (degrees) between the line from jamb to jamb and the nearest direction of the
+    #: walls around the opening (0 where there are no jambs or no walls to tell).
+    line_turn_deg: float = 0.0
 
 
 def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np.float64],
@@ -253,6 +266,7 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     # across a ragged boundary, often slanted).
     n = math.hypot(r2 - r1, c2 - c1) or 1.0
     tr, tc = (r2 - r1) / n, (c2 - c1) / n
+    turn = line_turn_deg(occupied, center_rc, math.atan2(tr, tc), resolution_m)
     nr, nc = tc, -tr
     along: list[float] = []
     across: list[float] = []
@@ -263,7 +277,21 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
                                               (nr, nc), (-nr, -nc)], resolution_m, wall_m, band_m)
         along.append(float(shares[:-2].max()))
         across.append(float(shares[-2:].min()))
-    return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]), across=(across[0], across[1]))
+    return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]),
+                        across=(across[0], across[1]), line_turn_deg=turn)
+
+
+def line_turn_deg(occupied: BoolArray, center_rc: tuple[float, float], line_rad: float,
+                  resolution_m: float) -> float:
+    """The angle (degrees, 0-45) between a line through ``center_rc`` at ``line_rad`` (in the
+    (col, row) plane) and the nearest direction of the walls within LOCAL_WALLS_M of it (0 when
+    there are too few to tell)."""
+    rad = math.ceil(LOCAL_WALLS_M / resolution_m)
+    r, c = math.floor(center_rc[0]), math.floor(center_rc[1])
+    dirs = dominant_directions(occupied[max(0, r - rad):r + rad + 1, max(0, c - rad):c + rad + 1])
+    if not dirs:
+        return 0.0
+    return math.degrees(min(abs((line_rad - q + math.pi / 2) % math.pi - math.pi / 2) for q in dirs))
 
 
 def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool) -> bool:
@@ -278,6 +306,9 @@ def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool) -> boo
         if ev.constriction_back_m > params.door_max_depth_m / 2 + params.passage_min_length_m:
             return False
     elif ev.constriction_m > params.door_max_depth_m + params.passage_min_length_m:
+        return False
+    # Along a wall: the opening's line follows the walls' direction.
+    if ev.line_turn_deg > ALONG_MAX_TURN_DEG:
         return False
     # Both jambs are wall.
     return all(a >= JAMB_ALONG_MIN_SHARE or x >= JAMB_ACROSS_MIN_SHARE
@@ -326,4 +357,5 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
     return doors, rest
 
 
-__all__ = ["DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "judge_doors"]
+__all__ = ["DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "judge_doors",
+           "line_turn_deg"]
