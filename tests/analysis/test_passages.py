@@ -385,3 +385,68 @@ def test_a_door_in_a_side_wall_leads_off_the_passage() -> None:
     (p,) = found(door((0.0, 1.0)))
     assert p.center == pytest.approx((4.25, 1.45), abs=0.06)
     assert found(door((1.0, 0.0))) == ()
+
+
+def corridor_squeeze(bed_to_wall: bool = True) -> OccupancyGrid:
+    """A 12 x 2.4 m corridor (x 0..12, y 0..2.4) between two 3 x 3 m rooms at its ends, joined
+    to them over its whole width; a 2.0 x 0.75 m parked bed against its south wall (x 5.0..7.0,
+    y 0..0.75; outline scanned, inside unknown) and a 1.0 x 0.75 m trolley against its north wall
+    (x 5.5..6.5, y 1.65..2.4) leave a 0.9 m squeeze between them (x 5.5..6.5). ``bed_to_wall``
+    False: the bed stands 0.9 m off the south wall (y 0.9..1.65), so one walks round it."""
+    b = MapBuilder(14.0, 4.4, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 12.0, 2.4)
+    y0 = 0.0 if bed_to_wall else 0.9
+    b.box(5.0, y0, 7.0, y0 + 0.75).unknown(5.05, y0 + 0.05, 6.95, y0 + 0.7)
+    if bed_to_wall:
+        b.box(5.5, 1.65, 6.5, 2.4).unknown(5.55, 1.7, 6.45, 2.35)
+    return b.build(source=f"corridor_squeeze_{bed_to_wall}")
+
+
+def test_squeeze_between_two_things_in_a_corridor_is_a_passage() -> None:
+    # Shorter than twice its width (1.0 x 0.9 m), between two things deeper than any wall (no
+    # doorway), and the only way along the corridor: a person points at it.
+    (p,) = passages_of(corridor_squeeze())
+    assert p.center == pytest.approx((6.0, 1.2), abs=0.06)
+    assert p.width_m == pytest.approx(0.9, abs=0.051)
+    assert p.length_m == pytest.approx(1.0, abs=0.15)
+
+
+def test_gap_between_two_things_one_walks_round_is_no_passage() -> None:
+    # The bed stands off the wall: there is a way round it; the gap beside it is not the way.
+    assert passages_of(corridor_squeeze(bed_to_wall=False)) == ()
+
+
+def furniture_row(depth_m: float) -> OccupancyGrid:
+    """A 7 x 5 m room split by a row of furniture ``depth_m`` deep across it (y 2.0..2.0+depth),
+    from the west wall to x 3.0 and from x 3.7 to the east wall: a 0.7 m gap between a wardrobe
+    and a desk (``depth_m`` 0.7), or a doorway in a partition wall (0.15)."""
+    b = MapBuilder(9.0, 7.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 7.0, 5.0)
+    b.rect(0.0, 2.0, 3.0, 2.0 + depth_m, OCCUPIED)
+    b.rect(3.7, 2.0, 7.0, 2.0 + depth_m, OCCUPIED)
+    return b.build(source=f"furniture_row_{depth_m}")
+
+
+def test_gap_in_a_row_of_furniture_across_a_room_is_a_passage() -> None:
+    # A wardrobe and a desk, 0.7 m deep, with a 0.7 m gap: the way between the room's two parts,
+    # between things deeper than any wall.
+    (p,) = passages_of(furniture_row(0.7))
+    assert p.center == pytest.approx((3.35, 2.35), abs=0.06)
+    assert p.width_m == pytest.approx(0.7, abs=0.051)
+
+
+def test_doorway_in_a_partition_is_no_passage() -> None:
+    # The same gap in a 0.15 m partition wall is a doorway (a door's business), not a passage.
+    assert passages_of(furniture_row(0.15)) == ()
+
+
+def test_cart_narrowing_a_corridor_is_a_passage() -> None:
+    # A 1.8 m corridor narrowed to 0.85 m by a 1.5 m long housekeeping cart against its north
+    # wall: wider than a standard door's clear width, yet a squeeze a person points at (the way
+    # it narrows is twice as wide).
+    b = MapBuilder(14.0, 3.8, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 12.0, 1.8)
+    b.box(5.0, 0.85, 6.5, 1.8).unknown(5.05, 0.9, 6.45, 1.75)
+    (p,) = passages_of(b.build(source="corridor_cart"))
+    assert p.center == pytest.approx((5.75, 0.425), abs=0.06)
+    assert p.width_m == pytest.approx(0.85, abs=0.051)

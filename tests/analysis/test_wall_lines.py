@@ -39,7 +39,8 @@ def glass_fronted_offices() -> tuple[OccupancyGrid, list[float]]:
 def test_offices_opening_through_fronts_in_a_wall_line_are_rooms_off_the_hallway() -> None:
     """The corridor does not rise above an opening wider than it, so its clearance cannot tell
     it from the offices; the wall line running on past both ends of each front can: each office
-    is a room, joined to the hallway through its front (an opening: wider than a door)."""
+    is a room, joined to the hallway through its front (a door: an opening 1.8 m wide cut in the
+    wall, as wide as a double door)."""
     grid, fronts = glass_fronted_offices()
     seg = segment_spaces(grid)
     corridor = space_at(seg, grid, 10.0, 1.8)
@@ -48,10 +49,10 @@ def test_offices_opening_through_fronts_in_a_wall_line_are_rooms_off_the_hallway
     assert [o.kind for o in offices] == [ElementKind.ROOM] * 4
     assert len({corridor.id, *(o.id for o in offices)}) == 5
     assert len(seg.rooms) == 5
-    assert seg.doors == ()
-    assert len(seg.openings) == 4
+    assert seg.openings == ()
+    assert len(seg.doors) == 4
     for x, office in zip(fronts, offices, strict=True):
-        d = door_near(seg.openings, x, 2.65)
+        d = door_near(seg.doors, x, 2.65)
         assert set(d.connects) == {corridor.id, office.id}
         assert d.width_m == pytest.approx(1.8, abs=POS_TOL_M)
 
@@ -80,11 +81,12 @@ def test_a_bedroom_wing_behind_a_wide_opening_is_a_hallway_of_its_own() -> None:
     assert len({living.id, wing.id, *(b.id for b in beds)}) == 4
     assert len(seg.rooms) == 4
     assert living.area_m2 == pytest.approx(8.0 * 4.9, rel=0.03)
-    opening = door_near(seg.openings, 4.0, 5.475)
+    # The 1.8 m opening is cut in the wall: a door as wide as a double door.
+    opening = door_near(seg.doors, 4.0, 5.475)
     assert set(opening.connects) == {living.id, wing.id}
     assert opening.width_m == pytest.approx(1.8, abs=POS_TOL_M)
-    assert len(seg.openings) == 1
-    assert len(seg.doors) == 2
+    assert seg.openings == ()
+    assert len(seg.doors) == 3
     for (x, y), bed in zip(((2.0, 7.025), (6.5, 7.025)), beds, strict=True):
         d = door_near(seg.doors, x, y)
         assert set(d.connects) == {wing.id, bed.id}

@@ -17,8 +17,10 @@ mouths is how it is entered), and is
 * clearly longer than wide (``PASSAGE_MIN_ELONGATION``: an aisle, a checkout lane, a corridor),
   except a strip between a wall and a thing one can walk round (a pallet), which is one only when
   as elongated as a corridor (an aisle along a shelf); or
-* a short squeeze between a wall and a piece of furniture deeper than any wall (a sofa, not a
-  door leaf) that is the only way from one side to the other.
+* a short squeeze, longer than a wall is thick, that is the only way from one side to the other,
+  between a wall and a thing deeper than any wall (a sofa, a housekeeping cart: not a door leaf)
+  or between two such things (a parked bed and a trolley in a corridor, a wardrobe and a desk
+  across a room): its sides are no wall with a doorway in it.
 
 A passage along a wall (between the wall and a long shelf) shares its skeleton line with the
 one-sided strip along the rest of the room's walls: a core without sides along most of its length
@@ -81,9 +83,6 @@ TWO_SIDED_DIRECTIONS: Final = 8
 #: squeeze's width) along this share of the samples there, and the thing beside it ends (open
 #: along as much).
 WALL_RUNS_ON_SHARE: Final = 0.7
-#: A short squeeze is tighter than this (m; a standard interior door's clear width): as wide as
-#: a door, a short gap is walked through like one, nothing a person calls tight.
-SQUEEZE_MAX_WIDTH_M: Final = 0.8
 #: ... sampled this far past each mouth (m): a wall, not the corner of a jamb.
 WALL_RUN_M: Final = 0.6
 #: ... and the thing is deeper than a wall is thick (door_max_depth_m): blocked along this share
@@ -267,34 +266,44 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             centre_g = mean + 0.5 * (lo + hi) * axis
             # Short (less than PASSAGE_MIN_ELONGATION times longer than wide), it is a gap: in a
             # wall line (a door's business), between two objects or beside one (walked round).
-            # Except a squeeze between a wall and a thing standing beside it (the wall runs on
-            # past both mouths, the other side ends at both), a thing deeper than any wall or
-            # door leaf (a sofa, a cupboard: not a jamb with its door open along the way), that
-            # is the only way from one side to the other: a person points at that.
+            # Except a squeeze past things deeper than any wall or door leaf (a sofa, a cart, a
+            # wardrobe: not a jamb with its door open along the way), beside a wall that runs on
+            # past both mouths or between two of them, that is the only way from one side to the
+            # other: a person points at that, up to the widest passage (a corridor narrowed to
+            # 0.9 m by a parked bed is a squeeze, however wide a door may be).
             # Between a wall and a thing one can walk round (a pallet, a cabinet), a strip is a
             # way of its own only when it is as elongated as a corridor (an aisle along a shelf).
             elongated = length_m >= PASSAGE_MIN_ELONGATION * width_m
             corridor_like = length_m >= params.hallway_min_elongation * width_m
+            squeeze = False
             if not corridor_like:
                 # (A short one needs the wall on past both of its mouths: it is a squeeze along a
                 # wall, not round the end of one.)
                 thing = _beside_a_wall(sub, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res, WALL_RUN_M / res,
                                        both_mouths=not elongated)
-                if not elongated and (
-                        thing is None or width_m >= SQUEEZE_MAX_WIDTH_M
-                        or not _deep(sub, pts[bounded], np.array([-axis[1], axis[0]]) * (2 * thing - 1),
-                                     sides[bounded, thing], params.door_max_depth_m / res)):
-                    continue
-                if thing is not None and _way_round(fits, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res):
+                if not elongated:
+                    normal = np.array([-axis[1], axis[0]])
+                    depth = params.door_max_depth_m / res
+                    sides_deep = [_deep(sub, pts[bounded], normal * (2 * j - 1), sides[bounded, j], depth)
+                                  for j in (0, 1)]
+                    # A squeeze past a thing deeper than a wall beside a wall that runs on, or
+                    # between two such things (a parked bed and a trolley in a corridor, a
+                    # wardrobe and a desk across a room): longer than a wall is thick
+                    # (passage_min_length_m) with both sides solid, it is no doorway.
+                    squeeze = sides_deep[thing] if thing is not None else all(sides_deep)
+                    if not squeeze:
+                        continue
+                if (thing is not None or squeeze) and _way_round(fits, centre_g, axis, (hi - lo + 1.0) / 2.0,
+                                                                 width_m / res):
                     continue
             cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
             centre = (float(cx), float(cy))
             ax_w = np.subtract(grid.grid_to_world(r0 + centre_g[1] + axis[1], c0 + centre_g[0] + axis[0]), centre)
             axis_w = (float(ax_w[0]), float(ax_w[1]))
+            # A door found in a squeeze is no door: its sides are deeper than a wall is thick along
+            # and across the way (a gap between furniture, not an opening in a wall).
             if any(_is_the_door(d, centre, axis_w, length_m, width_m, params) for d in doors):
                 continue
-            # A short squeeze with a door at it is that door's opening (a door leaf, open along
-            # the way, lengthens its jamb).
             if not elongated and any(math.dist(d.center, centre) <= length_m / 2 + params.door_max_depth_m
                                      for d in doors):
                 continue

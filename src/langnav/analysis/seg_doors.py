@@ -92,7 +92,7 @@ def doors_between(labels: IntArray, clearance_m: FloatArray, resolution_m: float
     min_w = (params.door_min_width_m if min_width_m is None else min_width_m) - resolution_m
     # Between two spaces, a gap in a wall line wider than a door may separate them too.
     wide = params.seg_wall_gap_max_width_m if outside_label is None else 0.0
-    max_w = max(params.door_max_width_m, wide) + resolution_m
+    max_w = max(params.door_max_width_m, params.door_wide_max_width_m, wide) + resolution_m
     found: list[RawDoor] = []
     for s0, s1 in zip(starts, ends, strict=True):
         ka, kb = divmod(int(key[s0]), n)
@@ -148,9 +148,11 @@ def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
     frontier = floor & (labels > 0) & maximum3(exterior)
     if not frontier.any():
         return []
-    door_clear_max = (params.door_max_width_m + resolution_m) / 2
+    # A door to the outside or to an unscanned room may be a double door.
+    widest = max(params.door_max_width_m, params.door_wide_max_width_m)
+    door_clear_max = (widest + resolution_m) / 2
     # Frontier cells closer than a door width belong to one opening candidate.
-    join = max(1, round(params.door_max_width_m / resolution_m))
+    join = max(1, round(widest / resolution_m))
     groups, _ = ndi.label(ndi.maximum_filter(frontier, size=join), structure=EIGHT)
     groups[~frontier] = 0
     margin = math.ceil(OPENING_BAND_M / resolution_m)

@@ -232,7 +232,7 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     passable = params.door_min_width_m - res
     # Wider than a double door: a gap in a wall line that bounds two spaces (an arch, an open
     # front), an opening between them but no door a person would count.
-    widest = params.door_max_width_m + res
+    widest = max(params.door_max_width_m, params.door_wide_max_width_m) + res
     raw_doors = [d for d in between if passable <= d.width_m <= widest]
     raw_narrow = [d for d in between if d.width_m < passable]
     raw_wide = [d for d in between if d.width_m > widest]

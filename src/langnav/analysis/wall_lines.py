@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Final
+from typing import Final, Generic, TypeVar
 
 import numpy as np
 import numpy.typing as npt
@@ -40,11 +40,18 @@ from langnav.analysis.params import AnalysisParams
 
 BoolArray = npt.NDArray[np.bool_]
 FloatArray = npt.NDArray[np.float64]
+IntArray = npt.NDArray[np.int64]
+_Cell = TypeVar("_Cell", np.bool_, np.uint8)
 
 #: Candidate wall directions are tried every this many degrees (then refined to a tenth).
 DIRECTION_BIN_DEG: Final = 1.0
 #: At most this many wall cells (an even sample) are used to find the directions.
 DIRECTION_MAX_CELLS: Final = 20_000
+#: Candidate gaps judged together (their samples across the line in one array: bounded memory).
+CANDIDATE_BLOCK: Final = 256
+#: Bits of the cell code that reads the wall and the floor masks with one lookup.
+WALL_BIT: Final = 1
+FLOOR_BIT: Final = 2
 #: A second direction (a wing at an angle) counts when its peak rises this share of the main
 #: one's height above the worst direction's score.
 SECOND_DIRECTION_MIN_SHARE: Final = 0.5
@@ -130,85 +137,96 @@ def dominant_directions(wall: BoolArray) -> list[float]:
     return out
 
 
-class _LineSampler:
-    """Reads a mask at (u, v): u along the direction (cos_t, sin_t) in the (col, row) plane, v
-    across it; off the grid reads False."""
+class _LineSampler(Generic[_Cell]):
+    """Reads a mask (or a code per cell) at (u, v): u along the direction (cos_t, sin_t) in the
+    (col, row) plane, v across it; off the grid reads False (0)."""
 
-    def __init__(self, mask: BoolArray, cos_t: float, sin_t: float) -> None:
-        self.mask = mask
+    def __init__(self, mask: npt.NDArray[_Cell], cos_t: float, sin_t: float) -> None:
+        self.mask: npt.NDArray[_Cell] = mask
         self.cos_t, self.sin_t = cos_t, sin_t
 
     def rc(self, u: FloatArray, v: FloatArray) -> tuple[FloatArray, FloatArray]:
         return u * self.sin_t + v * self.cos_t, u * self.cos_t - v * self.sin_t
 
-    def __call__(self, u: FloatArray, v: FloatArray) -> BoolArray:
+    def __call__(self, u: FloatArray, v: FloatArray) -> npt.NDArray[_Cell]:
         r, c = self.rc(u, v)
         ri, ci = np.rint(r).astype(np.int64), np.rint(c).astype(np.int64)
         h, w = self.mask.shape
         inside = (ri >= 0) & (ri < h) & (ci >= 0) & (ci < w)
-        out = np.zeros(ri.shape, dtype=bool)
+        out = np.zeros(ri.shape, dtype=self.mask.dtype)
         out[inside] = self.mask[ri[inside], ci[inside]]
         return out
 
 
-def _runs_on(floor_at: _LineSampler, u0: float, u1: float, v: float) -> bool:
-    """Is the floor continuous along the line at offset ``v`` from u0 to u1 (cells)?"""
-    n = max(2, math.ceil(abs(u1 - u0)) + 1)
-    u = np.linspace(u0, u1, n)
-    return bool(floor_at(u, np.full(n, v)).all())
+def _ragged(counts: IntArray) -> tuple[IntArray, IntArray]:
+    """For groups of ``counts`` items laid end to end: each item's group and its index in it."""
+    group = np.repeat(np.arange(counts.size), counts)
+    starts = np.cumsum(counts) - counts
+    return group, np.arange(int(counts.sum())) - starts[group]
 
 
-def _through_depth(wall_at: _LineSampler, ua: float, ub: float, v: float, reach: int) -> float:
-    """How deep (cells, across the line at ``v``) the gap between the wall cells at ``ua`` and
-    ``ub`` is: on each side of the line, the shorter of the two jambs' reaches across it (the
-    wall's own thickness at a doorway; a slot's length between two pieces standing in a row).
-    Each jamb's reach is the longest run of wall across the line through its last few cells."""
+def _runs_on(floor_at: _LineSampler[np.bool_], u0: FloatArray, u1: FloatArray, v: FloatArray) -> BoolArray:
+    """Per candidate: is the floor continuous along the line at offset ``v`` from u0 to u1
+    (cells; sampled as ``np.linspace(u0, u1, n)`` with n = the cells spanned, at least 2)?"""
+    n = np.maximum(2, np.ceil(np.abs(u1 - u0)).astype(np.int64) + 1)
+    group, k = _ragged(n)
+    step = (u1 - u0) / (n - 1)
+    u = k.astype(np.float64) * step[group] + u0[group]
+    last = np.cumsum(n) - 1
+    u[last] = u1
+    ok = floor_at(u, v[group])
+    return np.logical_and.reduceat(ok, last - n + 1)
+
+
+def _band_runs(on: BoolArray, reach: int) -> tuple[BoolArray, IntArray, IntArray]:
+    """Per row of ``on`` (samples across the line, the line at index ``reach``): whether a cell
+    of the line's band is set, and the first and last cells of the run of set cells through the
+    band's first set cell."""
+    band = on[..., reach - LINE_BAND_CELLS:reach + LINE_BAND_CELLS + 1]
+    has: BoolArray = np.asarray(band.any(axis=-1))
+    s = (reach - LINE_BAND_CELLS + band.argmax(axis=-1))[..., None]
+    idx = np.arange(on.shape[-1])
+    after = ~on & (idx > s)
+    hi: IntArray = np.where(after.any(axis=-1), after.argmax(axis=-1), on.shape[-1]) - 1
+    before = (~on & (idx < s))[..., ::-1]
+    lo: IntArray = np.where(before.any(axis=-1), on.shape[-1] - 1 - before.argmax(axis=-1), -1) + 1
+    return has, lo, hi
+
+
+def _through_depth(wall_at: _LineSampler[np.bool_], ua: FloatArray, ub: FloatArray, v: FloatArray,
+                   reach: int) -> FloatArray:
+    """Per candidate: how deep (cells, across the line at ``v``) the gap between the wall cells
+    at ``ua`` and ``ub`` is: on each side of the line, the shorter of the two jambs' reaches
+    across it (the wall's own thickness at a doorway; a slot's length between two pieces
+    standing in a row). Each jamb's reach is the longest run of wall across the line through
+    its last few cells."""
     offs = np.arange(-reach, reach + 1, dtype=np.float64)
-    ends = []
-    for us in ((ua, ua - 1.0, ua - 2.0), (ub, ub + 1.0, ub + 2.0)):
-        plus = minus = 0
-        for u in us:
-            col = wall_at(np.full(offs.size, u), v + offs)
-            centre = np.flatnonzero(col[reach - LINE_BAND_CELLS:reach + LINE_BAND_CELLS + 1])
-            if centre.size == 0:
-                continue
-            hi = lo = reach - LINE_BAND_CELLS + int(centre[0])
-            while hi + 1 < col.size and col[hi + 1]:
-                hi += 1
-            while lo > 0 and col[lo - 1]:
-                lo -= 1
-            plus, minus = max(plus, hi - reach), max(minus, reach - lo)
-        ends.append((plus, minus))
-    (pa, ma), (pb, mb) = ends
-    return float(min(pa, pb) + min(ma, mb) + 1)
+    back = np.arange(3, dtype=np.float64)
+    u = np.stack([ua[:, None] - back, ub[:, None] + back], axis=1)  # (candidate, jamb, cell)
+    col = wall_at(u[..., None], (v[:, None] + offs)[:, None, None, :])
+    has, lo, hi = _band_runs(col, reach)
+    plus = np.where(has, hi - reach, 0).max(axis=2, initial=0)
+    minus = np.where(has, reach - lo, 0).max(axis=2, initial=0)
+    return (plus.min(axis=1) + minus.min(axis=1) + 1).astype(np.float64)
 
 
-def _partition_share(wall_at: _LineSampler, floor_at: _LineSampler, u_end: float, sign: float,
-                     v: float, side: int, reach: int, thin: int) -> float:
-    """Of the wall cells on the line at ``v`` over ``side`` cells from ``u_end`` on (towards
-    ``sign``), the share where the wall across the line is at most ``thin`` cells thick with
-    floor just beyond both of its faces (within two cells)."""
-    u = u_end + sign * np.arange(side, dtype=np.float64)
-    offs = np.arange(-reach, reach + 1, dtype=np.float64)
-    uu = np.repeat(u, offs.size)
-    vv = np.tile(v + offs, u.size)
-    w = wall_at(uu, vv).reshape(u.size, offs.size)
-    f = floor_at(uu, vv).reshape(u.size, offs.size)
-    band = slice(reach - LINE_BAND_CELLS, reach + LINE_BAND_CELLS + 1)
-    on = w[:, band].any(axis=1)
-    if not on.any():
-        return 0.0
-    good = 0
-    for i in np.flatnonzero(on).tolist():
-        row = w[i]
-        lo = hi = reach - LINE_BAND_CELLS + int(np.argmax(row[band]))
-        while hi + 1 < row.size and row[hi + 1]:
-            hi += 1
-        while lo > 0 and row[lo - 1]:
-            lo -= 1
-        if hi - lo + 1 <= thin and f[i, max(lo - 2, 0):lo].any() and f[i, hi + 1:hi + 3].any():
-            good += 1
-    return good / int(on.sum())
+def _partition_share(both_at: _LineSampler[np.uint8], u_end: FloatArray, sign: float, v: FloatArray, side: int,
+                     reach: int, thin: int) -> FloatArray:
+    """Per candidate: of the wall cells on the line at ``v`` over ``side`` cells from ``u_end``
+    on (towards ``sign``), the share where the wall across the line is at most ``thin`` cells
+    thick with floor just beyond both of its faces (within two cells); 0 with no wall cell.
+    ``both_at`` reads WALL_BIT and FLOOR_BIT of a cell at once."""
+    u = (u_end[:, None] + sign * np.arange(side, dtype=np.float64))[..., None]
+    vv = (v[:, None] + np.arange(-reach, reach + 1, dtype=np.float64))[:, None, :]
+    both = both_at(u, vv)  # (candidate, cell along, cell across)
+    w, f = (both & WALL_BIT) > 0, (both & FLOOR_BIT) > 0
+    on, lo, hi = _band_runs(w, reach)
+    idx = np.arange(w.shape[-1])
+    floor_before = (f & (idx >= (lo - 2)[..., None]) & (idx < lo[..., None])).any(axis=-1)
+    floor_after = (f & (idx > hi[..., None]) & (idx <= (hi + 2)[..., None])).any(axis=-1)
+    good = (on & (hi - lo + 1 <= thin) & floor_before & floor_after).sum(axis=1)
+    n_on = on.sum(axis=1)
+    return np.where(n_on > 0, good / np.maximum(n_on, 1), 0.0)
 
 
 def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: AnalysisParams,
@@ -229,6 +247,7 @@ def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: An
     reach = math.ceil(2 * params.door_max_depth_m / res) + 2
     rr, cc = np.nonzero(wall)
     rr_f, cc_f = rr.astype(np.float64), cc.astype(np.float64)
+    both = np.where(wall, WALL_BIT, 0).astype(np.uint8) | np.where(floor, FLOOR_BIT, 0).astype(np.uint8)
     out: list[WallGap] = []
     for theta in dirs:
         cos_t, sin_t = math.cos(theta), math.sin(theta)
@@ -239,7 +258,11 @@ def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: An
         # Each wall cell is on the lines within the band across it.
         vv = np.concatenate([v + k for k in range(-LINE_BAND_CELLS, LINE_BAND_CELLS + 1)]) - vmin
         uu = np.tile(u - umin, 2 * LINE_BAND_CELLS + 1)
-        key = np.unique(vv * span + uu)
+        # The distinct (line, position) keys in order: a mark per key, cheaper than np.unique.
+        flat = vv * span + uu
+        seen = np.zeros(int(flat.max()) + 1, dtype=bool)
+        seen[flat] = True
+        key = np.flatnonzero(seen)
         line, pos = np.divmod(key, span)
         gap = np.diff(pos) - 1
         cand = np.flatnonzero((line[1:] == line[:-1]) & (gap >= gmin) & (gap <= gmax))
@@ -256,31 +279,65 @@ def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: An
             continue
         floor_at = _LineSampler(floor, cos_t, sin_t)
         wall_at = _LineSampler(wall, cos_t, sin_t)
-        for i in cand.tolist():
-            v_line = float(line[i] + vmin)
-            ua, ub = float(pos[i] + umin), float(pos[i + 1] + umin)  # the last / next wall cell
-            inner = np.arange(ua + 1.0, ub)
-            if floor_at(inner, np.full(inner.size, v_line)).mean() < GAP_MIN_FLOOR_SHARE:
-                continue
-            # A doorway is as deep as its wall: the slot between two cabinets or desks standing
-            # in a row is as deep as they are.
-            if _through_depth(wall_at, ua, ub, v_line, reach) > max_depth:
-                continue
-            # The wall runs on past both ends as a partition between two spaces: thin, floor
-            # on both sides (an outer wall has unknown outside it, a shelf row or a counter is
-            # thick, a wall with cupboards along it has them on one side only).
-            if min(_partition_share(wall_at, floor_at, ua, -1.0, v_line, side, reach, thin),
-                   _partition_share(wall_at, floor_at, ub, 1.0, v_line, side, reach, thin)) \
-                    < PARTITION_MIN_SHARE:
-                continue
-            mid = (ua + ub) / 2
-            if not all(any(all(_runs_on(floor_at, mid, end, v_line + sign * d) for d in depths)
-                           for end in (ua - past, ub + past))
-                       for sign in (-1.0, 1.0)):
-                continue
-            r2, c2 = floor_at.rc(np.array([ua, ub]), np.full(2, v_line))
-            out.append(WallGap((float(r2[0]), float(c2[0])), (float(r2[1]), float(c2[1])),
-                               (ub - ua - 1) * res))
+        both_at = _LineSampler(both, cos_t, sin_t)
+        for b0 in range(0, cand.size, CANDIDATE_BLOCK):
+            out += _gaps_kept(cand[b0:b0 + CANDIDATE_BLOCK], line, pos, umin, vmin, floor_at, wall_at, both_at,
+                              _GapScales(past, depths, max_depth, thin, reach, side), res)
+    return out
+
+
+@dataclass(frozen=True)
+class _GapScales:
+    """The lengths (cells) a candidate gap is judged with (see :func:`wall_gaps`)."""
+
+    past: float
+    depths: list[float]
+    max_depth: float
+    thin: int
+    reach: int
+    side: int
+
+
+def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: int,
+               floor_at: _LineSampler[np.bool_], wall_at: _LineSampler[np.bool_],
+               both_at: _LineSampler[np.uint8], k: _GapScales, res: float) -> list[WallGap]:
+    """The candidate gaps (between ``pos[i]`` and ``pos[i + 1]`` on ``line[i]``, i in ``cand``)
+    that are doorways between two spaces (see the module doc), all candidates at once."""
+    v_line = (line[cand] + vmin).astype(np.float64)
+    ua, ub = (pos[cand] + umin).astype(np.float64), (pos[cand + 1] + umin).astype(np.float64)  # the last / next wall cell
+    inner = (ub - ua - 1).astype(np.int64)
+    group, step = _ragged(inner)
+    on_floor = floor_at(ua[group] + 1.0 + step, v_line[group])
+    floor_share = np.bincount(group, weights=on_floor, minlength=cand.size) / np.maximum(inner, 1)
+    keep = (inner == 0) | (floor_share >= GAP_MIN_FLOOR_SHARE)
+    # A doorway is as deep as its wall: the slot between two cabinets or desks standing
+    # in a row is as deep as they are.
+    idx = np.flatnonzero(keep)
+    keep[idx] = _through_depth(wall_at, ua[idx], ub[idx], v_line[idx], k.reach) <= k.max_depth
+    # The wall runs on past both ends as a partition between two spaces: thin, floor
+    # on both sides (an outer wall has unknown outside it, a shelf row or a counter is
+    # thick, a wall with cupboards along it has them on one side only).
+    idx = np.flatnonzero(keep)
+    keep[idx] = np.minimum(
+        _partition_share(both_at, ua[idx], -1.0, v_line[idx], k.side, k.reach, k.thin),
+        _partition_share(both_at, ub[idx], 1.0, v_line[idx], k.side, k.reach, k.thin)) \
+        >= PARTITION_MIN_SHARE
+    # On both sides the space runs on along the wall past one of the gap's ends.
+    idx = np.flatnonzero(keep)
+    mid = (ua[idx] + ub[idx]) / 2
+    for sign in (-1.0, 1.0):
+        runs = np.zeros(idx.size, dtype=bool)
+        for end in (ua[idx] - k.past, ub[idx] + k.past):
+            all_depths = np.ones(idx.size, dtype=bool)
+            for d in k.depths:
+                all_depths &= _runs_on(floor_at, mid, end, v_line[idx] + sign * d)
+            runs |= all_depths
+        keep[idx] &= runs
+    out: list[WallGap] = []
+    for i in np.flatnonzero(keep).tolist():
+        r2, c2 = floor_at.rc(np.array([ua[i], ub[i]]), np.full(2, v_line[i]))
+        out.append(WallGap((float(r2[0]), float(c2[0])), (float(r2[1]), float(c2[1])),
+                           float((ub[i] - ua[i] - 1) * res)))
     return out
 
 
