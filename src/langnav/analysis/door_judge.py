@@ -59,6 +59,9 @@ CENTRE_SLACK_M: Final = 0.25
 #: How far through a candidate (m, each side) its free width is followed: beyond a wall's
 #: thickness plus a passage's length, a constriction is a passage whatever follows.
 THROUGH_LOOK_M: Final = 1.5
+#: Free runs across a candidate are first followed this many samples each way (most end within
+#: a wall's thickness of it); only the longer ones are followed across the whole look.
+FIRST_LOOK_SAMPLES: Final = 16
 
 #: A jamb's wall carries on along the opening's line with occupied cells on at least this share
 #: of a wall's length (scanned walls have holes: glass, dark surfaces, grazing rays) ...
@@ -127,23 +130,40 @@ def free_widths(free: BoolArray, center_rc: tuple[float, float], normal_rc: tupl
                 resolution_m: float, look_m: float) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """Offsets t (m) along the normal through ``center_rc`` and, at each, the free width (m)
     along the tangent of the run of ``free`` cells through that point (0 where it is not free)."""
-    nr, nc = normal_rc
-    tr, tc = -nc, nr
     k = math.ceil(look_m / resolution_m / _STEP_CELLS)
     t = np.arange(-k, k + 1) * _STEP_CELLS
     s_max = math.ceil(2.0 * look_m / resolution_m / _STEP_CELLS)
     s = np.arange(-s_max, s_max + 1) * _STEP_CELLS
+    # The run through s = 0: up to the first blocked sample on each side. Most runs end near the
+    # line (in a wall's thickness); only the rows whose run leaves a first, narrow strip of
+    # samples are sampled across the whole look.
+    near = min(s_max, FIRST_LOOK_SAMPLES)
+    n_right, n_left, on = _runs_through_zero(free, center_rc, t, s[s_max - near:s_max + near + 1], normal_rc)
+    far = (n_right > near) | (n_left > near)
+    if far.any():
+        n_right[far], n_left[far], on[far] = _runs_through_zero(free, center_rc, t[far], s, normal_rc)
+    width = np.where(on, (n_right + n_left - 1) * _STEP_CELLS * resolution_m, 0.0)
+    return np.asarray(t * resolution_m, dtype=np.float64), np.asarray(width, dtype=np.float64)
+
+
+def _runs_through_zero(free: BoolArray, center_rc: tuple[float, float], t: npt.NDArray[np.floating],
+                       s: npt.NDArray[np.floating], normal_rc: tuple[float, float]
+                       ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64], BoolArray]:
+    """For each offset ``t`` along the normal: the free samples from s = 0 (the middle of the
+    symmetric ``s``) on along the tangent and back (the free run's two halves, each counting
+    s = 0; a half that reaches the end of ``s`` counts one more than its samples), and whether
+    s = 0 is free."""
+    nr, nc = normal_rc
+    tr, tc = -nc, nr
     rows = center_rc[0] + t[:, None] * nr + s[None, :] * tr
     cols = center_rc[1] + t[:, None] * nc + s[None, :] * tc
     ok = _sample(free, rows, cols, outside=False)
-    mid = s_max
-    # The run through s = 0: up to the first blocked sample on each side.
+    mid = (s.size - 1) // 2
     right = ok[:, mid:]
     left = ok[:, mid::-1]
     n_right = np.where(right.all(axis=1), right.shape[1], np.argmin(right, axis=1))
     n_left = np.where(left.all(axis=1), left.shape[1], np.argmin(left, axis=1))
-    width = np.where(ok[:, mid], (n_right + n_left - 1) * _STEP_CELLS * resolution_m, 0.0)
-    return np.asarray(t * resolution_m, dtype=np.float64), np.asarray(width, dtype=np.float64)
+    return n_right.astype(np.int64), n_left.astype(np.int64), np.asarray(ok[:, mid], dtype=bool)
 
 
 def constriction_depth(t_m: npt.NDArray[np.float64], width_m: npt.NDArray[np.float64],

@@ -87,17 +87,23 @@ class WallGap:
     width_m: float
 
 
-def _line_score(rows: FloatArray, cols: FloatArray, deg: float) -> float:
+def _line_score(rows: FloatArray, neg_cols: FloatArray, deg: float, buf: tuple[FloatArray, FloatArray]) -> float:
     """How well the cells line up along ``deg`` and its right angle: the sum of squared counts
     of cells per one-cell line across each direction (a wall along a direction puts its cells
-    on few lines), over the number of cells."""
+    on few lines), over the number of cells. ``neg_cols``: the cells' columns negated; ``buf``:
+    two scratch arrays of their size."""
     t = math.radians(deg)
-    score = 0.0
+    score = 0
+    a, b = buf
     for c, s in ((math.cos(t), math.sin(t)), (-math.sin(t), math.cos(t))):
-        v = np.rint(-cols * s + rows * c).astype(np.int64)
-        counts = np.bincount(v - v.min())
-        score += float((counts.astype(np.float64) ** 2).sum())
-    return score / rows.size
+        np.multiply(neg_cols, s, out=a)
+        np.multiply(rows, c, out=b)
+        np.add(a, b, out=a)
+        v = np.rint(a, out=a).astype(np.intp)
+        v -= v.min()
+        counts = np.bincount(v)
+        score += int(np.dot(counts, counts))  # exact: integers
+    return float(score) / rows.size
 
 
 def dominant_directions(wall: BoolArray) -> list[float]:
@@ -117,7 +123,9 @@ def dominant_directions(wall: BoolArray) -> list[float]:
         rr, cc = rr[pick], cc[pick]
     rows, cols = rr.astype(np.float64), cc.astype(np.float64)
     grid_deg = np.arange(0.0, 90.0, DIRECTION_BIN_DEG)
-    score = np.array([_line_score(rows, cols, d) for d in grid_deg])
+    neg_cols = -cols
+    buf = (np.empty_like(rows), np.empty_like(rows))
+    score = np.array([_line_score(rows, neg_cols, d, buf) for d in grid_deg])
     base = float(score.min())
     peaks = np.flatnonzero((score >= np.roll(score, 1)) & (score > np.roll(score, -1)))
     peaks = peaks[np.argsort(-score[peaks])]
@@ -127,7 +135,7 @@ def dominant_directions(wall: BoolArray) -> list[float]:
             break
         # Refined to a tenth of a bin around the peak.
         fine = grid_deg[p] + np.linspace(-DIRECTION_BIN_DEG, DIRECTION_BIN_DEG, 21)
-        deg = float(fine[int(np.argmax([_line_score(rows, cols, d) for d in fine]))] % 90.0)
+        deg = float(fine[int(np.argmax([_line_score(rows, neg_cols, d, buf) for d in fine]))] % 90.0)
         if all(min(abs(deg - t) % 90.0, 90.0 - abs(deg - t) % 90.0) >= DIRECTION_MIN_SEPARATION_DEG
                for t in taken):
             taken.append(deg)
@@ -341,26 +349,34 @@ def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: i
     return out
 
 
-def _draw(out: BoolArray, a_rc: tuple[float, float], b_rc: tuple[float, float], band: float) -> None:
-    """Set the cells of the segment a-b, ``band`` cells either side of it, in ``out``."""
-    (ra, ca), (rb, cb) = a_rc, b_rc
-    h, w = out.shape
-    length = math.hypot(rb - ra, cb - ca)
-    t = np.linspace(0.0, 1.0, max(2, math.ceil(2 * length) + 1))
-    nr, nc = ((cb - ca) / length, -(rb - ra) / length) if length > 0 else (0.0, 0.0)  # across
-    for off in np.arange(-band, band + 0.25, 0.5):
-        r = np.rint(ra + (rb - ra) * t + nr * off).astype(np.int64)
-        c = np.rint(ca + (cb - ca) * t + nc * off).astype(np.int64)
-        inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
-        out[r[inside], c[inside]] = True
-
-
 def closure_mask(gaps: list[WallGap], floor: BoolArray) -> BoolArray:
     """The floor cells that close ``gaps``: each gap's segment, from one end's wall cell to the
-    other's, drawn a band of cells thick (a flood must not slip through diagonally)."""
+    other's, drawn a band of LINE_BAND_CELLS either side of it (a flood must not slip through
+    diagonally), sampled every half cell along and across it; all gaps at once."""
     out = np.zeros(floor.shape, dtype=bool)
-    for g in gaps:
-        _draw(out, g.end_a_rc, g.end_b_rc, LINE_BAND_CELLS)
+    if not gaps:
+        return out
+    h, w = floor.shape
+    ends = np.array([(*g.end_a_rc, *g.end_b_rc) for g in gaps])
+    ra, ca, rb, cb = ends[:, 0], ends[:, 1], ends[:, 2], ends[:, 3]
+    lengths = [math.hypot(g.end_b_rc[0] - g.end_a_rc[0], g.end_b_rc[1] - g.end_a_rc[1]) for g in gaps]
+    n = np.array([max(2, math.ceil(2 * length) + 1) for length in lengths], dtype=np.int64)
+    length = np.array(lengths)
+    long = length > 0
+    safe = np.where(long, length, 1.0)
+    nr = np.where(long, (cb - ca) / safe, 0.0)  # across
+    nc = np.where(long, -(rb - ra) / safe, 0.0)
+    # Along each segment: np.linspace(0, 1, n) of its own n, for all segments at once.
+    group, k = _ragged(n)
+    t = k.astype(np.float64) * (1.0 / (n - 1))[group]
+    t[np.cumsum(n) - 1] = 1.0
+    ra_g, ca_g, nr_g, nc_g = ra[group], ca[group], nr[group], nc[group]
+    dr_t, dc_t = (rb - ra)[group] * t, (cb - ca)[group] * t
+    for off in np.arange(-LINE_BAND_CELLS, LINE_BAND_CELLS + 0.25, 0.5):
+        r = np.rint(ra_g + dr_t + nr_g * off).astype(np.int64)
+        c = np.rint(ca_g + dc_t + nc_g * off).astype(np.int64)
+        inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
+        out[r[inside], c[inside]] = True
     return out & floor
 
 
