@@ -450,3 +450,39 @@ def test_cart_narrowing_a_corridor_is_a_passage() -> None:
     (p,) = passages_of(b.build(source="corridor_cart"))
     assert p.center == pytest.approx((5.75, 0.425), abs=0.06)
     assert p.width_m == pytest.approx(0.85, abs=0.051)
+
+
+def passages_with_door(grid: OccupancyGrid, door: Door) -> tuple:
+    """The passages of ``grid`` (free components as spaces) with one door found in it."""
+    labels, n = labels_for_free_components(grid)
+    layers = GridLayers(grid)
+    return find_passages(grid, P, labels, {k: f"space_{k}" for k in range(1, n + 1)}, [door],
+                         layers.occupied | layers.unknown, layers=layers)
+
+
+def test_a_door_found_in_a_gap_between_furniture_leaves_the_passage() -> None:
+    # The segmentation may read the wardrobe-desk gap as a door (at its north mouth): between two
+    # things with parallel faces, deeper than any wall, it is no door; the passage stays.
+    door = Door(id="door_1", center=(3.35, 2.7), width_m=0.7, jambs=((3.0, 2.7), (3.7, 2.7)),
+                normal=(0.0, 1.0), connects=("space_1", "space_2"))
+    (p,) = passages_with_door(furniture_row(0.7), door)
+    assert p.center == pytest.approx((3.35, 2.35), abs=0.06)
+
+
+def test_a_room_narrowing_to_its_door_is_the_doors_approach() -> None:
+    # A 4 x 4 m room whose walls close in on its 0.7 m east door: a thick wall piece north of
+    # the door (x 3-4, y 2.4-4) and a slanted wall south of it (its face rising from y 1.4 at
+    # x 3 to 1.7 at the door): a pinch from 1.0 m to the door's 0.7 m, deep on both sides but
+    # no squeeze between parallel faces. With the door found there, it is the door's approach.
+    b = MapBuilder(10.0, 6.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 8.0, 4.0)
+    b.rect(3.85, 0.0, 4.0, 1.7, OCCUPIED).rect(3.0, 2.4, 4.0, 4.0, OCCUPIED)
+    for k in range(17):
+        x = 3.0 + 0.05 * k
+        b.rect(x, 0.0, x + 0.05, 1.4 + (x - 3.0) * 0.3 / 0.85, OCCUPIED)
+    grid = b.build(source="room_to_door")
+    door = Door(id="door_1", center=(3.925, 2.05), width_m=0.7, jambs=((3.925, 1.7), (3.925, 2.4)),
+                normal=(1.0, 0.0), connects=("space_1", "space_2"))
+    assert passages_with_door(grid, door) == ()
+    # Control: the same squeeze with no door found is a way between the two rooms.
+    assert len(passages_of(grid)) == 1

@@ -12,7 +12,8 @@ passage with a door off it), solid ones (walls, furniture, a shelf's unscanned i
 laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
 unexplored area), leads somewhere (both mouths open into free space wider than any passage: a
 dead-end slot does not), is not a door's own gap (a door across its middle; a door at one of its
-mouths is how it is entered), and is
+mouths is how it is entered; a door found in a squeeze between two things with parallel faces,
+deeper than any wall, is no door), and is
 
 * clearly longer than wide (``PASSAGE_MIN_ELONGATION``: an aisle, a checkout lane, a corridor),
   except a strip between a wall and a thing one can walk round (a pallet), which is one only when
@@ -83,6 +84,10 @@ TWO_SIDED_DIRECTIONS: Final = 8
 #: squeeze's width) along this share of the samples there, and the thing beside it ends (open
 #: along as much).
 WALL_RUNS_ON_SHARE: Final = 0.7
+#: A squeeze between two things runs between their faces: parallel, its width varying along it by
+#: no more than this (m; scan noise on the two faces), not a pinch between a corner and a slanted
+#: wall, as where a room narrows to its door.
+PARALLEL_SPREAD_M: Final = 0.15
 #: ... sampled this far past each mouth (m): a wall, not the corner of a jamb.
 WALL_RUN_M: Final = 0.6
 #: ... and the thing is deeper than a wall is thick (door_max_depth_m): blocked along this share
@@ -276,6 +281,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             elongated = length_m >= PASSAGE_MIN_ELONGATION * width_m
             corridor_like = length_m >= params.hallway_min_elongation * width_m
             squeeze = False
+            thing: int | None = None
             if not corridor_like:
                 # (A short one needs the wall on past both of its mouths: it is a squeeze along a
                 # wall, not round the end of one.)
@@ -300,12 +306,17 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             centre = (float(cx), float(cy))
             ax_w = np.subtract(grid.grid_to_world(r0 + centre_g[1] + axis[1], c0 + centre_g[0] + axis[0]), centre)
             axis_w = (float(ax_w[0]), float(ax_w[1]))
-            # A door found in a squeeze is no door: its sides are deeper than a wall is thick along
-            # and across the way (a gap between furniture, not an opening in a wall).
-            if any(_is_the_door(d, centre, axis_w, length_m, width_m, params) for d in doors):
-                continue
-            if not elongated and any(math.dist(d.center, centre) <= length_m / 2 + params.door_max_depth_m
-                                     for d in doors):
+            # A door found across a squeeze between two things with parallel faces is no door:
+            # its sides are deeper than a wall is thick along and across the way (a gap in a row
+            # of furniture, between a bed and a trolley: not an opening in a wall, and no room
+            # ends there). Otherwise a door across the way is the passage's own gap, and a short
+            # gap with a door at it is that door's opening (a door leaf, open along the way,
+            # lengthens its jamb; a room narrowing to its door is the door's approach).
+            between_things = squeeze and thing is None and _parallel(sides[bounded], res)
+            if not between_things and (
+                    any(_is_the_door(d, centre, axis_w, length_m, width_m, params) for d in doors)
+                    or (not elongated and any(math.dist(d.center, centre) <= length_m / 2 + params.door_max_depth_m
+                                              for d in doors))):
                 continue
             ends_w: list[tuple[float, float]] = []
             spaces: list[str] = []
@@ -328,6 +339,15 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             two_r, two_c = _two_sided(sub, long_r, long_c, dist_of[d2[long_r, long_c]] / res, SIDE_TOL_M / res)
             pieces = [(pr, pc, None) for pr, pc in _pieces(two_r, two_c, sub.shape, min_cells)]
     return tuple(passages)
+
+
+def _parallel(sides: npt.NDArray[np.float64], res: float) -> bool:
+    """Do the two sides of a stretch (per point, the distances in cells to either side, both
+    finite) run parallel: its width varies along it by no more than ``PARALLEL_SPREAD_M`` (or two
+    cells: a cell of scan noise on each face) between the 10th and 90th percentiles?"""
+    w = sides.sum(axis=1) * res
+    lo, hi = np.quantile(w, [0.1, 0.9])
+    return bool(hi - lo <= max(PARALLEL_SPREAD_M, 2.0 * res))
 
 
 def _beside_a_wall(open_: BoolArray, centre_g: npt.NDArray[np.float64], axis: npt.NDArray[np.float64],
