@@ -97,18 +97,21 @@ def _line_scores(rows: FloatArray, neg_cols: FloatArray, degs: FloatArray) -> Fl
     surroundings), one at a time when they are many (the arrays stay in cache)."""
     n = rows.size
     block = max(1, SCORE_BLOCK_ELEMENTS // n)
+    # Every line number lies within +-reach (|cos|, |sin| <= 1; rows and columns are >= 0):
+    # shifted by reach, each direction of a block counts into its own span of bins.
+    reach = math.ceil(float(rows.max()) - float(neg_cols.min())) + 1
+    span = 2 * reach + 1
     out = np.empty(len(degs))
     for b0 in range(0, len(degs), block):
         ts = [math.radians(float(d)) for d in degs[b0:b0 + block]]
+        shift = (reach + np.arange(len(ts)) * span)[:, None]
         total = np.zeros(len(ts), dtype=np.int64)
         for c, s in (([math.cos(t) for t in ts], [math.sin(t) for t in ts]),
                      ([-math.sin(t) for t in ts], [math.cos(t) for t in ts])):
             x = neg_cols[None, :] * np.array(s)[:, None]
             x += rows[None, :] * np.array(c)[:, None]
             v = np.rint(x, out=x).astype(np.intp)
-            v -= v.min(axis=1, keepdims=True)
-            span = int(v.max()) + 1
-            v += (np.arange(len(ts)) * span)[:, None]  # one bincount for the block
+            v += shift
             counts = np.bincount(v.ravel(), minlength=len(ts) * span).reshape(len(ts), span)
             total += (counts * counts).sum(axis=1)  # exact: integers
         out[b0:b0 + len(ts)] = total.astype(np.float64) / n
@@ -169,8 +172,11 @@ class _LineSampler(Generic[_Cell]):
         ri, ci = np.rint(r).astype(np.int64), np.rint(c).astype(np.int64)
         h, w = self.mask.shape
         inside = (ri >= 0) & (ri < h) & (ci >= 0) & (ci < w)
-        out = np.zeros(ri.shape, dtype=self.mask.dtype)
-        out[inside] = self.mask[ri[inside], ci[inside]]
+        # Read every sample (clipped onto the grid), then zero those off it.
+        np.clip(ri, 0, h - 1, out=ri)
+        np.clip(ci, 0, w - 1, out=ci)
+        out = self.mask[ri, ci]
+        out *= inside
         return out
 
 
