@@ -40,7 +40,7 @@ import numpy.typing as npt
 
 from langnav.analysis.params import AnalysisParams
 from langnav.analysis.precompute import truncated_sq_edt
-from langnav.analysis.seg_doors import RawDoor
+from langnav.analysis.seg_doors import SEEN_FLOOR_MIN_M, RawDoor
 from langnav.analysis.wall_lines import dominant_directions
 
 BoolArray = npt.NDArray[np.bool_]
@@ -72,9 +72,6 @@ JAMB_BAND_M: Final = 0.1
 #: A jamb's wall may leave the jamb-to-jamb line by up to this angle (degrees): ragged wall
 #: ends over a door's width tilt that short baseline; a corner (90 degrees) is no run-on wall.
 ALONG_MAX_TURN_DEG: Final = 25
-#: Seen floor: a free cell at least this far (m) from unscanned cells (a fan of laser rays is
-#: free streaks a few cells wide with unknown between them).
-SEEN_FLOOR_MIN_M: Final = 0.25
 #: Beyond an opening, the place it opens onto is looked at from a wall's thickness ...
 BEYOND_FROM_M: Final = 0.3
 #: ... to this far (m) ...
@@ -359,5 +356,5 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
     return doors, rest
 
 
-__all__ = ["DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "judge_doors",
+__all__ = ["SEEN_FLOOR_MIN_M", "DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "judge_doors",
            "line_turn_deg"]
