@@ -486,3 +486,30 @@ def test_a_room_narrowing_to_its_door_is_the_doors_approach() -> None:
     assert passages_with_door(grid, door) == ()
     # Control: the same squeeze with no door found is a way between the two rooms.
     assert len(passages_of(grid)) == 1
+
+
+def test_a_door_found_along_a_cart_in_a_corridor_leaves_the_passage() -> None:
+    # The 1.5 m cart narrowing the corridor, with a door found at the squeeze's east mouth: a
+    # doorway is shorter than it is wide; a squeeze along a thing, longer than wide, is none.
+    b = MapBuilder(14.0, 3.8, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 12.0, 1.8)
+    b.box(5.0, 0.85, 6.5, 1.8).unknown(5.05, 0.9, 6.45, 1.75)
+    door = Door(id="door_1", center=(6.5, 0.425), width_m=0.85, jambs=((6.5, 0.0), (6.5, 0.85)),
+                normal=(1.0, 0.0), connects=("space_1", "space_2"))
+    (p,) = passages_with_door(b.build(source="corridor_cart"), door)
+    assert p.center == pytest.approx((5.75, 0.425), abs=0.06)
+
+
+def test_a_door_found_at_the_end_of_a_thick_partition_is_that_door() -> None:
+    # A 0.6 m thick partition across an 8 x 6 m room stops 0.9 m short of the south wall: the
+    # opening is shorter than it is wide. With a door found there it is that door, no passage
+    # (unfound, it is the only way past the partition: a squeeze).
+    b = MapBuilder(10.0, 8.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 8.0, 6.0)
+    b.rect(3.0, 0.9, 3.6, 6.0, OCCUPIED)
+    grid = b.build(source="thick_partition")
+    door = Door(id="door_1", center=(3.3, 0.45), width_m=0.9, jambs=((3.3, 0.0), (3.3, 0.9)),
+                normal=(1.0, 0.0), connects=("space_1", "space_2"))
+    assert passages_with_door(grid, door) == ()
+    (p,) = passages_of(grid)
+    assert p.center == pytest.approx((3.3, 0.45), abs=0.06)

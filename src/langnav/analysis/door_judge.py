@@ -40,7 +40,7 @@ import numpy.typing as npt
 
 from langnav.analysis.params import AnalysisParams
 from langnav.analysis.precompute import truncated_sq_edt
-from langnav.analysis.seg_doors import RawDoor
+from langnav.analysis.seg_doors import SEEN_FLOOR_MIN_M, RawDoor
 from langnav.analysis.wall_lines import dominant_directions
 
 BoolArray = npt.NDArray[np.bool_]
@@ -72,9 +72,6 @@ JAMB_BAND_M: Final = 0.1
 #: A jamb's wall may leave the jamb-to-jamb line by up to this angle (degrees): ragged wall
 #: ends over a door's width tilt that short baseline; a corner (90 degrees) is no run-on wall.
 ALONG_MAX_TURN_DEG: Final = 25
-#: Seen floor: a free cell at least this far (m) from unscanned cells (a fan of laser rays is
-#: free streaks a few cells wide with unknown between them).
-SEEN_FLOOR_MIN_M: Final = 0.25
 #: Beyond an opening, the place it opens onto is looked at from a wall's thickness ...
 BEYOND_FROM_M: Final = 0.3
 #: ... to this far (m) ...
@@ -121,9 +118,11 @@ def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np
     c = np.floor(cols).astype(np.int64)
     h, w = mask.shape
     inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
-    out = np.full(rows.shape, outside, dtype=bool)
-    out[inside] = mask[r[inside], c[inside]]
-    return out
+    # Read every sample (clipped onto the grid), then set those off it: no masked indexing.
+    np.clip(r, 0, h - 1, out=r)
+    np.clip(c, 0, w - 1, out=c)
+    got = np.asarray(mask[r, c], dtype=bool)
+    return got | ~inside if outside else got & inside
 
 
 def free_widths(free: BoolArray, center_rc: tuple[float, float], normal_rc: tuple[float, float],
@@ -357,5 +356,5 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
     return doors, rest
 
 
-__all__ = ["DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "judge_doors",
+__all__ = ["SEEN_FLOOR_MIN_M", "DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "judge_doors",
            "line_turn_deg"]

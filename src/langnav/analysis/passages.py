@@ -306,14 +306,17 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             centre = (float(cx), float(cy))
             ax_w = np.subtract(grid.grid_to_world(r0 + centre_g[1] + axis[1], c0 + centre_g[0] + axis[0]), centre)
             axis_w = (float(ax_w[0]), float(ax_w[1]))
-            # A door found across a squeeze between two things with parallel faces is no door:
+            # A door found across or at a squeeze between two things with parallel faces is no door:
             # its sides are deeper than a wall is thick along and across the way (a gap in a row
             # of furniture, between a bed and a trolley: not an opening in a wall, and no room
             # ends there). Otherwise a door across the way is the passage's own gap, and a short
             # gap with a door at it is that door's opening (a door leaf, open along the way,
             # lengthens its jamb; a room narrowing to its door is the door's approach).
-            between_things = squeeze and thing is None and _parallel(sides[bounded], res)
-            if not between_things and (
+            # So is one found along a squeeze past a thing beside a wall, at least as long as it
+            # is wide (a housekeeping cart in a corridor): a doorway is shorter than it is wide
+            # (walls are thinner than door_max_depth_m, doors wider than door_min_width_m).
+            no_door = squeeze and _parallel(sides[bounded], res) and (thing is None or length_m >= width_m)
+            if not no_door and (
                     any(_is_the_door(d, centre, axis_w, length_m, width_m, params) for d in doors)
                     or (not elongated and any(math.dist(d.center, centre) <= length_m / 2 + params.door_max_depth_m
                                               for d in doors))):

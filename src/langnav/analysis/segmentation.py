@@ -250,7 +250,7 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     raw_wide = [d for d in between if d.width_m > widest]
     peaks = label_max(labels, fl.clearance_m)  # the widest clearance of each space
     raw_doors += openings_to_unknown(labels, fl.floor, exterior, occupied,
-                                     fl.clearance_m, res, params, peaks)
+                                     fl.clearance_m, res, params, peaks, known=between)
     # Only openings cut in a wall are doors (door_judge); the others between two spaces are
     # still ways between them.
     raw_doors, not_doors = judge_doors(raw_doors, fl.free, occupied & ~fl.floor, res, params, unknown=unknown)
