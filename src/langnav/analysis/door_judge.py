@@ -118,9 +118,11 @@ def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np
     c = np.floor(cols).astype(np.int64)
     h, w = mask.shape
     inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
-    out = np.full(rows.shape, outside, dtype=bool)
-    out[inside] = mask[r[inside], c[inside]]
-    return out
+    # Read every sample (clipped onto the grid), then set those off it: no masked indexing.
+    np.clip(r, 0, h - 1, out=r)
+    np.clip(c, 0, w - 1, out=c)
+    got = np.asarray(mask[r, c], dtype=bool)
+    return got | ~inside if outside else got & inside
 
 
 def free_widths(free: BoolArray, center_rc: tuple[float, float], normal_rc: tuple[float, float],

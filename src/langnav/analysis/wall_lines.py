@@ -53,6 +53,8 @@ DIRECTION_BIN_DEG: Final = 1.0
 DIRECTION_MAX_CELLS: Final = 20_000
 #: Candidate gaps judged together (their samples across the line in one array: bounded memory).
 CANDIDATE_BLOCK: Final = 256
+#: Directions are scored together up to this many cells times directions (arrays in cache).
+SCORE_BLOCK_ELEMENTS: Final = 32_768
 #: Bits of the cell code that reads the wall and the floor masks with one lookup.
 WALL_BIT: Final = 1
 FLOOR_BIT: Final = 2
@@ -108,30 +110,40 @@ class WallGap:
     width_m: float
 
 
-def _line_score(rows: FloatArray, neg_cols: FloatArray, deg: float, buf: tuple[FloatArray, FloatArray]) -> float:
-    """How well the cells line up along ``deg`` and its right angle: the sum of squared counts
-    of cells per one-cell line across each direction (a wall along a direction puts its cells
-    on few lines), over the number of cells. ``neg_cols``: the cells' columns negated; ``buf``:
-    two scratch arrays of their size."""
-    t = math.radians(deg)
-    score = 0
-    a, b = buf
-    for c, s in ((math.cos(t), math.sin(t)), (-math.sin(t), math.cos(t))):
-        np.multiply(neg_cols, s, out=a)
-        np.multiply(rows, c, out=b)
-        np.add(a, b, out=a)
-        v = np.rint(a, out=a).astype(np.intp)
-        v -= v.min()
-        counts = np.bincount(v)
-        score += int(np.dot(counts, counts))  # exact: integers
-    return float(score) / rows.size
+def _line_scores(rows: FloatArray, neg_cols: FloatArray, degs: FloatArray) -> FloatArray:
+    """How well the cells line up along each direction of ``degs`` and its right angle: the sum
+    of squared counts of cells per one-cell line across each direction (a wall along a direction
+    puts its cells on few lines), over the number of cells. ``neg_cols``: the cells' columns
+    negated. Several directions are scored in one array when the cells are few (a door's
+    surroundings), one at a time when they are many (the arrays stay in cache)."""
+    n = rows.size
+    block = max(1, SCORE_BLOCK_ELEMENTS // n)
+    # Every line number lies within +-reach (|cos|, |sin| <= 1; rows and columns are >= 0):
+    # shifted by reach, each direction of a block counts into its own span of bins.
+    reach = math.ceil(float(rows.max()) - float(neg_cols.min())) + 1
+    span = 2 * reach + 1
+    out = np.empty(len(degs))
+    for b0 in range(0, len(degs), block):
+        ts = [math.radians(float(d)) for d in degs[b0:b0 + block]]
+        shift = (reach + np.arange(len(ts)) * span)[:, None]
+        total = np.zeros(len(ts), dtype=np.int64)
+        for c, s in (([math.cos(t) for t in ts], [math.sin(t) for t in ts]),
+                     ([-math.sin(t) for t in ts], [math.cos(t) for t in ts])):
+            x = neg_cols[None, :] * np.array(s)[:, None]
+            x += rows[None, :] * np.array(c)[:, None]
+            v = np.rint(x, out=x).astype(np.intp)
+            v += shift
+            counts = np.bincount(v.ravel(), minlength=len(ts) * span).reshape(len(ts), span)
+            total += (counts * counts).sum(axis=1)  # exact: integers
+        out[b0:b0 + len(ts)] = total.astype(np.float64) / n
+    return out
 
 
 def dominant_directions(wall: BoolArray) -> list[float]:
     """The building's wall directions (radians in the (col, row) plane, in [0, pi)), main first.
 
     Each candidate direction modulo 90 degrees (a right-angled plan: a direction and its right
-    angle together) is scored by how many wall cells line up along it (:func:`_line_score`,
+    angle together) is scored by how many wall cells line up along it (:func:`_line_scores`,
     a Hough transform's peak in short); the best one, refined, is the building's; other
     peaks nearly as strong (a wing at an angle) are directions too. The edge directions of
     the cells themselves would not do: a wall's pixel staircase turns them towards 45 degrees.
@@ -145,8 +157,7 @@ def dominant_directions(wall: BoolArray) -> list[float]:
     rows, cols = rr.astype(np.float64), cc.astype(np.float64)
     grid_deg = np.arange(0.0, 90.0, DIRECTION_BIN_DEG)
     neg_cols = -cols
-    buf = (np.empty_like(rows), np.empty_like(rows))
-    score = np.array([_line_score(rows, neg_cols, d, buf) for d in grid_deg])
+    score = _line_scores(rows, neg_cols, grid_deg)
     base = float(score.min())
     peaks = np.flatnonzero((score >= np.roll(score, 1)) & (score > np.roll(score, -1)))
     peaks = peaks[np.argsort(-score[peaks])]
@@ -156,7 +167,7 @@ def dominant_directions(wall: BoolArray) -> list[float]:
             break
         # Refined to a tenth of a bin around the peak.
         fine = grid_deg[p] + np.linspace(-DIRECTION_BIN_DEG, DIRECTION_BIN_DEG, 21)
-        deg = float(fine[int(np.argmax([_line_score(rows, neg_cols, d, buf) for d in fine]))] % 90.0)
+        deg = float(fine[int(np.argmax(_line_scores(rows, neg_cols, fine)))] % 90.0)
         if all(min(abs(deg - t) % 90.0, 90.0 - abs(deg - t) % 90.0) >= DIRECTION_MIN_SEPARATION_DEG
                for t in taken):
             taken.append(deg)
@@ -182,8 +193,11 @@ class _LineSampler(Generic[_Cell]):
         ri, ci = np.rint(r).astype(np.int64), np.rint(c).astype(np.int64)
         h, w = self.mask.shape
         inside = (ri >= 0) & (ri < h) & (ci >= 0) & (ci < w)
-        out = np.zeros(ri.shape, dtype=self.mask.dtype)
-        out[inside] = self.mask[ri[inside], ci[inside]]
+        # Read every sample (clipped onto the grid), then zero those off it.
+        np.clip(ri, 0, h - 1, out=ri)
+        np.clip(ci, 0, w - 1, out=ci)
+        out = self.mask[ri, ci]
+        out *= inside
         return out
 
 
