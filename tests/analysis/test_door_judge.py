@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 import pytest
-from analysis_maps import POS_TOL_M
+from analysis_maps import POS_TOL_M, door_near, space_at
 from scipy import ndimage as ndi
 
 from langnav.analysis.door_judge import (
@@ -18,6 +18,7 @@ from langnav.analysis.door_judge import (
     floor_beyond,
     free_widths,
     is_door,
+    line_turn_deg,
 )
 from langnav.analysis.params import DEFAULT_PARAMS
 from langnav.analysis.segmentation import UNKNOWN_ID, Segmentation, segment_spaces
@@ -145,3 +146,56 @@ def test_beyond_a_door_lies_seen_floor_beyond_a_gap_to_a_ray_fan_only_streaks() 
     centre, normal = (float(r), float(c)), (0.0, 1.0)  # normal along +x: room -> fan
     assert floor_beyond(free, far, centre, normal, -1.0, grid.resolution_m) >= 0.9
     assert floor_beyond(free, far, centre, normal, 1.0, grid.resolution_m) < BEYOND_MIN_FLOOR_SHARE
+
+
+def double_doors() -> OccupancyGrid:
+    """Two 5 m x 4 m rooms side by side, a wall 0.1 m thick between them with a 1.8 m double
+    door at y = 2, and a 1.8 m double door at y = 2 in the east room's outer wall onto the
+    unscanned outside."""
+    b = MapBuilder(14.0, 6.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 5.0, 4.0).room(5.1, 0.0, 10.0, 4.0)
+    b.door_v(5.05, 2.0, 1.8, depth_m=0.2).door_v(10.05, 2.0, 1.8, depth_m=0.2)
+    return b.build("double doors")
+
+
+def test_a_double_door_cut_in_a_wall_is_a_door() -> None:
+    """A double door (1.8 m: wider than a single door, within door_wide_max_width_m) in a wall
+    is a door a person points at, between the two rooms and from the east room to the outside."""
+    grid = double_doors()
+    seg = segment_spaces(grid)
+    west, east = space_at(seg, grid, 2.5, 2.0), space_at(seg, grid, 7.5, 2.0)
+    assert west.id != east.id
+    assert len(seg.doors) == 2 and not seg.openings
+    inner, outer = door_near(seg.doors, 5.05, 2.0), door_near(seg.doors, 10.05, 2.0)
+    assert set(inner.connects) == {west.id, east.id}
+    assert outer.connects == (east.id, UNKNOWN_ID)
+    for d in (inner, outer):
+        assert d.width_m == pytest.approx(1.8, abs=POS_TOL_M)
+
+
+def slanted_gap() -> OccupancyGrid:
+    """An 8 m x 4 m floor parted by a partition along x = 4 from its north wall down to y = 2; the
+    east room's south-west corner holds a closet (1 m x 1.4 m, never scanned inside: its faces are
+    wall) whose corner stands 0.6 m east and 0.6 m south of the partition's end. The way between
+    the rooms is the slanted gap from the partition's end to the closet's corner."""
+    b = MapBuilder(10.0, 6.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 8.0, 4.0)
+    b.wall(4.0, 4.0, 4.0, 2.0)
+    b.rect(4.55, -0.05, 5.65, 1.45, OCCUPIED).unknown(4.6, 0.0, 5.6, 1.4)
+    return b.build("slanted gap")
+
+
+def test_a_slanted_gap_between_a_walls_end_and_a_corner_is_no_door() -> None:
+    """The gap runs at 45 degrees to every wall around it: it is cut in no wall, so it is a way
+    between the two rooms (an opening), not a door."""
+    grid = slanted_gap()
+    seg = segment_spaces(grid)
+    west, east = space_at(seg, grid, 2.0, 3.0), space_at(seg, grid, 6.5, 3.0)
+    assert west.id != east.id
+    assert seg.doors == ()
+    gap = door_near(seg.openings, 4.3, 1.7, tol=0.2)
+    assert set(gap.connects) == {west.id, east.id}
+    # The evidence says why: the line from jamb to jamb turns 45 degrees from the walls'.
+    r, c = grid.world_to_cell(4.3, 1.7)
+    assert line_turn_deg(grid.cells == OCCUPIED, (float(r), float(c)), math.radians(45.0),
+                         grid.resolution_m) == pytest.approx(45.0, abs=3.0)

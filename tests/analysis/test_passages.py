@@ -385,3 +385,131 @@ def test_a_door_in_a_side_wall_leads_off_the_passage() -> None:
     (p,) = found(door((0.0, 1.0)))
     assert p.center == pytest.approx((4.25, 1.45), abs=0.06)
     assert found(door((1.0, 0.0))) == ()
+
+
+def corridor_squeeze(bed_to_wall: bool = True) -> OccupancyGrid:
+    """A 12 x 2.4 m corridor (x 0..12, y 0..2.4) between two 3 x 3 m rooms at its ends, joined
+    to them over its whole width; a 2.0 x 0.75 m parked bed against its south wall (x 5.0..7.0,
+    y 0..0.75; outline scanned, inside unknown) and a 1.0 x 0.75 m trolley against its north wall
+    (x 5.5..6.5, y 1.65..2.4) leave a 0.9 m squeeze between them (x 5.5..6.5). ``bed_to_wall``
+    False: the bed stands 0.9 m off the south wall (y 0.9..1.65), so one walks round it."""
+    b = MapBuilder(14.0, 4.4, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 12.0, 2.4)
+    y0 = 0.0 if bed_to_wall else 0.9
+    b.box(5.0, y0, 7.0, y0 + 0.75).unknown(5.05, y0 + 0.05, 6.95, y0 + 0.7)
+    if bed_to_wall:
+        b.box(5.5, 1.65, 6.5, 2.4).unknown(5.55, 1.7, 6.45, 2.35)
+    return b.build(source=f"corridor_squeeze_{bed_to_wall}")
+
+
+def test_squeeze_between_two_things_in_a_corridor_is_a_passage() -> None:
+    # Shorter than twice its width (1.0 x 0.9 m), between two things deeper than any wall (no
+    # doorway), and the only way along the corridor: a person points at it.
+    (p,) = passages_of(corridor_squeeze())
+    assert p.center == pytest.approx((6.0, 1.2), abs=0.06)
+    assert p.width_m == pytest.approx(0.9, abs=0.051)
+    assert p.length_m == pytest.approx(1.0, abs=0.15)
+
+
+def test_gap_between_two_things_one_walks_round_is_no_passage() -> None:
+    # The bed stands off the wall: there is a way round it; the gap beside it is not the way.
+    assert passages_of(corridor_squeeze(bed_to_wall=False)) == ()
+
+
+def furniture_row(depth_m: float) -> OccupancyGrid:
+    """A 7 x 5 m room split by a row of furniture ``depth_m`` deep across it (y 2.0..2.0+depth),
+    from the west wall to x 3.0 and from x 3.7 to the east wall: a 0.7 m gap between a wardrobe
+    and a desk (``depth_m`` 0.7), or a doorway in a partition wall (0.15)."""
+    b = MapBuilder(9.0, 7.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 7.0, 5.0)
+    b.rect(0.0, 2.0, 3.0, 2.0 + depth_m, OCCUPIED)
+    b.rect(3.7, 2.0, 7.0, 2.0 + depth_m, OCCUPIED)
+    return b.build(source=f"furniture_row_{depth_m}")
+
+
+def test_gap_in_a_row_of_furniture_across_a_room_is_a_passage() -> None:
+    # A wardrobe and a desk, 0.7 m deep, with a 0.7 m gap: the way between the room's two parts,
+    # between things deeper than any wall.
+    (p,) = passages_of(furniture_row(0.7))
+    assert p.center == pytest.approx((3.35, 2.35), abs=0.06)
+    assert p.width_m == pytest.approx(0.7, abs=0.051)
+
+
+def test_doorway_in_a_partition_is_no_passage() -> None:
+    # The same gap in a 0.15 m partition wall is a doorway (a door's business), not a passage.
+    assert passages_of(furniture_row(0.15)) == ()
+
+
+def test_cart_narrowing_a_corridor_is_a_passage() -> None:
+    # A 1.8 m corridor narrowed to 0.85 m by a 1.5 m long housekeeping cart against its north
+    # wall: wider than a standard door's clear width, yet a squeeze a person points at (the way
+    # it narrows is twice as wide).
+    b = MapBuilder(14.0, 3.8, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 12.0, 1.8)
+    b.box(5.0, 0.85, 6.5, 1.8).unknown(5.05, 0.9, 6.45, 1.75)
+    (p,) = passages_of(b.build(source="corridor_cart"))
+    assert p.center == pytest.approx((5.75, 0.425), abs=0.06)
+    assert p.width_m == pytest.approx(0.85, abs=0.051)
+
+
+def passages_with_door(grid: OccupancyGrid, door: Door) -> tuple:
+    """The passages of ``grid`` (free components as spaces) with one door found in it."""
+    labels, n = labels_for_free_components(grid)
+    layers = GridLayers(grid)
+    return find_passages(grid, P, labels, {k: f"space_{k}" for k in range(1, n + 1)}, [door],
+                         layers.occupied | layers.unknown, layers=layers)
+
+
+def test_a_door_found_in_a_gap_between_furniture_leaves_the_passage() -> None:
+    # The segmentation may read the wardrobe-desk gap as a door (at its north mouth): between two
+    # things with parallel faces, deeper than any wall, it is no door; the passage stays.
+    door = Door(id="door_1", center=(3.35, 2.7), width_m=0.7, jambs=((3.0, 2.7), (3.7, 2.7)),
+                normal=(0.0, 1.0), connects=("space_1", "space_2"))
+    (p,) = passages_with_door(furniture_row(0.7), door)
+    assert p.center == pytest.approx((3.35, 2.35), abs=0.06)
+
+
+def test_a_room_narrowing_to_its_door_is_the_doors_approach() -> None:
+    # A 4 x 4 m room whose walls close in on its 0.7 m east door: a thick wall piece north of
+    # the door (x 3-4, y 2.4-4) and a slanted wall south of it (its face rising from y 1.4 at
+    # x 3 to 1.7 at the door): a pinch from 1.0 m to the door's 0.7 m, deep on both sides but
+    # no squeeze between parallel faces. With the door found there, it is the door's approach.
+    b = MapBuilder(10.0, 6.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 8.0, 4.0)
+    b.rect(3.85, 0.0, 4.0, 1.7, OCCUPIED).rect(3.0, 2.4, 4.0, 4.0, OCCUPIED)
+    for k in range(17):
+        x = 3.0 + 0.05 * k
+        b.rect(x, 0.0, x + 0.05, 1.4 + (x - 3.0) * 0.3 / 0.85, OCCUPIED)
+    grid = b.build(source="room_to_door")
+    door = Door(id="door_1", center=(3.925, 2.05), width_m=0.7, jambs=((3.925, 1.7), (3.925, 2.4)),
+                normal=(1.0, 0.0), connects=("space_1", "space_2"))
+    assert passages_with_door(grid, door) == ()
+    # Control: the same squeeze with no door found is a way between the two rooms.
+    assert len(passages_of(grid)) == 1
+
+
+def test_a_door_found_along_a_cart_in_a_corridor_leaves_the_passage() -> None:
+    # The 1.5 m cart narrowing the corridor, with a door found at the squeeze's east mouth: a
+    # doorway is shorter than it is wide; a squeeze along a thing, longer than wide, is none.
+    b = MapBuilder(14.0, 3.8, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 12.0, 1.8)
+    b.box(5.0, 0.85, 6.5, 1.8).unknown(5.05, 0.9, 6.45, 1.75)
+    door = Door(id="door_1", center=(6.5, 0.425), width_m=0.85, jambs=((6.5, 0.0), (6.5, 0.85)),
+                normal=(1.0, 0.0), connects=("space_1", "space_2"))
+    (p,) = passages_with_door(b.build(source="corridor_cart"), door)
+    assert p.center == pytest.approx((5.75, 0.425), abs=0.06)
+
+
+def test_a_door_found_at_the_end_of_a_thick_partition_is_that_door() -> None:
+    # A 0.6 m thick partition across an 8 x 6 m room stops 0.9 m short of the south wall: the
+    # opening is shorter than it is wide. With a door found there it is that door, no passage
+    # (unfound, it is the only way past the partition: a squeeze).
+    b = MapBuilder(10.0, 8.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 8.0, 6.0)
+    b.rect(3.0, 0.9, 3.6, 6.0, OCCUPIED)
+    grid = b.build(source="thick_partition")
+    door = Door(id="door_1", center=(3.3, 0.45), width_m=0.9, jambs=((3.3, 0.0), (3.3, 0.9)),
+                normal=(1.0, 0.0), connects=("space_1", "space_2"))
+    assert passages_with_door(grid, door) == ()
+    (p,) = passages_of(grid)
+    assert p.center == pytest.approx((3.3, 0.45), abs=0.06)

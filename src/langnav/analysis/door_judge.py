@@ -11,6 +11,12 @@ thickness the free width along the wall widens into the space beyond. The mouth 
 way between two wings) stays as narrow for longer than any wall is thick: a narrow passage or a
 corridor continuing, not a door.
 
+*A door lies along its wall.* Walls run along a few directions (the building's, or a wing's
+at an angle), and a door is a gap in one: the line from jamb to jamb runs along a direction of
+the walls around it, give or take the tilt of ragged jambs. A slanted gap, from the end of one
+wall to the corner of another (a wall's end beside an unscanned corner, a ray leaking past a
+wall's end into the next room), is in no wall.
+
 *A door's jambs are wall.* Each end of the opening is the end of a wall that carries on along
 the opening's line (scanned, occupied cells for a wall's length, allowing for the holes a scan
 leaves in walls), or a wall the opening's wall abuts, crossing its line (a door beside a room's
@@ -31,10 +37,11 @@ from typing import Final
 
 import numpy as np
 import numpy.typing as npt
-from scipy import ndimage as ndi
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.seg_doors import RawDoor
+from langnav.analysis.precompute import truncated_sq_edt
+from langnav.analysis.seg_doors import SEEN_FLOOR_MIN_M, RawDoor
+from langnav.analysis.wall_lines import dominant_directions
 
 BoolArray = npt.NDArray[np.bool_]
 
@@ -52,6 +59,9 @@ CENTRE_SLACK_M: Final = 0.25
 #: How far through a candidate (m, each side) its free width is followed: beyond a wall's
 #: thickness plus a passage's length, a constriction is a passage whatever follows.
 THROUGH_LOOK_M: Final = 1.5
+#: Free runs across a candidate are first followed this many samples each way (most end within
+#: a wall's thickness of it); only the longer ones are followed across the whole look.
+FIRST_LOOK_SAMPLES: Final = 16
 
 #: A jamb's wall carries on along the opening's line with occupied cells on at least this share
 #: of a wall's length (scanned walls have holes: glass, dark surfaces, grazing rays) ...
@@ -62,9 +72,6 @@ JAMB_BAND_M: Final = 0.1
 #: A jamb's wall may leave the jamb-to-jamb line by up to this angle (degrees): ragged wall
 #: ends over a door's width tilt that short baseline; a corner (90 degrees) is no run-on wall.
 ALONG_MAX_TURN_DEG: Final = 25
-#: Seen floor: a free cell at least this far (m) from unscanned cells (a fan of laser rays is
-#: free streaks a few cells wide with unknown between them).
-SEEN_FLOOR_MIN_M: Final = 0.25
 #: Beyond an opening, the place it opens onto is looked at from a wall's thickness ...
 BEYOND_FROM_M: Final = 0.3
 #: ... to this far (m) ...
@@ -80,6 +87,9 @@ JAMB_REACH_M: Final = 0.3
 #: ... or the jamb is a wall crossing the opening's line: occupied on at least this share of a
 #: wall's length on both sides of the line (a T or a corner the door stands beside).
 JAMB_ACROSS_MIN_SHARE: Final = 0.8
+#: The walls around a door, whose directions its line must follow: those within this distance
+#: (m) of it (the room or corridor it opens from; a wing at an angle has its own directions).
+LOCAL_WALLS_M: Final = 3.0
 
 
 @dataclass(frozen=True)
@@ -95,6 +105,9 @@ class DoorEvidence:
     #: occupied; and the smaller of the same shares along the normal's two directions.
     along: tuple[float, float]
     across: tuple[float, float]
+    #: The angle (degrees) between the line from jamb to jamb and the nearest direction of the
+    #: walls around the opening (0 where there are no jambs or no walls to tell).
+    line_turn_deg: float = 0.0
 
 
 def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np.float64],
@@ -105,32 +118,51 @@ def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np
     c = np.floor(cols).astype(np.int64)
     h, w = mask.shape
     inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
-    out = np.full(rows.shape, outside, dtype=bool)
-    out[inside] = mask[r[inside], c[inside]]
-    return out
+    # Read every sample (clipped onto the grid), then set those off it: no masked indexing.
+    np.clip(r, 0, h - 1, out=r)
+    np.clip(c, 0, w - 1, out=c)
+    got = np.asarray(mask[r, c], dtype=bool)
+    return got | ~inside if outside else got & inside
 
 
 def free_widths(free: BoolArray, center_rc: tuple[float, float], normal_rc: tuple[float, float],
                 resolution_m: float, look_m: float) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """Offsets t (m) along the normal through ``center_rc`` and, at each, the free width (m)
     along the tangent of the run of ``free`` cells through that point (0 where it is not free)."""
-    nr, nc = normal_rc
-    tr, tc = -nc, nr
     k = math.ceil(look_m / resolution_m / _STEP_CELLS)
     t = np.arange(-k, k + 1) * _STEP_CELLS
     s_max = math.ceil(2.0 * look_m / resolution_m / _STEP_CELLS)
     s = np.arange(-s_max, s_max + 1) * _STEP_CELLS
+    # The run through s = 0: up to the first blocked sample on each side. Most runs end near the
+    # line (in a wall's thickness); only the rows whose run leaves a first, narrow strip of
+    # samples are sampled across the whole look.
+    near = min(s_max, FIRST_LOOK_SAMPLES)
+    n_right, n_left, on = _runs_through_zero(free, center_rc, t, s[s_max - near:s_max + near + 1], normal_rc)
+    far = (n_right > near) | (n_left > near)
+    if far.any():
+        n_right[far], n_left[far], on[far] = _runs_through_zero(free, center_rc, t[far], s, normal_rc)
+    width = np.where(on, (n_right + n_left - 1) * _STEP_CELLS * resolution_m, 0.0)
+    return np.asarray(t * resolution_m, dtype=np.float64), np.asarray(width, dtype=np.float64)
+
+
+def _runs_through_zero(free: BoolArray, center_rc: tuple[float, float], t: npt.NDArray[np.floating],
+                       s: npt.NDArray[np.floating], normal_rc: tuple[float, float]
+                       ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64], BoolArray]:
+    """For each offset ``t`` along the normal: the free samples from s = 0 (the middle of the
+    symmetric ``s``) on along the tangent and back (the free run's two halves, each counting
+    s = 0; a half that reaches the end of ``s`` counts one more than its samples), and whether
+    s = 0 is free."""
+    nr, nc = normal_rc
+    tr, tc = -nc, nr
     rows = center_rc[0] + t[:, None] * nr + s[None, :] * tr
     cols = center_rc[1] + t[:, None] * nc + s[None, :] * tc
     ok = _sample(free, rows, cols, outside=False)
-    mid = s_max
-    # The run through s = 0: up to the first blocked sample on each side.
+    mid = (s.size - 1) // 2
     right = ok[:, mid:]
     left = ok[:, mid::-1]
     n_right = np.where(right.all(axis=1), right.shape[1], np.argmin(right, axis=1))
     n_left = np.where(left.all(axis=1), left.shape[1], np.argmin(left, axis=1))
-    width = np.where(ok[:, mid], (n_right + n_left - 1) * _STEP_CELLS * resolution_m, 0.0)
-    return np.asarray(t * resolution_m, dtype=np.float64), np.asarray(width, dtype=np.float64)
+    return n_right.astype(np.int64), n_left.astype(np.int64), np.asarray(ok[:, mid], dtype=bool)
 
 
 def constriction_depth(t_m: npt.NDArray[np.float64], width_m: npt.NDArray[np.float64],
@@ -188,12 +220,19 @@ def wall_share(occupied: BoolArray, start_rc: tuple[float, float], direction_rc:
                resolution_m: float, length_m: float, band_m: float) -> float:
     """Share of the steps along ``direction_rc`` from ``start_rc`` (up to ``length_m``) with an
     occupied cell within ``band_m`` either side of the line (walls are not ruled lines)."""
-    dr, dc = direction_rc
-    s = np.arange(_STEP_CELLS, length_m / resolution_m + 1e-9, _STEP_CELLS)
-    b = np.arange(-band_m / resolution_m, band_m / resolution_m + 1e-9, _STEP_CELLS)
-    rows = start_rc[0] + s[:, None] * dr - b[None, :] * dc
-    cols = start_rc[1] + s[:, None] * dc + b[None, :] * dr
-    return float(_sample(occupied, rows, cols, outside=False).any(axis=1).mean())
+    return float(wall_shares(occupied, start_rc, [direction_rc], resolution_m, length_m, band_m)[0])
+
+
+def wall_shares(occupied: BoolArray, start_rc: tuple[float, float], directions_rc: list[tuple[float, float]],
+                resolution_m: float, length_m: float, band_m: float) -> npt.NDArray[np.float64]:
+    """:func:`wall_share` along each of ``directions_rc``, all at once."""
+    dr = np.array([d[0] for d in directions_rc])[:, None, None]
+    dc = np.array([d[1] for d in directions_rc])[:, None, None]
+    s = np.arange(_STEP_CELLS, length_m / resolution_m + 1e-9, _STEP_CELLS)[None, :, None]
+    b = np.arange(-band_m / resolution_m, band_m / resolution_m + 1e-9, _STEP_CELLS)[None, None, :]
+    rows = start_rc[0] + s * dr - b * dc
+    cols = start_rc[1] + s * dc + b * dr
+    return np.asarray(_sample(occupied, rows, cols, outside=False).any(axis=2).mean(axis=1), dtype=np.float64)
 
 
 def _turned(dr: float, dc: float, angle: float) -> tuple[float, float]:
@@ -226,17 +265,32 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     # across a ragged boundary, often slanted).
     n = math.hypot(r2 - r1, c2 - c1) or 1.0
     tr, tc = (r2 - r1) / n, (c2 - c1) / n
+    turn = line_turn_deg(occupied, center_rc, math.atan2(tr, tc), resolution_m)
     nr, nc = tc, -tr
     along: list[float] = []
     across: list[float] = []
     for jamb, sign in (((r1, c1), -1.0), ((r2, c2), 1.0)):
         # The wall runs on along (nearly) the opening's line: jamb to jamb is a short baseline
         # across ragged wall ends, so the wall may leave it at a small angle.
-        along.append(max(wall_share(occupied, jamb, _turned(sign * tr, sign * tc, a), resolution_m, wall_m, band_m)
-                         for a in _ALONG_ANGLES))
-        across.append(min(wall_share(occupied, jamb, (nr, nc), resolution_m, wall_m, band_m),
-                          wall_share(occupied, jamb, (-nr, -nc), resolution_m, wall_m, band_m)))
-    return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]), across=(across[0], across[1]))
+        shares = wall_shares(occupied, jamb, [*(_turned(sign * tr, sign * tc, a) for a in _ALONG_ANGLES),
+                                              (nr, nc), (-nr, -nc)], resolution_m, wall_m, band_m)
+        along.append(float(shares[:-2].max()))
+        across.append(float(shares[-2:].min()))
+    return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]),
+                        across=(across[0], across[1]), line_turn_deg=turn)
+
+
+def line_turn_deg(occupied: BoolArray, center_rc: tuple[float, float], line_rad: float,
+                  resolution_m: float) -> float:
+    """The angle (degrees, 0-45) between a line through ``center_rc`` at ``line_rad`` (in the
+    (col, row) plane) and the nearest direction of the walls within LOCAL_WALLS_M of it (0 when
+    there are too few to tell)."""
+    rad = math.ceil(LOCAL_WALLS_M / resolution_m)
+    r, c = math.floor(center_rc[0]), math.floor(center_rc[1])
+    dirs = dominant_directions(occupied[max(0, r - rad):r + rad + 1, max(0, c - rad):c + rad + 1])
+    if not dirs:
+        return 0.0
+    return math.degrees(min(abs((line_rad - q + math.pi / 2) % math.pi - math.pi / 2) for q in dirs))
 
 
 def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool) -> bool:
@@ -251,6 +305,9 @@ def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool) -> boo
         if ev.constriction_back_m > params.door_max_depth_m / 2 + params.passage_min_length_m:
             return False
     elif ev.constriction_m > params.door_max_depth_m + params.passage_min_length_m:
+        return False
+    # Along a wall: the opening's line follows the walls' direction.
+    if ev.line_turn_deg > ALONG_MAX_TURN_DEG:
         return False
     # Both jambs are wall.
     return all(a >= JAMB_ALONG_MIN_SHARE or x >= JAMB_ACROSS_MIN_SHARE
@@ -282,7 +339,10 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
     rest: list[RawDoor] = []
     far: BoolArray | None = None
     if unknown is not None and unknown.any() and candidates:
-        far = np.asarray(ndi.distance_transform_edt(~unknown) * resolution_m >= SEEN_FLOOR_MIN_M)
+        # Only distances up to SEEN_FLOOR_MIN_M matter: the exact truncated transform (bit for
+        # bit the full one's distances up to its bound; farther cells read farther).
+        bound = math.ceil(SEEN_FLOOR_MIN_M / resolution_m) + 1
+        far = np.sqrt(truncated_sq_edt(~unknown, bound).astype(np.float64)) * resolution_m >= SEEN_FLOOR_MIN_M
     for d in candidates:
         ev = evidence(free, occupied, d.center_rc, d.normal_rc, d.width_m, resolution_m, params)
         ok = is_door(ev, params, into_unknown=d.b == 0)
@@ -296,4 +356,5 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
     return doors, rest
 
 
-__all__ = ["DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "judge_doors"]
+__all__ = ["SEEN_FLOOR_MIN_M", "DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "judge_doors",
+           "line_turn_deg"]

@@ -14,6 +14,11 @@ class AnalysisParams:
     #: Door openings are between these widths (a narrow interior door to a double door).
     door_min_width_m: float = 0.55
     door_max_width_m: float = 1.6
+    #: ... and a door a person points at may be wider still when it is cut in a wall: a double
+    #: door, an open office front or a shop's sliding doors are up to this wide (m). Openings
+    #: between door_max_width_m and this are doors when door_judge finds them in a wall, else
+    #: openings; the flood's saddles still use door_max_width_m.
+    door_wide_max_width_m: float = 2.0
     #: A wall is at most this thick; door jambs are found within this depth.
     door_max_depth_m: float = 0.45
     #: Narrow passages: clear width between 2 x robot radius and this, longer than a door is deep.

@@ -12,13 +12,16 @@ passage with a door off it), solid ones (walls, furniture, a shelf's unscanned i
 laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
 unexplored area), leads somewhere (both mouths open into free space wider than any passage: a
 dead-end slot does not), is not a door's own gap (a door across its middle; a door at one of its
-mouths is how it is entered), and is
+mouths is how it is entered; a door found in a squeeze between two things with parallel faces,
+deeper than any wall, is no door), and is
 
 * clearly longer than wide (``PASSAGE_MIN_ELONGATION``: an aisle, a checkout lane, a corridor),
   except a strip between a wall and a thing one can walk round (a pallet), which is one only when
   as elongated as a corridor (an aisle along a shelf); or
-* a short squeeze between a wall and a piece of furniture deeper than any wall (a sofa, not a
-  door leaf) that is the only way from one side to the other.
+* a short squeeze, longer than a wall is thick, that is the only way from one side to the other,
+  between a wall and a thing deeper than any wall (a sofa, a housekeeping cart: not a door leaf)
+  or between two such things (a parked bed and a trolley in a corridor, a wardrobe and a desk
+  across a room): its sides are no wall with a doorway in it.
 
 A passage along a wall (between the wall and a long shelf) shares its skeleton line with the
 one-sided strip along the rest of the room's walls: a core without sides along most of its length
@@ -81,9 +84,10 @@ TWO_SIDED_DIRECTIONS: Final = 8
 #: squeeze's width) along this share of the samples there, and the thing beside it ends (open
 #: along as much).
 WALL_RUNS_ON_SHARE: Final = 0.7
-#: A short squeeze is tighter than this (m; a standard interior door's clear width): as wide as
-#: a door, a short gap is walked through like one, nothing a person calls tight.
-SQUEEZE_MAX_WIDTH_M: Final = 0.8
+#: A squeeze between two things runs between their faces: parallel, its width varying along it by
+#: no more than this (m; scan noise on the two faces), not a pinch between a corner and a slanted
+#: wall, as where a room narrows to its door.
+PARALLEL_SPREAD_M: Final = 0.15
 #: ... sampled this far past each mouth (m): a wall, not the corner of a jamb.
 WALL_RUN_M: Final = 0.6
 #: ... and the thing is deeper than a wall is thick (door_max_depth_m): blocked along this share
@@ -267,36 +271,55 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             centre_g = mean + 0.5 * (lo + hi) * axis
             # Short (less than PASSAGE_MIN_ELONGATION times longer than wide), it is a gap: in a
             # wall line (a door's business), between two objects or beside one (walked round).
-            # Except a squeeze between a wall and a thing standing beside it (the wall runs on
-            # past both mouths, the other side ends at both), a thing deeper than any wall or
-            # door leaf (a sofa, a cupboard: not a jamb with its door open along the way), that
-            # is the only way from one side to the other: a person points at that.
+            # Except a squeeze past things deeper than any wall or door leaf (a sofa, a cart, a
+            # wardrobe: not a jamb with its door open along the way), beside a wall that runs on
+            # past both mouths or between two of them, that is the only way from one side to the
+            # other: a person points at that, up to the widest passage (a corridor narrowed to
+            # 0.9 m by a parked bed is a squeeze, however wide a door may be).
             # Between a wall and a thing one can walk round (a pallet, a cabinet), a strip is a
             # way of its own only when it is as elongated as a corridor (an aisle along a shelf).
             elongated = length_m >= PASSAGE_MIN_ELONGATION * width_m
             corridor_like = length_m >= params.hallway_min_elongation * width_m
+            squeeze = False
+            thing: int | None = None
             if not corridor_like:
                 # (A short one needs the wall on past both of its mouths: it is a squeeze along a
                 # wall, not round the end of one.)
                 thing = _beside_a_wall(sub, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res, WALL_RUN_M / res,
                                        both_mouths=not elongated)
-                if not elongated and (
-                        thing is None or width_m >= SQUEEZE_MAX_WIDTH_M
-                        or not _deep(sub, pts[bounded], np.array([-axis[1], axis[0]]) * (2 * thing - 1),
-                                     sides[bounded, thing], params.door_max_depth_m / res)):
-                    continue
-                if thing is not None and _way_round(fits, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res):
+                if not elongated:
+                    normal = np.array([-axis[1], axis[0]])
+                    depth = params.door_max_depth_m / res
+                    sides_deep = [_deep(sub, pts[bounded], normal * (2 * j - 1), sides[bounded, j], depth)
+                                  for j in (0, 1)]
+                    # A squeeze past a thing deeper than a wall beside a wall that runs on, or
+                    # between two such things (a parked bed and a trolley in a corridor, a
+                    # wardrobe and a desk across a room): longer than a wall is thick
+                    # (passage_min_length_m) with both sides solid, it is no doorway.
+                    squeeze = sides_deep[thing] if thing is not None else all(sides_deep)
+                    if not squeeze:
+                        continue
+                if (thing is not None or squeeze) and _way_round(fits, centre_g, axis, (hi - lo + 1.0) / 2.0,
+                                                                 width_m / res):
                     continue
             cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
             centre = (float(cx), float(cy))
             ax_w = np.subtract(grid.grid_to_world(r0 + centre_g[1] + axis[1], c0 + centre_g[0] + axis[0]), centre)
             axis_w = (float(ax_w[0]), float(ax_w[1]))
-            if any(_is_the_door(d, centre, axis_w, length_m, width_m, params) for d in doors):
-                continue
-            # A short squeeze with a door at it is that door's opening (a door leaf, open along
-            # the way, lengthens its jamb).
-            if not elongated and any(math.dist(d.center, centre) <= length_m / 2 + params.door_max_depth_m
-                                     for d in doors):
+            # A door found across or at a squeeze between two things with parallel faces is no door:
+            # its sides are deeper than a wall is thick along and across the way (a gap in a row
+            # of furniture, between a bed and a trolley: not an opening in a wall, and no room
+            # ends there). Otherwise a door across the way is the passage's own gap, and a short
+            # gap with a door at it is that door's opening (a door leaf, open along the way,
+            # lengthens its jamb; a room narrowing to its door is the door's approach).
+            # So is one found along a squeeze past a thing beside a wall, at least as long as it
+            # is wide (a housekeeping cart in a corridor): a doorway is shorter than it is wide
+            # (walls are thinner than door_max_depth_m, doors wider than door_min_width_m).
+            no_door = squeeze and _parallel(sides[bounded], res) and (thing is None or length_m >= width_m)
+            if not no_door and (
+                    any(_is_the_door(d, centre, axis_w, length_m, width_m, params) for d in doors)
+                    or (not elongated and any(math.dist(d.center, centre) <= length_m / 2 + params.door_max_depth_m
+                                              for d in doors))):
                 continue
             ends_w: list[tuple[float, float]] = []
             spaces: list[str] = []
@@ -319,6 +342,15 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             two_r, two_c = _two_sided(sub, long_r, long_c, dist_of[d2[long_r, long_c]] / res, SIDE_TOL_M / res)
             pieces = [(pr, pc, None) for pr, pc in _pieces(two_r, two_c, sub.shape, min_cells)]
     return tuple(passages)
+
+
+def _parallel(sides: npt.NDArray[np.float64], res: float) -> bool:
+    """Do the two sides of a stretch (per point, the distances in cells to either side, both
+    finite) run parallel: its width varies along it by no more than ``PARALLEL_SPREAD_M`` (or two
+    cells: a cell of scan noise on each face) between the 10th and 90th percentiles?"""
+    w = sides.sum(axis=1) * res
+    lo, hi = np.quantile(w, [0.1, 0.9])
+    return bool(hi - lo <= max(PARALLEL_SPREAD_M, 2.0 * res))
 
 
 def _beside_a_wall(open_: BoolArray, centre_g: npt.NDArray[np.float64], axis: npt.NDArray[np.float64],

@@ -391,7 +391,7 @@ def approximate_polygon(coords: npt.NDArray[np.float64], tolerance: float) -> np
             break
         # The first point at the maximum of each segment that splits.
         at_top = np.flatnonzero((d == top[seg]) & split[seg])
-        first_hit = np.r_[True, seg[at_top[1:]] != seg[at_top[:-1]]]
+        first_hit = np.concatenate(([True], seg[at_top[1:]] != seg[at_top[:-1]]))
         new = idx[at_top[first_hit]]
         chain[new] = True
         starts = np.concatenate([starts[split], new])

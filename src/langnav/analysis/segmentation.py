@@ -87,6 +87,15 @@ ROW_OF_CLUTTER_MIN_GAPS: Final = 4
 #: ... and when the gaps lie on one line: their centres within this distance (m, rms) of it,
 #: half an interior wall's thickness.
 ROW_OF_CLUTTER_MAX_OFF_LINE_M: Final = 0.15
+#: A space with at least this many doorways and openings, corridor-narrow wall to wall, is a
+#: hallway even when it is short for its width (an entrance hall, a flat's hallway, a ward
+#: corridor with a nurse station bay): a space that serves that many others is walked through;
+#: a room has a door or two (an en-suite, a second way out), rarely four.
+HALLWAY_MIN_DOORWAYS: Final = 4
+#: Pockets a space encloses count as its floor, when its width is measured wall to wall, up to
+#: this share of its area: furniture takes a small part of a room (a bed, a counter, a row of
+#: shelves); the block a corridor runs around (a stair or lift core) is a large part of it.
+FURNITURE_MAX_SHARE: Final = 0.2
 #: Id used in ``Door.connects`` for unexplored territory.
 UNKNOWN_ID: Final = "unknown"
 #: Openings between two spaces narrower than the robot can pass (``door_min_width_m``) but at
@@ -223,13 +232,13 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     passable = params.door_min_width_m - res
     # Wider than a double door: a gap in a wall line that bounds two spaces (an arch, an open
     # front), an opening between them but no door a person would count.
-    widest = params.door_max_width_m + res
+    widest = max(params.door_max_width_m, params.door_wide_max_width_m) + res
     raw_doors = [d for d in between if passable <= d.width_m <= widest]
     raw_narrow = [d for d in between if d.width_m < passable]
     raw_wide = [d for d in between if d.width_m > widest]
     peaks = label_max(labels, fl.clearance_m)  # the widest clearance of each space
     raw_doors += openings_to_unknown(labels, fl.floor, exterior, occupied,
-                                     fl.clearance_m, res, params, peaks)
+                                     fl.clearance_m, res, params, peaks, known=between)
     # Only openings cut in a wall are doors (door_judge); the others between two spaces are
     # still ways between them.
     raw_doors, not_doors = judge_doors(raw_doors, fl.free, occupied & ~fl.floor, res, params, unknown=unknown)
@@ -526,7 +535,8 @@ def _typical_widths(labels: npt.NDArray[np.int32], clearance_m: npt.NDArray[np.f
 
 def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: float, openings: int,
                    whole_width: Callable[[], float], res: float, params: AnalysisParams,
-                   whole_wide_share: Callable[[], float] = lambda: 0.0) -> tuple[ElementKind, float, float]:
+                   whole_wide_share: Callable[[], float] = lambda: 0.0,
+                   whole_typical: Callable[[], float] = lambda: 0.0) -> tuple[ElementKind, float, float]:
     """Hallway or room, with (length, width).
 
     A hallway is walked through (not a dead end entered through one doorway, unless it is
@@ -534,7 +544,10 @@ def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: 
     inscribed circle (furniture was taken out of the floor's clearance already), or, when a
     junction or an alcove widens it here and there, for its typical width (the median width
     along its centre line) if it has two openings or more, is many times longer than that
-    typical width and has little floor wider than a corridor. Its width is the one it was judged on; length = area / width.
+    typical width and has little floor wider than a corridor; or, with many doorways off it
+    (``HALLWAY_MIN_DOORWAYS``), longer than wide for that typical width. Either way its typical
+    width wall to wall (``whole_typical()``, furniture as floor) is a corridor's too. Its width
+    is the one it was judged on; length = area / width.
     ``whole_width()``: the widest inscribed circle of the whole space, its furniture and
     unscanned patches included; ``whole_wide_share()``: the share of the whole space farther
     than half a hallway's width from its edge (an open-plan floor's desk clusters narrow its
@@ -557,21 +570,48 @@ def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: 
             return ElementKind.HALLWAY, area_m2 / peak_width, peak_width
     typical = max(min(typical_m, peak_width), res)
     # Judged on its typical width, a space must also be walked through (two openings or more):
-    # an open floor's aisles between its desks and shelves are as narrow as a corridor.
+    # an open floor's aisles between its desks and shelves are as narrow as a corridor, and a
+    # room's bed or table narrows the floor around it; wall to wall (furniture and shelf rows
+    # counted as floor), neither is corridor-narrow.
     if typical_m > 0 and openings >= 2 and typical <= params.hallway_max_width_m \
-            and area_m2 / typical >= params.hallway_long_elongation * typical \
-            and wide_share <= params.hallway_max_wide_share \
-            and whole_wide_share() <= params.hallway_max_wide_share:
-        return ElementKind.HALLWAY, area_m2 / typical, typical
+            and wide_share <= params.hallway_max_wide_share:
+        long = area_m2 / typical >= params.hallway_long_elongation * typical
+        # A space that many others open onto is walked through: it need only be longer than
+        # it is wide, as a corridor is (an entrance hall, a ward corridor with a bay).
+        serves = openings >= HALLWAY_MIN_DOORWAYS \
+            and area_m2 / typical >= params.hallway_min_elongation * typical
+        if (long or serves) and whole_wide_share() <= params.hallway_max_wide_share \
+                and whole_typical() <= params.hallway_max_width_m:
+            return ElementKind.HALLWAY, area_m2 / typical, typical
     return ElementKind.ROOM, area_m2 / peak_width, peak_width
 
 
-def _whole_width(mask: npt.NDArray[np.bool_], res: float) -> float:
-    """The widest inscribed circle (m) of a whole space (furniture and unscanned patches in its
-    mask included), on a coarser copy when it is large (a corridor network spans the map)."""
+def _wall_to_wall(mask: npt.NDArray[np.bool_], res: float, max_pocket_m2: float
+                  ) -> tuple[npt.NDArray[np.bool_], float]:
+    """A whole space as a person measures it wall to wall, and the cell size it is measured at:
+    its mask (on a coarser copy when it is large, padded by a cell) with the pockets it
+    encloses filled when they are furniture standing on its floor (a bed, a counter, a row of
+    shelves, unscanned spots): up to ``max_pocket_m2`` and ``FURNITURE_MAX_SHARE`` of the
+    space. A block a corridor runs around (a stair or lift core, a courtyard) is larger."""
     k = max(1, math.ceil(math.sqrt(mask.size / WIDTH_MAX_CELLS)))
     whole = np.pad(mask[::k, ::k], 1)
-    return 2.0 * float(ndi.distance_transform_edt(whole, sampling=res * k).max()) - res * k
+    rk = res * k
+    holes = fill_holes(whole) & ~whole
+    if holes.any() and max_pocket_m2 > 0:
+        pockets, n = ndi.label(holes, structure=EIGHT)
+        area = np.bincount(pockets.ravel(), minlength=n + 1) * rk * rk
+        small = area <= min(max_pocket_m2, FURNITURE_MAX_SHARE * float(whole.sum()) * rk * rk)
+        small[0] = False
+        whole = whole | small[pockets]
+    return whole, rk
+
+
+def _whole_width(mask: npt.NDArray[np.bool_], res: float, max_pocket_m2: float = 0.0) -> float:
+    """The widest inscribed circle (m) of a whole space (furniture and unscanned patches in its
+    mask included, and the pockets of furniture it encloses: see :func:`_wall_to_wall`), on a
+    coarser copy when it is large (a corridor network spans the map)."""
+    whole, rk = _wall_to_wall(mask, res, max_pocket_m2)
+    return 2.0 * float(ndi.distance_transform_edt(whole, sampling=rk).max()) - rk
 
 
 def _whole_wide_share(mask: npt.NDArray[np.bool_], res: float, wide_m: float) -> float:
@@ -583,6 +623,18 @@ def _whole_wide_share(mask: npt.NDArray[np.bool_], res: float, wide_m: float) ->
         return 0.0
     d = ndi.distance_transform_edt(whole, sampling=res * k)
     return float((d[whole] > wide_m).mean())
+
+
+def _whole_typical_width(mask: npt.NDArray[np.bool_], res: float, reach_m: float,
+                         max_pocket_m2: float) -> float:
+    """The typical width (m) of a whole space measured wall to wall (:func:`_wall_to_wall`):
+    twice the median clearance along its centre line; 0 when it has none."""
+    whole, rk = _wall_to_wall(mask, res, max_pocket_m2)
+    d = ndi.distance_transform_edt(whole, sampling=rk)
+    line = _centre_line(d, whole, rk, reach_m)
+    if not line.any():
+        return 0.0
+    return 2.0 * float(np.median(d[line])) - rk
 
 
 def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
@@ -609,9 +661,14 @@ def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
         area = float(sub.sum()) * res * res
         kind, length, width = _kind_and_size(area, float(peaks[k]), float(typical[k]), float(wide_share[k]),
                                              int(openings[k]) if k < openings.size else 0,
-                                             functools.partial(_whole_width, sub, res), res, params,
+                                             functools.partial(_whole_width, sub, res,
+                                                               params.seg_enclosed_unknown_max_area_m2),
+                                             res, params,
                                              functools.partial(_whole_wide_share, sub, res,
-                                                               params.hallway_max_width_m / 2))
+                                                               params.hallway_max_width_m / 2),
+                                             functools.partial(_whole_typical_width, sub, res,
+                                                               params.hallway_max_width_m / 2,
+                                                               params.seg_enclosed_unknown_max_area_m2))
         prefix = "hallway" if kind == ElementKind.HALLWAY else "room"
         rooms.append(Room(
             id=f"{prefix}_{k}", label=k, kind=kind, area_m2=area,

@@ -25,13 +25,17 @@ closed before the flood (ROSE², RA-L 2022, bounds rooms by the building's wall 
    - on both sides the space it opens onto runs on along the wall past one of its ends: a
      doorway is narrower than the rooms it joins, whereas where a corridor meets another one
      (a T or a crossing) the opening is the whole width of the branch, and there is no door.
+4. *Doors onto the unexplored* (:func:`outer_gaps`): a door-wide gap in a wall line with seen
+   floor on one side and, on the other, only the rays the lidar sent out through it (a door in
+   an outer wall, or into a room never entered). The fan of rays joins the space's floor, so
+   the flood sees no door-wide saddle there; the wall line does.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Final
+from typing import Final, Generic, TypeVar
 
 import numpy as np
 import numpy.typing as npt
@@ -40,11 +44,20 @@ from langnav.analysis.params import AnalysisParams
 
 BoolArray = npt.NDArray[np.bool_]
 FloatArray = npt.NDArray[np.float64]
+IntArray = npt.NDArray[np.int64]
+_Cell = TypeVar("_Cell", np.bool_, np.uint8)
 
 #: Candidate wall directions are tried every this many degrees (then refined to a tenth).
 DIRECTION_BIN_DEG: Final = 1.0
 #: At most this many wall cells (an even sample) are used to find the directions.
 DIRECTION_MAX_CELLS: Final = 20_000
+#: Candidate gaps judged together (their samples across the line in one array: bounded memory).
+CANDIDATE_BLOCK: Final = 256
+#: Directions are scored together up to this many cells times directions (arrays in cache).
+SCORE_BLOCK_ELEMENTS: Final = 32_768
+#: Bits of the cell code that reads the wall and the floor masks with one lookup.
+WALL_BIT: Final = 1
+FLOOR_BIT: Final = 2
 #: A second direction (a wing at an angle) counts when its peak rises this share of the main
 #: one's height above the worst direction's score.
 SECOND_DIRECTION_MIN_SHARE: Final = 0.5
@@ -68,6 +81,23 @@ SIDE_DEPTHS_M: Final = (0.3, 0.5, 0.7)
 #: The space beyond a gap runs on along the wall at least this far (m) past one of the gap's ends
 #: (a corridor branch's side walls start at the gap's ends, a scanned wall a cell or two off).
 SIDE_PAST_JAMB_M: Final = 0.5
+#: A gap opens from seen floor onto the unseen (:func:`outer_gaps`) when, looking straight
+#: through it from a wall's thickness (m) ...
+OUTER_LOOK_FROM_M: Final = 0.3
+#: ... to a door's width past the wall (m), at least this share of one side is seen floor
+#: (the space it opens from) ...
+OUTER_NEAR_M: Final = 1.0
+OUTER_INSIDE_MIN_SHARE: Final = 0.5
+#: ... and on the other, rays reach on through it up to this far (m; what a scan through a door
+#: shows of the place beyond) ...
+OUTER_FAR_M: Final = 2.0
+#: ... while behind the wall beside it (from this far past the wall, m, to OUTER_NEAR_M, and as
+#: far along the wall past each jamb) at least this share is unknown: an opaque wall ...
+OUTER_BESIDE_FROM_M: Final = 0.2
+OUTER_BEHIND_MIN_UNKNOWN: Final = 0.5
+#: ... and wall stands in line with both jambs over less than this share of the look beyond
+#: (a corridor or a room running on from the gap has its walls there).
+OUTER_WALLED_MAX_SHARE: Final = 0.5
 
 
 @dataclass(frozen=True)
@@ -80,24 +110,40 @@ class WallGap:
     width_m: float
 
 
-def _line_score(rows: FloatArray, cols: FloatArray, deg: float) -> float:
-    """How well the cells line up along ``deg`` and its right angle: the sum of squared counts
-    of cells per one-cell line across each direction (a wall along a direction puts its cells
-    on few lines), over the number of cells."""
-    t = math.radians(deg)
-    score = 0.0
-    for c, s in ((math.cos(t), math.sin(t)), (-math.sin(t), math.cos(t))):
-        v = np.rint(-cols * s + rows * c).astype(np.int64)
-        counts = np.bincount(v - v.min())
-        score += float((counts.astype(np.float64) ** 2).sum())
-    return score / rows.size
+def _line_scores(rows: FloatArray, neg_cols: FloatArray, degs: FloatArray) -> FloatArray:
+    """How well the cells line up along each direction of ``degs`` and its right angle: the sum
+    of squared counts of cells per one-cell line across each direction (a wall along a direction
+    puts its cells on few lines), over the number of cells. ``neg_cols``: the cells' columns
+    negated. Several directions are scored in one array when the cells are few (a door's
+    surroundings), one at a time when they are many (the arrays stay in cache)."""
+    n = rows.size
+    block = max(1, SCORE_BLOCK_ELEMENTS // n)
+    # Every line number lies within +-reach (|cos|, |sin| <= 1; rows and columns are >= 0):
+    # shifted by reach, each direction of a block counts into its own span of bins.
+    reach = math.ceil(float(rows.max()) - float(neg_cols.min())) + 1
+    span = 2 * reach + 1
+    out = np.empty(len(degs))
+    for b0 in range(0, len(degs), block):
+        ts = [math.radians(float(d)) for d in degs[b0:b0 + block]]
+        shift = (reach + np.arange(len(ts)) * span)[:, None]
+        total = np.zeros(len(ts), dtype=np.int64)
+        for c, s in (([math.cos(t) for t in ts], [math.sin(t) for t in ts]),
+                     ([-math.sin(t) for t in ts], [math.cos(t) for t in ts])):
+            x = neg_cols[None, :] * np.array(s)[:, None]
+            x += rows[None, :] * np.array(c)[:, None]
+            v = np.rint(x, out=x).astype(np.intp)
+            v += shift
+            counts = np.bincount(v.ravel(), minlength=len(ts) * span).reshape(len(ts), span)
+            total += (counts * counts).sum(axis=1)  # exact: integers
+        out[b0:b0 + len(ts)] = total.astype(np.float64) / n
+    return out
 
 
 def dominant_directions(wall: BoolArray) -> list[float]:
     """The building's wall directions (radians in the (col, row) plane, in [0, pi)), main first.
 
     Each candidate direction modulo 90 degrees (a right-angled plan: a direction and its right
-    angle together) is scored by how many wall cells line up along it (:func:`_line_score`,
+    angle together) is scored by how many wall cells line up along it (:func:`_line_scores`,
     a Hough transform's peak in short); the best one, refined, is the building's; other
     peaks nearly as strong (a wing at an angle) are directions too. The edge directions of
     the cells themselves would not do: a wall's pixel staircase turns them towards 45 degrees.
@@ -110,7 +156,8 @@ def dominant_directions(wall: BoolArray) -> list[float]:
         rr, cc = rr[pick], cc[pick]
     rows, cols = rr.astype(np.float64), cc.astype(np.float64)
     grid_deg = np.arange(0.0, 90.0, DIRECTION_BIN_DEG)
-    score = np.array([_line_score(rows, cols, d) for d in grid_deg])
+    neg_cols = -cols
+    score = _line_scores(rows, neg_cols, grid_deg)
     base = float(score.min())
     peaks = np.flatnonzero((score >= np.roll(score, 1)) & (score > np.roll(score, -1)))
     peaks = peaks[np.argsort(-score[peaks])]
@@ -120,7 +167,7 @@ def dominant_directions(wall: BoolArray) -> list[float]:
             break
         # Refined to a tenth of a bin around the peak.
         fine = grid_deg[p] + np.linspace(-DIRECTION_BIN_DEG, DIRECTION_BIN_DEG, 21)
-        deg = float(fine[int(np.argmax([_line_score(rows, cols, d) for d in fine]))] % 90.0)
+        deg = float(fine[int(np.argmax(_line_scores(rows, neg_cols, fine)))] % 90.0)
         if all(min(abs(deg - t) % 90.0, 90.0 - abs(deg - t) % 90.0) >= DIRECTION_MIN_SEPARATION_DEG
                for t in taken):
             taken.append(deg)
@@ -130,106 +177,128 @@ def dominant_directions(wall: BoolArray) -> list[float]:
     return out
 
 
-class _LineSampler:
-    """Reads a mask at (u, v): u along the direction (cos_t, sin_t) in the (col, row) plane, v
-    across it; off the grid reads False."""
+class _LineSampler(Generic[_Cell]):
+    """Reads a mask (or a code per cell) at (u, v): u along the direction (cos_t, sin_t) in the
+    (col, row) plane, v across it; off the grid reads False (0)."""
 
-    def __init__(self, mask: BoolArray, cos_t: float, sin_t: float) -> None:
-        self.mask = mask
+    def __init__(self, mask: npt.NDArray[_Cell], cos_t: float, sin_t: float) -> None:
+        self.mask: npt.NDArray[_Cell] = mask
         self.cos_t, self.sin_t = cos_t, sin_t
 
     def rc(self, u: FloatArray, v: FloatArray) -> tuple[FloatArray, FloatArray]:
         return u * self.sin_t + v * self.cos_t, u * self.cos_t - v * self.sin_t
 
-    def __call__(self, u: FloatArray, v: FloatArray) -> BoolArray:
+    def __call__(self, u: FloatArray, v: FloatArray) -> npt.NDArray[_Cell]:
         r, c = self.rc(u, v)
         ri, ci = np.rint(r).astype(np.int64), np.rint(c).astype(np.int64)
         h, w = self.mask.shape
         inside = (ri >= 0) & (ri < h) & (ci >= 0) & (ci < w)
-        out = np.zeros(ri.shape, dtype=bool)
-        out[inside] = self.mask[ri[inside], ci[inside]]
+        # Read every sample (clipped onto the grid), then zero those off it.
+        np.clip(ri, 0, h - 1, out=ri)
+        np.clip(ci, 0, w - 1, out=ci)
+        out = self.mask[ri, ci]
+        out *= inside
         return out
 
 
-def _runs_on(floor_at: _LineSampler, u0: float, u1: float, v: float) -> bool:
-    """Is the floor continuous along the line at offset ``v`` from u0 to u1 (cells)?"""
-    n = max(2, math.ceil(abs(u1 - u0)) + 1)
-    u = np.linspace(u0, u1, n)
-    return bool(floor_at(u, np.full(n, v)).all())
+def _ragged(counts: IntArray) -> tuple[IntArray, IntArray]:
+    """For groups of ``counts`` items laid end to end: each item's group and its index in it."""
+    group = np.repeat(np.arange(counts.size), counts)
+    starts = np.cumsum(counts) - counts
+    return group, np.arange(int(counts.sum())) - starts[group]
 
 
-def _through_depth(wall_at: _LineSampler, ua: float, ub: float, v: float, reach: int) -> float:
-    """How deep (cells, across the line at ``v``) the gap between the wall cells at ``ua`` and
-    ``ub`` is: on each side of the line, the shorter of the two jambs' reaches across it (the
-    wall's own thickness at a doorway; a slot's length between two pieces standing in a row).
-    Each jamb's reach is the longest run of wall across the line through its last few cells."""
+def _runs_on(floor_at: _LineSampler[np.bool_], u0: FloatArray, u1: FloatArray, v: FloatArray) -> BoolArray:
+    """Per candidate: is the floor continuous along the line at offset ``v`` from u0 to u1
+    (cells; sampled as ``np.linspace(u0, u1, n)`` with n = the cells spanned, at least 2)?"""
+    n = np.maximum(2, np.ceil(np.abs(u1 - u0)).astype(np.int64) + 1)
+    group, k = _ragged(n)
+    step = (u1 - u0) / (n - 1)
+    u = k.astype(np.float64) * step[group] + u0[group]
+    last = np.cumsum(n) - 1
+    u[last] = u1
+    ok = floor_at(u, v[group])
+    return np.logical_and.reduceat(ok, last - n + 1)
+
+
+def _band_runs(on: BoolArray, reach: int) -> tuple[BoolArray, IntArray, IntArray]:
+    """Per row of ``on`` (samples across the line, the line at index ``reach``): whether a cell
+    of the line's band is set, and the first and last cells of the run of set cells through the
+    band's first set cell."""
+    band = on[..., reach - LINE_BAND_CELLS:reach + LINE_BAND_CELLS + 1]
+    has: BoolArray = np.asarray(band.any(axis=-1))
+    s = (reach - LINE_BAND_CELLS + band.argmax(axis=-1))[..., None]
+    idx = np.arange(on.shape[-1])
+    after = ~on & (idx > s)
+    hi: IntArray = np.where(after.any(axis=-1), after.argmax(axis=-1), on.shape[-1]) - 1
+    before = (~on & (idx < s))[..., ::-1]
+    lo: IntArray = np.where(before.any(axis=-1), on.shape[-1] - 1 - before.argmax(axis=-1), -1) + 1
+    return has, lo, hi
+
+
+def _through_depth(wall_at: _LineSampler[np.bool_], ua: FloatArray, ub: FloatArray, v: FloatArray,
+                   reach: int) -> FloatArray:
+    """Per candidate: how deep (cells, across the line at ``v``) the gap between the wall cells
+    at ``ua`` and ``ub`` is: on each side of the line, the shorter of the two jambs' reaches
+    across it (the wall's own thickness at a doorway; a slot's length between two pieces
+    standing in a row). Each jamb's reach is the longest run of wall across the line through
+    its last few cells."""
     offs = np.arange(-reach, reach + 1, dtype=np.float64)
-    ends = []
-    for us in ((ua, ua - 1.0, ua - 2.0), (ub, ub + 1.0, ub + 2.0)):
-        plus = minus = 0
-        for u in us:
-            col = wall_at(np.full(offs.size, u), v + offs)
-            centre = np.flatnonzero(col[reach - LINE_BAND_CELLS:reach + LINE_BAND_CELLS + 1])
-            if centre.size == 0:
-                continue
-            hi = lo = reach - LINE_BAND_CELLS + int(centre[0])
-            while hi + 1 < col.size and col[hi + 1]:
-                hi += 1
-            while lo > 0 and col[lo - 1]:
-                lo -= 1
-            plus, minus = max(plus, hi - reach), max(minus, reach - lo)
-        ends.append((plus, minus))
-    (pa, ma), (pb, mb) = ends
-    return float(min(pa, pb) + min(ma, mb) + 1)
+    back = np.arange(3, dtype=np.float64)
+    u = np.stack([ua[:, None] - back, ub[:, None] + back], axis=1)  # (candidate, jamb, cell)
+    col = wall_at(u[..., None], (v[:, None] + offs)[:, None, None, :])
+    has, lo, hi = _band_runs(col, reach)
+    plus = np.where(has, hi - reach, 0).max(axis=2, initial=0)
+    minus = np.where(has, reach - lo, 0).max(axis=2, initial=0)
+    return (plus.min(axis=1) + minus.min(axis=1) + 1).astype(np.float64)
 
 
-def _partition_share(wall_at: _LineSampler, floor_at: _LineSampler, u_end: float, sign: float,
-                     v: float, side: int, reach: int, thin: int) -> float:
-    """Of the wall cells on the line at ``v`` over ``side`` cells from ``u_end`` on (towards
-    ``sign``), the share where the wall across the line is at most ``thin`` cells thick with
-    floor just beyond both of its faces (within two cells)."""
-    u = u_end + sign * np.arange(side, dtype=np.float64)
-    offs = np.arange(-reach, reach + 1, dtype=np.float64)
-    uu = np.repeat(u, offs.size)
-    vv = np.tile(v + offs, u.size)
-    w = wall_at(uu, vv).reshape(u.size, offs.size)
-    f = floor_at(uu, vv).reshape(u.size, offs.size)
-    band = slice(reach - LINE_BAND_CELLS, reach + LINE_BAND_CELLS + 1)
-    on = w[:, band].any(axis=1)
-    if not on.any():
-        return 0.0
-    good = 0
-    for i in np.flatnonzero(on).tolist():
-        row = w[i]
-        lo = hi = reach - LINE_BAND_CELLS + int(np.argmax(row[band]))
-        while hi + 1 < row.size and row[hi + 1]:
-            hi += 1
-        while lo > 0 and row[lo - 1]:
-            lo -= 1
-        if hi - lo + 1 <= thin and f[i, max(lo - 2, 0):lo].any() and f[i, hi + 1:hi + 3].any():
-            good += 1
-    return good / int(on.sum())
+def _partition_share(both_at: _LineSampler[np.uint8], u_end: FloatArray, sign: float, v: FloatArray, side: int,
+                     reach: int, thin: int) -> FloatArray:
+    """Per candidate: of the wall cells on the line at ``v`` over ``side`` cells from ``u_end``
+    on (towards ``sign``), the share where the wall across the line is at most ``thin`` cells
+    thick with floor just beyond both of its faces (within two cells); 0 with no wall cell.
+    ``both_at`` reads WALL_BIT and FLOOR_BIT of a cell at once."""
+    u = (u_end[:, None] + sign * np.arange(side, dtype=np.float64))[..., None]
+    vv = (v[:, None] + np.arange(-reach, reach + 1, dtype=np.float64))[:, None, :]
+    both = both_at(u, vv)  # (candidate, cell along, cell across)
+    w, f = (both & WALL_BIT) > 0, (both & FLOOR_BIT) > 0
+    on, lo, hi = _band_runs(w, reach)
+    idx = np.arange(w.shape[-1])
+    floor_before = (f & (idx >= (lo - 2)[..., None]) & (idx < lo[..., None])).any(axis=-1)
+    floor_after = (f & (idx > hi[..., None]) & (idx <= (hi + 2)[..., None])).any(axis=-1)
+    good = (on & (hi - lo + 1 <= thin) & floor_before & floor_after).sum(axis=1)
+    n_on = on.sum(axis=1)
+    return np.where(n_on > 0, good / np.maximum(n_on, 1), 0.0)
 
 
-def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: AnalysisParams,
-              directions: list[float] | None = None) -> list[WallGap]:
-    """The door-wide gaps in the wall lines of ``wall`` that part two spaces of ``floor`` (see
-    the module doc). ``directions``: the wall directions, when known (else found here)."""
-    if params.seg_wall_line_gap_max_m <= 0 or not wall.any():
-        return []
-    dirs = dominant_directions(wall) if directions is None else directions
+@dataclass(frozen=True)
+class _LineCandidates:
+    """The door-wide gaps along one wall direction: gap i lies between ``pos[i]`` and
+    ``pos[i + 1]`` on ``line[i]`` for i in ``cand`` (positions along and lines across the
+    direction, offset by ``umin`` / ``vmin``)."""
+
+    cos_t: float
+    sin_t: float
+    cand: IntArray
+    line: IntArray
+    pos: IntArray
+    umin: int
+    vmin: int
+
+
+def _line_candidates(wall: BoolArray, dirs: list[float], resolution_m: float, params: AnalysisParams,
+                     max_width_m: float) -> list[_LineCandidates]:
+    """Per wall direction, the gaps ``door_min_width_m`` to ``max_width_m`` wide in its wall
+    lines where the line runs on past both ends, occupied on ``seg_wall_line_side_share`` of
+    ``seg_wall_line_side_m`` (a wall, not the corner of a piece of furniture)."""
     res = resolution_m
     gmin = (params.door_min_width_m - res) / res
-    gmax = (params.seg_wall_line_gap_max_m + res) / res
+    gmax = (max_width_m + res) / res
     side = max(2, round(params.seg_wall_line_side_m / res))
-    past = SIDE_PAST_JAMB_M / res
-    depths = [d / res for d in SIDE_DEPTHS_M]
-    max_depth = WALL_MAX_THICKNESS_M / res + 1.0  # + the cell the line runs through
-    thin = round(WALL_MAX_THICKNESS_M / res) + 1
-    reach = math.ceil(2 * params.door_max_depth_m / res) + 2
     rr, cc = np.nonzero(wall)
     rr_f, cc_f = rr.astype(np.float64), cc.astype(np.float64)
-    out: list[WallGap] = []
+    out: list[_LineCandidates] = []
     for theta in dirs:
         cos_t, sin_t = math.cos(theta), math.sin(theta)
         u = np.rint(cc_f * cos_t + rr_f * sin_t).astype(np.int64)
@@ -239,7 +308,11 @@ def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: An
         # Each wall cell is on the lines within the band across it.
         vv = np.concatenate([v + k for k in range(-LINE_BAND_CELLS, LINE_BAND_CELLS + 1)]) - vmin
         uu = np.tile(u - umin, 2 * LINE_BAND_CELLS + 1)
-        key = np.unique(vv * span + uu)
+        # The distinct (line, position) keys in order: a mark per key, cheaper than np.unique.
+        flat = vv * span + uu
+        seen = np.zeros(int(flat.max()) + 1, dtype=bool)
+        seen[flat] = True
+        key = np.flatnonzero(seen)
         line, pos = np.divmod(key, span)
         gap = np.diff(pos) - 1
         cand = np.flatnonzero((line[1:] == line[:-1]) & (gap >= gmin) & (gap <= gmax))
@@ -252,59 +325,219 @@ def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: An
         after = np.searchsorted(key, hi_after, side="right") - np.searchsorted(key, key[cand + 1], side="left")
         share = params.seg_wall_line_side_share * side
         cand = cand[(before >= share) & (after >= share)]
-        if cand.size == 0:
-            continue
-        floor_at = _LineSampler(floor, cos_t, sin_t)
-        wall_at = _LineSampler(wall, cos_t, sin_t)
-        for i in cand.tolist():
-            v_line = float(line[i] + vmin)
-            ua, ub = float(pos[i] + umin), float(pos[i + 1] + umin)  # the last / next wall cell
-            inner = np.arange(ua + 1.0, ub)
-            if floor_at(inner, np.full(inner.size, v_line)).mean() < GAP_MIN_FLOOR_SHARE:
-                continue
-            # A doorway is as deep as its wall: the slot between two cabinets or desks standing
-            # in a row is as deep as they are.
-            if _through_depth(wall_at, ua, ub, v_line, reach) > max_depth:
-                continue
-            # The wall runs on past both ends as a partition between two spaces: thin, floor
-            # on both sides (an outer wall has unknown outside it, a shelf row or a counter is
-            # thick, a wall with cupboards along it has them on one side only).
-            if min(_partition_share(wall_at, floor_at, ua, -1.0, v_line, side, reach, thin),
-                   _partition_share(wall_at, floor_at, ub, 1.0, v_line, side, reach, thin)) \
-                    < PARTITION_MIN_SHARE:
-                continue
-            mid = (ua + ub) / 2
-            if not all(any(all(_runs_on(floor_at, mid, end, v_line + sign * d) for d in depths)
-                           for end in (ua - past, ub + past))
-                       for sign in (-1.0, 1.0)):
-                continue
-            r2, c2 = floor_at.rc(np.array([ua, ub]), np.full(2, v_line))
-            out.append(WallGap((float(r2[0]), float(c2[0])), (float(r2[1]), float(c2[1])),
-                               (ub - ua - 1) * res))
+        if cand.size:
+            out.append(_LineCandidates(cos_t, sin_t, cand, line, pos, umin, vmin))
     return out
 
 
-def _draw(out: BoolArray, a_rc: tuple[float, float], b_rc: tuple[float, float], band: float) -> None:
-    """Set the cells of the segment a-b, ``band`` cells either side of it, in ``out``."""
-    (ra, ca), (rb, cb) = a_rc, b_rc
-    h, w = out.shape
-    length = math.hypot(rb - ra, cb - ca)
-    t = np.linspace(0.0, 1.0, max(2, math.ceil(2 * length) + 1))
-    nr, nc = ((cb - ca) / length, -(rb - ra) / length) if length > 0 else (0.0, 0.0)  # across
-    for off in np.arange(-band, band + 0.25, 0.5):
-        r = np.rint(ra + (rb - ra) * t + nr * off).astype(np.int64)
-        c = np.rint(ca + (cb - ca) * t + nc * off).astype(np.int64)
-        inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
-        out[r[inside], c[inside]] = True
+def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: AnalysisParams,
+              directions: list[float] | None = None) -> list[WallGap]:
+    """The door-wide gaps in the wall lines of ``wall`` that part two spaces of ``floor`` (see
+    the module doc). ``directions``: the wall directions, when known (else found here)."""
+    if params.seg_wall_line_gap_max_m <= 0 or not wall.any():
+        return []
+    dirs = dominant_directions(wall) if directions is None else directions
+    res = resolution_m
+    side = max(2, round(params.seg_wall_line_side_m / res))
+    past = SIDE_PAST_JAMB_M / res
+    depths = [d / res for d in SIDE_DEPTHS_M]
+    max_depth = WALL_MAX_THICKNESS_M / res + 1.0  # + the cell the line runs through
+    thin = round(WALL_MAX_THICKNESS_M / res) + 1
+    reach = math.ceil(2 * params.door_max_depth_m / res) + 2
+    both = np.where(wall, WALL_BIT, 0).astype(np.uint8) | np.where(floor, FLOOR_BIT, 0).astype(np.uint8)
+    out: list[WallGap] = []
+    for lc in _line_candidates(wall, dirs, res, params, params.seg_wall_line_gap_max_m):
+        floor_at = _LineSampler(floor, lc.cos_t, lc.sin_t)
+        wall_at = _LineSampler(wall, lc.cos_t, lc.sin_t)
+        both_at = _LineSampler(both, lc.cos_t, lc.sin_t)
+        for b0 in range(0, lc.cand.size, CANDIDATE_BLOCK):
+            out += _gaps_kept(lc.cand[b0:b0 + CANDIDATE_BLOCK], lc.line, lc.pos, lc.umin, lc.vmin, floor_at,
+                              wall_at, both_at, _GapScales(past, depths, max_depth, thin, reach, side), res)
+    return out
+
+
+@dataclass(frozen=True)
+class _GapScales:
+    """The lengths (cells) a candidate gap is judged with (see :func:`wall_gaps`)."""
+
+    past: float
+    depths: list[float]
+    max_depth: float
+    thin: int
+    reach: int
+    side: int
+
+
+def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: int,
+               floor_at: _LineSampler[np.bool_], wall_at: _LineSampler[np.bool_],
+               both_at: _LineSampler[np.uint8], k: _GapScales, res: float) -> list[WallGap]:
+    """The candidate gaps (between ``pos[i]`` and ``pos[i + 1]`` on ``line[i]``, i in ``cand``)
+    that are doorways between two spaces (see the module doc), all candidates at once."""
+    v_line = (line[cand] + vmin).astype(np.float64)
+    ua, ub = (pos[cand] + umin).astype(np.float64), (pos[cand + 1] + umin).astype(np.float64)  # the last / next wall cell
+    inner = (ub - ua - 1).astype(np.int64)
+    group, step = _ragged(inner)
+    on_floor = floor_at(ua[group] + 1.0 + step, v_line[group])
+    floor_share = np.bincount(group, weights=on_floor, minlength=cand.size) / np.maximum(inner, 1)
+    keep = (inner == 0) | (floor_share >= GAP_MIN_FLOOR_SHARE)
+    # A doorway is as deep as its wall: the slot between two cabinets or desks standing
+    # in a row is as deep as they are.
+    idx = np.flatnonzero(keep)
+    keep[idx] = _through_depth(wall_at, ua[idx], ub[idx], v_line[idx], k.reach) <= k.max_depth
+    # The wall runs on past both ends as a partition between two spaces: thin, floor
+    # on both sides (an outer wall has unknown outside it, a shelf row or a counter is
+    # thick, a wall with cupboards along it has them on one side only).
+    idx = np.flatnonzero(keep)
+    keep[idx] = np.minimum(
+        _partition_share(both_at, ua[idx], -1.0, v_line[idx], k.side, k.reach, k.thin),
+        _partition_share(both_at, ub[idx], 1.0, v_line[idx], k.side, k.reach, k.thin)) \
+        >= PARTITION_MIN_SHARE
+    # On both sides the space runs on along the wall past one of the gap's ends.
+    idx = np.flatnonzero(keep)
+    mid = (ua[idx] + ub[idx]) / 2
+    for sign in (-1.0, 1.0):
+        runs = np.zeros(idx.size, dtype=bool)
+        for end in (ua[idx] - k.past, ub[idx] + k.past):
+            all_depths = np.ones(idx.size, dtype=bool)
+            for d in k.depths:
+                all_depths &= _runs_on(floor_at, mid, end, v_line[idx] + sign * d)
+            runs |= all_depths
+        keep[idx] &= runs
+    out: list[WallGap] = []
+    for i in np.flatnonzero(keep).tolist():
+        r2, c2 = floor_at.rc(np.array([ua[i], ub[i]]), np.full(2, v_line[i]))
+        out.append(WallGap((float(r2[0]), float(c2[0])), (float(r2[1]), float(c2[1])),
+                           float((ub[i] - ua[i] - 1) * res)))
+    return out
+
+
+def _through(at: _LineSampler[np.bool_], v: float, u: FloatArray, depth: FloatArray, sign: float) -> BoolArray:
+    """``at`` over the cells at positions ``u`` along the line at ``v`` and ``depth`` across it
+    towards ``sign`` (all pairs, position-major)."""
+    return at(np.repeat(u, depth.size), v + sign * np.tile(depth, u.size))
+
+
+@dataclass(frozen=True)
+class OuterGap:
+    """A door-wide gap in a wall line with seen floor on one side only: its centre (row, col;
+    cell-corner coordinates, cell i spans [i, i + 1)), the unit normal (drow, dcol) from the
+    seen side out, and its width (m)."""
+
+    center_rc: tuple[float, float]
+    normal_rc: tuple[float, float]
+    width_m: float
+
+
+def outer_gaps(wall: BoolArray, floor: BoolArray, seen: BoolArray, unknown: BoolArray, resolution_m: float,
+               params: AnalysisParams, directions: list[float] | None = None) -> list[OuterGap]:
+    """The door-wide gaps (up to ``door_wide_max_width_m``) in the wall lines of ``wall`` that
+    open from seen floor onto what was never seen: a door in an outer wall, or into a room the
+    robot did not enter, through which the lidar saw out. ``seen``: floor the scans covered, not
+    a streak with unknown beside it; ``unknown``: the unexplored cells.
+
+    The gap is as deep as a wall and its floor is free; its wall runs on past both ends (a wall
+    line, not the corner of a piece of furniture or the end of a wall). On one side lies seen
+    floor (the space it opens from). On the other, the rays through the gap fill its width just
+    past the wall and reach on beyond a door's width (a scan through an open door sees through
+    all of it and on for metres; through a window or a hole in a dashed wall, streaks or a
+    sliver); the wall beside the gap hides what is behind it (an opaque wall: behind a glass or
+    broken wall the scan saw floor all along, and the gap is one more hole in it); and what the
+    rays show beyond is not walled in along the gap's sides (a corridor or a room running on
+    from a gap as wide as it is a way on, seen, not a door onto the unexplored).
+    """
+    if not wall.any():
+        return []
+    dirs = dominant_directions(wall) if directions is None else directions
+    res = resolution_m
+    max_depth = WALL_MAX_THICKNESS_M / res + 1.0
+    reach = math.ceil(2 * params.door_max_depth_m / res) + 2
+    near = np.arange(OUTER_LOOK_FROM_M, OUTER_NEAR_M + 1e-9, res) / res
+    far = np.arange(OUTER_LOOK_FROM_M, OUTER_FAR_M + 1e-9, res) / res
+    ray = far[far >= OUTER_NEAR_M / res]
+    beside = np.arange(OUTER_BESIDE_FROM_M, OUTER_NEAR_M + 1e-9, res) / res
+    widest = max(params.door_max_width_m, params.door_wide_max_width_m)
+    across = np.arange(0.0, (widest / 2 + OUTER_NEAR_M) / res + 1e-9)
+    out: list[OuterGap] = []
+    for lc in _line_candidates(wall, dirs, res, params, widest):
+        floor_at, wall_at, seen_at, unknown_at = (_LineSampler(m, lc.cos_t, lc.sin_t)
+                                                  for m in (floor, wall, seen, unknown))
+        # A free gap as deep as a wall (all candidates at once; the rest one by one).
+        v_all = (lc.line[lc.cand] + lc.vmin).astype(np.float64)
+        ua_all = (lc.pos[lc.cand] + lc.umin).astype(np.float64)
+        ub_all = (lc.pos[lc.cand + 1] + lc.umin).astype(np.float64)
+        n_in = (ub_all - ua_all - 1).astype(np.int64)
+        group, step = _ragged(n_in)
+        on_floor = floor_at(ua_all[group] + 1.0 + step, v_all[group])
+        keep = (n_in > 0) & (np.bincount(group, weights=on_floor, minlength=n_in.size)
+                             >= GAP_MIN_FLOOR_SHARE * np.maximum(n_in, 1))
+        idx = np.flatnonzero(keep)
+        keep[idx] = _through_depth(wall_at, ua_all[idx], ub_all[idx], v_all[idx], reach) <= max_depth
+        for i in np.flatnonzero(keep).tolist():
+            v, ua, ub = float(v_all[i]), float(ua_all[i]), float(ub_all[i])
+            inner = np.arange(ua + 1.0, ub)
+            # Seen floor on one side of the gap, straight through it.
+            share = [float(_through(seen_at, v, inner, near, sg).mean()) for sg in (-1.0, 1.0)]
+            sign = -1.0 if share[0] >= share[1] else 1.0
+            if max(share) < OUTER_INSIDE_MIN_SHARE:
+                continue
+            # On the other (-sign): rays through all of the gap, reaching on.
+            if float(_through(floor_at, v, inner, near, -sign).mean()) < GAP_MIN_FLOOR_SHARE or \
+                    not _through(floor_at, v, inner, ray, -sign).any():
+                continue
+            # An opaque wall beside it: unknown behind it, along the wall past each jamb.
+            side_u = np.arange(1.0, OUTER_NEAR_M / res + 1e-9)
+            behind = np.concatenate([_through(unknown_at, v, ua - side_u, beside, -sign),
+                                     _through(unknown_at, v, ub + side_u, beside, -sign)])
+            if float(behind.mean()) < OUTER_BEHIND_MIN_UNKNOWN:
+                continue
+            # Not walled in: beyond the wall, what bounds the floor across the way the rays went
+            # is wall on both sides (a corridor or a room running on) over less than
+            # OUTER_WALLED_MAX_SHARE of the look; a fan through a door is bounded by unknown.
+            u_mid = (ua + ub) / 2
+            walled = np.ones(far.size, dtype=bool)
+            for way in (-1.0, 1.0):
+                uu = u_mid + way * across
+                ff = floor_at(np.tile(uu, far.size), v - sign * np.repeat(far, uu.size)).reshape(far.size, uu.size)
+                first = np.where(ff.all(axis=1), uu.size - 1, np.argmin(ff, axis=1))
+                walled &= wall_at(uu[first], v - sign * far)
+            if float(walled.mean()) >= OUTER_WALLED_MAX_SHARE:
+                continue
+            r, c = floor_at.rc(np.array([(ua + ub) / 2]), np.array([v]))
+            # d(r, c)/dv = (cos_t, -sin_t): from the seen side (v + sign * depth) out.
+            out.append(OuterGap((float(r[0]) + 0.5, float(c[0]) + 0.5), (-sign * lc.cos_t, sign * lc.sin_t),
+                                float((ub - ua - 1) * res)))
+    return out
 
 
 def closure_mask(gaps: list[WallGap], floor: BoolArray) -> BoolArray:
     """The floor cells that close ``gaps``: each gap's segment, from one end's wall cell to the
-    other's, drawn a band of cells thick (a flood must not slip through diagonally)."""
+    other's, drawn a band of LINE_BAND_CELLS either side of it (a flood must not slip through
+    diagonally), sampled every half cell along and across it; all gaps at once."""
     out = np.zeros(floor.shape, dtype=bool)
-    for g in gaps:
-        _draw(out, g.end_a_rc, g.end_b_rc, LINE_BAND_CELLS)
+    if not gaps:
+        return out
+    h, w = floor.shape
+    ends = np.array([(*g.end_a_rc, *g.end_b_rc) for g in gaps])
+    ra, ca, rb, cb = ends[:, 0], ends[:, 1], ends[:, 2], ends[:, 3]
+    lengths = [math.hypot(g.end_b_rc[0] - g.end_a_rc[0], g.end_b_rc[1] - g.end_a_rc[1]) for g in gaps]
+    n = np.array([max(2, math.ceil(2 * length) + 1) for length in lengths], dtype=np.int64)
+    length = np.array(lengths)
+    long = length > 0
+    safe = np.where(long, length, 1.0)
+    nr = np.where(long, (cb - ca) / safe, 0.0)  # across
+    nc = np.where(long, -(rb - ra) / safe, 0.0)
+    # Along each segment: np.linspace(0, 1, n) of its own n, for all segments at once.
+    group, k = _ragged(n)
+    t = k.astype(np.float64) * (1.0 / (n - 1))[group]
+    t[np.cumsum(n) - 1] = 1.0
+    ra_g, ca_g, nr_g, nc_g = ra[group], ca[group], nr[group], nc[group]
+    dr_t, dc_t = (rb - ra)[group] * t, (cb - ca)[group] * t
+    for off in np.arange(-LINE_BAND_CELLS, LINE_BAND_CELLS + 0.25, 0.5):
+        r = np.rint(ra_g + dr_t + nr_g * off).astype(np.int64)
+        c = np.rint(ca_g + dc_t + nc_g * off).astype(np.int64)
+        inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
+        out[r[inside], c[inside]] = True
     return out & floor
 
 
-__all__ = ["WallGap", "closure_mask", "dominant_directions", "wall_gaps"]
+__all__ = ["OuterGap", "WallGap", "closure_mask", "dominant_directions", "outer_gaps", "wall_gaps"]

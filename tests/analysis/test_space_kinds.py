@@ -1,0 +1,76 @@
+"""Room or hallway: golden buildings for the ways the kind went wrong on real and drawn maps
+(issue 8). A hallway is judged by its typical width wall to wall and by how it connects: a short
+hall that many rooms open onto is a hallway, however a bay widens it; a shop whose counter
+leaves two corridor-wide aisles is a room."""
+
+from __future__ import annotations
+
+import pytest
+from analysis_maps import POS_TOL_M, door_near, space_at
+
+from langnav.analysis.elements import ElementKind
+from langnav.analysis.segmentation import UNKNOWN_ID, segment_spaces
+from langnav.maps.draw import MapBuilder
+from langnav.maps.grid import OccupancyGrid
+
+
+def hall_with_a_bay() -> OccupancyGrid:
+    """A 2 m x 9 m hall with a 1.4 m x 3 m bay in its east wall (a nurse station, a coat niche)
+    and five doorways: four 0.9 m doors into 4 m deep rooms, two a side, and the front door."""
+    b = MapBuilder(16.0, 12.0)
+    b.room(6.0, 1.0, 8.0, 10.0)  # the hall
+    b.room(2.0, 1.0, 6.0, 5.0).door_v(6.0, 3.0, 0.9)
+    b.room(2.0, 5.0, 6.0, 10.0).door_v(6.0, 8.0, 0.9)
+    b.room(8.0, 1.0, 12.0, 3.95).door_v(8.0, 2.4, 0.9)
+    b.room(8.0, 7.05, 12.0, 10.0).door_v(8.0, 8.6, 0.9)
+    b.free(8.0, 4.0, 9.4, 7.0)  # the bay, cut into the east wall between the two east rooms
+    b.wall(9.45, 3.95, 9.45, 7.05)
+    b.door_h(7.0, 1.0, 0.9)  # the front door, onto the unknown outside
+    return b.build("hall with a bay")
+
+
+def test_a_short_hall_many_rooms_open_onto_is_a_hallway_despite_its_bay() -> None:
+    """The bay widens the hall to 3.4 m at one point and the hall is only 4.5 times longer than
+    wide: judged by its widest point or its length alone it would be a room. Five doorways open
+    off it: a space that serves that many others is walked through."""
+    grid = hall_with_a_bay()
+    seg = segment_spaces(grid)
+    hall = space_at(seg, grid, 7.0, 5.0)
+    assert space_at(seg, grid, 8.7, 5.5) is hall  # the bay is part of it
+    assert space_at(seg, grid, 7.0, 9.5) is hall
+    assert hall.kind == ElementKind.HALLWAY
+    assert 1.6 <= hall.width_m <= 2.1  # its typical width, not the bay's
+    rooms = [space_at(seg, grid, x, y) for x, y in ((4.0, 3.0), (4.0, 7.5), (10.0, 2.4), (10.0, 8.6))]
+    assert len({r.id for r in rooms}) == 4
+    assert [r.kind for r in rooms] == [ElementKind.ROOM] * 4
+    assert len(seg.rooms) == 5
+    assert len(seg.doors) == 5
+    for (x, y), room in zip(((6.05, 3.0), (6.05, 8.0), (7.95, 2.4), (7.95, 8.6)), rooms, strict=True):
+        d = door_near(seg.doors, x, y)
+        assert set(d.connects) == {hall.id, room.id}
+        assert d.width_m == pytest.approx(0.9, abs=POS_TOL_M)
+    assert door_near(seg.doors, 7.0, 0.95).connects == (hall.id, UNKNOWN_ID)
+
+
+def shop_with_a_counter() -> OccupancyGrid:
+    """A 16 m x 6 m shop with a 10 m x 1.2 m display counter down its middle (two 2.4 m aisles
+    beside it) and a door at each end."""
+    b = MapBuilder(20.0, 10.0)
+    b.room(1.0, 1.0, 17.0, 7.0)
+    b.box(4.0, 3.4, 14.0, 4.6)
+    b.door_v(1.0, 2.0, 0.9).door_v(17.0, 6.0, 0.9)
+    return b.build("shop with a counter")
+
+
+def test_a_shop_whose_counter_leaves_corridor_wide_aisles_is_a_room() -> None:
+    """Its aisles are as narrow as a corridor and it has two doors, but wall to wall (the counter
+    stands on its floor) it is 6 m wide: a room, as a person sees it."""
+    grid = shop_with_a_counter()
+    seg = segment_spaces(grid)
+    assert len(seg.rooms) == 1
+    shop = seg.rooms[0]
+    assert space_at(seg, grid, 9.0, 2.2) is shop
+    assert space_at(seg, grid, 9.0, 5.8) is shop
+    assert shop.kind == ElementKind.ROOM
+    assert len(seg.doors) == 2
+    assert {d.connects for d in seg.doors} == {(shop.id, UNKNOWN_ID)}
