@@ -74,3 +74,42 @@ def test_a_shop_whose_counter_leaves_corridor_wide_aisles_is_a_room() -> None:
     assert shop.kind == ElementKind.ROOM
     assert len(seg.doors) == 2
     assert {d.connects for d in seg.doors} == {(shop.id, UNKNOWN_ID)}
+
+
+def corridor_open_onto_a_lounge() -> OccupancyGrid:
+    """A 2.4 m corridor, 40 m long, with a 12 m x 8 m lounge open onto its south side along the
+    lounge's whole length (no wall between: a care home's day room, a lobby), armchairs and a
+    table in the lounge, and an office off the corridor through a 0.9 m door."""
+    b = MapBuilder(44.0, 18.0)
+    b.room(1.0, 10.0, 41.0, 12.4)
+    b.room(15.0, 2.0, 27.0, 10.0)
+    b.free(15.05, 9.8, 26.95, 10.2)  # the open side
+    b.room(5.0, 12.4, 9.0, 16.4).door_h(7.0, 12.4, 0.9)
+    b.box(18.0, 5.0, 19.0, 6.0).box(22.0, 5.0, 23.5, 6.0)
+    return b.build("corridor open onto a lounge")
+
+
+def test_a_lounge_open_onto_a_corridor_is_a_room_apart_from_the_corridor() -> None:
+    """Nothing narrows where the corridor meets the lounge, so the flood sees one space; but
+    the lounge is far wider than any corridor (a 6 m disc fits in it over a stretch): it is a
+    hall of its own, a room, and the corridor runs on either side of it as hallways."""
+    grid = corridor_open_onto_a_lounge()
+    seg = segment_spaces(grid)
+    lounge = space_at(seg, grid, 21.0, 5.0)
+    west = space_at(seg, grid, 5.0, 11.2)
+    east = space_at(seg, grid, 37.0, 11.2)
+    office = space_at(seg, grid, 7.0, 14.4)
+    assert len({lounge.id, west.id, east.id, office.id}) == 4
+    assert len(seg.rooms) == 4
+    assert lounge.kind == ElementKind.ROOM
+    assert west.kind == ElementKind.HALLWAY
+    assert east.kind == ElementKind.HALLWAY
+    assert office.kind == ElementKind.ROOM
+    assert lounge.area_m2 == pytest.approx(12 * 8 + 12 * 2.4, rel=0.1)  # with the corridor beside it
+    assert west.width_m == pytest.approx(2.4, abs=0.15)
+    d = door_near(seg.doors, 7.0, 12.4)
+    assert set(d.connects) == {west.id, office.id}
+    # The corridor and the lounge meet through openings as wide as the corridor, not doors.
+    assert {frozenset(o.connects) for o in seg.openings} == {frozenset((lounge.id, west.id)),
+                                                             frozenset((lounge.id, east.id))}
+    assert all(o.width_m == pytest.approx(2.4, abs=0.15) for o in seg.openings)
