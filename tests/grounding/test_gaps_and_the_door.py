@@ -83,3 +83,15 @@ def test_the_door_of_a_room_with_several_asks(two_rooms: MapAnalysis) -> None:
 def test_doors_are_the_gap_free_doors(two_rooms: MapAnalysis) -> None:
     assert all(isinstance(d, Door) for d in doors_of(two_rooms))
     assert [d.id for d in doors_of(two_rooms)] == ["door_1", "door_2"]
+
+
+def test_a_gap_inside_a_passage_is_that_passage(two_rooms: MapAnalysis) -> None:
+    from langnav.analysis.elements import NarrowPassage
+    from langnav.grounding.selection import elements_of_kind
+    from langnav.language.intent import Element as Kind
+
+    a = with_gap(two_rooms)
+    passage = NarrowPassage("passage_1", (6.075, 5.0), 0.7, 1.6, ((5.3, 5.0), (6.9, 5.0)), ("room_a", "room_b"))
+    both = dataclasses.replace(a, narrow_passages=(passage,))
+    assert [e.id for e in elements_of_kind(both, Kind.NARROW_PASSAGE)] == ["passage_1"]
+    assert [e.id for e in elements_of_kind(a, Kind.NARROW_PASSAGE)] == ["door_2"]

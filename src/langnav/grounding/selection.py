@@ -419,7 +419,11 @@ def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
     if kind == Kind.DOOR:
         return list(doors_of(analysis))
     if kind == Kind.NARROW_PASSAGE:
-        return [*analysis.narrow_passages, *(d for d in analysis.doors if is_gap(d))]
+        passages = list(analysis.narrow_passages)
+        # a gap inside a passage the analysis found is that passage's pinch, not a second one
+        gaps = [d for d in analysis.doors if is_gap(d) and not any(
+            math.dist(d.center, closest_on_segment(d.center, p.ends[0], p.ends[1])) <= p.width_m for p in passages)]
+        return [*passages, *gaps]
     if kind == Kind.ROOM:
         return [r for r in analysis.rooms if r.kind == ElementKind.ROOM]
     if kind == Kind.HALLWAY:
