@@ -268,3 +268,33 @@ def test_a_gap_onto_a_walled_way_on_is_no_door_onto_the_unexplored() -> None:
     _, c = grid.world_to_index(6.2, 2.0)
     seen[:, int(c):] = False
     assert outer_gaps(wall, free, seen, unknown, grid.resolution_m, DEFAULT_PARAMS) == []
+
+
+def exit_at_a_corridors_end() -> OccupancyGrid:
+    """A 1.5 m corridor, 8 m long, ending at the building's outer wall (x = 8.05, running on
+    past it both ways) in a 1.2 m exit: nearly as wide as the corridor. The robot, at x = 5 in
+    the corridor, saw out through the exit: the rays through it spread 4 m into the unscanned
+    outside."""
+    b = MapBuilder(16.0, 8.0, origin=(-1.0, -3.0))
+    b.room(0.0, 0.0, 8.0, 1.5).wall(8.05, -2.5, 8.05, 4.0).door_v(8.05, 0.75, 1.2, depth_m=0.2)
+    grid = b.build("exit at a corridor's end")
+    cells = grid.cells.copy()
+    rows, cols = np.mgrid[0:cells.shape[0], 0:cells.shape[1]]
+    x = grid.origin_x_m + (cols + 0.5) * grid.resolution_m
+    y = grid.origin_y_m + (rows + 0.5) * grid.resolution_m - 0.75
+    through_exit = np.abs(y * (8.05 - 5.0) / np.maximum(x - 5.0, 1e-6)) <= 0.55
+    cells[(x > 8.1) & (x < 12.0) & through_exit & (cells == UNKNOWN)] = FREE
+    return OccupancyGrid(cells, grid.resolution_m, grid.origin_x_m, grid.origin_y_m, source=grid.source)
+
+
+def test_an_exit_in_the_outer_wall_at_a_corridors_end_is_a_door() -> None:
+    """The corridor runs on behind the exit as narrow as it (a passage's mouth, judged on its
+    depth alone), but the exit is a gap in the outer wall's line, as deep as the wall: the one
+    door, from the corridor to the unexplored outside."""
+    grid = exit_at_a_corridors_end()
+    seg = segment_spaces(grid)
+    corridor = space_at(seg, grid, 4.0, 0.75)
+    assert len(seg.doors) == 1
+    door = door_near(seg.doors, 8.05, 0.75, tol=0.2)
+    assert door.connects == (corridor.id, UNKNOWN_ID)
+    assert door.width_m == pytest.approx(1.2, abs=POS_TOL_M)

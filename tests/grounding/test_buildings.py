@@ -309,3 +309,26 @@ def test_the_end_of_the_hall_is_the_end_ahead(staggered: MapAnalysis, yaw: float
     x, y = last_goal(plan(words, staggered, (5.0, 6.0, yaw)))
     assert staggered.room_at(x, y) is staggered.room_at(5.0, 6.0)
     assert 0.2 <= abs(end_x - x) <= 1.0 and 5.0 < y < 7.0
+
+
+# ------------------------------------------------------------------------------ stepping into the hallway
+@pytest.mark.parametrize(("name", "turn"), CASES)
+def test_out_into_the_hallway_stops_outside_the_door_facing_across(name: str, turn: float) -> None:
+    # from room 7 (door at (7, 5)): just outside its door in leg A, not the hallway's middle far up
+    # leg B; then the first door on the left is the next one along, not the door it came out of
+    a, frame = floor(name)
+    r = plan("go out into the hallway, then go to the first door on your left", a, pose_in(frame, 7.0, 3.0, 90.0, turn))
+    assert r.ok, r.clarification
+    out = r.items[0].commands[-1].poses[-1]  # type: ignore[attr-defined]
+    x, y = drawn_point(name, (out[0], out[1]))
+    assert abs(x - 7.0) <= 0.75 and 5.2 <= y <= 7.0
+    assert math.dist(drawn_point(name, last_goal(r)), (4.0, 7.0)) <= 0.75
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+def test_into_the_hallway_when_in_it_is_no_move(name: str, turn: float) -> None:
+    a, frame = floor(name)
+    r = plan("go in the corridor to the second door on your right", a, pose_in(frame, 2.0, 6.0, 0.0, turn))
+    assert r.ok, r.clarification
+    assert not r.items[0].commands  # in the hallway already
+    assert math.dist(drawn_point(name, last_goal(r)), (7.0, 5.0)) <= 0.75  # D(3,5), then D(7,5)

@@ -293,12 +293,16 @@ def line_turn_deg(occupied: BoolArray, center_rc: tuple[float, float], line_rad:
     return math.degrees(min(abs((line_rad - q + math.pi / 2) % math.pi - math.pi / 2) for q in dirs))
 
 
-def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool) -> bool:
+def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wall_line: bool = False) -> bool:
     """The rules of the module doc on one candidate's evidence (``into_unknown``: it opens onto
-    unexplored territory, where only its own side was seen)."""
+    unexplored territory, where only its own side was seen; ``in_wall_line``: it is a gap in a
+    wall line, as deep as the wall, found so: its depth was judged there)."""
     # As deep as a wall (plus the shortest passage): a longer constriction is a passage or a
-    # corridor running on.
-    if into_unknown:
+    # corridor running on. A gap in an outer wall line that deep is an exit at the end of
+    # whatever leads to it, a corridor as wide as the door included.
+    if in_wall_line:
+        pass
+    elif into_unknown:
         # Beyond an opening into unexplored territory only rays through it were seen (a strip
         # as narrow as the opening, walled by unknown, not by walls): judge its depth on the
         # side of the space it opens from, half a wall's thickness and a passage.
@@ -345,13 +349,19 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
         far = np.sqrt(truncated_sq_edt(~unknown, bound).astype(np.float64)) * resolution_m >= SEEN_FLOOR_MIN_M
     for d in candidates:
         ev = evidence(free, occupied, d.center_rc, d.normal_rc, d.width_m, resolution_m, params)
-        ok = is_door(ev, params, into_unknown=d.b == 0)
+        ok = is_door(ev, params, into_unknown=d.b == 0, in_wall_line=d.in_wall_line)
         if ok and far is not None:
             # A place on each side that is a space: its floor was seen, not only rays through
             # the opening (into unexplored territory: the space's own side).
             sides = (-1.0,) if d.b == 0 else (-1.0, 1.0)
             ok = all(floor_beyond(free, far, d.center_rc, d.normal_rc, sd, resolution_m) >= BEYOND_MIN_FLOOR_SHARE
                      for sd in sides)
+            # ... and a door onto the unexplored has the unexplored beyond it, not seen floor: a
+            # line from a wall to the scanned face of a wardrobe whose inside is unknown runs
+            # across a room, with the room's floor on both sides. (A gap in a wall line found
+            # so has had what lies beyond it judged there.)
+            if ok and d.b == 0 and not d.in_wall_line:
+                ok = floor_beyond(free, far, d.center_rc, d.normal_rc, 1.0, resolution_m) < BEYOND_MIN_FLOOR_SHARE
         (doors if ok else rest).append(d)
     return doors, rest
 

@@ -15,6 +15,7 @@ as a gap in the wall line with seen floor on one side only
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 from typing import Final
@@ -57,6 +58,10 @@ class RawDoor:
     center_rc: tuple[float, float]
     normal_rc: tuple[float, float]
     width_m: float
+    #: Found as a gap in a wall line, as deep as the wall (the line's jambs and depth were
+    #: checked there): the end of a corridor at an exit in the outer wall is a door however
+    #: wide the corridor behind it.
+    in_wall_line: bool = False
 
 
 def _boundary_pairs(labels: IntArray) -> tuple[npt.NDArray[np.int64], ...]:
@@ -149,10 +154,12 @@ def label_max(labels: IntArray, values: FloatArray) -> FloatArray:
 def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
                         obstacle: BoolArray, clearance_m: FloatArray, resolution_m: float,
                         params: AnalysisParams, peak: FloatArray | None = None,
-                        known: list[RawDoor] | None = None) -> list[RawDoor]:
+                        known: list[RawDoor] | None = None,
+                        directions: list[float] | None = None) -> list[RawDoor]:
     """Doorways from a space into unexplored territory (see module doc). ``peak``:
     ``label_max(labels, clearance_m)``, when the caller has it; ``known``: the doorways between
-    spaces found already (a gap in an outer wall that is one of them is not found twice).
+    spaces found already (a gap in an outer wall that is one of them is not found twice);
+    ``directions``: the wall directions of ``obstacle & ~floor``, when the caller has them.
 
     Only windows around the frontier (floor touching unexplored unknown) are flooded again.
     """
@@ -205,27 +212,39 @@ def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
                    for o in out):
                 continue
             out.append(RawDoor(d.a, 0, (r, c), d.normal_rc, d.width_m))
-    return out + doors_in_outer_walls(labels, floor, exterior, obstacle, resolution_m, params, out + (known or []))
+    return doors_in_outer_walls(labels, floor, exterior, obstacle, resolution_m, params, out, known or [],
+                                directions)
 
 
 def doors_in_outer_walls(labels: IntArray, floor: BoolArray, exterior: BoolArray, obstacle: BoolArray,
-                         resolution_m: float, params: AnalysisParams, found: list[RawDoor]) -> list[RawDoor]:
-    """Doorways from a space into unexplored territory through which the lidar saw out: a
-    door-wide gap in a wall line with the space's seen floor on one side and, on the other, only
-    the fan of rays that went through it (:func:`langnav.analysis.wall_lines.outer_gaps`). The
-    fan joins the space's floor, so its frontier lies metres out, too long for a saddle as
-    narrow as a door: the wall line shows the door. Gaps at a doorway in ``found`` are left
-    out."""
+                         resolution_m: float, params: AnalysisParams, found: list[RawDoor],
+                         known: list[RawDoor], directions: list[float] | None = None) -> list[RawDoor]:
+    """``found`` (doorways into unexplored territory found at a saddle) and the doorways from a
+    space into unexplored territory through which the lidar saw out: a door-wide gap in a wall
+    line with the space's seen floor on one side and, on the other, only the fan of rays that
+    went through it (:func:`langnav.analysis.wall_lines.outer_gaps`). The fan joins the space's
+    floor, so its frontier lies metres out, too long for a saddle as narrow as a door: the wall
+    line shows the door. A gap at a doorway of ``found`` marks that one as in a wall line; one
+    at a doorway between two spaces (``known``) is left out. ``directions``: the wall directions
+    of ``obstacle & ~floor``, when the caller has them."""
     walls = obstacle & ~floor
     bound = math.ceil(SEEN_FLOOR_MIN_M / resolution_m) + 1
     seen = floor & (np.sqrt(truncated_sq_edt(~exterior, bound).astype(np.float64)) * resolution_m >= SEEN_FLOOR_MIN_M)
-    out: list[RawDoor] = []
+    out = list(found)
     look = np.arange(OUTER_LABEL_FROM_M, OUTER_LABEL_TO_M + 1e-9, resolution_m) / resolution_m
     h, w = labels.shape
-    for g in outer_gaps(walls, floor, seen, exterior, resolution_m, params):
+
+    def near(o: RawDoor, r: float, c: float, width_m: float) -> bool:
+        return math.hypot(r - o.center_rc[0], c - o.center_rc[1]) * resolution_m < max(width_m, o.width_m)
+
+    for g in outer_gaps(walls, floor, seen, exterior, resolution_m, params, directions):
         (r, c), (nr, nc) = g.center_rc, g.normal_rc
-        if any(math.hypot(r - o.center_rc[0], c - o.center_rc[1]) * resolution_m < max(g.width_m, o.width_m)
-               for o in found + out):
+        if any(near(o, r, c, g.width_m) for o in known):
+            continue
+        at = [i for i, o in enumerate(out) if near(o, r, c, g.width_m)]
+        if at:
+            for i in at:
+                out[i] = dataclasses.replace(out[i], in_wall_line=True)
             continue
         # The space it opens from: the label met stepping in from the gap.
         rr = np.floor(r - look * nr).astype(np.int64)
@@ -235,7 +254,7 @@ def doors_in_outer_walls(labels: IntArray, floor: BoolArray, exterior: BoolArray
         lab = lab[lab > 0]
         if lab.size == 0:
             continue
-        out.append(RawDoor(int(np.bincount(lab).argmax()), 0, (r, c), (nr, nc), g.width_m))
+        out.append(RawDoor(int(np.bincount(lab).argmax()), 0, (r, c), (nr, nc), g.width_m, in_wall_line=True))
     return out
 
 

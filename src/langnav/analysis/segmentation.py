@@ -53,7 +53,7 @@ from langnav.analysis.seg_core import (
     merge_basins,
 )
 from langnav.analysis.seg_doors import RawDoor, doors_between, label_max, openings_to_unknown
-from langnav.analysis.wall_lines import closure_mask, wall_gaps
+from langnav.analysis.wall_lines import closure_mask, dominant_directions, wall_gaps
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
 log = logging.getLogger(__name__)
@@ -220,7 +220,10 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     # runs on the floor with them closed, and they are opened again (as doorways) afterwards.
     # The walls are what the cleaning left of the occupied cells (free-standing clutter
     # standing in a row is no wall).
-    closed = closure_mask(wall_gaps(occupied & ~fl.floor, fl.floor, res, params), fl.floor)
+    # The building's wall directions, found once for the wall gaps and the doors in outer walls.
+    walls = occupied & ~fl.floor
+    directions = dominant_directions(walls)
+    closed = closure_mask(wall_gaps(walls, fl.floor, res, params, directions), fl.floor)
     split_floor, split_clear = fl.floor, fl.clearance_m
     if closed.any():
         split_floor = fl.floor & ~closed
@@ -250,7 +253,7 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     raw_wide = [d for d in between if d.width_m > widest]
     peaks = label_max(labels, fl.clearance_m)  # the widest clearance of each space
     raw_doors += openings_to_unknown(labels, fl.floor, exterior, occupied,
-                                     fl.clearance_m, res, params, peaks, known=between)
+                                     fl.clearance_m, res, params, peaks, known=between, directions=directions)
     # Only openings cut in a wall are doors (door_judge); the others between two spaces are
     # still ways between them.
     raw_doors, not_doors = judge_doors(raw_doors, fl.free, occupied & ~fl.floor, res, params, unknown=unknown)

@@ -472,40 +472,85 @@ def outer_gaps(wall: BoolArray, floor: BoolArray, seen: BoolArray, unknown: Bool
                              >= GAP_MIN_FLOOR_SHARE * np.maximum(n_in, 1))
         idx = np.flatnonzero(keep)
         keep[idx] = _through_depth(wall_at, ua_all[idx], ub_all[idx], v_all[idx], reach) <= max_depth
-        for i in np.flatnonzero(keep).tolist():
-            v, ua, ub = float(v_all[i]), float(ua_all[i]), float(ub_all[i])
-            inner = np.arange(ua + 1.0, ub)
-            # Seen floor on one side of the gap, straight through it.
-            share = [float(_through(seen_at, v, inner, near, sg).mean()) for sg in (-1.0, 1.0)]
-            sign = -1.0 if share[0] >= share[1] else 1.0
-            if max(share) < OUTER_INSIDE_MIN_SHARE:
-                continue
-            # On the other (-sign): rays through all of the gap, reaching on.
-            if float(_through(floor_at, v, inner, near, -sign).mean()) < GAP_MIN_FLOOR_SHARE or \
-                    not _through(floor_at, v, inner, ray, -sign).any():
-                continue
-            # An opaque wall beside it: unknown behind it, along the wall past each jamb.
-            side_u = np.arange(1.0, OUTER_NEAR_M / res + 1e-9)
-            behind = np.concatenate([_through(unknown_at, v, ua - side_u, beside, -sign),
-                                     _through(unknown_at, v, ub + side_u, beside, -sign)])
-            if float(behind.mean()) < OUTER_BEHIND_MIN_UNKNOWN:
-                continue
-            # Not walled in: beyond the wall, what bounds the floor across the way the rays went
-            # is wall on both sides (a corridor or a room running on) over less than
-            # OUTER_WALLED_MAX_SHARE of the look; a fan through a door is bounded by unknown.
-            u_mid = (ua + ub) / 2
-            walled = np.ones(far.size, dtype=bool)
-            for way in (-1.0, 1.0):
-                uu = u_mid + way * across
-                ff = floor_at(np.tile(uu, far.size), v - sign * np.repeat(far, uu.size)).reshape(far.size, uu.size)
-                first = np.where(ff.all(axis=1), uu.size - 1, np.argmin(ff, axis=1))
-                walled &= wall_at(uu[first], v - sign * far)
-            if float(walled.mean()) >= OUTER_WALLED_MAX_SHARE:
-                continue
-            r, c = floor_at.rc(np.array([(ua + ub) / 2]), np.array([v]))
-            # d(r, c)/dv = (cos_t, -sin_t): from the seen side (v + sign * depth) out.
-            out.append(OuterGap((float(r[0]) + 0.5, float(c[0]) + 0.5), (-sign * lc.cos_t, sign * lc.sin_t),
-                                float((ub - ua - 1) * res)))
+        idx = np.flatnonzero(keep)
+        for b0 in range(0, idx.size, CANDIDATE_BLOCK):
+            sel = idx[b0:b0 + CANDIDATE_BLOCK]
+            out += _outer_kept(v_all[sel], ua_all[sel], ub_all[sel], lc, _OuterSamplers(floor_at, wall_at, seen_at, unknown_at),
+                               _OuterLooks(near, far, ray, beside, across), res)
+    return out
+
+
+@dataclass(frozen=True)
+class _OuterSamplers:
+    """The masks :func:`outer_gaps` reads along one wall direction."""
+
+    floor: _LineSampler[np.bool_]
+    wall: _LineSampler[np.bool_]
+    seen: _LineSampler[np.bool_]
+    unknown: _LineSampler[np.bool_]
+
+
+@dataclass(frozen=True)
+class _OuterLooks:
+    """The depths (cells) across the line :func:`outer_gaps` looks at, and the offsets along it."""
+
+    near: FloatArray
+    far: FloatArray
+    ray: FloatArray
+    beside: FloatArray
+    across: FloatArray
+
+
+def _outer_kept(v: FloatArray, ua: FloatArray, ub: FloatArray, lc: _LineCandidates, at: _OuterSamplers,
+                looks: _OuterLooks, res: float) -> list[OuterGap]:
+    """Of the free gaps as deep as a wall at ``v`` between the wall cells at ``ua`` and ``ub``,
+    the outer gaps (the tests of :func:`outer_gaps`, all candidates at once)."""
+    n_in = (ub - ua - 1).astype(np.int64)
+    group, step = _ragged(n_in)
+    u_in, v_in = (ua[group] + 1.0 + step)[:, None], v[group][:, None]
+    inner_n = n_in.astype(np.float64)
+
+    def inner_count(mask: _LineSampler[np.bool_], depth: FloatArray, sign: FloatArray) -> FloatArray:
+        """Per candidate: how many of the cells at its inner positions and ``depth`` across the
+        line towards its ``sign`` are set."""
+        hit = mask(u_in, v_in + sign[group][:, None] * depth[None, :])
+        return np.asarray(np.bincount(group, weights=hit.sum(axis=1), minlength=v.size), dtype=np.float64)
+
+    # Seen floor on one side of the gap, straight through it.
+    ones = np.ones(v.size)
+    share_minus = inner_count(at.seen, looks.near, -ones) / (inner_n * looks.near.size)
+    share_plus = inner_count(at.seen, looks.near, ones) / (inner_n * looks.near.size)
+    sign = np.where(share_minus >= share_plus, -1.0, 1.0)
+    keep = np.maximum(share_minus, share_plus) >= OUTER_INSIDE_MIN_SHARE
+    # On the other (-sign): rays through all of the gap, reaching on.
+    keep &= inner_count(at.floor, looks.near, -sign) / (inner_n * looks.near.size) >= GAP_MIN_FLOOR_SHARE
+    keep &= inner_count(at.floor, looks.ray, -sign) > 0
+    # An opaque wall beside it: unknown behind it, along the wall past each jamb.
+    side_u = np.arange(1.0, OUTER_NEAR_M / res + 1e-9)
+    behind = 0.0
+    for u_side in (ua[:, None] - side_u[None, :], ub[:, None] + side_u[None, :]):
+        hit = at.unknown(u_side[:, :, None], v[:, None, None] + (-sign)[:, None, None] * looks.beside[None, None, :])
+        behind = behind + hit.sum(axis=(1, 2))
+    keep &= behind / (2 * side_u.size * looks.beside.size) >= OUTER_BEHIND_MIN_UNKNOWN
+    # Not walled in: beyond the wall, what bounds the floor across the way the rays went is
+    # wall on both sides over less than OUTER_WALLED_MAX_SHARE of the look.
+    idx = np.flatnonzero(keep)
+    u_mid = (ua[idx] + ub[idx]) / 2
+    v_far = v[idx][:, None] - sign[idx][:, None] * looks.far[None, :]  # (candidate, depth)
+    walled = np.ones(v_far.shape, dtype=bool)
+    for way in (-1.0, 1.0):
+        uu = u_mid[:, None] + way * looks.across[None, :]  # (candidate, offset)
+        ff = at.floor(uu[:, None, :], v_far[:, :, None])
+        first = np.where(ff.all(axis=2), uu.shape[1] - 1, np.argmin(ff, axis=2))
+        walled &= at.wall(np.take_along_axis(uu, first, axis=1), v_far)
+    keep[idx] = walled.sum(axis=1) / looks.far.size < OUTER_WALLED_MAX_SHARE
+    out: list[OuterGap] = []
+    for i in np.flatnonzero(keep).tolist():
+        sg = float(sign[i])
+        r, c = at.floor.rc(np.array([(ua[i] + ub[i]) / 2]), np.array([v[i]]))
+        # d(r, c)/dv = (cos_t, -sin_t): from the seen side (v + sign * depth) out.
+        out.append(OuterGap((float(r[0]) + 0.5, float(c[0]) + 0.5), (-sg * lc.cos_t, sg * lc.sin_t),
+                            float((ub[i] - ua[i] - 1) * res)))
     return out
 
 

@@ -47,6 +47,7 @@ from langnav.grounding.history import EMPTY_HISTORY, HistoryView
 from langnav.grounding.relations import hall_axis
 from langnav.grounding.selection import (
     WallLine,
+    came_through_doors,
     describe_ref,
     doors_of,
     label_of,
@@ -103,6 +104,10 @@ NEXT_TO_MAX_M: Final = 0.9
 #: walk from a robot off the middle line reaches it within one width, so the direction is then
 #: within ~15 deg of the hallway's.
 RUN_HEAD_WIDTHS: Final = 2.0
+#: Stepping into a hallway, the robot passes a point of its walk this far before the spot where it
+#: stops: it ends facing the way it came in (across the hallway from a room's door), so "then the
+#: first door on your left" is read as a person stepping out of the room would.
+INTO_HALL_LEAD_M: Final = 1.0
 #: Beside a side of a thing, at least this far in from the side's ends (about the robot's radius:
 #: level with the side, not off the corner).
 NEXT_TO_FACE_INSET_M: Final = 0.25
@@ -475,7 +480,8 @@ def _navigate_full(step: Step, ctx: GroundingContext, pose: Pose, index: int) ->
         return _room_goal(step, ref, room, detail, ctx, pose, comp, index)
     if ref.kind == Kind.UNEXPLORED_AREA and detail == Detail.MIDDLE:
         detail = Detail.TOWARDS
-    e = select(ref, ctx.analysis, pose, step.text)
+    last_leg = (ctx.route[-2], ctx.route[-1]) if len(ctx.route) >= 2 else None
+    e = select(ref, ctx.analysis, pose, step.text, came_through_doors(ctx.analysis, pose, last_leg))
     desc = describe_ref(ref)
     if detail == Detail.THROUGH and isinstance(e, Door | NarrowPassage):
         poses = _through(e, ctx, pose, comp, desc)
@@ -842,6 +848,15 @@ def _room_goal(step: Step, ref: ElementRef, room: Room, detail: Detail, ctx: Gro
     mask = _room_cells_mask(ctx, room)
     in_room = _in_label(ctx, room.label)
     messages: tuple[str, ...] = ()
+    if detail in (Detail.TO, Detail.STOP_AT) and _plain_space(ref):
+        if room is space_of(ctx.analysis, pose.xy):
+            # "go in the corridor to the second door": the robot is in it already; nothing to drive
+            note = f"I am in {label_of(room)} already"
+            return GroundedStep(index, step, (), pose, pose, note, (room.id,), messages=(note + ".",))
+        if room.kind == ElementKind.HALLWAY and len(room.cells_xy) >= 3:
+            stepped = _step_into_hallway(room, ctx, pose, comp)
+            if stepped is not None:
+                return _nav_step(step, pose, index, stepped, f"into {desc}", (room.id,))
     if detail == Detail.OPPOSITE_SIDE_OF and room.kind == ElementKind.HALLWAY and ref.kind != Kind.ROOM \
             and len(room.cells_xy) >= 3:
         # (a space the user calls a room has an opposite side, even when it is long enough for a hall)
@@ -869,6 +884,37 @@ def _room_goal(step: Step, ref: ElementRef, room: Room, detail: Detail, ctx: Gro
                         f"{math.dist(goal, room.centroid):.1f} m from it.",)
     verb = "to the middle of" if detail == Detail.MIDDLE else "into"
     return _nav_step(step, pose, index, [goal], f"{verb} {desc}", (room.id,), messages=messages)
+
+
+def _plain_space(ref: ElementRef) -> bool:
+    """A space named by its kind alone ("the hallway", "the corridor"), no word picking one of several."""
+    return (ref.ordinal is None and ref.superlative is None and ref.side is None and ref.label is None
+            and ref.relation is None and ref.near is None and ref.name is None and not ref.passed)
+
+
+def _step_into_hallway(hall: Room, ctx: GroundingContext, pose: Pose, comp: int) -> list[Point] | None:
+    """"Go out into the hallway": a hallway is entered where the walk from here first reaches it (out
+    of the room's door), onto its middle line; not at its middle, which may be far along it. The
+    poses are a point of the walk INTO_HALL_LEAD_M before that spot and the spot itself, so the robot
+    ends facing the way it walked in. None when the walk does not reach the hallway."""
+    walk = walk_from(ctx.space, pose.xy)
+    if walk is None:
+        return None
+    cells = np.asarray(hall.cells_xy, dtype=float).reshape(-1, 2)
+    reached = walk.reached(cells[:, 0], cells[:, 1])
+    if not reached.any():
+        return None
+    metres = np.where(reached, walk.each(cells[:, 0], cells[:, 1]), np.inf)
+    entry = (float(cells[int(np.argmin(metres)), 0]), float(cells[int(np.argmin(metres)), 1]))
+    target = _on_middle_line(hall, entry, None)
+    goal = ctx.space.safe_point_near(target, comp, FOLLOW_SNAP_M, prefer=target, where=_in_label(ctx, hall.label))
+    if goal is None:
+        return None
+    path = walk.path_to(goal)
+    lengths = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff([p[0] for p in path]), np.diff([p[1] for p in path])))])
+    lead = [p for p, d in zip(path[1:-1], lengths[1:-1], strict=True)
+            if lengths[-1] - d >= INTO_HALL_LEAD_M and ctx.space.is_goal_ok(*p, component=comp)]
+    return [lead[-1], goal] if lead else [goal]
 
 
 def _opposite_side(room: Room, mask: BoolArray, ctx: GroundingContext, pose: Pose, comp: int) -> Point | None:

@@ -436,10 +436,13 @@ def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
 
 
 # ------------------------------------------------------------------------------ selection
-def select(ref: ElementRef, analysis: MapAnalysis, pose: Pose, words: str = "") -> Element:
+def select(ref: ElementRef, analysis: MapAnalysis, pose: Pose, words: str = "",
+           came_through: frozenset[str] = frozenset()) -> Element:
     """The one element the words mean. Raises GroundingError saying what the map has instead.
-    ``words`` is the step's text, read only for the shape of an obstacle ("the box")."""
-    return select_many(ref, analysis, pose, 1, words)[0]
+    ``words`` is the step's text, read only for the shape of an obstacle ("the box") and "gap".
+    ``came_through``: the doors the robot has just walked through (``came_through_doors``), which
+    are behind it, where it came from, not "the first door on your left"."""
+    return select_many(ref, analysis, pose, 1, words, came_through)[0]
 
 
 def aspect_ratio(o: Obstacle) -> float:
@@ -459,7 +462,8 @@ def shape_filter(pool: list[Element], words: str) -> list[Element]:
     return keep or pool
 
 
-def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, words: str = "") -> list[Element]:
+def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, words: str = "",
+                came_through: frozenset[str] = frozenset()) -> list[Element]:
     """``count`` elements the words mean, best first ("the two obstacles in this room")."""
     if ref.name:
         raise GroundingError(
@@ -519,6 +523,8 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
                 raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]} other than the one I am in.")
     if ref.side is not None:
         pool = [e for e in pool if matches_side(e, pose, ref.side)]
+        if came_through and ref.side in (Side.LEFT, Side.RIGHT):
+            pool = [e for e in pool if e.id not in came_through]
     if ref.kind == Kind.OBSTACLE and words:
         pool = shape_filter(pool, words)
     by_landmark: dict[int, float] | None = None
@@ -562,6 +568,27 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         raise GroundingError(f"I see only {_count_phrase(len(ordered), ref)}, so I cannot find "
                              f"{describe_ref(ref) if count == 1 else f'{count} of them'}.")
     return ordered[k:k + count]
+
+
+def came_through_doors(analysis: MapAnalysis, pose: Pose, last_leg: tuple[Point, Point] | None) -> frozenset[str]:
+    """The doors whose opening the robot's last leg of way crossed and that are now behind it (beyond
+    +-120 deg): the door it just stepped out of. One does not call the door one has just come
+    through "the first door on your left": it is where one came from."""
+    if last_leg is None or math.dist(*last_leg) < 1e-6:
+        return frozenset()
+    a, b = last_leg
+    out: set[str] = set()
+    for d in analysis.doors:
+        if _segments_cross(a, b, d.jambs[0], d.jambs[1]) and is_behind(pose, d.center):
+            out.add(d.id)
+    return frozenset(out)
+
+
+def _segments_cross(a: Point, b: Point, c: Point, d: Point) -> bool:
+    def orient(p: Point, q: Point, r: Point) -> float:
+        return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
+    o1, o2, o3, o4 = orient(a, b, c), orient(a, b, d), orient(c, d, a), orient(c, d, b)
+    return o1 * o2 < 0 and o3 * o4 < 0
 
 
 def _plain(ref: ElementRef) -> bool:

@@ -22,7 +22,7 @@ from langnav.language.offline.reading import (
     checked_angle,
 )
 from langnav.language.offline.scratch import Clause
-from langnav.language.offline.turns import repeat_count, rotation
+from langnav.language.offline.turns import amount_said, repeat_count, rotation
 from langnav.language.offline.verbs import Verb
 
 #: Sides only a turn has ("clockwise"): a fragment with one of them is a turn.
@@ -64,20 +64,21 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
     # a move goes one way: another way said in the clause ("move forward 2 m before turning left")
     # is an instruction not read, never dropped: it stays unread, so the translator asks
     c.lost.extend(d.value for d in directions[1:] if d != direction)
-    distance: float | None = None
     amount: Amount | None = None
+    counted: list[Quantity] = []
     for q in quantities:
         c.s.use(q.start, q.end)
         if q.kind == QuantityKind.LENGTH:
-            distance = (distance or 0.0) + q.value
+            counted.append(q)
             if q.approximate:
                 c.doubt(VAGUE_NUMBER_FACTOR)
         elif q.kind == QuantityKind.BARE and not lengths:
-            distance = (distance or 0.0) + q.value
+            counted.append(q)
             c.doubt(UNITLESS_NUMBER_FACTOR)
             c.asks.append(ASK_UNIT.format(number=c.s.text[q.start:q.end].strip()))
         else:
             c.lost.append(c.s.text[q.start:q.end])
+    distance = amount_said(c, counted)
     if distance is None and direction is None and not little:
         return []  # "go to the kitchen": no element, no direction, no number -> a name or nothing
     if distance is None:
@@ -109,10 +110,9 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
 
 def rotation_from(c: Clause, direction: Direction, quantities: list[Quantity],
                    little: list[re.Match[str]]) -> Step:
-    angle = None
     for q in quantities:
         c.s.use(q.start, q.end)
-        angle = (angle or 0.0) + q.value
+    angle = amount_said(c, quantities)
     amount = None if angle is not None else Amount.LITTLE if little else Amount.DEFAULT
     return Step(movement=Movement.ROTATE, direction=direction, angle_deg=checked_angle(angle), amount=amount,
                 text=c.text[:500])

@@ -17,6 +17,7 @@ from langnav.language.offline.corrections import (
     is_hedge,
     join_fragments,
 )
+from langnav.language.offline.idioms import plain_idioms
 from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.photos import without_photo
@@ -25,8 +26,9 @@ from langnav.language.offline.restarts import (
     drop_insisted_amounts,
     drop_stopped,
     merge_restated_turns,
+    read_stated_amounts,
 )
-from langnav.language.offline.speech import plain_speech
+from langnav.language.offline.speech import plain_speech, unfinished_number
 from langnav.language.offline.splitter import split_steps
 from langnav.language.translator import Context, clean_prompt
 
@@ -58,6 +60,9 @@ NEGATIVE_MESSAGE: Final = (
 NO_CAMERA_MESSAGE: Final = (
     "I have no camera, so I can't take pictures or tell you what I see. I can drive, turn, stop, explore "
     "the map and tell you where I am, my path or the map.")
+CUT_NUMBER_MESSAGE: Final = (
+    "I heard a number cut off ('{said}'), so I don't know how far or how much: say it again, e.g. 'turn left "
+    "45 degrees'. Nothing was run.")
 CANCELLED_MESSAGE: Final = "You took that back ('never mind'), so I did nothing. Tell me what to do next."
 PHOTO_LEFT_OUT_MESSAGE: Final = "I did the motion but took no picture: I have no camera."
 TOO_MANY_STEPS_MESSAGE: Final = (
@@ -83,8 +88,11 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     if negative is not None:
         shown = text[negative.start():negative.start() + 12].split()[0]
         return _clarify(NEGATIVE_MESSAGE.format(number=shown), confidence=1.0, unread=[])
-    text = plain_speech(canonical_numbers(text))
+    text = plain_idioms(plain_speech(canonical_numbers(text)))
     clauses, photo = _clauses(text)
+    cut = next((c for c in map(unfinished_number, clauses) if c is not None), None)
+    if cut is not None:
+        return _clarify(CUT_NUMBER_MESSAGE.format(said=cut), confidence=ASK_CONFIDENCE, unread=[cut])
     sequenced = _SEQUENCE_RE.search(text) is not None
     steps: list[Step] = []
     unread: list[str] = []
@@ -132,6 +140,8 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
             steps[-1] = _amend(steps[-1], new_steps.pop(0), clause)
         if steps and new_steps and not sequenced and _restates(steps[-1], new_steps[0], clause):
             new_steps.pop(0)  # "forward two metres. forward two metres.": said again, done once
+        while steps and new_steps and _asked_again(steps[-1], new_steps[0]):
+            new_steps.pop(0)  # "hold it, hold it"; "where are you? can you tell me where you are?"
         steps.extend(new_steps)
         if steps:
             previous = steps[-1]
@@ -185,6 +195,7 @@ def _clauses(text: str) -> tuple[list[str], bool]:
             kept.append(without.rest)
     # fragments join the instruction they complete both before and after the corrections: "move five
     # meters, I mean five feet, forward" is corrected first, then completed
+    kept = drop_insisted_amounts(read_stated_amounts(kept))  # before joining: "..., only a little"
     joined = join_fragments(apply_corrections(join_fragments(kept, _is_open)), _is_open)
     return merge_restated_turns(drop_stopped(drop_insisted_amounts(joined), _read), _read), photo
 
@@ -249,6 +260,18 @@ def _restates(previous: Step, step: Step, clause: str) -> bool:
     else:
         a, b = previous.angle_deg, step.angle_deg
     return a is not None and b is not None and abs(a - b) <= _SAME_AMOUNT_TOL
+
+
+#: Steps that move nothing: said twice in a row, they are one request.
+_NO_MOTION: Final = frozenset({Movement.STOP, Movement.QUERY})
+
+
+def _asked_again(previous: Step, step: Step) -> bool:
+    """A stop or a question said again right after itself ("hold it, hold it"; "where are you now?
+    can you tell me where you are?") is the speaker insisting: one stop, one answer. (With a motion
+    between, the second question asks something new: where the robot is now.)"""
+    return (step.movement in _NO_MOTION and step.movement == previous.movement and step.query == previous.query
+            and step.target == previous.target)
 
 
 def _amendable(previous: Step, fragment: Step) -> bool:
