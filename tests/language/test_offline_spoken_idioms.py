@@ -317,3 +317,11 @@ def test_a_question_the_instruction_answers_is_thinking_aloud(prompt: str) -> No
 def test_a_question_the_instruction_does_not_answer_stays_unread() -> None:
     intent = translate_offline("which way is the door? turn left")
     assert intent.unread
+
+
+@pytest.mark.parametrize(("prompt", "want"), [
+    ("turn seventy degrees left no seventy five", [_turn(Direction.LEFT, 75)]),
+    ("back up four feet no three feet", [_move(Direction.BACKWARD, 3 * FT)]),
+])
+def test_no_before_a_number_corrects_the_amount(prompt: str, want: list[Plain]) -> None:
+    assert _plain(translate_offline(prompt)) == want

@@ -52,6 +52,9 @@ CORRECTION_MARKERS: Final = (
     r"seven|eight|nine|ten|half|just|only|twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety))",
     r"(?:i'?m|i\s+am|im)\s+sorry", r"sorry", r"i\s+meant", r"i\s+mean", r"or\s+rather", r"make\s+that",
     r"scratch\s+that", r"never\s*mind", r"correction", r"oops",
+    # "turn eighty degrees right no eighty five": "no" right before a number corrects the amount
+    r"no(?=\s+(?:\d|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|fifteen|twenty|thirty|forty|fifty|"
+    r"sixty|seventy|eighty|ninety|a\s+hundred|half)\b)",
 )
 _MARKER_INSIDE: Final = re.compile(r"(?P<before>\S+)\s+(?=(?:" + "|".join(CORRECTION_MARKERS) + r")\b)",
                                    re.IGNORECASE)

@@ -21,7 +21,7 @@ from langnav.language.offline.idioms import plain_idioms
 from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.photos import without_photo
-from langnav.language.offline.reading import ASK_CONFIDENCE
+from langnav.language.offline.reading import ASK_CONFIDENCE, ASK_SIDE
 from langnav.language.offline.restarts import (
     drop_insisted_amounts,
     drop_stopped,
@@ -219,7 +219,10 @@ def _answered_by(question: str, steps: list[Step]) -> bool:
 def _same_turn(before: str, implied: str) -> bool:
     """The turn a picture request implies ("... what's on your left") is a turn to the side the
     instruction before it just turned to."""
-    a, b = read_clause(before).steps, read_clause(implied).steps
+    first = read_clause(before)
+    a, b = first.steps, read_clause(implied).steps
+    if ASK_SIDE in first.asks:
+        return False  # "turn 130 degrees, and take a picture counterclockwise": the side is the picture's
     return (len(a) >= 1 and len(b) == 1 and a[-1].movement == b[0].movement == Movement.ROTATE
             and b[0].angle_deg is None and a[-1].direction == b[0].direction and a[-1].heading_deg is None)
 
