@@ -332,3 +332,15 @@ def test_into_the_hallway_when_in_it_is_no_move(name: str, turn: float) -> None:
     assert r.ok, r.clarification
     assert not r.items[0].commands  # in the hallway already
     assert math.dist(drawn_point(name, last_goal(r)), (7.0, 5.0)) <= 0.75  # D(3,5), then D(7,5)
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+def test_it_is_the_element_of_the_step_before(name: str, turn: float) -> None:
+    # "it" is read with the words of the room before; from inside that room those words would pick
+    # another room, so "it" is that room, by its label (kept when the step is grounded again)
+    a, frame = floor(name)
+    r = plan("go into the first room on your left and then go to the middle of it", a, pose_in(frame, 2.0, 6.0, 0.0, turn))
+    assert r.ok, r.clarification
+    room2 = room_holding(a, frame, 5.0, 9.0)
+    assert a.room_at(*last_goal(r)) is room2 and math.dist(last_goal(r), room2.centroid) <= 0.75
+    assert r.items[1].step.target is not None and r.items[1].step.target.label is not None

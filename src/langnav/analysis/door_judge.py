@@ -356,6 +356,12 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
             sides = (-1.0,) if d.b == 0 else (-1.0, 1.0)
             ok = all(floor_beyond(free, far, d.center_rc, d.normal_rc, sd, resolution_m) >= BEYOND_MIN_FLOOR_SHARE
                      for sd in sides)
+            # ... and a door onto the unexplored has the unexplored beyond it, not seen floor: a
+            # line from a wall to the scanned face of a wardrobe whose inside is unknown runs
+            # across a room, with the room's floor on both sides. (A gap in a wall line found
+            # so has had what lies beyond it judged there.)
+            if ok and d.b == 0 and not d.in_wall_line:
+                ok = floor_beyond(free, far, d.center_rc, d.normal_rc, 1.0, resolution_m) < BEYOND_MIN_FLOOR_SHARE
         (doors if ok else rest).append(d)
     return doors, rest
 

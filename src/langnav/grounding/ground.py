@@ -9,6 +9,7 @@ words are those of ``../shared/bench/README.md``; every goal is a free cell at l
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Final, Literal
@@ -100,9 +101,8 @@ CORNER_GOAL_MAX_M: Final = 0.9
 #: "next to X": stand this far from X's edge, never farther than NEXT_TO_MAX_M (README: 1.0 m).
 NEXT_TO_STANDOFF_M: Final = 0.45
 NEXT_TO_MAX_M: Final = 0.9
-#: The straight run of a hallway sets off the way the walk goes over this many hallway widths: the
-#: walk from a robot off the middle line reaches it within one width, so the direction is then
-#: within ~15 deg of the hallway's.
+#: The straight run of a hallway sets off along the hallway's axis this many hallway widths along the
+#: walk: past a junction the robot may stand in, on the middle line the walk reaches within a width.
 RUN_HEAD_WIDTHS: Final = 2.0
 #: Stepping into a hallway, the robot passes a point of its walk this far before the spot where it
 #: stops: it ends facing the way it came in (across the hallway from a room's door), so "then the
@@ -241,7 +241,7 @@ def ground(intent: Intent, analysis: MapAnalysis, pose: Pose | Sequence[float], 
     steps: list[GroundedStep] = []
     cur = start
     for i, step in enumerate(intent.steps):
-        gs = ground_step(step, ctx, cur, i)
+        gs = ground_step(_same_element_as_before(step, steps[-1] if steps else None), ctx, cur, i)
         steps.append(gs)
         ctx.advance(gs)
         cur = gs.end_pose
@@ -275,6 +275,29 @@ class GroundingContext:
         if not pts or math.dist(pts[-1], pose.xy) > SAME_POINT_M:
             pts.append(pose.xy)
         return pts
+
+
+#: Words that point back at the element of the step before ("the middle of it", "go in there").
+_BACK_REF_RE: Final = re.compile(r"\b(?:it|there|that one|this one|that room|this room|them)\b", re.IGNORECASE)
+#: The id prefixes that the label words of each kind name (``select_by_label``).
+_LABEL_PREFIXES: Final = {Kind.ROOM: ("room", "hallway"), Kind.HALLWAY: ("room", "hallway"), Kind.DOOR: ("door",),
+                          Kind.OBSTACLE: ("obstacle",), Kind.CORNER: ("corner",)}
+
+
+def _same_element_as_before(step: Step, prev: GroundedStep | None) -> Step:
+    """"Go into the first room on your left and then go to the middle of it": the reader gives "it"
+    the words of the element before, but from inside that room they would pick another one; the
+    words point back at the element the step before went to, so it is named by its label (which
+    also holds when the step is grounded again later, from wherever the robot is then)."""
+    ref = step.target
+    if prev is None or ref is None or prev.step.target != ref or len(prev.element_ids) != 1 \
+            or not _BACK_REF_RE.search(step.text) or ref.label is not None:
+        return step
+    element_id = prev.element_ids[0]
+    prefix, _, number = element_id.rpartition("_")
+    if not number.isdigit() or prefix not in _LABEL_PREFIXES.get(ref.kind, ()):
+        return step
+    return step.model_copy(update={"target": ElementRef(kind=ref.kind, label=int(number))})
 
 
 def advance_way(route: list[Point], moved_from: list[Pose], gs: GroundedStep) -> None:
@@ -1145,13 +1168,16 @@ def _hallway_way(hall: Room, ctx: GroundingContext, pose: Pose, desc: str) -> co
 
 def _down_the_run(way: compose.Way, hall: Room, pose: Pose) -> compose.Way:
     """The way down the hallway as far as its straight run goes (``Way.straight_leg``). The run sets
-    off the way the walk heads over its first RUN_HEAD_WIDTHS hallway widths (not the hallway's axis
-    where the robot stands, which tilts at a junction)."""
+    off along the hallway's axis where the walk is RUN_HEAD_WIDTHS hallway widths on (not where the
+    robot stands, where it tilts at a junction; nor the walk's own first stretch, which slants to the
+    middle line from a robot off it), the way the walk goes."""
     head = way.point_at(min(way.length_m, RUN_HEAD_WIDTHS * hall.width_m))
     v = (head[0] - pose.x_m, head[1] - pose.y_m)
     if math.hypot(*v) < compose.MIN_OFFSET_RUN_M:
         return way
-    return way.straight_leg(unit(v), hall.width_m)
+    _, axis = hall_axis(hall, head)
+    heading = axis if axis[0] * v[0] + axis[1] * v[1] >= 0 else (-axis[0], -axis[1])
+    return way.straight_leg(heading, hall.width_m)
 
 
 def _on_the_way(hall: Room, way: compose.Way, s_m: float, s_max: float, ctx: GroundingContext,
