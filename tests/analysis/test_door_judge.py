@@ -199,3 +199,23 @@ def test_a_slanted_gap_between_a_walls_end_and_a_corner_is_no_door() -> None:
     r, c = grid.world_to_cell(4.3, 1.7)
     assert line_turn_deg(grid.cells == OCCUPIED, (float(r), float(c)), math.radians(45.0),
                          grid.resolution_m) == pytest.approx(45.0, abs=3.0)
+
+
+def room_with_a_wardrobe() -> OccupancyGrid:
+    """A 4.3 m x 5 m room with a wardrobe (1 m wide, 2.5 m deep) against its north wall: only
+    its front face was scanned, its inside is unknown and runs out through a laser gap in the
+    wall behind it into the unscanned outside. Gaps of 1.9 m and 1.4 m lie between the wardrobe
+    and the room's side walls, with the room's floor on both sides of them."""
+    b = MapBuilder(8.0, 8.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 4.3, 5.0)
+    b.unknown(1.9, 2.5, 2.9, 5.2).rect(1.9, 2.45, 2.9, 2.5, OCCUPIED)
+    return b.build("room with a wardrobe")
+
+
+def test_no_door_onto_the_unexplored_has_seen_floor_beyond_it() -> None:
+    """A line from a side wall to the wardrobe's scanned face runs across the room, not into
+    unexplored territory (its floor lies beyond it): the room is one space with no door."""
+    grid = room_with_a_wardrobe()
+    seg = segment_spaces(grid)
+    assert len(seg.rooms) == 1
+    assert seg.doors == ()

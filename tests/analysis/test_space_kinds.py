@@ -1,14 +1,18 @@
-"""Room or hallway: golden buildings for the ways the kind went wrong on real and drawn maps
-(issue 8). A hallway is judged by its typical width wall to wall and by how it connects: a short
-hall that many rooms open onto is a hallway, however a bay widens it; a shop whose counter
-leaves two corridor-wide aisles is a room."""
+"""Rooms and hallways: golden buildings for the ways spaces and their kind went wrong on real
+and drawn maps (issue 8). A hallway is judged by its typical width wall to wall and by how it
+connects: a short hall that many rooms open onto is a hallway, however a bay widens it; a shop
+whose counter leaves two corridor-wide aisles is a room; a lounge open onto a corridor is a room
+apart from it; a small bathroom behind its door is a room of its own."""
 
 from __future__ import annotations
+
+import dataclasses
 
 import pytest
 from analysis_maps import POS_TOL_M, door_near, space_at
 
 from langnav.analysis.elements import ElementKind
+from langnav.analysis.params import DEFAULT_PARAMS
 from langnav.analysis.segmentation import UNKNOWN_ID, segment_spaces
 from langnav.maps.draw import MapBuilder
 from langnav.maps.grid import OccupancyGrid
@@ -74,3 +78,97 @@ def test_a_shop_whose_counter_leaves_corridor_wide_aisles_is_a_room() -> None:
     assert shop.kind == ElementKind.ROOM
     assert len(seg.doors) == 2
     assert {d.connects for d in seg.doors} == {(shop.id, UNKNOWN_ID)}
+
+
+def corridor_open_onto_a_lounge() -> OccupancyGrid:
+    """A 2.4 m corridor, 40 m long, with a 12 m x 8 m lounge open onto its south side along the
+    lounge's whole length (no wall between: a care home's day room, a lobby), armchairs and a
+    table in the lounge, and an office off the corridor through a 0.9 m door."""
+    b = MapBuilder(44.0, 18.0)
+    b.room(1.0, 10.0, 41.0, 12.4)
+    b.room(15.0, 2.0, 27.0, 10.0)
+    b.free(15.05, 9.8, 26.95, 10.2)  # the open side
+    b.room(5.0, 12.4, 9.0, 16.4).door_h(7.0, 12.4, 0.9)
+    b.box(18.0, 5.0, 19.0, 6.0).box(22.0, 5.0, 23.5, 6.0)
+    return b.build("corridor open onto a lounge")
+
+
+def test_a_lounge_open_onto_a_corridor_is_a_room_apart_from_the_corridor() -> None:
+    """Nothing narrows where the corridor meets the lounge, so the flood sees one space; but
+    the lounge is far wider than any corridor (a 6 m disc fits in it over a stretch): it is a
+    hall of its own, a room, and the corridor runs on either side of it as hallways."""
+    grid = corridor_open_onto_a_lounge()
+    seg = segment_spaces(grid)
+    lounge = space_at(seg, grid, 21.0, 5.0)
+    west = space_at(seg, grid, 5.0, 11.2)
+    east = space_at(seg, grid, 37.0, 11.2)
+    office = space_at(seg, grid, 7.0, 14.4)
+    assert len({lounge.id, west.id, east.id, office.id}) == 4
+    assert len(seg.rooms) == 4
+    assert lounge.kind == ElementKind.ROOM
+    assert west.kind == ElementKind.HALLWAY
+    assert east.kind == ElementKind.HALLWAY
+    assert office.kind == ElementKind.ROOM
+    assert lounge.area_m2 == pytest.approx(12 * 8 + 12 * 2.4, rel=0.1)  # with the corridor beside it
+    assert west.width_m == pytest.approx(2.4, abs=0.15)
+    d = door_near(seg.doors, 7.0, 12.4)
+    assert set(d.connects) == {west.id, office.id}
+    # The corridor and the lounge meet through openings as wide as the corridor, not doors.
+    assert {frozenset(o.connects) for o in seg.openings} == {frozenset((lounge.id, west.id)),
+                                                             frozenset((lounge.id, east.id))}
+    assert all(o.width_m == pytest.approx(2.4, abs=0.15) for o in seg.openings)
+
+
+def bedroom_with_an_en_suite() -> OccupancyGrid:
+    """A 4 m x 4 m bedroom with a 1.4 m x 1.8 m en-suite bathroom behind a 0.75 m door in its
+    east wall, and a 2.2 m corridor north of it through a 0.9 m door."""
+    b = MapBuilder(10.0, 9.0)
+    b.room(1.0, 1.0, 5.0, 5.0)
+    b.room(5.0, 1.0, 6.4, 2.8).door_v(5.0, 1.9, 0.75)
+    b.room(1.0, 5.0, 7.0, 7.2).door_h(3.0, 5.0, 0.9)
+    return b.build("bedroom with an en-suite")
+
+
+def test_a_small_bathroom_behind_its_door_is_a_room_of_its_own() -> None:
+    """Its door is wide for its size (0.75 m for 2.5 m2), as a bay's mouth is; but a bay is
+    open across its whole width, and the door takes less than half of the bathroom's wall.
+    With the wall-line closure off (a noisy scan whose wall lines are broken), the flood
+    alone must keep it apart."""
+    grid = bedroom_with_an_en_suite()
+    params = dataclasses.replace(DEFAULT_PARAMS, seg_wall_line_gap_max_m=0.0)
+    seg = segment_spaces(grid, params)
+    bedroom = space_at(seg, grid, 3.0, 3.0)
+    bathroom = space_at(seg, grid, 5.7, 1.9)
+    corridor = space_at(seg, grid, 4.0, 6.1)
+    assert len({bedroom.id, bathroom.id, corridor.id}) == 3
+    assert len(seg.rooms) == 3
+    assert bathroom.kind == ElementKind.ROOM
+    assert bathroom.area_m2 == pytest.approx(1.4 * 1.8, rel=0.15)
+    d = door_near(seg.doors, 4.95, 1.9)
+    assert set(d.connects) == {bedroom.id, bathroom.id}
+    assert d.width_m == pytest.approx(0.75, abs=POS_TOL_M)
+
+
+def guest_room_with_an_en_suite() -> OccupancyGrid:
+    """A 2 m x 7 m hotel guest room entered from a corridor through a 0.9 m door at its north
+    end, with a 2.5 m x 2.5 m en-suite bathroom behind a 0.8 m door in its east wall."""
+    b = MapBuilder(12.0, 12.0)
+    b.room(1.0, 1.0, 3.0, 8.0)
+    b.room(3.0, 1.0, 5.5, 3.5).door_v(3.0, 2.5, 0.8)
+    b.room(1.0, 8.0, 11.0, 10.2).door_h(2.0, 8.0, 0.9)
+    return b.build("guest room with an en-suite")
+
+
+def test_a_narrow_room_with_an_en_suite_is_a_room_not_a_hallway() -> None:
+    """The guest room is as narrow and long as a corridor and has two doors, but its second
+    door leads only into its own bathroom (a smaller dead end): no one walks through it."""
+    grid = guest_room_with_an_en_suite()
+    seg = segment_spaces(grid)
+    guest = space_at(seg, grid, 2.0, 5.0)
+    bathroom = space_at(seg, grid, 4.2, 2.2)
+    assert guest.id != bathroom.id
+    assert len(seg.rooms) == 3
+    assert guest.kind == ElementKind.ROOM
+    assert bathroom.kind == ElementKind.ROOM
+    assert set(door_near(seg.doors, 2.95, 2.5).connects) == {guest.id, bathroom.id}
+    assert guest.id in door_near(seg.doors, 2.0, 7.95).connects

@@ -10,12 +10,15 @@ import math
 import numpy as np
 import pytest
 from analysis_maps import POS_TOL_M, door_near, space_at
+from scipy import ndimage as ndi
 
 from langnav.analysis.elements import ElementKind
-from langnav.analysis.segmentation import segment_spaces
-from langnav.analysis.wall_lines import dominant_directions
+from langnav.analysis.params import DEFAULT_PARAMS
+from langnav.analysis.seg_doors import SEEN_FLOOR_MIN_M
+from langnav.analysis.segmentation import UNKNOWN_ID, segment_spaces
+from langnav.analysis.wall_lines import dominant_directions, outer_gaps
 from langnav.maps.draw import MapBuilder
-from langnav.maps.grid import OccupancyGrid
+from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
 
 def glass_fronted_offices() -> tuple[OccupancyGrid, list[float]]:
@@ -197,3 +200,101 @@ def test_a_row_of_racks_with_a_gap_every_few_metres_does_not_split_a_hall() -> N
     assert space_at(seg, grid, 10.0, 3.0) is space_at(seg, grid, 10.0, 11.0)
     assert seg.doors == ()
     assert seg.openings == ()
+
+
+def room_with_a_door_seen_through(fan_half_deg: float = 35.0) -> OccupancyGrid:
+    """A 6 m x 4 m room with a 1.0 m door at y = 2 in its east wall (x = 6.05, 0.1 m thick). The
+    lidar saw out through it: a fan of rays spreading fan_half_deg either side for 4 m into the
+    unscanned outside (its frontier runs metres long, too long for a door-wide saddle)."""
+    b = MapBuilder(14.0, 8.0, origin=(-1.0, -2.0))
+    b.room(0.0, 0.0, 6.0, 4.0).door_v(6.05, 2.0, 1.0, depth_m=0.2)
+    grid = b.build("door seen through")
+    cells = grid.cells.copy()
+    rows, cols = np.mgrid[0:cells.shape[0], 0:cells.shape[1]]
+    x = grid.origin_x_m + (cols + 0.5) * grid.resolution_m - 6.1
+    y = grid.origin_y_m + (rows + 0.5) * grid.resolution_m - 2.0
+    fan = (x > 0) & (np.abs(np.degrees(np.arctan2(y, x))) <= fan_half_deg) & (np.hypot(x, y) <= 4.0)
+    cells[fan & (cells == UNKNOWN)] = FREE
+    return OccupancyGrid(cells, grid.resolution_m, grid.origin_x_m, grid.origin_y_m, source=grid.source)
+
+
+def test_a_door_the_lidar_saw_out_through_is_a_door_into_unexplored_territory() -> None:
+    """The gap in the outer wall's line, with the room's seen floor inside and only the fan of
+    rays outside, is the one door, from the room to the unexplored."""
+    grid = room_with_a_door_seen_through()
+    seg = segment_spaces(grid)
+    room = space_at(seg, grid, 3.0, 2.0)
+    assert len(seg.doors) == 1
+    door = door_near(seg.doors, 6.05, 2.0)
+    assert door.connects == (room.id, UNKNOWN_ID)
+    assert door.width_m == pytest.approx(1.0, abs=POS_TOL_M)
+
+
+def seen_masks(grid: OccupancyGrid) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """(wall, free, seen floor, unknown) of a grid: seen = free at least SEEN_FLOOR_MIN_M from
+    unknown."""
+    free, unknown = grid.cells == FREE, grid.cells == UNKNOWN
+    seen = free & (ndi.distance_transform_edt(~unknown) * grid.resolution_m >= SEEN_FLOOR_MIN_M)
+    return grid.cells == OCCUPIED, free, seen, unknown
+
+
+def test_outer_gaps_find_the_door_in_the_wall_line_once_per_line() -> None:
+    grid = room_with_a_door_seen_through()
+    gaps = outer_gaps(*seen_masks(grid), grid.resolution_m, DEFAULT_PARAMS)
+    assert gaps  # the wall line is a band of cells: the gap may be read on each of its lines
+    for g in gaps:
+        x, y = grid.grid_to_world(*g.center_rc)
+        assert math.dist((float(x), float(y)), (6.05, 2.0)) <= POS_TOL_M
+        assert g.width_m == pytest.approx(1.0, abs=POS_TOL_M)
+        assert g.normal_rc[1] > 0.99  # from the room out (east: +col)
+
+
+def corridor_leaving_a_room() -> OccupancyGrid:
+    """A 6 m x 4 m room; a 1.6 m corridor leaves it east through a 1.2 m gap in its wall (jamb
+    stubs narrow the mouth), its walls scanned for 2.5 m, its end unscanned."""
+    b = MapBuilder(14.0, 8.0, origin=(-1.0, -2.0))
+    b.room(0.0, 0.0, 6.0, 4.0).room(6.1, 1.1, 8.6, 2.9)
+    b.wall(6.05, 1.0, 6.05, 3.0).free(5.9, 1.4, 6.2, 2.6)
+    b.unknown(8.6, 1.0, 8.8, 3.0)
+    return b.build("corridor leaving a room")
+
+
+def test_a_gap_onto_a_walled_way_on_is_no_door_onto_the_unexplored() -> None:
+    """Seen from the room alone (the corridor's floor counted unseen), the gap still has walls
+    bounding what lies beyond it on both sides: a corridor running on, not a door onto the
+    unexplored (a fan through a door is bounded by unknown)."""
+    grid = corridor_leaving_a_room()
+    wall, free, seen, unknown = seen_masks(grid)
+    _, c = grid.world_to_index(6.2, 2.0)
+    seen[:, int(c):] = False
+    assert outer_gaps(wall, free, seen, unknown, grid.resolution_m, DEFAULT_PARAMS) == []
+
+
+def exit_at_a_corridors_end() -> OccupancyGrid:
+    """A 1.5 m corridor, 8 m long, ending at the building's outer wall (x = 8.05, running on
+    past it both ways) in a 1.2 m exit: nearly as wide as the corridor. The robot, at x = 5 in
+    the corridor, saw out through the exit: the rays through it spread 4 m into the unscanned
+    outside."""
+    b = MapBuilder(16.0, 8.0, origin=(-1.0, -3.0))
+    b.room(0.0, 0.0, 8.0, 1.5).wall(8.05, -2.5, 8.05, 4.0).door_v(8.05, 0.75, 1.2, depth_m=0.2)
+    grid = b.build("exit at a corridor's end")
+    cells = grid.cells.copy()
+    rows, cols = np.mgrid[0:cells.shape[0], 0:cells.shape[1]]
+    x = grid.origin_x_m + (cols + 0.5) * grid.resolution_m
+    y = grid.origin_y_m + (rows + 0.5) * grid.resolution_m - 0.75
+    through_exit = np.abs(y * (8.05 - 5.0) / np.maximum(x - 5.0, 1e-6)) <= 0.55
+    cells[(x > 8.1) & (x < 12.0) & through_exit & (cells == UNKNOWN)] = FREE
+    return OccupancyGrid(cells, grid.resolution_m, grid.origin_x_m, grid.origin_y_m, source=grid.source)
+
+
+def test_an_exit_in_the_outer_wall_at_a_corridors_end_is_a_door() -> None:
+    """The corridor runs on behind the exit as narrow as it (a passage's mouth, judged on its
+    depth alone), but the exit is a gap in the outer wall's line, as deep as the wall: the one
+    door, from the corridor to the unexplored outside."""
+    grid = exit_at_a_corridors_end()
+    seg = segment_spaces(grid)
+    corridor = space_at(seg, grid, 4.0, 0.75)
+    assert len(seg.doors) == 1
+    door = door_near(seg.doors, 8.05, 0.75, tol=0.2)
+    assert door.connects == (corridor.id, UNKNOWN_ID)
+    assert door.width_m == pytest.approx(1.2, abs=POS_TOL_M)

@@ -490,3 +490,18 @@ def test_a_fraction_of_the_way_to_a_door_is_never_farther_than_asked(hall: MapAn
     full_goal = full.commands[-1].poses[-1][:2]  # type: ignore[union-attr]
     part_goal = part.commands[-1].poses[-1][:2]  # type: ignore[union-attr]
     assert math.dist((x, y), part_goal) <= fraction * math.dist((x, y), full_goal) + SLACK_M
+
+
+# ------------------------------------------------------------------------------ the straight run of a way
+def test_the_straight_run_of_an_l_way_ends_at_its_bend() -> None:
+    from langnav.grounding.compose import LEG_END_TOL_M, Way
+
+    way = Way.through([(0.0, 0.0), (10.0, 0.0), (10.0, 8.0)], 0.01)
+    leg = way.straight_leg((1.0, 0.0), bend_m=2.4)
+    assert leg.length_m == pytest.approx(10.0 - LEG_END_TOL_M, abs=0.11)
+    assert leg.points[-1][1] == pytest.approx(0.0)
+    # a way without a bend, or whose middle line only wiggles, is whole
+    straight = Way.through([(0.0, 0.0), (12.0, 0.0)], 0.01)
+    assert straight.straight_leg((1.0, 0.0), 2.4) is straight
+    wiggle = Way.through([(0.0, 0.0), (5.0, 0.4), (10.0, 0.0)], 0.01)
+    assert wiggle.straight_leg((1.0, 0.0), 2.4) is wiggle

@@ -95,9 +95,13 @@ def test_coming_back_without_a_known_start_is_refused(two_rooms: MapAnalysis) ->
 
 
 def test_issue_5_prompt_end_to_end(two_rooms: MapAnalysis) -> None:
-    """'go to the nearest unexplored area, then come back to the door', planned and validated."""
+    """'go to the nearest unexplored area, then come back to the nearest door', planned and validated;
+    with 'the door' alone room B's two doors are both meant, so the robot asks which."""
     planner = Planner(get_translator("offline"))
-    result = planner.plan("go to the nearest unexplored area, then come back to the door", two_rooms,
+    asked = planner.plan("go to the nearest unexplored area, then come back to the door", two_rooms, (8.0, 3.0, 90.0))
+    assert not asked.ok and asked.clarification is not None
+    assert "door 1" in asked.clarification and "door 2" in asked.clarification
+    result = planner.plan("go to the nearest unexplored area, then come back to the nearest door", two_rooms,
                           (8.0, 3.0, 90.0))
     assert result.ok, result.clarification
     first, second = result.items

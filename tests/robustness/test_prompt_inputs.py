@@ -80,8 +80,8 @@ def test_canonical_numbers(text: str, expect: str) -> None:
 
 
 @pytest.mark.parametrize("prompt", [
-    "go to the door\x00\x01\x02 now", "go\u200b to\u200b the\u200b nearest door", "\u202ego to the nearest door",
-    "go to the 🚪 door 😀", "\ud800 go to the nearest door", "go to the nearest door\r\nthen turn left"])
+    "go to the nearest door\x00\x01\x02 now", "go\u200b to\u200b the\u200b nearest door", "\u202ego to the nearest door",
+    "go to the 🚪 nearest door 😀", "\ud800 go to the nearest door", "go to the nearest door\r\nthen turn left"])
 def test_control_zero_width_and_emoji_characters_are_read_around(prompt: str) -> None:
     r = PLANNER.plan(prompt, GRID, HALLWAY)
     assert r.ok, r.clarification

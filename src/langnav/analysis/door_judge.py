@@ -40,7 +40,7 @@ import numpy.typing as npt
 
 from langnav.analysis.params import AnalysisParams
 from langnav.analysis.precompute import truncated_sq_edt
-from langnav.analysis.seg_doors import RawDoor
+from langnav.analysis.seg_doors import SEEN_FLOOR_MIN_M, RawDoor
 from langnav.analysis.wall_lines import dominant_directions
 
 BoolArray = npt.NDArray[np.bool_]
@@ -72,9 +72,6 @@ JAMB_BAND_M: Final = 0.1
 #: A jamb's wall may leave the jamb-to-jamb line by up to this angle (degrees): ragged wall
 #: ends over a door's width tilt that short baseline; a corner (90 degrees) is no run-on wall.
 ALONG_MAX_TURN_DEG: Final = 25
-#: Seen floor: a free cell at least this far (m) from unscanned cells (a fan of laser rays is
-#: free streaks a few cells wide with unknown between them).
-SEEN_FLOOR_MIN_M: Final = 0.25
 #: Beyond an opening, the place it opens onto is looked at from a wall's thickness ...
 BEYOND_FROM_M: Final = 0.3
 #: ... to this far (m) ...
@@ -121,9 +118,11 @@ def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np
     c = np.floor(cols).astype(np.int64)
     h, w = mask.shape
     inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
-    out = np.full(rows.shape, outside, dtype=bool)
-    out[inside] = mask[r[inside], c[inside]]
-    return out
+    # Read every sample (clipped onto the grid), then set those off it: no masked indexing.
+    np.clip(r, 0, h - 1, out=r)
+    np.clip(c, 0, w - 1, out=c)
+    got = np.asarray(mask[r, c], dtype=bool)
+    return got | ~inside if outside else got & inside
 
 
 def free_widths(free: BoolArray, center_rc: tuple[float, float], normal_rc: tuple[float, float],
@@ -294,12 +293,16 @@ def line_turn_deg(occupied: BoolArray, center_rc: tuple[float, float], line_rad:
     return math.degrees(min(abs((line_rad - q + math.pi / 2) % math.pi - math.pi / 2) for q in dirs))
 
 
-def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool) -> bool:
+def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wall_line: bool = False) -> bool:
     """The rules of the module doc on one candidate's evidence (``into_unknown``: it opens onto
-    unexplored territory, where only its own side was seen)."""
+    unexplored territory, where only its own side was seen; ``in_wall_line``: it is a gap in a
+    wall line, as deep as the wall, found so: its depth was judged there)."""
     # As deep as a wall (plus the shortest passage): a longer constriction is a passage or a
-    # corridor running on.
-    if into_unknown:
+    # corridor running on. A gap in an outer wall line that deep is an exit at the end of
+    # whatever leads to it, a corridor as wide as the door included.
+    if in_wall_line:
+        pass
+    elif into_unknown:
         # Beyond an opening into unexplored territory only rays through it were seen (a strip
         # as narrow as the opening, walled by unknown, not by walls): judge its depth on the
         # side of the space it opens from, half a wall's thickness and a passage.
@@ -346,16 +349,22 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
         far = np.sqrt(truncated_sq_edt(~unknown, bound).astype(np.float64)) * resolution_m >= SEEN_FLOOR_MIN_M
     for d in candidates:
         ev = evidence(free, occupied, d.center_rc, d.normal_rc, d.width_m, resolution_m, params)
-        ok = is_door(ev, params, into_unknown=d.b == 0)
+        ok = is_door(ev, params, into_unknown=d.b == 0, in_wall_line=d.in_wall_line)
         if ok and far is not None:
             # A place on each side that is a space: its floor was seen, not only rays through
             # the opening (into unexplored territory: the space's own side).
             sides = (-1.0,) if d.b == 0 else (-1.0, 1.0)
             ok = all(floor_beyond(free, far, d.center_rc, d.normal_rc, sd, resolution_m) >= BEYOND_MIN_FLOOR_SHARE
                      for sd in sides)
+            # ... and a door onto the unexplored has the unexplored beyond it, not seen floor: a
+            # line from a wall to the scanned face of a wardrobe whose inside is unknown runs
+            # across a room, with the room's floor on both sides. (A gap in a wall line found
+            # so has had what lies beyond it judged there.)
+            if ok and d.b == 0 and not d.in_wall_line:
+                ok = floor_beyond(free, far, d.center_rc, d.normal_rc, 1.0, resolution_m) < BEYOND_MIN_FLOOR_SHARE
         (doors if ok else rest).append(d)
     return doors, rest
 
 
-__all__ = ["DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "judge_doors",
+__all__ = ["SEEN_FLOOR_MIN_M", "DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "judge_doors",
            "line_turn_deg"]

@@ -7,11 +7,15 @@ its normal the mean step from the first space to the second.
 An opening into unexplored territory is found by a second flood, over the floor *and* the
 unknown around it (unknown counts as open space here): the spaces flood from their cores, the
 unknown from its own interior, and where the two meet at a saddle as narrow as a door, bounded
-by walls, there is a doorway into the unknown.
+by walls, there is a doorway into the unknown. Where the lidar saw out through a door, the fan
+of rays beyond joins the space's floor and moves that saddle metres out; the door is then found
+as a gap in the wall line with seen floor on one side only
+(:func:`langnav.analysis.wall_lines.outer_gaps`).
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 from typing import Final
@@ -22,8 +26,9 @@ from scipy import ndimage as ndi
 from skimage.segmentation import watershed
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import maximum3
+from langnav.analysis.precompute import maximum3, truncated_sq_edt
 from langnav.analysis.seg_core import EIGHT, BoolArray, FloatArray, IntArray
+from langnav.analysis.wall_lines import outer_gaps
 
 #: Label given to the unknown in the second flood (larger than any space label).
 _OUTSIDE_OFFSET: Final = 1
@@ -34,6 +39,13 @@ OPENING_BAND_M: Final = 2.0
 OPENING_MAX_EXTENT_M: Final = 4.0
 #: A space's core for the second flood: cells with at least this share of its peak clearance.
 CORE_FRACTION: Final = 0.6
+#: The space a door in an outer wall opens from is the one met from this far (m) inside it ...
+OUTER_LABEL_FROM_M: Final = 0.1
+#: ... to this far (m).
+OUTER_LABEL_TO_M: Final = 1.0
+#: Seen floor: a free cell at least this far (m) from unscanned cells (a fan of laser rays is
+#: free streaks a few cells wide with unknown between them).
+SEEN_FLOOR_MIN_M: Final = 0.25
 
 
 @dataclass(frozen=True)
@@ -46,6 +58,10 @@ class RawDoor:
     center_rc: tuple[float, float]
     normal_rc: tuple[float, float]
     width_m: float
+    #: Found as a gap in a wall line, as deep as the wall (the line's jambs and depth were
+    #: checked there): the end of a corridor at an exit in the outer wall is a door however
+    #: wide the corridor behind it.
+    in_wall_line: bool = False
 
 
 def _boundary_pairs(labels: IntArray) -> tuple[npt.NDArray[np.int64], ...]:
@@ -137,9 +153,13 @@ def label_max(labels: IntArray, values: FloatArray) -> FloatArray:
 
 def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
                         obstacle: BoolArray, clearance_m: FloatArray, resolution_m: float,
-                        params: AnalysisParams, peak: FloatArray | None = None) -> list[RawDoor]:
+                        params: AnalysisParams, peak: FloatArray | None = None,
+                        known: list[RawDoor] | None = None,
+                        directions: list[float] | None = None) -> list[RawDoor]:
     """Doorways from a space into unexplored territory (see module doc). ``peak``:
-    ``label_max(labels, clearance_m)``, when the caller has it.
+    ``label_max(labels, clearance_m)``, when the caller has it; ``known``: the doorways between
+    spaces found already (a gap in an outer wall that is one of them is not found twice);
+    ``directions``: the wall directions of ``obstacle & ~floor``, when the caller has them.
 
     Only windows around the frontier (floor touching unexplored unknown) are flooded again.
     """
@@ -192,7 +212,50 @@ def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
                    for o in out):
                 continue
             out.append(RawDoor(d.a, 0, (r, c), d.normal_rc, d.width_m))
+    return doors_in_outer_walls(labels, floor, exterior, obstacle, resolution_m, params, out, known or [],
+                                directions)
+
+
+def doors_in_outer_walls(labels: IntArray, floor: BoolArray, exterior: BoolArray, obstacle: BoolArray,
+                         resolution_m: float, params: AnalysisParams, found: list[RawDoor],
+                         known: list[RawDoor], directions: list[float] | None = None) -> list[RawDoor]:
+    """``found`` (doorways into unexplored territory found at a saddle) and the doorways from a
+    space into unexplored territory through which the lidar saw out: a door-wide gap in a wall
+    line with the space's seen floor on one side and, on the other, only the fan of rays that
+    went through it (:func:`langnav.analysis.wall_lines.outer_gaps`). The fan joins the space's
+    floor, so its frontier lies metres out, too long for a saddle as narrow as a door: the wall
+    line shows the door. A gap at a doorway of ``found`` marks that one as in a wall line; one
+    at a doorway between two spaces (``known``) is left out. ``directions``: the wall directions
+    of ``obstacle & ~floor``, when the caller has them."""
+    walls = obstacle & ~floor
+    bound = math.ceil(SEEN_FLOOR_MIN_M / resolution_m) + 1
+    seen = floor & (np.sqrt(truncated_sq_edt(~exterior, bound).astype(np.float64)) * resolution_m >= SEEN_FLOOR_MIN_M)
+    out = list(found)
+    look = np.arange(OUTER_LABEL_FROM_M, OUTER_LABEL_TO_M + 1e-9, resolution_m) / resolution_m
+    h, w = labels.shape
+
+    def near(o: RawDoor, r: float, c: float, width_m: float) -> bool:
+        return math.hypot(r - o.center_rc[0], c - o.center_rc[1]) * resolution_m < max(width_m, o.width_m)
+
+    for g in outer_gaps(walls, floor, seen, exterior, resolution_m, params, directions):
+        (r, c), (nr, nc) = g.center_rc, g.normal_rc
+        if any(near(o, r, c, g.width_m) for o in known):
+            continue
+        at = [i for i, o in enumerate(out) if near(o, r, c, g.width_m)]
+        if at:
+            for i in at:
+                out[i] = dataclasses.replace(out[i], in_wall_line=True)
+            continue
+        # The space it opens from: the label met stepping in from the gap.
+        rr = np.floor(r - look * nr).astype(np.int64)
+        cc = np.floor(c - look * nc).astype(np.int64)
+        ok = (rr >= 0) & (rr < h) & (cc >= 0) & (cc < w)
+        lab = labels[rr[ok], cc[ok]]
+        lab = lab[lab > 0]
+        if lab.size == 0:
+            continue
+        out.append(RawDoor(int(np.bincount(lab).argmax()), 0, (r, c), (nr, nc), g.width_m, in_wall_line=True))
     return out
 
 
-__all__ = ["RawDoor", "doors_between", "label_max", "openings_to_unknown"]
+__all__ = ["SEEN_FLOOR_MIN_M", "RawDoor", "doors_between", "doors_in_outer_walls", "label_max", "openings_to_unknown"]

@@ -53,7 +53,7 @@ from langnav.analysis.seg_core import (
     merge_basins,
 )
 from langnav.analysis.seg_doors import RawDoor, doors_between, label_max, openings_to_unknown
-from langnav.analysis.wall_lines import closure_mask, wall_gaps
+from langnav.analysis.wall_lines import closure_mask, dominant_directions, wall_gaps
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
 log = logging.getLogger(__name__)
@@ -96,6 +96,17 @@ HALLWAY_MIN_DOORWAYS: Final = 4
 #: this share of its area: furniture takes a small part of a room (a bed, a counter, a row of
 #: shelves); the block a corridor runs around (a stair or lift core) is a large part of it.
 FURNITURE_MAX_SHARE: Final = 0.2
+#: A hall (a lounge, a dining hall, an open lobby) is at least this many times as wide as the
+#: widest corridor (``hallway_max_width_m``): where a disc that wide fits in a space, the space
+#: is a hall there, however a corridor runs into it with no wall between.
+HALL_MIN_WIDTH_SHARE: Final = 2.0
+#: ... along a stretch at least this long both ways (m): the centres of the discs that fit
+#: cover a square this wide, so a hall is at least 8 m across; a room just wide enough for
+#: the disc (a large office joined to its corridor through a doorway) is no hall.
+HALL_CORE_MIN_SIDE_M: Final = 2.0
+#: ... a corridor leaves the hall through a mouth at most this many times its own width long
+#: (a cut across it, slanted or curved); a bay of the hall meets it along a longer curve.
+CORRIDOR_MOUTH_MAX_SHARE: Final = 2.0
 #: Id used in ``Door.connects`` for unexplored territory.
 UNKNOWN_ID: Final = "unknown"
 #: Openings between two spaces narrower than the robot can pass (``door_min_width_m``) but at
@@ -209,7 +220,10 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     # runs on the floor with them closed, and they are opened again (as doorways) afterwards.
     # The walls are what the cleaning left of the occupied cells (free-standing clutter
     # standing in a row is no wall).
-    closed = closure_mask(wall_gaps(occupied & ~fl.floor, fl.floor, res, params), fl.floor)
+    # The building's wall directions, found once for the wall gaps and the doors in outer walls.
+    walls = occupied & ~fl.floor
+    directions = dominant_directions(walls)
+    closed = closure_mask(wall_gaps(walls, fl.floor, res, params, directions), fl.floor)
     split_floor, split_clear = fl.floor, fl.clearance_m
     if closed.any():
         split_floor = fl.floor & ~closed
@@ -226,6 +240,7 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     if params.seg_close_unknown_gaps_m > 0:
         labels = _close_unknown_gaps(labels, unknown, occupied, params.seg_close_unknown_gaps_m / res)
     labels = _drop_slivers(labels, fl.clearance_m, res, params)
+    labels = _split_halls_from_corridors(labels, res, params)
     exterior &= labels == 0
     between = doors_between(labels, fl.clearance_m, res, params,
                             min_width_m=min(NARROW_DOOR_MIN_WIDTH_M, params.door_min_width_m))
@@ -238,14 +253,15 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     raw_wide = [d for d in between if d.width_m > widest]
     peaks = label_max(labels, fl.clearance_m)  # the widest clearance of each space
     raw_doors += openings_to_unknown(labels, fl.floor, exterior, occupied,
-                                     fl.clearance_m, res, params, peaks)
+                                     fl.clearance_m, res, params, peaks, known=between, directions=directions)
     # Only openings cut in a wall are doors (door_judge); the others between two spaces are
     # still ways between them.
     raw_doors, not_doors = judge_doors(raw_doors, fl.free, occupied & ~fl.floor, res, params, unknown=unknown)
     raw_wide += [d for d in not_doors if d.b != 0]
     openings = np.bincount(np.array([x for d in raw_doors + raw_wide for x in (d.a, d.b) if x > 0], dtype=np.int64),
                            minlength=int(labels.max()) + 1)
-    rooms = _rooms(grid, labels, fl, params, peaks, openings)
+    rooms = _rooms(grid, labels, fl, params, peaks, openings,
+                   _ways_on(openings, [(d.a, d.b) for d in raw_doors + raw_wide], labels))
     ids = {r.label: r.id for r in rooms}
     doors = _doors(grid, raw_doors, ids)
     narrow = _doors(grid, raw_narrow, ids, prefix="narrow_door")
@@ -536,11 +552,13 @@ def _typical_widths(labels: npt.NDArray[np.int32], clearance_m: npt.NDArray[np.f
 def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: float, openings: int,
                    whole_width: Callable[[], float], res: float, params: AnalysisParams,
                    whole_wide_share: Callable[[], float] = lambda: 0.0,
-                   whole_typical: Callable[[], float] = lambda: 0.0) -> tuple[ElementKind, float, float]:
+                   whole_typical: Callable[[], float] = lambda: 0.0,
+                   ways_on: int | None = None) -> tuple[ElementKind, float, float]:
     """Hallway or room, with (length, width).
 
     A hallway is walked through (not a dead end entered through one doorway, unless it is
-    longer for its width than rooms are) and long and narrow: for its widest
+    longer for its width than rooms are; ``ways_on``: its openings less those into a smaller
+    dead end of its own, an en-suite or a closet) and long and narrow: for its widest
     inscribed circle (furniture was taken out of the floor's clearance already), or, when a
     junction or an alcove widens it here and there, for its typical width (the median width
     along its centre line) if it has two openings or more, is many times longer than that
@@ -555,9 +573,12 @@ def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: 
     """
     # Clearance is measured between cell centres: an opening of n cells has 2 x peak = (n + 1) cells.
     peak_width = max(2.0 * peak_m - res, res)
-    if openings == 1 and area_m2 / peak_width < params.hallway_dead_end_min_elongation * peak_width:
-        # Entered through one doorway and leading nowhere else: a room (a dead-end corridor
-        # with its doors closed is longer than rooms are).
+    leads_on = openings if ways_on is None else ways_on
+    if openings >= 1 and leads_on <= 1 \
+            and area_m2 / peak_width < params.hallway_dead_end_min_elongation * peak_width:
+        # Entered through one doorway and leading nowhere else (but into a smaller dead end
+        # of its own: an en-suite, a closet): a room (a dead-end corridor with its doors
+        # closed is longer than rooms are).
         return ElementKind.ROOM, area_m2 / peak_width, peak_width
     def narrow(w: float) -> bool:
         return w <= params.hallway_max_width_m and area_m2 / w >= params.hallway_min_elongation * w
@@ -637,9 +658,117 @@ def _whole_typical_width(mask: npt.NDArray[np.bool_], res: float, reach_m: float
     return 2.0 * float(np.median(d[line])) - rk
 
 
+def _split_halls_from_corridors(labels: npt.NDArray[np.int32], res: float,
+                                params: AnalysisParams) -> npt.NDArray[np.int32]:
+    """Part the spaces that are a corridor run into a hall open onto it (a lounge, a dining
+    hall, a lobby with no wall on the corridor's side): the hall is where a disc wider than any
+    corridor fits (``HALL_MIN_WIDTH_SHARE`` x ``hallway_max_width_m``); the corridors are the
+    narrow runs left over that are longer than wide (``hallway_min_elongation``, judged on
+    their typical width) and leave the hall through a mouth about as wide as themselves; what
+    else is left (the hall's corners, its bays cut off along the disc's arc, fragments) stays
+    with the corridor or hall nearest to it. A corridor widened at a junction or a lobby is no
+    hall (nothing that wide fits in it). A hall with a narrow arm (an L-shaped hall) is parted
+    too: a person may well name the arm apart."""
+    n = int(labels.max())
+    if n == 0:
+        return labels
+    out = labels.copy()
+    nxt = n + 1
+    r_hall = HALL_MIN_WIDTH_SHARE * params.hallway_max_width_m / 2
+    min_area = math.pi * r_hall * r_hall
+    cells = np.bincount(labels.ravel(), minlength=n + 1) * res * res
+    for k, sl in enumerate(ndi.find_objects(labels), start=1):
+        if sl is None or cells[k] < 2 * min_area:
+            continue
+        mask = labels[sl] == k
+        whole, rk = _wall_to_wall(mask, res, params.seg_enclosed_unknown_max_area_m2)
+        d = ndi.distance_transform_edt(whole, sampling=rk)
+        core = d >= r_hall
+        if not core.any():
+            continue
+        # ... over a stretch of floor (HALL_CORE_MIN_SIDE_M).
+        cores, nc = ndi.label(core, structure=EIGHT)
+        big_core = np.bincount(cores.ravel(), minlength=nc + 1) * rk * rk >= HALL_CORE_MIN_SIDE_M ** 2
+        big_core[0] = False
+        core = big_core[cores]
+        if not core.any():
+            continue
+        wide = whole & (ndi.distance_transform_edt(~core, sampling=rk) <= r_hall)
+        rest, m = ndi.label(whole & ~wide, structure=EIGHT)
+        if m == 0:
+            continue
+        line = _centre_line(d, whole, rk, params.hallway_max_width_m / 2)
+        near_wide = dilate8(wide)
+        area = np.bincount(rest.ravel(), minlength=m + 1) * rk * rk
+        corridor = np.zeros(m + 1, dtype=bool)
+        for j in np.flatnonzero(area[1:] >= params.room_min_area_m2) + 1:
+            on = line & (rest == j)
+            if not on.any():
+                continue
+            typical = 2.0 * float(np.median(d[on])) - rk
+            # A corridor leaves a hall through a mouth as wide as itself; a bay of the hall
+            # cut off by the disc's arc meets it along a longer curve.
+            mouths, _ = ndi.label(near_wide & (rest == j), structure=EIGHT)
+            mouth_len = np.array([math.hypot(a.stop - a.start, b.stop - b.start) * rk
+                                  for a, b in ndi.find_objects(mouths) if a is not None])
+            corridor[j] = params.space_min_width_m <= typical <= params.hallway_max_width_m and \
+                bool((mouth_len <= CORRIDOR_MOUTH_MAX_SHARE * max(typical, rk)).all()) and \
+                area[j] >= params.hallway_min_elongation * typical * typical
+        if not corridor.any():
+            continue
+        # The corridors, each a space; the halls with their corners, each a space.
+        pieces = np.zeros(whole.shape, dtype=np.int32)
+        for j in np.flatnonzero(corridor):
+            pieces[rest == j] = int(j)
+        halls, h = ndi.label(whole & (pieces == 0), structure=EIGHT)
+        big = np.bincount(halls.ravel(), minlength=h + 1) * rk * rk >= min_area
+        big[0] = False
+        pieces[big[halls]] = halls[big[halls]] + m
+        # Corners, alcoves and fragments (laser-ray dashes) join the nearest corridor or hall.
+        _, (ri, ci) = ndi.distance_transform_edt(pieces == 0, return_indices=True)
+        pieces = np.where(whole, pieces[ri, ci], 0).astype(np.int32)
+        # Back to the space's own cells (the padding and subsampling undone).
+        step = max(1, round(rk / res))
+        full = np.repeat(np.repeat(pieces[1:-1, 1:-1], step, axis=0), step, axis=1)[:mask.shape[0], :mask.shape[1]]
+        if full.shape != mask.shape or (mask & (full == 0)).any():
+            padded = np.zeros(mask.shape, dtype=np.int32)
+            padded[:full.shape[0], :full.shape[1]] = full
+            _, (ri, ci) = ndi.distance_transform_edt(padded == 0, return_indices=True)
+            full = padded[ri, ci]
+        ids = np.unique(full[mask])
+        ids = ids[ids > 0]
+        if ids.size < 2:
+            continue
+        sub = out[sl]
+        biggest = int(ids[np.argmax([np.count_nonzero(mask & (full == i)) for i in ids])])
+        for i in ids:
+            if int(i) == biggest:
+                continue
+            sub[mask & (full == i)] = nxt
+            nxt += 1
+    return out
+
+
+def _ways_on(openings: npt.NDArray[np.int64], pairs: list[tuple[int, int]],
+             labels: npt.NDArray[np.int32]) -> npt.NDArray[np.int64]:
+    """Per label, its openings that lead on: all of them but one into a smaller space that has
+    no other (an en-suite bathroom, a closet, a store behind its door: a room with one is still
+    a dead end, not a way through). A corridor serves several such rooms: they all count but
+    one, and it stays a way through."""
+    area = np.bincount(labels.ravel(), minlength=openings.size)
+    leaves = np.zeros_like(openings)
+    for a, b in pairs:
+        if a <= 0 or b <= 0:
+            continue
+        for x, y in ((a, b), (b, a)):
+            if openings[y] == 1 and area[y] < area[x]:
+                leaves[x] += 1
+    return openings - np.minimum(leaves, 1)
+
+
 def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
            params: AnalysisParams, peaks: npt.NDArray[np.float64],
-           openings: npt.NDArray[np.int64]) -> list[Room]:
+           openings: npt.NDArray[np.int64], ways_on: npt.NDArray[np.int64] | None = None) -> list[Room]:
     """The spaces of ``labels``, measured; ``peaks``: the widest clearance of each (by label);
     ``openings``: how many doorways each has."""
     res = grid.resolution_m
@@ -668,7 +797,8 @@ def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
                                                                params.hallway_max_width_m / 2),
                                              functools.partial(_whole_typical_width, sub, res,
                                                                params.hallway_max_width_m / 2,
-                                                               params.seg_enclosed_unknown_max_area_m2))
+                                                               params.seg_enclosed_unknown_max_area_m2),
+                                             ways_on=int(ways_on[k]) if ways_on is not None and k < ways_on.size else None)
         prefix = "hallway" if kind == ElementKind.HALLWAY else "room"
         rooms.append(Room(
             id=f"{prefix}_{k}", label=k, kind=kind, area_m2=area,

@@ -25,6 +25,10 @@ closed before the flood (ROSE², RA-L 2022, bounds rooms by the building's wall 
    - on both sides the space it opens onto runs on along the wall past one of its ends: a
      doorway is narrower than the rooms it joins, whereas where a corridor meets another one
      (a T or a crossing) the opening is the whole width of the branch, and there is no door.
+4. *Doors onto the unexplored* (:func:`outer_gaps`): a door-wide gap in a wall line with seen
+   floor on one side and, on the other, only the rays the lidar sent out through it (a door in
+   an outer wall, or into a room never entered). The fan of rays joins the space's floor, so
+   the flood sees no door-wide saddle there; the wall line does.
 """
 
 from __future__ import annotations
@@ -49,6 +53,8 @@ DIRECTION_BIN_DEG: Final = 1.0
 DIRECTION_MAX_CELLS: Final = 20_000
 #: Candidate gaps judged together (their samples across the line in one array: bounded memory).
 CANDIDATE_BLOCK: Final = 256
+#: Directions are scored together up to this many cells times directions (arrays in cache).
+SCORE_BLOCK_ELEMENTS: Final = 32_768
 #: Bits of the cell code that reads the wall and the floor masks with one lookup.
 WALL_BIT: Final = 1
 FLOOR_BIT: Final = 2
@@ -75,6 +81,23 @@ SIDE_DEPTHS_M: Final = (0.3, 0.5, 0.7)
 #: The space beyond a gap runs on along the wall at least this far (m) past one of the gap's ends
 #: (a corridor branch's side walls start at the gap's ends, a scanned wall a cell or two off).
 SIDE_PAST_JAMB_M: Final = 0.5
+#: A gap opens from seen floor onto the unseen (:func:`outer_gaps`) when, looking straight
+#: through it from a wall's thickness (m) ...
+OUTER_LOOK_FROM_M: Final = 0.3
+#: ... to a door's width past the wall (m), at least this share of one side is seen floor
+#: (the space it opens from) ...
+OUTER_NEAR_M: Final = 1.0
+OUTER_INSIDE_MIN_SHARE: Final = 0.5
+#: ... and on the other, rays reach on through it up to this far (m; what a scan through a door
+#: shows of the place beyond) ...
+OUTER_FAR_M: Final = 2.0
+#: ... while behind the wall beside it (from this far past the wall, m, to OUTER_NEAR_M, and as
+#: far along the wall past each jamb) at least this share is unknown: an opaque wall ...
+OUTER_BESIDE_FROM_M: Final = 0.2
+OUTER_BEHIND_MIN_UNKNOWN: Final = 0.5
+#: ... and wall stands in line with both jambs over less than this share of the look beyond
+#: (a corridor or a room running on from the gap has its walls there).
+OUTER_WALLED_MAX_SHARE: Final = 0.5
 
 
 @dataclass(frozen=True)
@@ -87,30 +110,40 @@ class WallGap:
     width_m: float
 
 
-def _line_score(rows: FloatArray, neg_cols: FloatArray, deg: float, buf: tuple[FloatArray, FloatArray]) -> float:
-    """How well the cells line up along ``deg`` and its right angle: the sum of squared counts
-    of cells per one-cell line across each direction (a wall along a direction puts its cells
-    on few lines), over the number of cells. ``neg_cols``: the cells' columns negated; ``buf``:
-    two scratch arrays of their size."""
-    t = math.radians(deg)
-    score = 0
-    a, b = buf
-    for c, s in ((math.cos(t), math.sin(t)), (-math.sin(t), math.cos(t))):
-        np.multiply(neg_cols, s, out=a)
-        np.multiply(rows, c, out=b)
-        np.add(a, b, out=a)
-        v = np.rint(a, out=a).astype(np.intp)
-        v -= v.min()
-        counts = np.bincount(v)
-        score += int(np.dot(counts, counts))  # exact: integers
-    return float(score) / rows.size
+def _line_scores(rows: FloatArray, neg_cols: FloatArray, degs: FloatArray) -> FloatArray:
+    """How well the cells line up along each direction of ``degs`` and its right angle: the sum
+    of squared counts of cells per one-cell line across each direction (a wall along a direction
+    puts its cells on few lines), over the number of cells. ``neg_cols``: the cells' columns
+    negated. Several directions are scored in one array when the cells are few (a door's
+    surroundings), one at a time when they are many (the arrays stay in cache)."""
+    n = rows.size
+    block = max(1, SCORE_BLOCK_ELEMENTS // n)
+    # Every line number lies within +-reach (|cos|, |sin| <= 1; rows and columns are >= 0):
+    # shifted by reach, each direction of a block counts into its own span of bins.
+    reach = math.ceil(float(rows.max()) - float(neg_cols.min())) + 1
+    span = 2 * reach + 1
+    out = np.empty(len(degs))
+    for b0 in range(0, len(degs), block):
+        ts = [math.radians(float(d)) for d in degs[b0:b0 + block]]
+        shift = (reach + np.arange(len(ts)) * span)[:, None]
+        total = np.zeros(len(ts), dtype=np.int64)
+        for c, s in (([math.cos(t) for t in ts], [math.sin(t) for t in ts]),
+                     ([-math.sin(t) for t in ts], [math.cos(t) for t in ts])):
+            x = neg_cols[None, :] * np.array(s)[:, None]
+            x += rows[None, :] * np.array(c)[:, None]
+            v = np.rint(x, out=x).astype(np.intp)
+            v += shift
+            counts = np.bincount(v.ravel(), minlength=len(ts) * span).reshape(len(ts), span)
+            total += (counts * counts).sum(axis=1)  # exact: integers
+        out[b0:b0 + len(ts)] = total.astype(np.float64) / n
+    return out
 
 
 def dominant_directions(wall: BoolArray) -> list[float]:
     """The building's wall directions (radians in the (col, row) plane, in [0, pi)), main first.
 
     Each candidate direction modulo 90 degrees (a right-angled plan: a direction and its right
-    angle together) is scored by how many wall cells line up along it (:func:`_line_score`,
+    angle together) is scored by how many wall cells line up along it (:func:`_line_scores`,
     a Hough transform's peak in short); the best one, refined, is the building's; other
     peaks nearly as strong (a wing at an angle) are directions too. The edge directions of
     the cells themselves would not do: a wall's pixel staircase turns them towards 45 degrees.
@@ -124,8 +157,7 @@ def dominant_directions(wall: BoolArray) -> list[float]:
     rows, cols = rr.astype(np.float64), cc.astype(np.float64)
     grid_deg = np.arange(0.0, 90.0, DIRECTION_BIN_DEG)
     neg_cols = -cols
-    buf = (np.empty_like(rows), np.empty_like(rows))
-    score = np.array([_line_score(rows, neg_cols, d, buf) for d in grid_deg])
+    score = _line_scores(rows, neg_cols, grid_deg)
     base = float(score.min())
     peaks = np.flatnonzero((score >= np.roll(score, 1)) & (score > np.roll(score, -1)))
     peaks = peaks[np.argsort(-score[peaks])]
@@ -135,7 +167,7 @@ def dominant_directions(wall: BoolArray) -> list[float]:
             break
         # Refined to a tenth of a bin around the peak.
         fine = grid_deg[p] + np.linspace(-DIRECTION_BIN_DEG, DIRECTION_BIN_DEG, 21)
-        deg = float(fine[int(np.argmax([_line_score(rows, neg_cols, d, buf) for d in fine]))] % 90.0)
+        deg = float(fine[int(np.argmax(_line_scores(rows, neg_cols, fine)))] % 90.0)
         if all(min(abs(deg - t) % 90.0, 90.0 - abs(deg - t) % 90.0) >= DIRECTION_MIN_SEPARATION_DEG
                for t in taken):
             taken.append(deg)
@@ -161,8 +193,11 @@ class _LineSampler(Generic[_Cell]):
         ri, ci = np.rint(r).astype(np.int64), np.rint(c).astype(np.int64)
         h, w = self.mask.shape
         inside = (ri >= 0) & (ri < h) & (ci >= 0) & (ci < w)
-        out = np.zeros(ri.shape, dtype=self.mask.dtype)
-        out[inside] = self.mask[ri[inside], ci[inside]]
+        # Read every sample (clipped onto the grid), then zero those off it.
+        np.clip(ri, 0, h - 1, out=ri)
+        np.clip(ci, 0, w - 1, out=ci)
+        out = self.mask[ri, ci]
+        out *= inside
         return out
 
 
@@ -237,26 +272,33 @@ def _partition_share(both_at: _LineSampler[np.uint8], u_end: FloatArray, sign: f
     return np.where(n_on > 0, good / np.maximum(n_on, 1), 0.0)
 
 
-def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: AnalysisParams,
-              directions: list[float] | None = None) -> list[WallGap]:
-    """The door-wide gaps in the wall lines of ``wall`` that part two spaces of ``floor`` (see
-    the module doc). ``directions``: the wall directions, when known (else found here)."""
-    if params.seg_wall_line_gap_max_m <= 0 or not wall.any():
-        return []
-    dirs = dominant_directions(wall) if directions is None else directions
+@dataclass(frozen=True)
+class _LineCandidates:
+    """The door-wide gaps along one wall direction: gap i lies between ``pos[i]`` and
+    ``pos[i + 1]`` on ``line[i]`` for i in ``cand`` (positions along and lines across the
+    direction, offset by ``umin`` / ``vmin``)."""
+
+    cos_t: float
+    sin_t: float
+    cand: IntArray
+    line: IntArray
+    pos: IntArray
+    umin: int
+    vmin: int
+
+
+def _line_candidates(wall: BoolArray, dirs: list[float], resolution_m: float, params: AnalysisParams,
+                     max_width_m: float) -> list[_LineCandidates]:
+    """Per wall direction, the gaps ``door_min_width_m`` to ``max_width_m`` wide in its wall
+    lines where the line runs on past both ends, occupied on ``seg_wall_line_side_share`` of
+    ``seg_wall_line_side_m`` (a wall, not the corner of a piece of furniture)."""
     res = resolution_m
     gmin = (params.door_min_width_m - res) / res
-    gmax = (params.seg_wall_line_gap_max_m + res) / res
+    gmax = (max_width_m + res) / res
     side = max(2, round(params.seg_wall_line_side_m / res))
-    past = SIDE_PAST_JAMB_M / res
-    depths = [d / res for d in SIDE_DEPTHS_M]
-    max_depth = WALL_MAX_THICKNESS_M / res + 1.0  # + the cell the line runs through
-    thin = round(WALL_MAX_THICKNESS_M / res) + 1
-    reach = math.ceil(2 * params.door_max_depth_m / res) + 2
     rr, cc = np.nonzero(wall)
     rr_f, cc_f = rr.astype(np.float64), cc.astype(np.float64)
-    both = np.where(wall, WALL_BIT, 0).astype(np.uint8) | np.where(floor, FLOOR_BIT, 0).astype(np.uint8)
-    out: list[WallGap] = []
+    out: list[_LineCandidates] = []
     for theta in dirs:
         cos_t, sin_t = math.cos(theta), math.sin(theta)
         u = np.rint(cc_f * cos_t + rr_f * sin_t).astype(np.int64)
@@ -283,14 +325,34 @@ def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: An
         after = np.searchsorted(key, hi_after, side="right") - np.searchsorted(key, key[cand + 1], side="left")
         share = params.seg_wall_line_side_share * side
         cand = cand[(before >= share) & (after >= share)]
-        if cand.size == 0:
-            continue
-        floor_at = _LineSampler(floor, cos_t, sin_t)
-        wall_at = _LineSampler(wall, cos_t, sin_t)
-        both_at = _LineSampler(both, cos_t, sin_t)
-        for b0 in range(0, cand.size, CANDIDATE_BLOCK):
-            out += _gaps_kept(cand[b0:b0 + CANDIDATE_BLOCK], line, pos, umin, vmin, floor_at, wall_at, both_at,
-                              _GapScales(past, depths, max_depth, thin, reach, side), res)
+        if cand.size:
+            out.append(_LineCandidates(cos_t, sin_t, cand, line, pos, umin, vmin))
+    return out
+
+
+def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: AnalysisParams,
+              directions: list[float] | None = None) -> list[WallGap]:
+    """The door-wide gaps in the wall lines of ``wall`` that part two spaces of ``floor`` (see
+    the module doc). ``directions``: the wall directions, when known (else found here)."""
+    if params.seg_wall_line_gap_max_m <= 0 or not wall.any():
+        return []
+    dirs = dominant_directions(wall) if directions is None else directions
+    res = resolution_m
+    side = max(2, round(params.seg_wall_line_side_m / res))
+    past = SIDE_PAST_JAMB_M / res
+    depths = [d / res for d in SIDE_DEPTHS_M]
+    max_depth = WALL_MAX_THICKNESS_M / res + 1.0  # + the cell the line runs through
+    thin = round(WALL_MAX_THICKNESS_M / res) + 1
+    reach = math.ceil(2 * params.door_max_depth_m / res) + 2
+    both = np.where(wall, WALL_BIT, 0).astype(np.uint8) | np.where(floor, FLOOR_BIT, 0).astype(np.uint8)
+    out: list[WallGap] = []
+    for lc in _line_candidates(wall, dirs, res, params, params.seg_wall_line_gap_max_m):
+        floor_at = _LineSampler(floor, lc.cos_t, lc.sin_t)
+        wall_at = _LineSampler(wall, lc.cos_t, lc.sin_t)
+        both_at = _LineSampler(both, lc.cos_t, lc.sin_t)
+        for b0 in range(0, lc.cand.size, CANDIDATE_BLOCK):
+            out += _gaps_kept(lc.cand[b0:b0 + CANDIDATE_BLOCK], lc.line, lc.pos, lc.umin, lc.vmin, floor_at,
+                              wall_at, both_at, _GapScales(past, depths, max_depth, thin, reach, side), res)
     return out
 
 
@@ -349,6 +411,149 @@ def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: i
     return out
 
 
+def _through(at: _LineSampler[np.bool_], v: float, u: FloatArray, depth: FloatArray, sign: float) -> BoolArray:
+    """``at`` over the cells at positions ``u`` along the line at ``v`` and ``depth`` across it
+    towards ``sign`` (all pairs, position-major)."""
+    return at(np.repeat(u, depth.size), v + sign * np.tile(depth, u.size))
+
+
+@dataclass(frozen=True)
+class OuterGap:
+    """A door-wide gap in a wall line with seen floor on one side only: its centre (row, col;
+    cell-corner coordinates, cell i spans [i, i + 1)), the unit normal (drow, dcol) from the
+    seen side out, and its width (m)."""
+
+    center_rc: tuple[float, float]
+    normal_rc: tuple[float, float]
+    width_m: float
+
+
+def outer_gaps(wall: BoolArray, floor: BoolArray, seen: BoolArray, unknown: BoolArray, resolution_m: float,
+               params: AnalysisParams, directions: list[float] | None = None) -> list[OuterGap]:
+    """The door-wide gaps (up to ``door_wide_max_width_m``) in the wall lines of ``wall`` that
+    open from seen floor onto what was never seen: a door in an outer wall, or into a room the
+    robot did not enter, through which the lidar saw out. ``seen``: floor the scans covered, not
+    a streak with unknown beside it; ``unknown``: the unexplored cells.
+
+    The gap is as deep as a wall and its floor is free; its wall runs on past both ends (a wall
+    line, not the corner of a piece of furniture or the end of a wall). On one side lies seen
+    floor (the space it opens from). On the other, the rays through the gap fill its width just
+    past the wall and reach on beyond a door's width (a scan through an open door sees through
+    all of it and on for metres; through a window or a hole in a dashed wall, streaks or a
+    sliver); the wall beside the gap hides what is behind it (an opaque wall: behind a glass or
+    broken wall the scan saw floor all along, and the gap is one more hole in it); and what the
+    rays show beyond is not walled in along the gap's sides (a corridor or a room running on
+    from a gap as wide as it is a way on, seen, not a door onto the unexplored).
+    """
+    if not wall.any():
+        return []
+    dirs = dominant_directions(wall) if directions is None else directions
+    res = resolution_m
+    max_depth = WALL_MAX_THICKNESS_M / res + 1.0
+    reach = math.ceil(2 * params.door_max_depth_m / res) + 2
+    near = np.arange(OUTER_LOOK_FROM_M, OUTER_NEAR_M + 1e-9, res) / res
+    far = np.arange(OUTER_LOOK_FROM_M, OUTER_FAR_M + 1e-9, res) / res
+    ray = far[far >= OUTER_NEAR_M / res]
+    beside = np.arange(OUTER_BESIDE_FROM_M, OUTER_NEAR_M + 1e-9, res) / res
+    widest = max(params.door_max_width_m, params.door_wide_max_width_m)
+    across = np.arange(0.0, (widest / 2 + OUTER_NEAR_M) / res + 1e-9)
+    out: list[OuterGap] = []
+    for lc in _line_candidates(wall, dirs, res, params, widest):
+        floor_at, wall_at, seen_at, unknown_at = (_LineSampler(m, lc.cos_t, lc.sin_t)
+                                                  for m in (floor, wall, seen, unknown))
+        # A free gap as deep as a wall (all candidates at once; the rest one by one).
+        v_all = (lc.line[lc.cand] + lc.vmin).astype(np.float64)
+        ua_all = (lc.pos[lc.cand] + lc.umin).astype(np.float64)
+        ub_all = (lc.pos[lc.cand + 1] + lc.umin).astype(np.float64)
+        n_in = (ub_all - ua_all - 1).astype(np.int64)
+        group, step = _ragged(n_in)
+        on_floor = floor_at(ua_all[group] + 1.0 + step, v_all[group])
+        keep = (n_in > 0) & (np.bincount(group, weights=on_floor, minlength=n_in.size)
+                             >= GAP_MIN_FLOOR_SHARE * np.maximum(n_in, 1))
+        idx = np.flatnonzero(keep)
+        keep[idx] = _through_depth(wall_at, ua_all[idx], ub_all[idx], v_all[idx], reach) <= max_depth
+        idx = np.flatnonzero(keep)
+        for b0 in range(0, idx.size, CANDIDATE_BLOCK):
+            sel = idx[b0:b0 + CANDIDATE_BLOCK]
+            out += _outer_kept(v_all[sel], ua_all[sel], ub_all[sel], lc, _OuterSamplers(floor_at, wall_at, seen_at, unknown_at),
+                               _OuterLooks(near, far, ray, beside, across), res)
+    return out
+
+
+@dataclass(frozen=True)
+class _OuterSamplers:
+    """The masks :func:`outer_gaps` reads along one wall direction."""
+
+    floor: _LineSampler[np.bool_]
+    wall: _LineSampler[np.bool_]
+    seen: _LineSampler[np.bool_]
+    unknown: _LineSampler[np.bool_]
+
+
+@dataclass(frozen=True)
+class _OuterLooks:
+    """The depths (cells) across the line :func:`outer_gaps` looks at, and the offsets along it."""
+
+    near: FloatArray
+    far: FloatArray
+    ray: FloatArray
+    beside: FloatArray
+    across: FloatArray
+
+
+def _outer_kept(v: FloatArray, ua: FloatArray, ub: FloatArray, lc: _LineCandidates, at: _OuterSamplers,
+                looks: _OuterLooks, res: float) -> list[OuterGap]:
+    """Of the free gaps as deep as a wall at ``v`` between the wall cells at ``ua`` and ``ub``,
+    the outer gaps (the tests of :func:`outer_gaps`, all candidates at once)."""
+    n_in = (ub - ua - 1).astype(np.int64)
+    group, step = _ragged(n_in)
+    u_in, v_in = (ua[group] + 1.0 + step)[:, None], v[group][:, None]
+    inner_n = n_in.astype(np.float64)
+
+    def inner_count(mask: _LineSampler[np.bool_], depth: FloatArray, sign: FloatArray) -> FloatArray:
+        """Per candidate: how many of the cells at its inner positions and ``depth`` across the
+        line towards its ``sign`` are set."""
+        hit = mask(u_in, v_in + sign[group][:, None] * depth[None, :])
+        return np.asarray(np.bincount(group, weights=hit.sum(axis=1), minlength=v.size), dtype=np.float64)
+
+    # Seen floor on one side of the gap, straight through it.
+    ones = np.ones(v.size)
+    share_minus = inner_count(at.seen, looks.near, -ones) / (inner_n * looks.near.size)
+    share_plus = inner_count(at.seen, looks.near, ones) / (inner_n * looks.near.size)
+    sign = np.where(share_minus >= share_plus, -1.0, 1.0)
+    keep = np.maximum(share_minus, share_plus) >= OUTER_INSIDE_MIN_SHARE
+    # On the other (-sign): rays through all of the gap, reaching on.
+    keep &= inner_count(at.floor, looks.near, -sign) / (inner_n * looks.near.size) >= GAP_MIN_FLOOR_SHARE
+    keep &= inner_count(at.floor, looks.ray, -sign) > 0
+    # An opaque wall beside it: unknown behind it, along the wall past each jamb.
+    side_u = np.arange(1.0, OUTER_NEAR_M / res + 1e-9)
+    behind = 0.0
+    for u_side in (ua[:, None] - side_u[None, :], ub[:, None] + side_u[None, :]):
+        hit = at.unknown(u_side[:, :, None], v[:, None, None] + (-sign)[:, None, None] * looks.beside[None, None, :])
+        behind = behind + hit.sum(axis=(1, 2))
+    keep &= behind / (2 * side_u.size * looks.beside.size) >= OUTER_BEHIND_MIN_UNKNOWN
+    # Not walled in: beyond the wall, what bounds the floor across the way the rays went is
+    # wall on both sides over less than OUTER_WALLED_MAX_SHARE of the look.
+    idx = np.flatnonzero(keep)
+    u_mid = (ua[idx] + ub[idx]) / 2
+    v_far = v[idx][:, None] - sign[idx][:, None] * looks.far[None, :]  # (candidate, depth)
+    walled = np.ones(v_far.shape, dtype=bool)
+    for way in (-1.0, 1.0):
+        uu = u_mid[:, None] + way * looks.across[None, :]  # (candidate, offset)
+        ff = at.floor(uu[:, None, :], v_far[:, :, None])
+        first = np.where(ff.all(axis=2), uu.shape[1] - 1, np.argmin(ff, axis=2))
+        walled &= at.wall(np.take_along_axis(uu, first, axis=1), v_far)
+    keep[idx] = walled.sum(axis=1) / looks.far.size < OUTER_WALLED_MAX_SHARE
+    out: list[OuterGap] = []
+    for i in np.flatnonzero(keep).tolist():
+        sg = float(sign[i])
+        r, c = at.floor.rc(np.array([(ua[i] + ub[i]) / 2]), np.array([v[i]]))
+        # d(r, c)/dv = (cos_t, -sin_t): from the seen side (v + sign * depth) out.
+        out.append(OuterGap((float(r[0]) + 0.5, float(c[0]) + 0.5), (-sg * lc.cos_t, sg * lc.sin_t),
+                            float((ub[i] - ua[i] - 1) * res)))
+    return out
+
+
 def closure_mask(gaps: list[WallGap], floor: BoolArray) -> BoolArray:
     """The floor cells that close ``gaps``: each gap's segment, from one end's wall cell to the
     other's, drawn a band of LINE_BAND_CELLS either side of it (a flood must not slip through
@@ -380,4 +585,4 @@ def closure_mask(gaps: list[WallGap], floor: BoolArray) -> BoolArray:
     return out & floor
 
 
-__all__ = ["WallGap", "closure_mask", "dominant_directions", "wall_gaps"]
+__all__ = ["OuterGap", "WallGap", "closure_mask", "dominant_directions", "outer_gaps", "wall_gaps"]

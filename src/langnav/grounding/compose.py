@@ -82,6 +82,11 @@ ALONG_SLACK_M: Final = 0.03
 MIN_OFFSET_RUN_M: Final = 0.1
 #: "halfway to X": a free point at most this far short of the point asked for ...
 FRACTION_SNAP_M: Final = 0.5
+#: A way's straight run ends where it comes within this of its farthest point along the heading it
+#: set off in (the wobble of a walked path's middle line is smaller).
+LEG_END_TOL_M: Final = 0.3
+#: The straight run is looked for at points this far apart along the way.
+LEG_STEP_M: Final = 0.1
 #: ... searched for within this much more of it: the nearest free cell may lie a little to the side
 #: of the straight way (the value the search has used since fractions were added).
 FRACTION_SEARCH_EXTRA_M: Final = 0.3
@@ -355,6 +360,37 @@ class Way:
             if s_m <= self.lengths[i] or i == len(self.points) - 1:
                 return unit((self.points[i][0] - self.points[i - 1][0], self.points[i][1] - self.points[i - 1][1]))
         return (1.0, 0.0)
+
+    def straight_leg(self, heading: Point, bend_m: float) -> Way:
+        """The way up to where it turns a corner: "down this corridor" and "the end of the corridor"
+        mean the straight run ahead, and at an L's bend the run ends (the other leg is another
+        corridor, "at the end of the corridor, turn left"). A way turns a corner where it has gone
+        sideways of ``heading`` by more than ``bend_m`` (the corridor's width: round a corner, not a
+        wiggle of the middle line); the run ends, before that, where the way comes within
+        ``LEG_END_TOL_M`` of its farthest point along ``heading``. A way with no bend is whole."""
+        if self.length_m <= LEG_END_TOL_M:
+            return self
+        ss = np.append(np.arange(0.0, self.length_m, LEG_STEP_M), self.length_m)
+        pts = np.array([self.point_at(float(s)) for s in ss])
+        rel = pts - np.asarray(self.points[0])
+        proj = rel[:, 0] * heading[0] + rel[:, 1] * heading[1]
+        lat = rel[:, 0] * heading[1] - rel[:, 1] * heading[0]
+        sideways = np.nonzero(np.abs(lat) > bend_m)[0]
+        if sideways.size == 0:
+            return self
+        head = proj[: int(sideways[0]) + 1]
+        k = int(np.argmax(head >= head.max() - LEG_END_TOL_M))
+        if k == 0:
+            return self  # the way sets off sideways: no straight run ahead to measure
+        s_end = float(ss[k])
+        keep = [p for p, length in zip(self.points, self.lengths, strict=True) if length < s_end]
+        end = self.point_at(s_end)
+        if math.dist(keep[-1], end) > 1e-6:
+            keep.append(end)
+        lengths = [0.0]
+        for p0, p1 in itertools.pairwise(keep):
+            lengths.append(lengths[-1] + math.dist(p0, p1))
+        return Way(tuple(keep), tuple(lengths))
 
     def along(self, xs: FloatArray, ys: FloatArray) -> FloatArray:
         """How far along the way each point is: on the segment nearest to it, the length to the

@@ -9,6 +9,7 @@ words are those of ``../shared/bench/README.md``; every goal is a free cell at l
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Final, Literal
@@ -47,7 +48,9 @@ from langnav.grounding.history import EMPTY_HISTORY, HistoryView
 from langnav.grounding.relations import hall_axis
 from langnav.grounding.selection import (
     WallLine,
+    came_through_doors,
     describe_ref,
+    doors_of,
     label_of,
     select,
     select_pair,
@@ -98,6 +101,16 @@ CORNER_GOAL_MAX_M: Final = 0.9
 #: "next to X": stand this far from X's edge, never farther than NEXT_TO_MAX_M (README: 1.0 m).
 NEXT_TO_STANDOFF_M: Final = 0.45
 NEXT_TO_MAX_M: Final = 0.9
+#: The straight run of a hallway sets off along the hallway's axis this many hallway widths along the
+#: walk: past a junction the robot may stand in, on the middle line the walk reaches within a width.
+RUN_HEAD_WIDTHS: Final = 2.0
+#: Stepping into a hallway, the robot passes a point of its walk this far before the spot where it
+#: stops: it ends facing the way it came in (across the hallway from a room's door), so "then the
+#: first door on your left" is read as a person stepping out of the room would.
+INTO_HALL_LEAD_M: Final = 1.0
+#: Beside a side of a thing, at least this far in from the side's ends (about the robot's radius:
+#: level with the side, not off the corner).
+NEXT_TO_FACE_INSET_M: Final = 0.25
 #: "towards an unexplored area": README about 1.0 m from its frontier.
 FRONTIER_GOAL_MAX_M: Final = 0.9
 #: frontier cells tried (nearest first) before giving up on an area.
@@ -135,6 +148,9 @@ DEFAULT_MOVE_M: Final = 1.0
 NAMED_PLACE_MAX_M: Final = compose.NAMED_PLACE_MAX_M
 #: "opposite side of a room": the far third (README).
 OPPOSITE_FRACTION: Final = 2.0 / 3.0
+#: "The opposite side of the room" is by its far wall: this far from it (clear of the wall, and
+#: deep in the far third of any room wider than a corridor).
+OPPOSITE_WALL_STANDOFF_M: Final = 0.6
 #: Two points of the robot's way closer than this are the same point: a millimetre, far below a
 #: cell, and above the error of the poses' rounding to 3 decimals (at most 0.7 mm).
 SAME_POINT_M: Final = 1e-3
@@ -225,7 +241,7 @@ def ground(intent: Intent, analysis: MapAnalysis, pose: Pose | Sequence[float], 
     steps: list[GroundedStep] = []
     cur = start
     for i, step in enumerate(intent.steps):
-        gs = ground_step(step, ctx, cur, i)
+        gs = ground_step(_same_element_as_before(step, steps[-1] if steps else None), ctx, cur, i)
         steps.append(gs)
         ctx.advance(gs)
         cur = gs.end_pose
@@ -259,6 +275,29 @@ class GroundingContext:
         if not pts or math.dist(pts[-1], pose.xy) > SAME_POINT_M:
             pts.append(pose.xy)
         return pts
+
+
+#: Words that point back at the element of the step before ("the middle of it", "go in there").
+_BACK_REF_RE: Final = re.compile(r"\b(?:it|there|that one|this one|that room|this room|them)\b", re.IGNORECASE)
+#: The id prefixes that the label words of each kind name (``select_by_label``).
+_LABEL_PREFIXES: Final = {Kind.ROOM: ("room", "hallway"), Kind.HALLWAY: ("room", "hallway"), Kind.DOOR: ("door",),
+                          Kind.OBSTACLE: ("obstacle",), Kind.CORNER: ("corner",)}
+
+
+def _same_element_as_before(step: Step, prev: GroundedStep | None) -> Step:
+    """"Go into the first room on your left and then go to the middle of it": the reader gives "it"
+    the words of the element before, but from inside that room they would pick another one; the
+    words point back at the element the step before went to, so it is named by its label (which
+    also holds when the step is grounded again later, from wherever the robot is then)."""
+    ref = step.target
+    if prev is None or ref is None or prev.step.target != ref or len(prev.element_ids) != 1 \
+            or not _BACK_REF_RE.search(step.text) or ref.label is not None:
+        return step
+    element_id = prev.element_ids[0]
+    prefix, _, number = element_id.rpartition("_")
+    if not number.isdigit() or prefix not in _LABEL_PREFIXES.get(ref.kind, ()):
+        return step
+    return step.model_copy(update={"target": ElementRef(kind=ref.kind, label=int(number))})
 
 
 def advance_way(route: list[Point], moved_from: list[Pose], gs: GroundedStep) -> None:
@@ -464,7 +503,8 @@ def _navigate_full(step: Step, ctx: GroundingContext, pose: Pose, index: int) ->
         return _room_goal(step, ref, room, detail, ctx, pose, comp, index)
     if ref.kind == Kind.UNEXPLORED_AREA and detail == Detail.MIDDLE:
         detail = Detail.TOWARDS
-    e = select(ref, ctx.analysis, pose, step.text)
+    last_leg = (ctx.route[-2], ctx.route[-1]) if len(ctx.route) >= 2 else None
+    e = select(ref, ctx.analysis, pose, step.text, came_through_doors(ctx.analysis, pose, last_leg))
     desc = describe_ref(ref)
     if detail == Detail.THROUGH and isinstance(e, Door | NarrowPassage):
         poses = _through(e, ctx, pose, comp, desc)
@@ -574,7 +614,7 @@ def _face(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> Grounded
         if e is here:
             raise GroundingError(f"I am in {label_of(e)} already, so I cannot turn to face it; tell me what to face "
                                  "in it, e.g. 'face the door' or 'face north'.")
-        point = compose.facing_point(e, pose, here, ctx.analysis.doors)
+        point = compose.facing_point(e, pose, here, tuple(doors_of(ctx.analysis)))
         what, ids = describe_ref(ref), (e.id,)
     if math.dist(point, pose.xy) < compose.MIN_OFFSET_RUN_M:
         raise GroundingError(f"I am at {what}, so there is no way to turn to face it.")
@@ -748,13 +788,43 @@ def _kdtree_where(cells: FloatArray, max_m: float):  # type: ignore[no-untyped-d
 
 
 def _next_to_cells(cells: FloatArray, ctx: GroundingContext, pose: Pose, comp: int) -> Point | None:
-    """A free point within NEXT_TO_MAX_M of the nearest of ``cells``, on the robot's side."""
+    """A free point within NEXT_TO_MAX_M of ``cells``, on the robot's side: beside the side of the
+    thing that faces the robot (``_beside_face``), or off its nearest cell when it has no sides."""
     _, q = nearest_point(pose.xy, cells)
-    dx, dy = pose.x_m - q[0], pose.y_m - q[1]
-    n = unit((dx, dy)) if math.hypot(dx, dy) > 1e-6 else (-pose.heading()[0], -pose.heading()[1])
-    prefer = (q[0] + n[0] * NEXT_TO_STANDOFF_M, q[1] + n[1] * NEXT_TO_STANDOFF_M)
+    prefer = _beside_face(np.asarray(cells, dtype=float).reshape(-1, 2), pose)
+    if prefer is None:
+        dx, dy = pose.x_m - q[0], pose.y_m - q[1]
+        n = unit((dx, dy)) if math.hypot(dx, dy) > 1e-6 else (-pose.heading()[0], -pose.heading()[1])
+        prefer = (q[0] + n[0] * NEXT_TO_STANDOFF_M, q[1] + n[1] * NEXT_TO_STANDOFF_M)
     return ctx.space.safe_point_near(q, comp, NEXT_TO_MAX_M + 0.5, prefer=prefer,
                                      where=_kdtree_where(cells, NEXT_TO_MAX_M))
+
+
+def _beside_face(cells: FloatArray, pose: Pose) -> Point | None:
+    """"Next to the cabinet" is beside one of its sides, not off a corner: of the four sides of the
+    thing's footprint (along its own axes), the one facing the robot; the point is
+    NEXT_TO_STANDOFF_M out from that side, level with the robot along it but at least
+    NEXT_TO_FACE_INSET_M in from the side's ends. None for fewer than three cells."""
+    if len(cells) < 3:
+        return None
+    c = cells.mean(axis=0)
+    _, vec = np.linalg.eigh(np.cov((cells - c).T))
+    axes = [np.asarray(vec[:, k], dtype=float) for k in range(2)]
+    to_robot = np.array([pose.x_m, pose.y_m]) - c
+    spans = [((cells - c) @ a).min() for a in axes], [((cells - c) @ a).max() for a in axes]
+    best: tuple[float, Point] | None = None
+    for k in range(2):
+        a, other = axes[k], axes[1 - k]
+        for sgn in (1.0, -1.0):
+            facing = float(sgn * (to_robot @ a))
+            out = spans[1][k] if sgn > 0 else -spans[0][k]
+            lo, hi = spans[0][1 - k], spans[1][1 - k]
+            inset = min(NEXT_TO_FACE_INSET_M, (hi - lo) / 2)
+            level = min(max(float(to_robot @ other), lo + inset), hi - inset)
+            p = c + a * sgn * (out + NEXT_TO_STANDOFF_M) + other * level
+            if best is None or facing > best[0]:
+                best = (facing, (float(p[0]), float(p[1])))
+    return None if best is None else best[1]
 
 
 def _towards_frontier(u: UnexploredArea, ctx: GroundingContext, pose: Pose, comp: int) -> Point | None:
@@ -801,9 +871,20 @@ def _room_goal(step: Step, ref: ElementRef, room: Room, detail: Detail, ctx: Gro
     mask = _room_cells_mask(ctx, room)
     in_room = _in_label(ctx, room.label)
     messages: tuple[str, ...] = ()
-    if detail == Detail.OPPOSITE_SIDE_OF and room.kind == ElementKind.HALLWAY and len(room.cells_xy) >= 3:
+    if detail in (Detail.TO, Detail.STOP_AT) and _plain_space(ref):
+        if room is space_of(ctx.analysis, pose.xy):
+            # "go in the corridor to the second door": the robot is in it already; nothing to drive
+            note = f"I am in {label_of(room)} already"
+            return GroundedStep(index, step, (), pose, pose, note, (room.id,), messages=(note + ".",))
+        if room.kind == ElementKind.HALLWAY and len(room.cells_xy) >= 3:
+            stepped = _step_into_hallway(room, ctx, pose, comp)
+            if stepped is not None:
+                return _nav_step(step, pose, index, stepped, f"into {desc}", (room.id,))
+    if detail == Detail.OPPOSITE_SIDE_OF and room.kind == ElementKind.HALLWAY and ref.kind != Kind.ROOM \
+            and len(room.cells_xy) >= 3:
+        # (a space the user calls a room has an opposite side, even when it is long enough for a hall)
         # "the end of the hall": the end ahead along the way the hallway leads, before its end wall
-        way = _hallway_way(room, ctx, pose, desc)
+        way = _down_the_run(_hallway_way(room, ctx, pose, desc), room, pose)
         s_end = way.length_m - ALONG_END_MARGIN_M
         if s_end < ALONG_MIN_RUN_M:
             raise GroundingError(f"I am already at the end of {desc}; turn around to go to its other end.")
@@ -828,18 +909,58 @@ def _room_goal(step: Step, ref: ElementRef, room: Room, detail: Detail, ctx: Gro
     return _nav_step(step, pose, index, [goal], f"{verb} {desc}", (room.id,), messages=messages)
 
 
+def _plain_space(ref: ElementRef) -> bool:
+    """A space named by its kind alone ("the hallway", "the corridor"), no word picking one of several."""
+    return (ref.ordinal is None and ref.superlative is None and ref.side is None and ref.label is None
+            and ref.relation is None and ref.near is None and ref.name is None and not ref.passed)
+
+
+def _step_into_hallway(hall: Room, ctx: GroundingContext, pose: Pose, comp: int) -> list[Point] | None:
+    """"Go out into the hallway": a hallway is entered where the walk from here first reaches it (out
+    of the room's door), onto its middle line; not at its middle, which may be far along it. The
+    poses are a point of the walk INTO_HALL_LEAD_M before that spot and the spot itself, so the robot
+    ends facing the way it walked in. None when the walk does not reach the hallway."""
+    walk = walk_from(ctx.space, pose.xy)
+    if walk is None:
+        return None
+    cells = np.asarray(hall.cells_xy, dtype=float).reshape(-1, 2)
+    reached = walk.reached(cells[:, 0], cells[:, 1])
+    if not reached.any():
+        return None
+    metres = np.where(reached, walk.each(cells[:, 0], cells[:, 1]), np.inf)
+    entry = (float(cells[int(np.argmin(metres)), 0]), float(cells[int(np.argmin(metres)), 1]))
+    target = _on_middle_line(hall, entry, None)
+    goal = ctx.space.safe_point_near(target, comp, FOLLOW_SNAP_M, prefer=target, where=_in_label(ctx, hall.label))
+    if goal is None:
+        return None
+    path = walk.path_to(goal)
+    lengths = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff([p[0] for p in path]), np.diff([p[1] for p in path])))])
+    lead = [p for p, d in zip(path[1:-1], lengths[1:-1], strict=True)
+            if lengths[-1] - d >= INTO_HALL_LEAD_M and ctx.space.is_goal_ok(*p, component=comp)]
+    return [lead[-1], goal] if lead else [goal]
+
+
 def _opposite_side(room: Room, mask: BoolArray, ctx: GroundingContext, pose: Pose, comp: int) -> Point | None:
+    """"The opposite side of the room": the side of the room facing the robot's across it. The way
+    across is the room's axis (the run of its walls) nearest to the way from the robot to the room's
+    middle; the goal is in the third of the room farthest along it, straight across from the robot,
+    ``OPPOSITE_WALL_STANDOFF_M`` short of the far wall (the far side itself, not the middle of the
+    room's far third)."""
     xs, ys = ctx.space.xs[mask], ctx.space.ys[mask]
     if xs.size == 0:
         return None
     v = (room.centroid[0] - pose.x_m, room.centroid[1] - pose.y_m)
     d = unit(v) if math.hypot(*v) > 0.5 else pose.heading()
+    if xs.size >= 3:
+        _, vec = np.linalg.eigh(np.cov(np.vstack([xs - xs.mean(), ys - ys.mean()])))
+        axes = [(float(vec[0, k]) * sgn, float(vec[1, k]) * sgn) for k in range(2) for sgn in (1.0, -1.0)]
+        d = max(axes, key=lambda a: a[0] * d[0] + a[1] * d[1])
     t = (xs - pose.x_m) * d[0] + (ys - pose.y_m) * d[1]
     cut = t.min() + OPPOSITE_FRACTION * (t.max() - t.min())
     far = mask.copy()
     far[mask] = t >= cut
-    sel = t >= cut
-    prefer = (float(xs[sel].mean()), float(ys[sel].mean()))
+    depth = max(float(t.max()) - OPPOSITE_WALL_STANDOFF_M, float(cut))
+    prefer = (pose.x_m + d[0] * depth, pose.y_m + d[1] * depth)
     return ctx.space.best_in_mask(far, comp, prefer)
 
 
@@ -1012,6 +1133,8 @@ def _follow_hallway(step: Step, desc: str, hall: Room, ctx: GroundingContext, po
     part of the way; poses on the hallway's middle line, never past the part asked for."""
     way = _hallway_way(hall, ctx, pose, desc)
     if step.fraction is not None:
+        # "halfway down the corridor": of the straight run ahead, from here to where it turns
+        way = _down_the_run(way, hall, pose)
         s_goal = way.length_m * step.fraction
         if s_goal < compose.MIN_OFFSET_RUN_M:
             raise GroundingError(f"I am already {compose.fraction_words(step.fraction)} along {desc} or past it.")
@@ -1041,6 +1164,20 @@ def _hallway_way(hall: Room, ctx: GroundingContext, pose: Pose, desc: str) -> co
     if not found:
         raise GroundingError(f"I cannot follow {desc}: none of it is reachable from here.")
     return max(found, key=lambda w: w.length_m)
+
+
+def _down_the_run(way: compose.Way, hall: Room, pose: Pose) -> compose.Way:
+    """The way down the hallway as far as its straight run goes (``Way.straight_leg``). The run sets
+    off along the hallway's axis where the walk is RUN_HEAD_WIDTHS hallway widths on (not where the
+    robot stands, where it tilts at a junction; nor the walk's own first stretch, which slants to the
+    middle line from a robot off it), the way the walk goes."""
+    head = way.point_at(min(way.length_m, RUN_HEAD_WIDTHS * hall.width_m))
+    v = (head[0] - pose.x_m, head[1] - pose.y_m)
+    if math.hypot(*v) < compose.MIN_OFFSET_RUN_M:
+        return way
+    _, axis = hall_axis(hall, head)
+    heading = axis if axis[0] * v[0] + axis[1] * v[1] >= 0 else (-axis[0], -axis[1])
+    return way.straight_leg(heading, hall.width_m)
 
 
 def _on_the_way(hall: Room, way: compose.Way, s_m: float, s_max: float, ctx: GroundingContext,

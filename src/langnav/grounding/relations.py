@@ -36,6 +36,7 @@ from langnav.grounding.selection import (
     SIDE_WORDS,
     describe_ref,
     distance_to,
+    doors_of,
     elements_of_kind,
     floor_area_m2,
     label_of,
@@ -190,7 +191,7 @@ def _hall_and_origin(analysis: MapAnalysis, pose: Pose, what: str) -> tuple[Room
     if here is None or not joined:
         raise GroundingError(f"I see no hallway next to the room I am in, so I cannot tell {what}.")
     hall = min(joined, key=lambda h: nearest_point(pose.xy, h.cells_xy)[0])
-    doors = [d for d in analysis.doors if {hall.id, here.id} <= set(d.connects)]
+    doors = [d for d in doors_of(analysis) if {hall.id, here.id} <= set(d.connects)]
     if not doors:
         raise GroundingError(f"I see no door from this room onto {label_of(hall)}.")
     return hall, here, min(doors, key=lambda d: math.dist(d.center, pose.xy)).center
@@ -225,7 +226,7 @@ def _doors_along(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room:
     def lateral(p: Point) -> float:  # > 0: left of the way along the hallway
         return d_axis[0] * (p[1] - centre[1]) - d_axis[1] * (p[0] - centre[0])
 
-    doors = [d for d in analysis.doors if hall.id in d.connects and (here is None or here.id not in d.connects)
+    doors = [d for d in doors_of(analysis) if hall.id in d.connects and (here is None or here.id not in d.connects)
              and along(d.center) > OWN_DOOR_ALONG_M]
     if side in (Side.LEFT, Side.RIGHT):
         doors = [d for d in doors if (lateral(d.center) > 0) == (side == Side.LEFT)]
@@ -277,7 +278,7 @@ def _across(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room:
     if base is None or base is hall:
         origin = pose.xy
     else:
-        doors = [d for d in analysis.doors if {hall.id, base.id} <= set(d.connects)]
+        doors = [d for d in doors_of(analysis) if {hall.id, base.id} <= set(d.connects)]
         if not doors:
             raise GroundingError(f"I see no door from {label_of(base)} onto {label_of(hall)}.")
         origin = min(doors, key=lambda d: math.dist(d.center, pose.xy)).center
@@ -308,7 +309,7 @@ def _across(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room:
                              "either side; say 'the room across the hall on your left' (or right).")
     here_along = along(origin)
     candidates: dict[str, tuple[float, Room]] = {}
-    for d in analysis.doors:
+    for d in doors_of(analysis):
         if hall.id not in d.connects:
             continue
         other_id = next((c for c in d.connects if c != hall.id), None)

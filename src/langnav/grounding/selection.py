@@ -76,6 +76,13 @@ IN_SPACE_M: Final = 0.5
 #: the box" finds a door across a small room from the box but not one in another part of the floor.
 NEAR_MAX_M: Final = 4.0
 
+#: Building codes ask at least 0.8 m of clear width of a door people walk through (ADA 32 in =
+#: 0.81 m; most European codes 0.8 m). An opening measured narrower than that less one map cell of
+#: error at a jamb is no door anyone builds: it is a gap between pieces of furniture, shelves or a
+#: partition (a 0.7 m gap between two benches). A person calls it "the narrow gap" or "the narrow
+#: passage", and does not count it among "the doors" of a room.
+NARROW_GAP_MAX_M: Final = 0.75
+
 #: Nouns for obstacles of a compact footprint ("the box") and of a long one ("the shelf"). When the
 #: words use one, obstacles of that shape are chosen before the others.
 COMPACT_NOUNS: Final = ("box", "boxes", "crate", "crates", "pillar", "pillars", "column", "columns", "post",
@@ -87,6 +94,10 @@ LONG_NOUNS: Final = ("shelf", "shelves", "bench", "benches", "sofa", "sofas", "c
 COMPACT_MAX_ASPECT: Final = 1.6
 LONG_MIN_ASPECT: Final = 2.0
 _COMPACT_RE: Final = re.compile(r"\b(?:" + "|".join(COMPACT_NOUNS) + r")\b", re.IGNORECASE)
+#: "The gap" names an opening; where the map has gaps narrower than any door, a person who says
+#: "gap" rather than "door" means one of those (``NARROW_GAP_MAX_M``).
+_GAP_RE: Final = re.compile(r"\bgaps?\b", re.IGNORECASE)
+_DOOR_RE: Final = re.compile(r"\bdoor", re.IGNORECASE)
 _LONG_RE: Final = re.compile(r"\b(?:" + "|".join(LONG_NOUNS) + r")\b", re.IGNORECASE)
 
 ORDINAL_WORDS: Final = {1: "first", 2: "second", 3: "third", 4: "fourth", 5: "fifth", 6: "sixth",
@@ -220,6 +231,28 @@ def space_of(analysis: MapAnalysis, xy: Point) -> Room | None:
         if d <= SPACE_SNAP_M and (best is None or d < best[0]):
             best = (d, r)
     return None if best is None else best[1]
+
+
+def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
+    """The space with the spaces narrow gaps join to it (``is_gap``), one after the other. A gap
+    narrower than any door does not end a room: a corridor narrowed by a cart goes on past it, and a
+    room parted by a row of shelves with a gap in it is one room, whose doors are the doors of both
+    parts."""
+    gaps = [d for d in analysis.doors if is_gap(d)]
+    by_id = {r.id: r for r in analysis.rooms}
+    group = [space]
+    seen = {space.id}
+    k = 0
+    while k < len(group):
+        cur = group[k].id
+        for g in gaps:
+            if cur in g.connects:
+                for other in g.connects:
+                    if other not in seen and other in by_id:
+                        seen.add(other)
+                        group.append(by_id[other])
+        k += 1
+    return group
 
 
 def _space_for_ref(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room | None:
@@ -370,15 +403,27 @@ def matches_side(e: Element, pose: Pose, side: Side) -> bool:
     return is_behind(pose, p)
 
 
+def is_gap(d: Door) -> bool:
+    """An opening narrower than any door (``NARROW_GAP_MAX_M``): a narrow gap, not a door."""
+    return d.width_m < NARROW_GAP_MAX_M
+
+
+def doors_of(analysis: MapAnalysis) -> list[Door]:
+    """The doors a person counts: the analysis's doors without the narrow gaps."""
+    return [d for d in analysis.doors if not is_gap(d)]
+
+
 def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
+    """The elements the noun of ``kind`` names: "doors" are the doors without the gaps narrower than
+    any door, which are "narrow passages" (gaps) with the analysis's passages."""
     if kind == Kind.DOOR:
-        return list(analysis.doors)
+        return list(doors_of(analysis))
+    if kind == Kind.NARROW_PASSAGE:
+        return [*analysis.narrow_passages, *(d for d in analysis.doors if is_gap(d))]
     if kind == Kind.ROOM:
         return [r for r in analysis.rooms if r.kind == ElementKind.ROOM]
     if kind == Kind.HALLWAY:
         return [r for r in analysis.rooms if r.kind == ElementKind.HALLWAY]
-    if kind == Kind.NARROW_PASSAGE:
-        return list(analysis.narrow_passages)
     if kind == Kind.OBSTACLE:
         return list(analysis.obstacles)
     if kind == Kind.CORNER:
@@ -391,10 +436,13 @@ def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
 
 
 # ------------------------------------------------------------------------------ selection
-def select(ref: ElementRef, analysis: MapAnalysis, pose: Pose, words: str = "") -> Element:
+def select(ref: ElementRef, analysis: MapAnalysis, pose: Pose, words: str = "",
+           came_through: frozenset[str] = frozenset()) -> Element:
     """The one element the words mean. Raises GroundingError saying what the map has instead.
-    ``words`` is the step's text, read only for the shape of an obstacle ("the box")."""
-    return select_many(ref, analysis, pose, 1, words)[0]
+    ``words`` is the step's text, read only for the shape of an obstacle ("the box") and "gap".
+    ``came_through``: the doors the robot has just walked through (``came_through_doors``), which
+    are behind it, where it came from, not "the first door on your left"."""
+    return select_many(ref, analysis, pose, 1, words, came_through)[0]
 
 
 def aspect_ratio(o: Obstacle) -> float:
@@ -414,7 +462,8 @@ def shape_filter(pool: list[Element], words: str) -> list[Element]:
     return keep or pool
 
 
-def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, words: str = "") -> list[Element]:
+def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, words: str = "",
+                came_through: frozenset[str] = frozenset()) -> list[Element]:
     """``count`` elements the words mean, best first ("the two obstacles in this room")."""
     if ref.name:
         raise GroundingError(
@@ -451,6 +500,11 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
             raise GroundingError("I cannot tell which room I am in: I seem to be outside every room.")
         return [here]
 
+    if ref.kind == Kind.DOOR and words and _GAP_RE.search(words) and not _DOOR_RE.search(words):
+        try:
+            return select_many(ref.model_copy(update={"kind": Kind.NARROW_PASSAGE}), analysis, pose, count, words)
+        except GroundingError:
+            pass  # no gap matches the words: "the gap" is a doorway
     pool = elements_of_kind(analysis, ref.kind)
     noun_plural = KIND_NOUN[ref.kind][1]
     if not pool:
@@ -469,6 +523,8 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
                 raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]} other than the one I am in.")
     if ref.side is not None:
         pool = [e for e in pool if matches_side(e, pose, ref.side)]
+        if came_through and ref.side in (Side.LEFT, Side.RIGHT):
+            pool = [e for e in pool if e.id not in came_through]
     if ref.kind == Kind.OBSTACLE and words:
         pool = shape_filter(pool, words)
     by_landmark: dict[int, float] | None = None
@@ -476,11 +532,15 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         pool, by_landmark = _near_landmark(ref, pool, analysis, pose)
 
     here = space_of(analysis, pose.xy)
+    here_group = gap_joined(analysis, here) if here is not None else []
 
     def local_first(e: Element) -> int:
         if here is None or space is not None or not isinstance(e, Door | NarrowPassage):
             return 0
-        return 0 if _in_space(e, here, analysis) else 1
+        return 0 if any(_in_space(e, s, analysis) for s in here_group) else 1
+
+    if ref.kind == Kind.DOOR and count == 1 and _plain(ref):
+        _one_door_or_ask(pool, [space] if space is not None else here_group, analysis, pose)
 
     if ref.ordinal is not None and ref.kind in (Kind.DOOR, Kind.NARROW_PASSAGE) and here is not None \
             and space is None and any(local_first(e) == 0 for e in elements_of_kind(analysis, ref.kind)):
@@ -510,6 +570,80 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
     return ordered[k:k + count]
 
 
+def came_through_doors(analysis: MapAnalysis, pose: Pose, last_leg: tuple[Point, Point] | None) -> frozenset[str]:
+    """The doors whose opening the robot's last leg of way crossed and that are now behind it (beyond
+    +-120 deg): the door it just stepped out of. One does not call the door one has just come
+    through "the first door on your left": it is where one came from."""
+    if last_leg is None or math.dist(*last_leg) < 1e-6:
+        return frozenset()
+    a, b = last_leg
+    out: set[str] = set()
+    for d in analysis.doors:
+        if _segments_cross(a, b, d.jambs[0], d.jambs[1]) and is_behind(pose, d.center):
+            out.add(d.id)
+    return frozenset(out)
+
+
+def _segments_cross(a: Point, b: Point, c: Point, d: Point) -> bool:
+    def orient(p: Point, q: Point, r: Point) -> float:
+        return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
+    o1, o2, o3, o4 = orient(a, b, c), orient(a, b, d), orient(c, d, a), orient(c, d, b)
+    return o1 * o2 < 0 and o3 * o4 < 0
+
+
+def _plain(ref: ElementRef) -> bool:
+    """Words that pick no element among several of a kind: "the door", "the door of this room"."""
+    return (ref.ordinal is None and ref.side is None and ref.superlative is None and ref.near is None
+            and ref.label is None and ref.relation is None and not ref.passed and ref.name is None)
+
+
+def _one_door_or_ask(pool: list[Element], spaces: list[Room], analysis: MapAnalysis, pose: Pose) -> None:
+    """"The door" of a room with one door is that door; of a room with several it could be any of
+    them, so ask (naming them as the map shows them, with where each is) instead of guessing. A
+    space with no door of its own leaves "the door" to the nearest one (``pool`` unchanged)."""
+    if not spaces:
+        return
+    own = [e for e in pool if any(_in_space(e, s, analysis) for s in spaces)]
+    if len(own) <= 1:
+        if own:
+            pool[:] = own
+        return
+    faced = [e for e in own if isinstance(e, Door) and _heading_crosses(pose, e.jambs)]
+    if len(faced) == 1:
+        pool[:] = faced  # the robot looks straight through one of them: "the door" is the one it faces
+        return
+    own.sort(key=lambda e: distance_to(e, pose.xy))
+    where = " ".join(spaces[0].id.split("_"))
+    names = ", ".join(f"{label_of(e)} ({_where_is(e, pose)}, {distance_to(e, pose.xy):.1f} m)" for e in own[:-1])
+    last = own[-1]
+    raise GroundingError(f"{where.capitalize()} has {NUMBER_WORDS.get(len(own), str(len(own)))} doors: {names} and "
+                         f"{label_of(last)} ({_where_is(last, pose)}, {distance_to(last, pose.xy):.1f} m). Which "
+                         f"one do you mean? Say e.g. 'the door on your left' or '{label_of(own[0])}'.")
+
+
+def _heading_crosses(pose: Pose, seg: tuple[Point, Point]) -> bool:
+    """The robot's heading line, ahead of it, passes through the segment (a door's opening)."""
+    (ax, ay), (bx, by) = seg
+    hx, hy = pose.heading()
+    ex, ey = bx - ax, by - ay
+    den = hx * ey - hy * ex
+    if abs(den) < 1e-9:
+        return False
+    wx, wy = ax - pose.x_m, ay - pose.y_m
+    t = (wx * ey - wy * ex) / den  # along the heading
+    u = (wx * hy - wy * hx) / den  # along the segment
+    return t > 0 and 0.0 <= u <= 1.0
+
+
+def _where_is(e: Element, pose: Pose) -> str:
+    p = side_point(e, pose)
+    if is_ahead(pose, p):
+        return "ahead"
+    if is_behind(pose, p):
+        return "behind me"
+    return "on my left" if is_left(pose, p) else "on my right"
+
+
 def _relative_to_robot(ref: ElementRef) -> bool:
     """Words that place an element relative to the robot: a side, an order, nearest / farthest."""
     return ref.side is not None or ref.ordinal is not None or ref.superlative in (Superlative.NEAREST,
@@ -535,16 +669,26 @@ def select_by_label(kind: Kind, label: int, analysis: MapAnalysis) -> Element:
     elif kind == Kind.HALLWAY:
         kinds.append(Kind.ROOM)
     for k in kinds:
-        for e in elements_of_kind(analysis, k):
+        for e in _labelled(analysis, k):
             if _label_number(e.id) == label:
                 return e
-    pool = elements_of_kind(analysis, kind)
+    pool = _labelled(analysis, kind)
     noun = LABEL_NOUN.get(kind, KIND_NOUN[kind][0])
     if not pool:
         raise GroundingError(f"I see no {noun} {label} on the map: it has no {KIND_NOUN[kind][1]}.")
     shown = sorted(pool, key=lambda e: (_label_number(e.id) or 0))
     names = ", ".join(label_of(e) for e in shown[:12]) + (" ..." if len(shown) > 12 else "")
     raise GroundingError(f"I see no {noun} {label} on the map; its {KIND_NOUN[kind][1]} are {names}.")
+
+
+def _labelled(analysis: MapAnalysis, kind: Kind) -> list[Element]:
+    """The elements the picture labels with the noun of ``kind``: "door 9" is door_9 even when it is
+    a gap narrower than any door."""
+    if kind == Kind.DOOR:
+        return list(analysis.doors)
+    if kind == Kind.NARROW_PASSAGE:
+        return list(analysis.narrow_passages)
+    return elements_of_kind(analysis, kind)
 
 
 def _near_landmark(ref: ElementRef, pool: list[Element], analysis: MapAnalysis,
@@ -606,7 +750,9 @@ def _where(ref: ElementRef) -> str:
 def _select_corner(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Corner:
     space = _space_for_ref(ref, analysis, pose)
     assert space is not None
-    corners = [c for c in analysis.corners if _in_space(c, space, analysis)]
+    # the robot's room is the whole of it, parts a narrow gap joins included (``gap_joined``)
+    spaces = gap_joined(analysis, space) if space is space_of(analysis, pose.xy) else [space]
+    corners = [c for c in analysis.corners if any(_in_space(c, s, analysis) for s in spaces)]
     room_word = "hallway" if space.kind == ElementKind.HALLWAY else "room"
     if not corners:
         raise GroundingError(f"I found no corners in this {room_word}.")

@@ -116,6 +116,20 @@ south). A "stop" between instructions takes back the motion before it when that 
 - No camera: leave out "take a picture", "send me a photo", "what do you see?". Alone: no steps and a \
 clarification saying there is no camera. With motions: the motions, and a clarification saying no picture \
 was taken. "take a picture to your left" -> rotate left (the turn is the part the robot can do).
+- Informal verbs: "push / scoot / mosey / roll forward 2 m" -> move (but "push the box" moves a thing: out of \
+scope); "swing / whip / bank / hook left" -> rotate left; "kick it around", "bring it around" -> around; "back \
+it up two feet" -> move backward ("it" is the robot); "hit / pull / throw a left" -> rotate left; "hit a three \
+sixty", "pull a one eighty" -> rotate 360 / around; "180" or "three sixty" said alone is that turn, never \
+metres; "give me two more feet" -> move forward 0.6096 m; "make turn on left" -> rotate left.
+- Stopping: "hold it", "hold up", "hang on", "that'll do", "whoa" -> stop. A stop or a question said twice in \
+a row is one step ("where are you? can you tell me where you are?" -> one pose query).
+- One amount: a compound measure, largest unit first, adds up ("two feet and six inches" -> 0.762 m; "one \
+metre twenty centimetres" -> 1.2). The same amount said again is done once, never added ("do a full spin, \
+three sixty" -> rotate 360; "two hundred centimetres, that's two metres" -> 2 m). "it's about thirty \
+degrees" after "turn left" gives the amount. Two different amounts for one motion ("turn 90 degrees 45 \
+degrees") -> ask. A number cut off and not said again ("turn left forty fi-") -> ask, never 40.
+- "Step one, ...", "1) ... 2) ..." number a list (no amounts); "..., right?" / "..., okay?" is a tag \
+question, not a side; "wait, ..." opening a request only holds the floor.
 - Ask, don't guess: when the side of a turn ("rotate 45 degrees"), the unit of a distance ("move forward 3") \
 or any word about where or how far is unclear, give no steps; in clarification say what you understood and \
 ask about the rest."""
@@ -203,6 +217,13 @@ EXAMPLES: Final[tuple[tuple[str, dict[str, Any]], ...]] = (
                 {"movement": "move", "direction": "forward", "distance_m": 0.9144}]}),
     ("move forward ten feet, scratch that, six feet",
      {"steps": [{"movement": "move", "direction": "forward", "distance_m": 1.8288}]}),
+    ("um, swing left, then push forward two feet and six inches",
+     {"steps": [{"movement": "rotate", "direction": "left", "amount": "default"},
+                {"movement": "move", "direction": "forward", "distance_m": 0.762}]}),
+    ("kick it around, one eighty",
+     {"steps": [{"movement": "rotate", "direction": "around", "angle_deg": 180}]}),
+    ("turn left forty fi-",
+     {"steps": [], "clarification": "I heard a number cut off ('forty fi-'): how many degrees? Nothing was run."}),
     ("move forward five",
      {"steps": [], "clarification": "I understood: move forward 5. Five what: metres or feet? Nothing was run."}),
     ("Where are you right now?",

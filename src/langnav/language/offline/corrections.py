@@ -93,6 +93,14 @@ def is_bare_verb(clause: str) -> bool:
     return bool(content) and all(w in _BARE_VERBS for w in content) and len(content) <= 2
 
 
+def _whole_move(fragment: str) -> bool:
+    """A fragment with both an amount and a way ("then 3 feet to your right") is an instruction with
+    its verb left out, complete on its own: it completes no instruction after it (the one before it
+    was complete, or it would have been joined there)."""
+    norm = normalize(fragment)
+    return bool(find_quantities(norm)) and SIDE_RE.search(norm) is not None
+
+
 def join_fragments(clauses: list[str], is_open: IsOpen) -> list[str]:
     """Each fragment joined to the open instruction before it (or, failing that, after it)."""
     out: list[str] = []
@@ -112,7 +120,7 @@ def join_fragments(clauses: list[str], is_open: IsOpen) -> list[str]:
                 i += 1
                 continue
             nxt = clauses[i + 1] if i + 1 < len(clauses) else None
-            if nxt is not None and not is_fragment(nxt) and is_open(nxt):
+            if nxt is not None and not is_fragment(nxt) and is_open(nxt) and not _whole_move(clause):
                 out.append(f"{nxt} {clause}")
                 i += 2
                 continue

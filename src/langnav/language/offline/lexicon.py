@@ -289,6 +289,11 @@ STOP_PHRASES: Final = (
     "stay", "whoa", "enough", "stop it", "e-stop", "estop", "stop right now", "stop at once",
     "break", "hault", "stahp", "stopp", "stop please", "do not go any further", "go no further",
     "that is far enough", "that is enough", "no further",
+    # idioms of stopping: "hold it (right there)", "hold up", "hang on", "that will do"
+    "hold it", "hold it there", "hold it right there", "hold it right here", "hold up", "hang on",
+    "hang on a second", "hang on a sec", "hold on a second", "hold on a sec", "wait a second", "wait a sec",
+    "wait a moment", "wait a minute", "just a second", "just a moment", "whoa there", "stop stop", "stay right there", "freeze right there",
+    "halt right there", "quit moving", "okay stop", "ok stop", "stop right here", "hold up there",
 )
 
 #: Questions and their answers.
@@ -302,7 +307,8 @@ QUERY_POSE_PATTERNS: Final = (
     r"\bwhat\s+room\s+are\s+you\s+in\b", r"\bwhere\s+have\s+you\s+got\s+to\b",
 )
 QUERY_PATH_PATTERNS: Final = (
-    r"\b(?:what|which|show|tell|give|send|display|get|report)\b.*\b(?:path|route|plan|trajectory|way)\b",
+    # ("which way is north?" asks where a direction is, not the robot's path)
+    r"\b(?:what|which|show|tell|give|send|display|get|report)\b.*\b(?:path|route|plan|trajectory|way(?!\s+(?:is|are)\b))\b",
     r"\b(?:path|route|trajectory)\b.*\b(?:following|taking|using|on|planned|current)\b",
     r"\bwhere\s+are\s+you\s+(?:going|heading|headed|driving)\b",
     r"\b(?:current|planned|your)\s+(?:path|route|trajectory|plan)\b",
@@ -310,7 +316,8 @@ QUERY_PATH_PATTERNS: Final = (
 )
 QUERY_MAP_PATTERNS: Final = (
     r"\b(?:show|give|send|display|get|fetch|let\s+me\s+see|can\s+i\s+see|see|view|open|bring\s+up|"
-    r"pull\s+up|print|draw|download|share|provide)\b(?:\s+\w+){0,4}?\s+(?:map|occupancy\s+grid)\b",
+    r"pull\s+up|print|draw|download|share|provide)\b(?:\s+\w+){0,4}?\s+(?:(?:mini|floor|site|overview)\s*-?\s*)?"
+    r"(?:map|occupancy\s+grid)\b",
     r"\bwhat\s+does\s+(?:the|your)\s+map\s+look\s+like\b", r"\b(?:the|your|current)\s+map\s*\?",
     r"^\s*(?:the\s+)?map\s*$", r"\bwhat\s+(?:have\s+you|did\s+you)\s+mapped\b",
     r"\bwhat\s+is\s+on\s+(?:the|your)\s+map\b", r"\bwhat\s+(?:you\s+have|have\s+you)\s+(?:mapped|explored|seen)\b",

@@ -22,11 +22,12 @@ from langnav.language.offline.reading import (
     checked_angle,
 )
 from langnav.language.offline.scratch import Clause
-from langnav.language.offline.turns import repeat_count, rotation
+from langnav.language.offline.turns import amount_said, repeat_count, rotation
 from langnav.language.offline.verbs import Verb
 
 #: Sides only a turn has ("clockwise"): a fragment with one of them is a turn.
 _TURN_ONLY_SIDE_RE: Final = re.compile(r"\b(?:clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw)\b")
+_SIDEWAYS_RE: Final = re.compile(r"\bsideways\b")
 _BACKWARD_VERBS: Final = frozenset({"back up", "reverse", "back off", "go back", "head back"})
 
 
@@ -64,20 +65,23 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
     # a move goes one way: another way said in the clause ("move forward 2 m before turning left")
     # is an instruction not read, never dropped: it stays unread, so the translator asks
     c.lost.extend(d.value for d in directions[1:] if d != direction)
-    distance: float | None = None
+    if direction in (Direction.LEFT, Direction.RIGHT):
+        c.s.take_all(_SIDEWAYS_RE)  # "to the right, like a metre, sideways": the same way said again
     amount: Amount | None = None
+    counted: list[Quantity] = []
     for q in quantities:
         c.s.use(q.start, q.end)
         if q.kind == QuantityKind.LENGTH:
-            distance = (distance or 0.0) + q.value
+            counted.append(q)
             if q.approximate:
                 c.doubt(VAGUE_NUMBER_FACTOR)
         elif q.kind == QuantityKind.BARE and not lengths:
-            distance = (distance or 0.0) + q.value
+            counted.append(q)
             c.doubt(UNITLESS_NUMBER_FACTOR)
             c.asks.append(ASK_UNIT.format(number=c.s.text[q.start:q.end].strip()))
         else:
             c.lost.append(c.s.text[q.start:q.end])
+    distance = amount_said(c, counted)
     if distance is None and direction is None and not little:
         return []  # "go to the kitchen": no element, no direction, no number -> a name or nothing
     if distance is None:
@@ -109,10 +113,9 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
 
 def rotation_from(c: Clause, direction: Direction, quantities: list[Quantity],
                    little: list[re.Match[str]]) -> Step:
-    angle = None
     for q in quantities:
         c.s.use(q.start, q.end)
-        angle = (angle or 0.0) + q.value
+    angle = amount_said(c, quantities)
     amount = None if angle is not None else Amount.LITTLE if little else Amount.DEFAULT
     return Step(movement=Movement.ROTATE, direction=direction, angle_deg=checked_angle(angle), amount=amount,
                 text=c.text[:500])

@@ -6,6 +6,7 @@ import re
 from functools import lru_cache
 from typing import Final
 
+from langnav.language.offline.idioms import plain_idioms
 from langnav.language.offline.lexicon import (
     ELEMENT_NOUNS,
     MOVE_DIRECTIONS,
@@ -44,7 +45,7 @@ _SYMBOLS: Final = (
 _CONTRACTIONS: Final = (
     (re.compile(r"\b(you|we|they)'re\b"), r"\1 are"), (re.compile(r"\bi'm\b"), "i am"),
     (re.compile(r"\b(you|we|they|i)'ve\b"), r"\1 have"), (re.compile(r"\b(i|you|we|they)'d\b"), r"\1 would"),
-    (re.compile(r"\b(i|you|we|they)'ll\b"), r"\1 will"), (re.compile(r"\bcan't\b"), "cannot"),
+    (re.compile(r"\b(i|you|we|they|that|it|this)'ll\b"), r"\1 will"), (re.compile(r"\bcan't\b"), "cannot"),
     (re.compile(r"\bwon't\b"), "will not"), (re.compile(r"\b(\w+)n't\b"), r"\1 not"),
     (re.compile(r"\blet's\b"), "let us"),
     (re.compile(r"\b(what|where|that|it|there|here|who|how)'s\b"), r"\1 is"),
@@ -130,6 +131,7 @@ def normalize(clause: str) -> str:
     text = " ".join(" ".join(words).split())
     for pattern, repl in _IDIOMS:
         text = pattern.sub(repl, text)
+    text = plain_idioms(text)
     if "'" in text:
         text = _POSSESSIVE.sub(_unpossess, text)
     return text

@@ -112,6 +112,45 @@ class Quantity:
     start: int
     end: int
     approximate: bool = False
+    #: the size of the unit it was said in (metres or degrees; 0 for a compound, a turn or a bare
+    #: number): "two feet and six inches" is one amount because inches are smaller than feet
+    unit: float = 0.0
+    #: said as more than what came before ("two more metres", "another foot"): it adds to it
+    adds: bool = False
+
+
+_ADDS_RE: Final = re.compile(r"\b(?:more|another|further|additional|extra)\b")
+
+#: Two amounts closer than this are the same amount (a millimetre, a hundredth of a degree).
+SAME_AMOUNT_TOL: Final = 1e-3
+
+
+def one_amount(quantities: list[Quantity]) -> float | None:
+    """The one amount several quantities of a kind in one instruction say, or None when they disagree.
+
+    English says a compound measure largest unit first ("two feet and six inches", "one metre twenty
+    centimetres", "a yard and a foot"): each part in a smaller unit than the one before adds to it.
+    The same amount said again, in any unit ("a full spin, three sixty"; "two hundred centimetres,
+    that's two metres") is that amount once: adding it would take the robot farther than asked.
+    An amount said to be more ("4 feet, then two more metres") adds to the one before.
+    Anything else (two different amounts in the same unit, or a larger unit after a smaller one)
+    is no reading of one amount: the caller asks which one was meant."""
+    if not quantities:
+        return None
+    total = quantities[0].value
+    unit = quantities[0].unit
+    for q in quantities[1:]:
+        if q.adds:
+            total += q.value  # "go 4 feet, two more metres"
+            continue
+        if abs(q.value - total) <= SAME_AMOUNT_TOL or abs(q.value - quantities[0].value) <= SAME_AMOUNT_TOL:
+            continue  # said again
+        if unit > 0 and 0 < q.unit < unit:
+            total += q.value
+            unit = q.unit
+            continue
+        return None
+    return total
 
 
 def _unit_regex(units: dict[str, float]) -> str:
@@ -169,7 +208,8 @@ _METRES_CENTIMETRES: Final = re.compile(
 #: "2 foot 6", "five feet three", "six foot and two": feet and then inches, the inch unit left unsaid.
 _FEET_INCHES: Final = re.compile(
     rf"(?<![\w.])(?P<ft>\d+|{_WORD_INT})\s*(?:feet|foot|ft|')\s+(?:and\s+)?(?P<inch>\d{{1,2}}|{_WORD_INT})"
-    rf"(?!\s*(?:cm|mm|m|meters?|metres?|feet|foot|ft|degrees?|deg|\.|\d|{_NOT_UNITS}\b))(?![\w.])")
+    rf"(?!\s*(?:cm|mm|m|meters?|metres?|feet|foot|ft|inch(?:es|s)?|ins?|yards?|yds?|degrees?|deg|\.|\d|"
+    rf"{_NOT_UNITS}\b))(?![\w.])")
 
 
 #: "1e3", "2.5E-1": scientific notation, written out before anything else reads the digits.
@@ -355,7 +395,9 @@ def _unit_quantity(kind: QuantityKind, m: re.Match[str]) -> Quantity | None:
                 return None
     if groups.get("tail"):
         value += 0.5 if "half" in groups["tail"] else 0.25
-    return Quantity(kind, value * _unit_factor(groups["unit"], kind), m.start(), m.end(), approximate)
+    factor = _unit_factor(groups["unit"], kind)
+    return Quantity(kind, value * factor, m.start(), m.end(), approximate, unit=factor,
+                    adds=_ADDS_RE.search(m.group(0)) is not None)
 
 
 def _turn_degrees(m: re.Match[str]) -> float:
@@ -365,7 +407,8 @@ def _turn_degrees(m: re.Match[str]) -> float:
         return 360.0 * _fraction_value(m.group("frac"))
     if m.group("whole"):
         count = number_value(m.group("num")) if m.group("num") else 1.0
-        return 360.0 * count
+        # "three sixty full circle": a number this large is the degrees of the full turn said again
+        return count if count >= DEGREES_NOT_TURNS_MIN else 360.0 * count
     count = number_value(m.group("count"))
     # "a one eighty turn", "do a ninety turn": a count this large is the angle of one turn in degrees
     return count if count >= DEGREES_NOT_TURNS_MIN else 360.0 * count

@@ -50,6 +50,7 @@ from langnav.language.offline import lexicon as lx
 from langnav.language.offline.clock import clock_steps
 from langnav.language.offline.compass import compass_steps
 from langnav.language.offline.details import assign_details
+from langnav.language.offline.idioms import named_turn_alone
 from langnav.language.offline.moves import move_steps
 from langnav.language.offline.names import named, unknown_destination
 from langnav.language.offline.navigation import navigate_steps, stop_steps
@@ -102,7 +103,7 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
                 previous_target: ElementRef | None = None) -> Reading:
     """Read one instruction. ``previous`` is the step before it and ``previous_target`` the last
     element named (for 'it', 'there', 'the next one')."""
-    norm = normalize(text)
+    norm = named_turn_alone(normalize(text))
     c = Clause(text=text, s=Scratch(norm), previous=previous)
     if not norm:
         return Reading()
@@ -154,7 +155,7 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
     assign_details(c.s, phrases, 0)
     c.s.take_all(LATE_FILLER_RE)
     if any(p.pronoun and p.ref.kind == Element.NONE and p.ref.name is None for p in phrases):
-        stop_only = c.s.find(STOP_RE) is not None
+        stop_only = STOP_RE.search(norm) is not None  # "hold it": the "it" is part of the stop
         if not stop_only:
             return Reading(unread=(text,), confidence=0.3, problem=Problem.NO_ANTECEDENT)
         phrases = [p for p in phrases if p.ref.kind != Element.NONE]

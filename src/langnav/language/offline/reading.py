@@ -38,6 +38,7 @@ DEFAULT_TURN_DEG: Final = 90.0
 ASK_SIDE: Final = "Which way should I turn, left or right?"
 ASK_DISTANCE: Final = "How far should I move {direction}?"
 ASK_UNIT: Final = "In what unit is '{number}': metres, feet or something else?"
+ASK_AMOUNT: Final = "I heard more than one amount ({amounts}): which one did you mean?"
 
 
 class Problem(StrEnum):

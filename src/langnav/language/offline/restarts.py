@@ -7,6 +7,8 @@ clauses before the steps are built:
   two hundred seventy degrees" (the amount added), "turn around, face south" and "turn left and face
   the door" (a facing says where the turn ends: the turn before it, with no amount of its own, is it);
 * a number said again on its own insists on it: "go forward two feet. just two." is one move;
+* an amount stated ("it's about two metres", "that's forty five degrees to your right") says what the
+  amount is: it gives the amount an instruction next to it misses, or says again the one it has;
 * a "stop" between two instructions stops the motion before it when that motion had no amount: the
   speaker let it run and stopped it, and how far it went cannot be known, so it is not run ("turn
   right, stop, turn left" is the left turn). A motion with its amount ends on its own: "go forward
@@ -21,9 +23,12 @@ from typing import Final
 
 from langnav.language.intent import Amount, Direction, Movement, Step
 from langnav.language.offline.normalize import normalize
-from langnav.language.offline.numbers import NUMBER, QuantityKind, find_quantities
+from langnav.language.offline.numbers import NUMBER, Quantity, QuantityKind, find_quantities
+from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE
 from langnav.language.offline.reading import ASK_SIDE, Reading
 
+#: Words that give a turn its side.
+_TURN_SIDE_RE: Final = re.compile(r"\b(?:left|right|clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw)\b")
 #: Reads one clause on its own (the parser's ``read_clause``).
 ClauseReader = Callable[[str], Reading]
 
@@ -88,6 +93,8 @@ def _restated(first: str, second: str, read: ClauseReader) -> str | None:
         return second  # "turn left, turn left two hundred seventy degrees"
     if a_bare and b_bare and a.direction == b.direction == Direction.AROUND:
         return first  # "turn all the way around, so that you face the other direction"
+    if a_bare and not b_bare and a.direction == Direction.AROUND and _TURN_SIDE_RE.search(normalize(second)) is None:
+        return second  # "spin all the way around, a full three sixty": the amount of the turn just asked for
     return None
 
 
@@ -117,18 +124,75 @@ def drop_stopped(clauses: list[str], read: ClauseReader) -> list[str]:
 #: "just two", "only two, I said": a number alone, said again to insist on it.
 _INSIST_RE: Final = re.compile(rf"^(?:(?:just|only|exactly|i\s+said|that\s+is|that's)\s+)*(?P<num>{NUMBER})"
                                r"(?:\s+(?:only|i\s+said|please))*$")
+#: "only a little", "just a bit, I said": a small amount said again to insist on it.
+_INSIST_LITTLE_RE: Final = re.compile(r"^(?:(?:just|only|exactly|i\s+said|really)\s+)+(?:a\s+)?(?:little|bit|tad|touch|"
+                                      r"little\s+bit|tiny\s+bit|smidge)(?:\s+(?:only|i\s+said|please|more))*$")
+
+
+#: "it's about two metres", "that's forty five degrees to your right", "which is two metres": an amount
+#: stated, not asked for.
+_STATED_RE: Final = re.compile(
+    r"^(?:(?:so|and|okay|ok|well|yeah|i\s+think|i\s+guess)\s+)*(?:it|that|this|which)\s+(?:is|would\s+be|will\s+be|should\s+be)\s+"
+    r"(?=(?:about|around|roughly|approximately|like|maybe|just|only|exactly|almost|nearly)?\s*\S)")
+#: A stated amount this close to the one an instruction says (relatively) is that amount said roughly
+#: in other words ("two metres, that's about six feet": 1.83 m): one move. Further apart, the two say
+#: different things, and the robot asks.
+ROUGHLY_SAME: Final = 0.1
+
+
+def read_stated_amounts(clauses: list[str]) -> list[str]:
+    """Each amount stated on its own (see the module docstring) dropped when an instruction next to it
+    says roughly the same amount, kept as it is (the reading will ask) when the instruction before it
+    says another amount, and otherwise left as the bare amount, which completes the instruction it
+    belongs to ("turn left, it's about thirty degrees")."""
+    out: list[str] = []
+    for i, clause in enumerate(clauses):
+        norm = normalize(clause)
+        m = _STATED_RE.match(norm)
+        said = [q for q in find_quantities(norm[m.end():]) if q.kind != QuantityKind.BARE] if m else []
+        if m is None or len(said) != 1 or GO_VERB_RE.search(norm[m.end():]) or ROTATE_VERB_RE.search(norm[m.end():]):
+            out.append(clause)
+            continue
+        before = _amounts(out[-1]) if out else []
+        after = _amounts(clauses[i + 1]) if i + 1 < len(clauses) else []
+        if any(_roughly_same(q, said[0]) for q in (*before, *after)):
+            continue  # said again in other words
+        if any(q.kind == said[0].kind for q in before):
+            out.append(clause)  # another amount than the instruction's: not read, so asked about
+            continue
+        out.append(norm[m.end():])
+    return out
+
+
+def _amounts(clause: str) -> list[Quantity]:
+    norm = normalize(clause)
+    return [q for q in find_quantities(norm) if q.kind != QuantityKind.BARE]
+
+
+def _roughly_same(a: Quantity, b: Quantity) -> bool:
+    return a.kind == b.kind and abs(a.value - b.value) <= ROUGHLY_SAME * max(a.value, b.value)
+
+
+#: "sideways" said on its own after a move to a side.
+_SIDEWAYS_ALONE_RE: Final = re.compile(r"^(?:(?:like|so|just|um|uh)\s+)*sideways$")
 
 
 def drop_insisted_amounts(clauses: list[str]) -> list[str]:
-    """The clauses without a number said again on its own right after the instruction that said it
-    ("go forward two feet. just two."): it insists, it asks for no second move."""
+    """The clauses without an amount said again on its own right after the instruction that says it:
+    "go forward two feet. just two." and "turn a little to the left. only a little." insist on it, they
+    ask for no second move (which would take the robot farther than asked)."""
     out: list[str] = []
     for clause in clauses:
-        m = _INSIST_RE.match(normalize(clause))
+        norm = normalize(clause)
+        m = _INSIST_RE.match(norm)
         if out and m is not None:
             said = normalize(out[-1])
             quantities = [q for q in find_quantities(said) if q.kind != QuantityKind.BARE]
             if any(re.search(rf"\b{re.escape(m.group('num'))}\b", said[q.start:q.end]) for q in quantities):
                 continue
+        if out and _INSIST_LITTLE_RE.match(norm) and LITTLE_RE.search(normalize(out[-1])):
+            continue
+        if out and _SIDEWAYS_ALONE_RE.match(norm) and re.search(r"\b(?:left|right)\b", normalize(out[-1])):
+            continue  # "go to the right a bit, like a metre, sideways": the way said again
         out.append(clause)
     return out

@@ -52,6 +52,9 @@ CORRECTION_MARKERS: Final = (
     r"seven|eight|nine|ten|half|just|only|twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety))",
     r"(?:i'?m|i\s+am|im)\s+sorry", r"sorry", r"i\s+meant", r"i\s+mean", r"or\s+rather", r"make\s+that",
     r"scratch\s+that", r"never\s*mind", r"correction", r"oops",
+    # "turn eighty degrees right no eighty five": "no" right before a number corrects the amount
+    r"no(?=\s+(?:\d|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|fifteen|twenty|thirty|forty|fifty|"
+    r"sixty|seventy|eighty|ninety|a\s+hundred|half)\b)",
 )
 _MARKER_INSIDE: Final = re.compile(r"(?P<before>\S+)\s+(?=(?:" + "|".join(CORRECTION_MARKERS) + r")\b)",
                                    re.IGNORECASE)
@@ -119,6 +122,45 @@ _OPEN_WORDS: Final = frozenset({
 })
 
 
+#: A tag question after a statement ("that's two metres, right?", "..., okay?"): it asks for agreement,
+#: it names no side. (If the instruction before it misses its side, the reading asks for it.)
+TAG_QUESTION: Final = re.compile(r",\s*(?:right|correct|yes|yeah|ok(?:ay)?|yep|no)\s*\?+", re.IGNORECASE)
+#: "wait, ..." / "hang on, ..." opening a prompt that goes on: the speaker holds the floor while
+#: thinking ("wait, which way is north... okay, face north"); the instruction that follows is the request.
+HOLDING_THE_FLOOR: Final = re.compile(r"^\s*(?:(?:oh|um|uh|okay|ok|so)\s*,?\s+)*(?:wait|hold\s+on|hang\s+on|one\s+sec(?:ond)?)"
+                                      r"\s*(?:[,.!]+|\.\.\.)\s*(?=\S)", re.IGNORECASE)
+#: Words that announce an instruction said again ("turn left, I say again, turn left forty five degrees"):
+#: what follows restates what came before, with more detail or none; the marker goes and the two
+#: instructions meet, so that the restatement is read once. ("Again" or "repeat" alone ask to do it
+#: again, and are no such marker.)
+RESTATEMENT_MARKERS: Final = re.compile(
+    r"[,.;]?\s*\b(?:i\s+say\s+again|say\s+again|i\s+repeat|let\s+me\s+repeat(?:\s+that)?|(?:like|as)\s+i\s+said|"
+    r"in\s+other\s+words|that\s+is\s+to\s+say|once\s+again\s+i\s+say)\b\s*[,.;:]?", re.IGNORECASE)
+#: Radio procedure words, said alone between commas (people who drive robots often talk as on a radio):
+#: "negative" is no (a correction or a refusal, never the "negative" = clockwise of a turn), "affirmative",
+#: "roger", "copy (that)", "wilco" acknowledge, "over" / "over and out" end the message.
+RADIO_NO: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*negative\s*(?=[,.;!?]|$)", re.IGNORECASE)
+RADIO_NOISE: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*(?:affirmative|roger(?:\s+that)?|copy(?:\s+that)?|wilco|"
+                                r"over(?:\s+and\s+out)?|out)\s*(?=[,.;!?]|$)", re.IGNORECASE)
+#: A number started and said again whole ("four, four and a half metres", "twenty, twenty feet"): the
+#: first try is no amount of its own.
+NUMBER_RESTART: Final = re.compile(
+    r"\b(?P<num>\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|fifteen|twenty|"
+    r"thirty|forty|fifty|sixty|seventy|eighty|ninety|a\s+hundred|one\s+hundred)\s*,?\s+(?=(?P=num)\b(?![/.]\d))", re.IGNORECASE)
+#: "twenty feet even", "two metres flat", "ninety degrees exactly": the amount, exactly (no word of its own).
+_UNIT_THEN_EXACT: Final = re.compile(
+    r"\b(?P<unit>feet|foot|ft|inch(?:es)?|yards?|met(?:er|re)s?|centimet(?:er|re)s?|cm|degrees?)\s+"
+    r"(?:even|flat|exactly|precisely|on\s+the\s+(?:nose|dot))\b", re.IGNORECASE)
+#: Numbers that count the instructions of a list ("Step one, turn left. Step two, go forward"; "1) turn
+#: left 2) go forward"; "number three: stop"): they order the list, they are no amount.
+ENUMERATION: Final = re.compile(
+    r"(?:^|(?<=[.;!?,:\n]))\s*(?:(?:step|number|no|item|part|instruction|command|point)\s+(?:one|two|three|four|five|"
+    r"six|seven|eight|nine|ten|\d{1,2})\b|\(?\d{1,2}\s*[).](?!\d))\s*[,:.)-]?(?=\s)",
+    re.IGNORECASE)
+#: "1) turn left 2) go forward": a number closed by a bracket marks a list item wherever it stands.
+LIST_ITEM: Final = re.compile(r"(?:^|(?<=\s))\(?\d{1,2}\)(?=\s)")
+
+
 def plain_speech(prompt: str) -> str:
     """``prompt`` with hesitations, hedges, cut-off words, stutters and noise tokens removed, a comma
     before each self-correction marker, the words speech recognition mistook put right, and polite
@@ -126,10 +168,16 @@ def plain_speech(prompt: str) -> str:
     text = prompt
     for pattern, repl in HOMOPHONES:
         text = pattern.sub(repl, text)
+    text = LIST_ITEM.sub(". ", ENUMERATION.sub(" ", text))
+    text = HOLDING_THE_FLOOR.sub("", TAG_QUESTION.sub(".", text))
+    text = RESTATEMENT_MARKERS.sub(", ", text)
+    text = RADIO_NOISE.sub(" ", RADIO_NO.sub(" no", text))
+    text = _UNIT_THEN_EXACT.sub(r"\g<unit>", NUMBER_RESTART.sub("", text))
     text = REQUEST_FRAMES.sub(" ", text)
     text = REMARKS.sub(" ", text)
     text = _ABANDONED.sub(_drop_abandoned, text)
-    text = _CUT_OFF.sub(" ", text)
+    kept_cuts = {m.start() for m in _unfinished(text)}  # kept: the reading must ask about them
+    text = _CUT_OFF.sub(lambda m: m.group(0) if m.start() in kept_cuts else " ", text)
     text = _HEDGES.sub(" ", text)
     text = _RESTART.sub("", text)
     tokens = _WORD.findall(text)
@@ -179,6 +227,54 @@ def _drop_abandoned(m: re.Match[str]) -> str:
 #: An instruction verb in a stretch that was cut off keeps it ("move six- six metres"): only a
 #: stretch that asks for nothing the robot does is dropped.
 _RESTART_WORDS: Final = re.compile(r"\b(?:move|go|turn|rotate|drive|back|face|head|spin|stop|reverse)\b", re.IGNORECASE)
+
+
+#: Number words a cut-off word may be the start of ("fi-" of five, fifteen or fifty).
+_NUMBER_WORDS: Final = ("one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
+                        "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen", "twenty",
+                        "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety", "hundred")
+#: A cut-off word of this many letters may be the start of many words ("t-", "f-"): only after a
+#: number is it surely one.
+MIN_NUMBER_PREFIX: Final = 2
+_CUT_TOKEN: Final = re.compile(r"(?<![\w-])(?P<cut>[a-z]+)-(?=[\s,.;!?]|$)", re.IGNORECASE)
+_NUMBER_BEFORE: Final = re.compile(r"(?:\d|\b(?:" + "|".join(_NUMBER_WORDS) + r"))\s*$", re.IGNORECASE)
+_NUMBER_AFTER: Final = re.compile(r"^\W*(?:\S+\W+){0,5}?(?:\d|(?:" + "|".join(_NUMBER_WORDS) + r")\b)",
+                                  re.IGNORECASE)
+#: Number words that begin other words a speaker may cut off ("fo-" of forward, "te-" of ten or of
+#: "tell"): such a start is a number only right after another number.
+_OTHER_STARTS: Final = ("forward", "forwards", "feet", "foot", "turn", "to", "towards", "the", "then", "there", "this",
+                        "that", "three", "sixty", "seven", "eight", "nine", "tell", "take", "tiny", "first",
+                        "on", "one", "onto", "around", "all", "and", "now", "north", "south", "east", "west",
+                        "each", "exactly", "front", "face", "half", "head", "here", "hundred", "say", "send", "side",
+                        "step", "stop", "straight", "see")
+
+
+def unfinished_number(text: str) -> str | None:
+    """A number the speaker cut off and did not say again ("turn left forty fi-": forty-five? fifty?),
+    with the words before it, or None. The amount is not known, so the robot must ask: reading "forty"
+    would turn the wrong amount, dropping it would guess one. A cut-off word is a number's start when
+    it follows a number ("forty fi-", "one hun-") or, said alone, when it can only start a number word
+    ("thir-", "fif-"); said again with a number right after ("forty fi- forty five degrees") it was
+    only a restart. (``plain_speech`` keeps such a word, so that a correction may still take it back:
+    "go two t-, never mind, go three feet".)"""
+    for m in _unfinished(text):
+        before = re.search(r"(?:\S+\s+){0,2}$", text[:m.start()])
+        return f"{before.group(0) if before else ''}{m.group(0)}".strip()
+    return None
+
+
+def _unfinished(text: str) -> list[re.Match[str]]:
+    found: list[re.Match[str]] = []
+    for m in _CUT_TOKEN.finditer(text):
+        cut = m.group("cut").lower()
+        if not any(w.startswith(cut) for w in _NUMBER_WORDS):
+            continue
+        after_number = _NUMBER_BEFORE.search(text[:m.start()]) is not None
+        only_number = len(cut) >= MIN_NUMBER_PREFIX and not any(
+            w.startswith(cut) for w in _OTHER_STARTS if w not in _NUMBER_WORDS)
+        if (after_number or only_number) and _NUMBER_AFTER.search(text[m.end():]) is None:
+            found.append(m)
+    return found
 
 
 def _break_before_marker(m: re.Match[str]) -> str:

@@ -17,16 +17,18 @@ from langnav.language.offline.corrections import (
     is_hedge,
     join_fragments,
 )
+from langnav.language.offline.idioms import plain_idioms
 from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.photos import without_photo
-from langnav.language.offline.reading import ASK_CONFIDENCE
+from langnav.language.offline.reading import ASK_CONFIDENCE, ASK_SIDE
 from langnav.language.offline.restarts import (
     drop_insisted_amounts,
     drop_stopped,
     merge_restated_turns,
+    read_stated_amounts,
 )
-from langnav.language.offline.speech import plain_speech
+from langnav.language.offline.speech import plain_speech, unfinished_number
 from langnav.language.offline.splitter import split_steps
 from langnav.language.translator import Context, clean_prompt
 
@@ -58,6 +60,9 @@ NEGATIVE_MESSAGE: Final = (
 NO_CAMERA_MESSAGE: Final = (
     "I have no camera, so I can't take pictures or tell you what I see. I can drive, turn, stop, explore "
     "the map and tell you where I am, my path or the map.")
+CUT_NUMBER_MESSAGE: Final = (
+    "I heard a number cut off ('{said}'), so I don't know how far or how much: say it again, e.g. 'turn left "
+    "45 degrees'. Nothing was run.")
 CANCELLED_MESSAGE: Final = "You took that back ('never mind'), so I did nothing. Tell me what to do next."
 PHOTO_LEFT_OUT_MESSAGE: Final = "I did the motion but took no picture: I have no camera."
 TOO_MANY_STEPS_MESSAGE: Final = (
@@ -83,8 +88,11 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     if negative is not None:
         shown = text[negative.start():negative.start() + 12].split()[0]
         return _clarify(NEGATIVE_MESSAGE.format(number=shown), confidence=1.0, unread=[])
-    text = plain_speech(canonical_numbers(text))
+    text = plain_idioms(plain_speech(canonical_numbers(text)))
     clauses, photo = _clauses(text)
+    cut = next((c for c in map(unfinished_number, clauses) if c is not None), None)
+    if cut is not None:
+        return _clarify(CUT_NUMBER_MESSAGE.format(said=cut), confidence=ASK_CONFIDENCE, unread=[cut])
     sequenced = _SEQUENCE_RE.search(text) is not None
     steps: list[Step] = []
     unread: list[str] = []
@@ -132,6 +140,8 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
             steps[-1] = _amend(steps[-1], new_steps.pop(0), clause)
         if steps and new_steps and not sequenced and _restates(steps[-1], new_steps[0], clause):
             new_steps.pop(0)  # "forward two metres. forward two metres.": said again, done once
+        while steps and new_steps and _asked_again(steps[-1], new_steps[0]):
+            new_steps.pop(0)  # "hold it, hold it"; "where are you? can you tell me where you are?"
         steps.extend(new_steps)
         if steps:
             previous = steps[-1]
@@ -143,6 +153,11 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
         unread.extend(asked[2].unread)
     if len(steps) > MAX_STEPS:
         return _clarify(TOO_MANY_STEPS_MESSAGE, confidence=1.0, unread=[])
+    answered = [(p, clause, r) for p, clause, r in problems if p == Problem.QUESTION and _answered_by(clause, steps)]
+    if answered:
+        problems = [x for x in problems if x not in answered]
+        said = {u for _, _, r in answered for u in r.unread}
+        unread = [u for u in unread if u not in said]
     misread = [(p, clause, r) for p, clause, r in problems if p in WHOLE_PROMPT_REFUSALS]
     if misread:
         # a step whose number is beyond range or unreadable: the other steps were planned around
@@ -181,12 +196,35 @@ def _clauses(text: str) -> tuple[list[str], bool]:
         photo = photo or without.asked
         if without.asked and is_bare_verb(without.rest):
             continue  # "then turn take picture": a verb cut short by the photo request
+        if without.asked and kept and _same_turn(kept[-1], without.rest):
+            continue  # "turn left, I'd like to see what's on your left": the picture's turn is the one just made
         if without.rest and not is_hedge(without.rest):
             kept.append(without.rest)
     # fragments join the instruction they complete both before and after the corrections: "move five
     # meters, I mean five feet, forward" is corrected first, then completed
+    kept = drop_insisted_amounts(read_stated_amounts(kept))  # before joining: "..., only a little"
     joined = join_fragments(apply_corrections(join_fragments(kept, _is_open)), _is_open)
     return merge_restated_turns(drop_stopped(drop_insisted_amounts(joined), _read), _read), photo
+
+
+def _answered_by(question: str, steps: list[Step]) -> bool:
+    """A question the robot cannot answer, said next to an instruction that uses every word of where it
+    asks about ("wait, which way is north... okay, face north"), is the speaker thinking aloud: the
+    instruction is the request, and nothing of where or how far was left unread."""
+    words = spatial(question)
+    said = " ".join(s.text.lower() for s in steps).split()
+    return bool(words) and bool(steps) and all(w.strip(",.;:!?'\"").lower() in said for w in words)
+
+
+def _same_turn(before: str, implied: str) -> bool:
+    """The turn a picture request implies ("... what's on your left") is a turn to the side the
+    instruction before it just turned to."""
+    first = read_clause(before)
+    a, b = first.steps, read_clause(implied).steps
+    if ASK_SIDE in first.asks:
+        return False  # "turn 130 degrees, and take a picture counterclockwise": the side is the picture's
+    return (len(a) >= 1 and len(b) == 1 and a[-1].movement == b[0].movement == Movement.ROTATE
+            and b[0].angle_deg is None and a[-1].direction == b[0].direction and a[-1].heading_deg is None)
 
 
 def _read(clause: str) -> Reading:
@@ -249,6 +287,21 @@ def _restates(previous: Step, step: Step, clause: str) -> bool:
     else:
         a, b = previous.angle_deg, step.angle_deg
     return a is not None and b is not None and abs(a - b) <= _SAME_AMOUNT_TOL
+
+
+#: Steps that move nothing: said twice in a row, they are one request.
+_NO_MOTION: Final = frozenset({Movement.STOP, Movement.QUERY})
+
+
+def _asked_again(previous: Step, step: Step) -> bool:
+    """A stop, a question or a facing said again right after itself ("hold it, hold it"; "where are you
+    now? can you tell me where you are?"; "face north, face north") is the speaker insisting: one stop,
+    one answer, one turn (the second facing would turn by nothing). (With a motion between, the second
+    question asks something new: where the robot is now.)"""
+    if step.heading_deg is not None and step.target is None and previous.target is None:
+        return step.heading_deg == previous.heading_deg  # "face north, I repeat, face north": facing it once
+    return (step.movement in _NO_MOTION and step.movement == previous.movement and step.query == previous.query
+            and step.target == previous.target)
 
 
 def _amendable(previous: Step, fragment: Step) -> bool:

@@ -9,10 +9,11 @@ from typing import Final
 from langnav.language.intent import Amount, Detail, Direction, Movement, Step
 from langnav.language.offline import lexicon as lx
 from langnav.language.offline.navigation import ref_step
-from langnav.language.offline.numbers import QuantityKind, find_quantities
+from langnav.language.offline.numbers import Quantity, QuantityKind, find_quantities, one_amount
 from langnav.language.offline.patterns import LITTLE_RE, ROTATE_DIR_RE
 from langnav.language.offline.phrases import Phrase
 from langnav.language.offline.reading import (
+    ASK_AMOUNT,
     ASK_SIDE,
     ASK_UNIT,
     DEFAULT_TURN_DEG,
@@ -53,7 +54,7 @@ def rotate_steps(c: Clause, targets: list[Phrase], vm: re.Match[str] | None) -> 
         c.s.use(a.start, a.end)
     turn = rotation(c, vm)
     steps.append(turn)
-    distance = sum(a.value for a in lengths)
+    distance = amount_said(c, lengths) or 0.0
     if lengths and turn.direction in (Direction.LEFT, Direction.RIGHT) and 0 < distance <= MAX_MOVE_M:
         # "turn right three feet": that turn, then the distance straight on (README: "move N to your
         # right" may be a 90 degree turn and a move forward)
@@ -79,6 +80,19 @@ def repeat_count(c: Clause) -> int:
     return int(word) if word.isdigit() else _REPEAT_WORDS[word]
 
 
+def amount_said(c: Clause, quantities: list[Quantity]) -> float | None:
+    """The one amount ``quantities`` say (``numbers.one_amount``); when they disagree, the first, and a
+    question: which one was meant (nothing runs on a guess)."""
+    if not quantities:
+        return None
+    value = one_amount(quantities)
+    if value is None:
+        said = ", ".join(f"'{c.s.text[q.start:q.end].strip()}'" for q in quantities)
+        c.asks.append(ASK_AMOUNT.format(amounts=said))
+        return quantities[0].value
+    return value
+
+
 def rotation(c: Clause, vm: re.Match[str] | None) -> Step:
     step = _single_rotation(c, vm)
     times = repeat_count(c)
@@ -101,7 +115,7 @@ def _single_rotation(c: Clause, vm: re.Match[str] | None) -> Step:
     elif vm is not None and "dir" in vm.groupdict() and vm.group("dir"):
         direction = Direction.LEFT if vm.group("dir") == "left" else Direction.RIGHT
     quantities = find_quantities(c.s.masked())
-    angle: float | None = None
+    counted: list[Quantity] = []
     for q in quantities:
         c.s.use(q.start, q.end)
         if q.kind == QuantityKind.ANGLE or q.kind == QuantityKind.BARE:
@@ -109,9 +123,10 @@ def _single_rotation(c: Clause, vm: re.Match[str] | None) -> Step:
                 c.doubt(UNITLESS_NUMBER_FACTOR if q.value not in (90, 180, 45, 360, 270, 30, 60) else 1.0)
                 if q.value < OBVIOUS_DEGREES_MIN:
                     c.asks.append(ASK_UNIT.format(number=c.s.text[q.start:q.end].strip()))
-            angle = (angle or 0.0) + q.value
+            counted.append(q)
         else:
             c.lost.append(c.text)
+    angle = amount_said(c, counted)
     little = c.s.take_all(LITTLE_RE)
     sides: list[Direction] = []
     for m in c.s.take_all(ROTATE_DIR_RE):
