@@ -298,16 +298,17 @@ def test_strip_between_a_shelf_and_an_unexplored_area_is_no_passage() -> None:
     assert p.center == pytest.approx((4.0, 2.3), abs=0.05)
 
 
-def sofa_squeeze(shelf_to_wall: bool = True) -> OccupancyGrid:
+def sofa_squeeze(shelf_to_x: float | None = 8.0) -> OccupancyGrid:
     """An 8 x 6 m room split by furniture: a 2.4 x 0.7 m sofa (outline scanned, inside unknown)
     0.6 m from the west wall (x 0.6 to 3.0, y 3.0 to 3.7), and a 0.3 m deep shelf from the sofa
-    to the east wall (or stopping 1.5 m short of it: ``shelf_to_wall=False``). The 0.6 m
+    to x = ``shelf_to_x`` (8: the east wall; None: no shelf, the sofa stands free). The 0.6 m
     squeeze between the sofa and the west wall is the way into the north part of the room."""
     b = MapBuilder(10.0, 8.0, origin=(-1.0, -1.0))
     b.room(0.0, 0.0, 8.0, 6.0)
     b.box(0.6, 3.0, 3.0, 3.7).unknown(0.65, 3.05, 2.95, 3.65)
-    b.box(3.0, 3.2, 8.0 if shelf_to_wall else 6.5, 3.5)
-    return b.build(source=f"sofa_squeeze_{shelf_to_wall}")
+    if shelf_to_x is not None:
+        b.box(3.0, 3.2, shelf_to_x, 3.5)
+    return b.build(source=f"sofa_squeeze_{shelf_to_x}")
 
 
 def test_squeeze_between_furniture_and_a_wall_that_is_the_only_way_is_a_passage() -> None:
@@ -321,7 +322,21 @@ def test_squeeze_between_furniture_and_a_wall_that_is_the_only_way_is_a_passage(
 def test_the_same_squeeze_with_a_way_round_is_no_passage() -> None:
     # The shelf stops short of the east wall: one walks round the other end; the squeeze is a
     # gap beside a sofa.
-    assert passages_of(sofa_squeeze(shelf_to_wall=False)) == ()
+    assert passages_of(sofa_squeeze(shelf_to_x=6.5)) == ()
+
+
+def test_a_squeeze_in_a_ring_corridor_is_the_way_past() -> None:
+    # A 2 m ring corridor round a 12 x 5 m core (x 2..14, y 2..7); a bed and a trolley narrow its
+    # south side to 0.9 m (x 7..8). The robot could go the other way round the ring (some 30 m),
+    # but that is a detour, not a way round the things: the squeeze is a passage.
+    b = MapBuilder(18.0, 11.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 16.0, 9.0)
+    b.box(2.0, 2.0, 14.0, 7.0).unknown(2.1, 2.1, 13.9, 6.9)
+    b.box(6.5, 0.0, 8.5, 0.6).unknown(6.55, 0.05, 8.45, 0.55)
+    b.box(7.0, 1.5, 8.0, 2.0)
+    (p,) = passages_of(b.build(source="ring_squeeze"))
+    assert p.center == pytest.approx((7.5, 1.05), abs=0.06)
+    assert p.width_m == pytest.approx(0.9, abs=0.051)
 
 
 @pytest.mark.parametrize("degrees", [8.0, 23.0])
@@ -513,3 +528,4 @@ def test_a_door_found_at_the_end_of_a_thick_partition_is_that_door() -> None:
     assert passages_with_door(grid, door) == ()
     (p,) = passages_of(grid)
     assert p.center == pytest.approx((3.3, 0.45), abs=0.06)
+

@@ -1,14 +1,18 @@
-"""Room or hallway: golden buildings for the ways the kind went wrong on real and drawn maps
-(issue 8). A hallway is judged by its typical width wall to wall and by how it connects: a short
-hall that many rooms open onto is a hallway, however a bay widens it; a shop whose counter
-leaves two corridor-wide aisles is a room."""
+"""Rooms and hallways: golden buildings for the ways spaces and their kind went wrong on real
+and drawn maps (issue 8). A hallway is judged by its typical width wall to wall and by how it
+connects: a short hall that many rooms open onto is a hallway, however a bay widens it; a shop
+whose counter leaves two corridor-wide aisles is a room; a lounge open onto a corridor is a room
+apart from it; a small bathroom behind its door is a room of its own."""
 
 from __future__ import annotations
+
+import dataclasses
 
 import pytest
 from analysis_maps import POS_TOL_M, door_near, space_at
 
 from langnav.analysis.elements import ElementKind
+from langnav.analysis.params import DEFAULT_PARAMS
 from langnav.analysis.segmentation import UNKNOWN_ID, segment_spaces
 from langnav.maps.draw import MapBuilder
 from langnav.maps.grid import OccupancyGrid
@@ -113,3 +117,58 @@ def test_a_lounge_open_onto_a_corridor_is_a_room_apart_from_the_corridor() -> No
     assert {frozenset(o.connects) for o in seg.openings} == {frozenset((lounge.id, west.id)),
                                                              frozenset((lounge.id, east.id))}
     assert all(o.width_m == pytest.approx(2.4, abs=0.15) for o in seg.openings)
+
+
+def bedroom_with_an_en_suite() -> OccupancyGrid:
+    """A 4 m x 4 m bedroom with a 1.4 m x 1.8 m en-suite bathroom behind a 0.75 m door in its
+    east wall, and a 2.2 m corridor north of it through a 0.9 m door."""
+    b = MapBuilder(10.0, 9.0)
+    b.room(1.0, 1.0, 5.0, 5.0)
+    b.room(5.0, 1.0, 6.4, 2.8).door_v(5.0, 1.9, 0.75)
+    b.room(1.0, 5.0, 7.0, 7.2).door_h(3.0, 5.0, 0.9)
+    return b.build("bedroom with an en-suite")
+
+
+def test_a_small_bathroom_behind_its_door_is_a_room_of_its_own() -> None:
+    """Its door is wide for its size (0.75 m for 2.5 m2), as a bay's mouth is; but a bay is
+    open across its whole width, and the door takes less than half of the bathroom's wall.
+    With the wall-line closure off (a noisy scan whose wall lines are broken), the flood
+    alone must keep it apart."""
+    grid = bedroom_with_an_en_suite()
+    params = dataclasses.replace(DEFAULT_PARAMS, seg_wall_line_gap_max_m=0.0)
+    seg = segment_spaces(grid, params)
+    bedroom = space_at(seg, grid, 3.0, 3.0)
+    bathroom = space_at(seg, grid, 5.7, 1.9)
+    corridor = space_at(seg, grid, 4.0, 6.1)
+    assert len({bedroom.id, bathroom.id, corridor.id}) == 3
+    assert len(seg.rooms) == 3
+    assert bathroom.kind == ElementKind.ROOM
+    assert bathroom.area_m2 == pytest.approx(1.4 * 1.8, rel=0.15)
+    d = door_near(seg.doors, 4.95, 1.9)
+    assert set(d.connects) == {bedroom.id, bathroom.id}
+    assert d.width_m == pytest.approx(0.75, abs=POS_TOL_M)
+
+
+def guest_room_with_an_en_suite() -> OccupancyGrid:
+    """A 2 m x 7 m hotel guest room entered from a corridor through a 0.9 m door at its north
+    end, with a 2.5 m x 2.5 m en-suite bathroom behind a 0.8 m door in its east wall."""
+    b = MapBuilder(12.0, 12.0)
+    b.room(1.0, 1.0, 3.0, 8.0)
+    b.room(3.0, 1.0, 5.5, 3.5).door_v(3.0, 2.5, 0.8)
+    b.room(1.0, 8.0, 11.0, 10.2).door_h(2.0, 8.0, 0.9)
+    return b.build("guest room with an en-suite")
+
+
+def test_a_narrow_room_with_an_en_suite_is_a_room_not_a_hallway() -> None:
+    """The guest room is as narrow and long as a corridor and has two doors, but its second
+    door leads only into its own bathroom (a smaller dead end): no one walks through it."""
+    grid = guest_room_with_an_en_suite()
+    seg = segment_spaces(grid)
+    guest = space_at(seg, grid, 2.0, 5.0)
+    bathroom = space_at(seg, grid, 4.2, 2.2)
+    assert guest.id != bathroom.id
+    assert len(seg.rooms) == 3
+    assert guest.kind == ElementKind.ROOM
+    assert bathroom.kind == ElementKind.ROOM
+    assert set(door_near(seg.doors, 2.95, 2.5).connects) == {guest.id, bathroom.id}
+    assert guest.id in door_near(seg.doors, 2.0, 7.95).connects

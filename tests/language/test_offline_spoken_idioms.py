@@ -267,3 +267,61 @@ def test_tag_questions_and_holding_the_floor_ask_for_nothing(prompt: str, want: 
 ])
 def test_an_amount_with_its_way_completes_no_later_instruction(prompt: str, want: list[Plain]) -> None:
     assert _plain(translate_offline(prompt)) == want
+
+
+# ------------------------------------------------------------------------------ restated instructions
+@pytest.mark.parametrize(("prompt", "want"), [
+    ("turn right, I say again, turn right thirty degrees", [_turn(Direction.RIGHT, 30)]),
+    ("rotate left, I repeat, rotate left 45 degrees", [_turn(Direction.LEFT, 45)]),
+    ("back up, let me repeat that, back up two feet", [_move(Direction.BACKWARD, 2 * FT)]),
+    ("go forward one metre, like I said, go forward one metre", [_move(Direction.FORWARD, 1)]),
+    ("face west, I repeat, face west", [(Movement.ROTATE, None, None)]),
+])
+def test_an_instruction_restated_after_a_repetition_marker_is_done_once(prompt: str, want: list[Plain]) -> None:
+    assert _plain(translate_offline(prompt)) == want
+
+
+def test_the_same_instruction_in_a_sequence_is_done_twice() -> None:
+    assert _plain(translate_offline("go forward two metres, then go forward two metres")) == [
+        _move(Direction.FORWARD, 2), _move(Direction.FORWARD, 2)]
+
+
+# ------------------------------------------------------------------------------ radio talk and restarts
+@pytest.mark.parametrize(("prompt", "want"), [
+    ("negative, turn right, I say again, turn right twenty degrees, over", [_turn(Direction.RIGHT, 20)]),
+    ("roger, back up three feet, over and out", [_move(Direction.BACKWARD, 3 * FT)]),
+    ("copy that, move forward two metres", [_move(Direction.FORWARD, 2)]),
+    ("drive forward three, three and a half feet", [_move(Direction.FORWARD, 3.5 * FT)]),
+    ("head east, um, ten, ten feet even", [(Movement.ROTATE, None, None), _move(Direction.FORWARD, 10 * FT)]),
+    ("turn left ninety degrees exactly", [_turn(Direction.LEFT, 90)]),
+    ("slide to the left, about a foot, sideways", [_move(Direction.LEFT, FT)]),
+])
+def test_radio_words_and_restarted_numbers_say_nothing_more(prompt: str, want: list[Plain]) -> None:
+    assert _plain(translate_offline(prompt)) == want
+
+
+def test_wanting_to_see_is_a_request_for_a_picture_the_motion_is_done() -> None:
+    intent = translate_offline("could you turn left, I'd like to see what's on your left")
+    assert [s.movement for s in intent.steps] == [Movement.ROTATE]
+    assert "camera" in (intent.clarification or "")
+
+
+@pytest.mark.parametrize("prompt", ["hmm, which way is west? okay, face west",
+                                    "where is south... uh, turn to face south"])
+def test_a_question_the_instruction_answers_is_thinking_aloud(prompt: str) -> None:
+    intent = translate_offline(prompt)
+    assert [s.movement for s in intent.steps] == [Movement.ROTATE]
+    assert not intent.unread
+
+
+def test_a_question_the_instruction_does_not_answer_stays_unread() -> None:
+    intent = translate_offline("which way is the door? turn left")
+    assert intent.unread
+
+
+@pytest.mark.parametrize(("prompt", "want"), [
+    ("turn seventy degrees left no seventy five", [_turn(Direction.LEFT, 75)]),
+    ("back up four feet no three feet", [_move(Direction.BACKWARD, 3 * FT)]),
+])
+def test_no_before_a_number_corrects_the_amount(prompt: str, want: list[Plain]) -> None:
+    assert _plain(translate_offline(prompt)) == want

@@ -96,6 +96,11 @@ DEEP_SHARE: Final = 0.8
 #: A door lies across a passage when its normal (the way through it) is within 45 degrees of
 #: the passage's axis; farther round, it is in a side wall.
 DOOR_ACROSS_COS: Final = math.cos(math.radians(45.0))
+#: A way round a squeeze between two things is one within this distance of it (m): round a
+#: thing standing in a room (a pallet, a pillar), what a person takes instead of squeezing
+#: past. A way through other rooms, round a ring corridor or a long machine line, is a detour:
+#: the squeeze is still the way.
+WAY_ROUND_M: Final = 4.0
 #: Look this far beyond a mouth for the space the passage opens into.
 MOUTH_SEARCH_M: Final = 1.0
 #: A passage leaves the robot at least this much room on each side (about a robot's
@@ -285,8 +290,8 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             if not corridor_like:
                 # (A short one needs the wall on past both of its mouths: it is a squeeze along a
                 # wall, not round the end of one.)
-                thing = _beside_a_wall(sub, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res, WALL_RUN_M / res,
-                                       both_mouths=not elongated)
+                past = _past_mouths(sub, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res, WALL_RUN_M / res)
+                thing = _beside_a_wall(past, both_mouths=not elongated)
                 if not elongated:
                     normal = np.array([-axis[1], axis[0]])
                     depth = params.door_max_depth_m / res
@@ -296,11 +301,27 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                     # between two such things (a parked bed and a trolley in a corridor, a
                     # wardrobe and a desk across a room): longer than a wall is thick
                     # (passage_min_length_m) with both sides solid, it is no doorway.
-                    squeeze = sides_deep[thing] if thing is not None else all(sides_deep)
+                    # (Between two things, neither side runs on past a mouth in line, as a wall
+                    # does, along WALL_RUNS_ON_SHARE of seg_wall_line_side_m: a wall's corner is
+                    # no thing.)
+                    squeeze = (sides_deep[thing] if thing is not None else all(sides_deep) and bool(
+                        _past_mouths(sub, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res,
+                                     params.seg_wall_line_side_m / res, SIDE_TOL_M / res).max()
+                        < WALL_RUNS_ON_SHARE))
                     if not squeeze:
                         continue
+                # A squeeze between two things inside one space (no door found at it: a corridor
+                # narrowed by a trolley and a cart) is the way past them unless a way round is
+                # near (WAY_ROUND_M); a gap where a door was found parts two spaces, and is a
+                # passage only when it is the only way between them (else it is one of their
+                # doorways, however thick the wall looks); a strip between a wall and a thing is
+                # walked round whenever the thing has another end (past a row of shelf ends).
+                cw = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
+                door_at = any(math.dist(d.center, (float(cw[0]), float(cw[1])))
+                              <= length_m / 2 + params.door_max_depth_m for d in doors)
+                round_reach = WAY_ROUND_M / res if thing is None and not door_at else math.inf
                 if (thing is not None or squeeze) and _way_round(fits, centre_g, axis, (hi - lo + 1.0) / 2.0,
-                                                                 width_m / res):
+                                                                 width_m / res, round_reach):
                     continue
             cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
             centre = (float(cx), float(cy))
@@ -353,24 +374,30 @@ def _parallel(sides: npt.NDArray[np.float64], res: float) -> bool:
     return bool(hi - lo <= max(PARALLEL_SPREAD_M, 2.0 * res))
 
 
-def _beside_a_wall(open_: BoolArray, centre_g: npt.NDArray[np.float64], axis: npt.NDArray[np.float64],
-                   half_len: float, width: float, run: float, both_mouths: bool = True) -> int | None:
-    """Is the stretch (``centre_g``, unit ``axis``, ``half_len`` cells either way, ``width`` cells
-    wide) a squeeze between a wall and a thing beside it: past its mouths (from a quarter of its
-    width to ``run`` cells on) one side stays blocked within its width (the wall runs on) along
-    ``WALL_RUNS_ON_SHARE`` of the samples, past both mouths (or one, ``both_mouths=False``: a
-    wall that ends at a doorway), and the other is open along as much past both (the thing
-    ends)? The thing's side (0: along -normal, 1: along +normal, the normal being the axis
-    turned a quarter anticlockwise), or None."""
+def _past_mouths(open_: BoolArray, centre_g: npt.NDArray[np.float64], axis: npt.NDArray[np.float64],
+                 half_len: float, width: float, run: float, tol: float | None = None) -> npt.NDArray[np.float64]:
+    """Past each mouth of the stretch (``centre_g``, unit ``axis``, ``half_len`` cells either way,
+    ``width`` cells wide), from a quarter of its width to ``run`` cells on: per side (0: along
+    -normal, 1: along +normal, the normal being the axis turned a quarter anticlockwise) and per
+    mouth (0: ahead along +axis, 1: behind), the share of samples blocked within its half width
+    plus ``tol`` cells (default: its whole width)."""
     normal = np.array([-axis[1], axis[0]])
     t = np.arange(width / 4.0, run + 0.5, 0.5)
     starts = np.concatenate([centre_g + (half_len + t)[:, None] * axis, centre_g - (half_len + t)[:, None] * axis])
-    sides = _side_distances(open_, starts, np.full(len(starts), width / 2.0), normal, width / 2.0)
+    sides = _side_distances(open_, starts, np.full(len(starts), width / 2.0), normal,
+                            width / 2.0 if tol is None else tol)
     blocked = np.isfinite(sides)
     n = len(t)
-    pick = min if both_mouths else max
-    on = [pick(blocked[:n, j].mean(), blocked[n:, j].mean()) for j in (0, 1)]
-    off = [max(blocked[:n, j].mean(), blocked[n:, j].mean()) for j in (0, 1)]
+    return np.array([[blocked[:n, j].mean(), blocked[n:, j].mean()] for j in (0, 1)])
+
+
+def _beside_a_wall(past: npt.NDArray[np.float64], both_mouths: bool = True) -> int | None:
+    """Is a stretch (``past``: :func:`_past_mouths`) a squeeze between a wall and a thing beside
+    it: one side stays blocked (the wall runs on) along ``WALL_RUNS_ON_SHARE`` of the samples
+    past both mouths (or one, ``both_mouths=False``: a wall that ends at a doorway), and the other
+    is open along as much past both (the thing ends)? The thing's side, or None."""
+    on = past.min(axis=1) if both_mouths else past.max(axis=1)
+    off = past.max(axis=1)
     for j in (0, 1):
         if on[j] >= WALL_RUNS_ON_SHARE and off[1 - j] <= 1.0 - WALL_RUNS_ON_SHARE:
             return 1 - j
@@ -394,14 +421,14 @@ def _deep(open_: BoolArray, pts: npt.NDArray[np.float64], outward: npt.NDArray[n
 
 
 def _way_round(fits: BoolArray, centre_g: npt.NDArray[np.float64], axis: npt.NDArray[np.float64],
-               half_len: float, width: float) -> bool:
+               half_len: float, width: float, reach: float) -> bool:
     """Can the robot get from one mouth of a squeeze (``centre_g``, unit ``axis``, ``half_len`` and
-    ``width`` in cells) to the other without going through it, anywhere in the map? Through the
-    cells where its centre ``fits``."""
+    ``width`` in cells) to the other without going through it, within ``reach`` cells of it
+    (``WAY_ROUND_M``)? Through the cells where its centre ``fits``."""
     h, w = fits.shape
     # The squeeze's box (with a cell of slack at its ends) and the floor just beyond each mouth
-    # (within a width of its end, ahead of it), in a window around it.
-    pad = half_len + 2.0 * width + 2.0
+    # (within a width of its end, ahead of it), in a window around it that holds the way round.
+    pad = half_len + max(2.0 * width + 2.0, min(reach, float(h + w)))
     r0, r1 = max(0, math.floor(centre_g[1] - pad)), min(h, math.ceil(centre_g[1] + pad) + 1)
     c0, c1 = max(0, math.floor(centre_g[0] - pad)), min(w, math.ceil(centre_g[0] + pad) + 1)
     rr, cc = np.mgrid[r0:r1, c0:c1]
@@ -410,10 +437,7 @@ def _way_round(fits: BoolArray, centre_g: npt.NDArray[np.float64], axis: npt.NDA
     across = np.abs(-dx * axis[1] + dy * axis[0])
     cut = (np.abs(along) <= half_len + 1.0) & (across <= width / 2.0 + 1.0)
     ahead = (across <= width) & (np.abs(along) <= half_len + 1.0 + width) & ~cut
-    rest = fits.copy()
-    rest[r0:r1, c0:c1] &= ~cut
-    lab, _n = ndi.label(rest, structure=np.ones((3, 3), dtype=bool))
-    win = lab[r0:r1, c0:c1]
+    win, _n = ndi.label(fits[r0:r1, c0:c1] & ~cut, structure=np.ones((3, 3), dtype=bool))
     first = np.unique(win[ahead & (along > half_len + 1.0) & (win > 0)])
     second = np.unique(win[ahead & (along < -half_len - 1.0) & (win > 0)])
     return bool(np.intersect1d(first, second).size)

@@ -23,8 +23,10 @@ and merging steps of ROSE², RA-L 2022):
    both of its jambs (ROSE²'s rooms bounded by the building's wall lines, in local form).
 5. *Jambs*: the widest opening left between two spaces must be cut in a wall: both of its jambs
    belong to the wall network or to a wall stub running along the gap (:class:`JambJudge`).
-6. A space whose opening is wide for its size (``seg_merge_gap_ratio``) and pieces smaller than
-   ``room_min_area_m2`` join their neighbour; isolated fragments below that size are dropped.
+6. A space whose opening is wide for its size (``seg_merge_gap_ratio``: a bay) and pieces
+   smaller than ``room_min_area_m2`` join their neighbour; isolated fragments below that size
+   are dropped. A single door's width cut in a wall across a part of a small room's side (a
+   bathroom, a store behind its door) is no bay's mouth: that room stays apart.
 """
 
 from __future__ import annotations
@@ -54,6 +56,11 @@ WALL_MIN_LENGTH_ANY_DIRECTION_M: Final = 2.0
 #: A wall stub is at least this many times longer than thick (a cabinet or a box is not); it
 #: then also has a direction.
 STUB_MIN_ELONGATION: Final = 1.8
+#: A single door leaf is at most this wide (m; 0.6-0.9 m doors, a 1 m accessible one).
+SINGLE_DOOR_MAX_M: Final = 1.0
+#: A bay is open across at least this share of its width along the opening; a doorway into a
+#: small room (a bathroom, a store) takes a smaller part of the wall it is cut in.
+BAY_MIN_OPEN_SHARE: Final = 0.6
 #: 3x3 neighbourhood: 8-connectivity for components of cells.
 EIGHT: Final = np.ones((3, 3), dtype=bool)
 
@@ -414,6 +421,17 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
         theta = 0.5 * math.atan2(2.0 * vrc, vrr - vcc)
         return abs(math.cos(theta) * tangent[0] + math.sin(theta) * tangent[1])
 
+    def extent_along(r: int, tangent: tuple[float, float]) -> float:
+        """The extent (cells) of piece ``r`` along ``tangent`` (unit, row/col): sqrt(12 x the
+        variance of its cells along it), the length of a uniform strip with that spread."""
+        k = max(cells_l[r], 1.0)
+        mo = moments()
+        mr, mc = mo[0][r] / k, mo[1][r] / k
+        vrr, vcc = mo[2][r] / k - mr * mr, mo[3][r] / k - mc * mc
+        vrc = mo[4][r] / k - mr * mc
+        tr, tc = tangent
+        return math.sqrt(12.0 * max(tr * tr * vrr + 2.0 * tr * tc * vrc + tc * tc * vcc, 0.0))
+
     def side_door(loc: int, s: float, pieces: tuple[int, ...]) -> bool:
         """Is the crossing at ``loc`` a doorway cut in walls along the side of one of the
         corridor ``pieces`` (a room off a hallway: never a corridor narrowing)?"""
@@ -491,10 +509,23 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
     # A piece whose opening is wide for its size (a bay of a room behind a desk) is part of
     # the neighbour: a doorway is narrow next to the room it leads into.
     if params.seg_merge_gap_ratio > 0:
-        for a, b, s, _ in sorted(kept, key=lambda e: -e[2]):
+        for a, b, s, loc in sorted(kept, key=lambda e: -e[2]):
             ra, rb = uf.find(a), uf.find(b)
-            if ra != rb and 2 * s >= params.seg_merge_gap_ratio * math.sqrt(min(area_l[ra], area_l[rb])):
-                join(ra, rb)
+            if ra == rb or 2 * s < params.seg_merge_gap_ratio * math.sqrt(min(area_l[ra], area_l[rb])):
+                continue
+            # A single door's width cut in a wall across a small room (a bathroom, a store
+            # behind its door) parts it from its neighbour: a bay is open across about its
+            # whole width, a doorway across a part of the wall it is cut in.
+            if judge is not None and 2 * s <= SINGLE_DOOR_MAX_M and \
+                    judge.is_doorway(loc // width, loc % width, s):
+                small = ra if area_l[ra] <= area_l[rb] else rb
+                jj = judge.jambs(loc // width, loc % width, s)
+                if jj is not None:
+                    (r1, c1), (r2, c2) = jj
+                    dd = math.hypot(r2 - r1, c2 - c1) or 1.0
+                    if 2 * s < BAY_MIN_OPEN_SHARE * extent_along(small, ((r2 - r1) / dd, (c2 - c1) / dd)) * resolution_m:
+                        continue
+            join(ra, rb)
     # Small pieces join the neighbour they share the widest opening with.
     best: dict[int, tuple[float, int]] = {}
     changed = True

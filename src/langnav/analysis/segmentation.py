@@ -260,7 +260,8 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     raw_wide += [d for d in not_doors if d.b != 0]
     openings = np.bincount(np.array([x for d in raw_doors + raw_wide for x in (d.a, d.b) if x > 0], dtype=np.int64),
                            minlength=int(labels.max()) + 1)
-    rooms = _rooms(grid, labels, fl, params, peaks, openings)
+    rooms = _rooms(grid, labels, fl, params, peaks, openings,
+                   _ways_on(openings, [(d.a, d.b) for d in raw_doors + raw_wide], labels))
     ids = {r.label: r.id for r in rooms}
     doors = _doors(grid, raw_doors, ids)
     narrow = _doors(grid, raw_narrow, ids, prefix="narrow_door")
@@ -551,11 +552,13 @@ def _typical_widths(labels: npt.NDArray[np.int32], clearance_m: npt.NDArray[np.f
 def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: float, openings: int,
                    whole_width: Callable[[], float], res: float, params: AnalysisParams,
                    whole_wide_share: Callable[[], float] = lambda: 0.0,
-                   whole_typical: Callable[[], float] = lambda: 0.0) -> tuple[ElementKind, float, float]:
+                   whole_typical: Callable[[], float] = lambda: 0.0,
+                   ways_on: int | None = None) -> tuple[ElementKind, float, float]:
     """Hallway or room, with (length, width).
 
     A hallway is walked through (not a dead end entered through one doorway, unless it is
-    longer for its width than rooms are) and long and narrow: for its widest
+    longer for its width than rooms are; ``ways_on``: its openings less those into a smaller
+    dead end of its own, an en-suite or a closet) and long and narrow: for its widest
     inscribed circle (furniture was taken out of the floor's clearance already), or, when a
     junction or an alcove widens it here and there, for its typical width (the median width
     along its centre line) if it has two openings or more, is many times longer than that
@@ -570,9 +573,12 @@ def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: 
     """
     # Clearance is measured between cell centres: an opening of n cells has 2 x peak = (n + 1) cells.
     peak_width = max(2.0 * peak_m - res, res)
-    if openings == 1 and area_m2 / peak_width < params.hallway_dead_end_min_elongation * peak_width:
-        # Entered through one doorway and leading nowhere else: a room (a dead-end corridor
-        # with its doors closed is longer than rooms are).
+    leads_on = openings if ways_on is None else ways_on
+    if openings >= 1 and leads_on <= 1 \
+            and area_m2 / peak_width < params.hallway_dead_end_min_elongation * peak_width:
+        # Entered through one doorway and leading nowhere else (but into a smaller dead end
+        # of its own: an en-suite, a closet): a room (a dead-end corridor with its doors
+        # closed is longer than rooms are).
         return ElementKind.ROOM, area_m2 / peak_width, peak_width
     def narrow(w: float) -> bool:
         return w <= params.hallway_max_width_m and area_m2 / w >= params.hallway_min_elongation * w
@@ -743,9 +749,26 @@ def _split_halls_from_corridors(labels: npt.NDArray[np.int32], res: float,
     return out
 
 
+def _ways_on(openings: npt.NDArray[np.int64], pairs: list[tuple[int, int]],
+             labels: npt.NDArray[np.int32]) -> npt.NDArray[np.int64]:
+    """Per label, its openings that lead on: all of them but one into a smaller space that has
+    no other (an en-suite bathroom, a closet, a store behind its door: a room with one is still
+    a dead end, not a way through). A corridor serves several such rooms: they all count but
+    one, and it stays a way through."""
+    area = np.bincount(labels.ravel(), minlength=openings.size)
+    leaves = np.zeros_like(openings)
+    for a, b in pairs:
+        if a <= 0 or b <= 0:
+            continue
+        for x, y in ((a, b), (b, a)):
+            if openings[y] == 1 and area[y] < area[x]:
+                leaves[x] += 1
+    return openings - np.minimum(leaves, 1)
+
+
 def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
            params: AnalysisParams, peaks: npt.NDArray[np.float64],
-           openings: npt.NDArray[np.int64]) -> list[Room]:
+           openings: npt.NDArray[np.int64], ways_on: npt.NDArray[np.int64] | None = None) -> list[Room]:
     """The spaces of ``labels``, measured; ``peaks``: the widest clearance of each (by label);
     ``openings``: how many doorways each has."""
     res = grid.resolution_m
@@ -774,7 +797,8 @@ def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
                                                                params.hallway_max_width_m / 2),
                                              functools.partial(_whole_typical_width, sub, res,
                                                                params.hallway_max_width_m / 2,
-                                                               params.seg_enclosed_unknown_max_area_m2))
+                                                               params.seg_enclosed_unknown_max_area_m2),
+                                             ways_on=int(ways_on[k]) if ways_on is not None and k < ways_on.size else None)
         prefix = "hallway" if kind == ElementKind.HALLWAY else "room"
         rooms.append(Room(
             id=f"{prefix}_{k}", label=k, kind=kind, area_m2=area,

@@ -504,34 +504,39 @@ class _OuterLooks:
 def _outer_kept(v: FloatArray, ua: FloatArray, ub: FloatArray, lc: _LineCandidates, at: _OuterSamplers,
                 looks: _OuterLooks, res: float) -> list[OuterGap]:
     """Of the free gaps as deep as a wall at ``v`` between the wall cells at ``ua`` and ``ub``,
-    the outer gaps (the tests of :func:`outer_gaps`, all candidates at once)."""
-    n_in = (ub - ua - 1).astype(np.int64)
-    group, step = _ragged(n_in)
-    u_in, v_in = (ua[group] + 1.0 + step)[:, None], v[group][:, None]
-    inner_n = n_in.astype(np.float64)
+    the outer gaps (the tests of :func:`outer_gaps`, all candidates at once, each test on the
+    candidates that passed the ones before)."""
 
-    def inner_count(mask: _LineSampler[np.bool_], depth: FloatArray, sign: FloatArray) -> FloatArray:
-        """Per candidate: how many of the cells at its inner positions and ``depth`` across the
-        line towards its ``sign`` are set."""
-        hit = mask(u_in, v_in + sign[group][:, None] * depth[None, :])
-        return np.asarray(np.bincount(group, weights=hit.sum(axis=1), minlength=v.size), dtype=np.float64)
+    def share(mask: _LineSampler[np.bool_], depth: FloatArray, sign: FloatArray, sel: IntArray) -> FloatArray:
+        """Per candidate of ``sel``: the share of the cells at its inner positions and ``depth``
+        across the line towards its ``sign`` that are set in ``mask``."""
+        n_in = (ub[sel] - ua[sel] - 1).astype(np.int64)
+        group, step = _ragged(n_in)
+        hit = mask((ua[sel][group] + 1.0 + step)[:, None], v[sel][group][:, None] + sign[group][:, None] * depth[None, :])
+        count = np.bincount(group, weights=hit.sum(axis=1), minlength=sel.size)
+        return np.asarray(count / (n_in.astype(np.float64) * depth.size), dtype=np.float64)
 
     # Seen floor on one side of the gap, straight through it.
+    every = np.arange(v.size)
     ones = np.ones(v.size)
-    share_minus = inner_count(at.seen, looks.near, -ones) / (inner_n * looks.near.size)
-    share_plus = inner_count(at.seen, looks.near, ones) / (inner_n * looks.near.size)
+    share_minus = share(at.seen, looks.near, -ones, every)
+    share_plus = share(at.seen, looks.near, ones, every)
     sign = np.where(share_minus >= share_plus, -1.0, 1.0)
     keep = np.maximum(share_minus, share_plus) >= OUTER_INSIDE_MIN_SHARE
     # On the other (-sign): rays through all of the gap, reaching on.
-    keep &= inner_count(at.floor, looks.near, -sign) / (inner_n * looks.near.size) >= GAP_MIN_FLOOR_SHARE
-    keep &= inner_count(at.floor, looks.ray, -sign) > 0
+    idx = np.flatnonzero(keep)
+    keep[idx] = share(at.floor, looks.near, -sign[idx], idx) >= GAP_MIN_FLOOR_SHARE
+    idx = np.flatnonzero(keep)
+    keep[idx] = share(at.floor, looks.ray, -sign[idx], idx) > 0
     # An opaque wall beside it: unknown behind it, along the wall past each jamb.
+    idx = np.flatnonzero(keep)
     side_u = np.arange(1.0, OUTER_NEAR_M / res + 1e-9)
-    behind = 0.0
-    for u_side in (ua[:, None] - side_u[None, :], ub[:, None] + side_u[None, :]):
-        hit = at.unknown(u_side[:, :, None], v[:, None, None] + (-sign)[:, None, None] * looks.beside[None, None, :])
-        behind = behind + hit.sum(axis=(1, 2))
-    keep &= behind / (2 * side_u.size * looks.beside.size) >= OUTER_BEHIND_MIN_UNKNOWN
+    behind = np.zeros(idx.size, dtype=np.int64)
+    for u_side in (ua[idx][:, None] - side_u[None, :], ub[idx][:, None] + side_u[None, :]):
+        hit = at.unknown(u_side[:, :, None],
+                         v[idx][:, None, None] + (-sign[idx])[:, None, None] * looks.beside[None, None, :])
+        behind += hit.sum(axis=(1, 2))
+    keep[idx] = behind / (2 * side_u.size * looks.beside.size) >= OUTER_BEHIND_MIN_UNKNOWN
     # Not walled in: beyond the wall, what bounds the floor across the way the rays went is
     # wall on both sides over less than OUTER_WALLED_MAX_SHARE of the look.
     idx = np.flatnonzero(keep)

@@ -27,6 +27,7 @@ from langnav.language.offline.verbs import Verb
 
 #: Sides only a turn has ("clockwise"): a fragment with one of them is a turn.
 _TURN_ONLY_SIDE_RE: Final = re.compile(r"\b(?:clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw)\b")
+_SIDEWAYS_RE: Final = re.compile(r"\bsideways\b")
 _BACKWARD_VERBS: Final = frozenset({"back up", "reverse", "back off", "go back", "head back"})
 
 
@@ -64,6 +65,8 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
     # a move goes one way: another way said in the clause ("move forward 2 m before turning left")
     # is an instruction not read, never dropped: it stays unread, so the translator asks
     c.lost.extend(d.value for d in directions[1:] if d != direction)
+    if direction in (Direction.LEFT, Direction.RIGHT):
+        c.s.take_all(_SIDEWAYS_RE)  # "to the right, like a metre, sideways": the same way said again
     amount: Amount | None = None
     counted: list[Quantity] = []
     for q in quantities:

@@ -18,7 +18,8 @@ PHOTO_RE: Final = re.compile(
     r"(?:(?:a|an|another|one\s+more|some|the|a\s+new|new|more|one|two|few|a\s+few|couple\s+of|a\s+couple\s+of)\s+)?"
     r"(?:\w+\s+)?" + _PHOTO_NOUN
     + r"|(?:let\s+me|i\s+want\s+to|i\s+would\s+like\s+to|can\s+i)\s+(?:see|get|have)\s+(?:a\s+)?(?:visual|view|look)"
-    r"|(?:let\s+me\s+see|show\s+me|tell\s+me|report)\s+what\s+(?:you\s+(?:can\s+)?(?:see|are\s+seeing)|is\s+there|"
+    r"|(?:let\s+me\s+see|show\s+me|tell\s+me|report|(?:i|we)(?:\s+want|\s+would\s+like|'?d\s+like|\s+need|\s+wanna)\s+to\s+(?:see|know))"
+    r"\s+what\s+(?:you\s+(?:can\s+)?(?:see|are\s+seeing)|is\s+there|"
     r"is\s+(?:in\s+front|around)(?:\s+of\s+you)?|is(?=\s+(?:behind|to|on|at)\b))"
     r"|what\s+(?:do|can)\s+you\s+see|what\s+are\s+you\s+seeing"
     r"|(?:take|have)\s+a\s+look(?:\s+around)?(?=\s*$)"

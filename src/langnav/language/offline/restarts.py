@@ -173,6 +173,10 @@ def _roughly_same(a: Quantity, b: Quantity) -> bool:
     return a.kind == b.kind and abs(a.value - b.value) <= ROUGHLY_SAME * max(a.value, b.value)
 
 
+#: "sideways" said on its own after a move to a side.
+_SIDEWAYS_ALONE_RE: Final = re.compile(r"^(?:(?:like|so|just|um|uh)\s+)*sideways$")
+
+
 def drop_insisted_amounts(clauses: list[str]) -> list[str]:
     """The clauses without an amount said again on its own right after the instruction that says it:
     "go forward two feet. just two." and "turn a little to the left. only a little." insist on it, they
@@ -188,5 +192,7 @@ def drop_insisted_amounts(clauses: list[str]) -> list[str]:
                 continue
         if out and _INSIST_LITTLE_RE.match(norm) and LITTLE_RE.search(normalize(out[-1])):
             continue
+        if out and _SIDEWAYS_ALONE_RE.match(norm) and re.search(r"\b(?:left|right)\b", normalize(out[-1])):
+            continue  # "go to the right a bit, like a metre, sideways": the way said again
         out.append(clause)
     return out

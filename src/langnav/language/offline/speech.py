@@ -52,6 +52,9 @@ CORRECTION_MARKERS: Final = (
     r"seven|eight|nine|ten|half|just|only|twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety))",
     r"(?:i'?m|i\s+am|im)\s+sorry", r"sorry", r"i\s+meant", r"i\s+mean", r"or\s+rather", r"make\s+that",
     r"scratch\s+that", r"never\s*mind", r"correction", r"oops",
+    # "turn eighty degrees right no eighty five": "no" right before a number corrects the amount
+    r"no(?=\s+(?:\d|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|fifteen|twenty|thirty|forty|fifty|"
+    r"sixty|seventy|eighty|ninety|a\s+hundred|half)\b)",
 )
 _MARKER_INSIDE: Final = re.compile(r"(?P<before>\S+)\s+(?=(?:" + "|".join(CORRECTION_MARKERS) + r")\b)",
                                    re.IGNORECASE)
@@ -126,6 +129,28 @@ TAG_QUESTION: Final = re.compile(r",\s*(?:right|correct|yes|yeah|ok(?:ay)?|yep|n
 #: thinking ("wait, which way is north... okay, face north"); the instruction that follows is the request.
 HOLDING_THE_FLOOR: Final = re.compile(r"^\s*(?:(?:oh|um|uh|okay|ok|so)\s*,?\s+)*(?:wait|hold\s+on|hang\s+on|one\s+sec(?:ond)?)"
                                       r"\s*(?:[,.!]+|\.\.\.)\s*(?=\S)", re.IGNORECASE)
+#: Words that announce an instruction said again ("turn left, I say again, turn left forty five degrees"):
+#: what follows restates what came before, with more detail or none; the marker goes and the two
+#: instructions meet, so that the restatement is read once. ("Again" or "repeat" alone ask to do it
+#: again, and are no such marker.)
+RESTATEMENT_MARKERS: Final = re.compile(
+    r"[,.;]?\s*\b(?:i\s+say\s+again|say\s+again|i\s+repeat|let\s+me\s+repeat(?:\s+that)?|(?:like|as)\s+i\s+said|"
+    r"in\s+other\s+words|that\s+is\s+to\s+say|once\s+again\s+i\s+say)\b\s*[,.;:]?", re.IGNORECASE)
+#: Radio procedure words, said alone between commas (people who drive robots often talk as on a radio):
+#: "negative" is no (a correction or a refusal, never the "negative" = clockwise of a turn), "affirmative",
+#: "roger", "copy (that)", "wilco" acknowledge, "over" / "over and out" end the message.
+RADIO_NO: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*negative\s*(?=[,.;!?]|$)", re.IGNORECASE)
+RADIO_NOISE: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*(?:affirmative|roger(?:\s+that)?|copy(?:\s+that)?|wilco|"
+                                r"over(?:\s+and\s+out)?|out)\s*(?=[,.;!?]|$)", re.IGNORECASE)
+#: A number started and said again whole ("four, four and a half metres", "twenty, twenty feet"): the
+#: first try is no amount of its own.
+NUMBER_RESTART: Final = re.compile(
+    r"\b(?P<num>\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|fifteen|twenty|"
+    r"thirty|forty|fifty|sixty|seventy|eighty|ninety|a\s+hundred|one\s+hundred)\s*,?\s+(?=(?P=num)\b(?![/.]\d))", re.IGNORECASE)
+#: "twenty feet even", "two metres flat", "ninety degrees exactly": the amount, exactly (no word of its own).
+_UNIT_THEN_EXACT: Final = re.compile(
+    r"\b(?P<unit>feet|foot|ft|inch(?:es)?|yards?|met(?:er|re)s?|centimet(?:er|re)s?|cm|degrees?)\s+"
+    r"(?:even|flat|exactly|precisely|on\s+the\s+(?:nose|dot))\b", re.IGNORECASE)
 #: Numbers that count the instructions of a list ("Step one, turn left. Step two, go forward"; "1) turn
 #: left 2) go forward"; "number three: stop"): they order the list, they are no amount.
 ENUMERATION: Final = re.compile(
@@ -145,6 +170,9 @@ def plain_speech(prompt: str) -> str:
         text = pattern.sub(repl, text)
     text = LIST_ITEM.sub(". ", ENUMERATION.sub(" ", text))
     text = HOLDING_THE_FLOOR.sub("", TAG_QUESTION.sub(".", text))
+    text = RESTATEMENT_MARKERS.sub(", ", text)
+    text = RADIO_NOISE.sub(" ", RADIO_NO.sub(" no", text))
+    text = _UNIT_THEN_EXACT.sub(r"\g<unit>", NUMBER_RESTART.sub("", text))
     text = REQUEST_FRAMES.sub(" ", text)
     text = REMARKS.sub(" ", text)
     text = _ABANDONED.sub(_drop_abandoned, text)

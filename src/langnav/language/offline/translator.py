@@ -21,7 +21,7 @@ from langnav.language.offline.idioms import plain_idioms
 from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.photos import without_photo
-from langnav.language.offline.reading import ASK_CONFIDENCE
+from langnav.language.offline.reading import ASK_CONFIDENCE, ASK_SIDE
 from langnav.language.offline.restarts import (
     drop_insisted_amounts,
     drop_stopped,
@@ -153,6 +153,11 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
         unread.extend(asked[2].unread)
     if len(steps) > MAX_STEPS:
         return _clarify(TOO_MANY_STEPS_MESSAGE, confidence=1.0, unread=[])
+    answered = [(p, clause, r) for p, clause, r in problems if p == Problem.QUESTION and _answered_by(clause, steps)]
+    if answered:
+        problems = [x for x in problems if x not in answered]
+        said = {u for _, _, r in answered for u in r.unread}
+        unread = [u for u in unread if u not in said]
     misread = [(p, clause, r) for p, clause, r in problems if p in WHOLE_PROMPT_REFUSALS]
     if misread:
         # a step whose number is beyond range or unreadable: the other steps were planned around
@@ -191,6 +196,8 @@ def _clauses(text: str) -> tuple[list[str], bool]:
         photo = photo or without.asked
         if without.asked and is_bare_verb(without.rest):
             continue  # "then turn take picture": a verb cut short by the photo request
+        if without.asked and kept and _same_turn(kept[-1], without.rest):
+            continue  # "turn left, I'd like to see what's on your left": the picture's turn is the one just made
         if without.rest and not is_hedge(without.rest):
             kept.append(without.rest)
     # fragments join the instruction they complete both before and after the corrections: "move five
@@ -198,6 +205,26 @@ def _clauses(text: str) -> tuple[list[str], bool]:
     kept = drop_insisted_amounts(read_stated_amounts(kept))  # before joining: "..., only a little"
     joined = join_fragments(apply_corrections(join_fragments(kept, _is_open)), _is_open)
     return merge_restated_turns(drop_stopped(drop_insisted_amounts(joined), _read), _read), photo
+
+
+def _answered_by(question: str, steps: list[Step]) -> bool:
+    """A question the robot cannot answer, said next to an instruction that uses every word of where it
+    asks about ("wait, which way is north... okay, face north"), is the speaker thinking aloud: the
+    instruction is the request, and nothing of where or how far was left unread."""
+    words = spatial(question)
+    said = " ".join(s.text.lower() for s in steps).split()
+    return bool(words) and bool(steps) and all(w.strip(",.;:!?'\"").lower() in said for w in words)
+
+
+def _same_turn(before: str, implied: str) -> bool:
+    """The turn a picture request implies ("... what's on your left") is a turn to the side the
+    instruction before it just turned to."""
+    first = read_clause(before)
+    a, b = first.steps, read_clause(implied).steps
+    if ASK_SIDE in first.asks:
+        return False  # "turn 130 degrees, and take a picture counterclockwise": the side is the picture's
+    return (len(a) >= 1 and len(b) == 1 and a[-1].movement == b[0].movement == Movement.ROTATE
+            and b[0].angle_deg is None and a[-1].direction == b[0].direction and a[-1].heading_deg is None)
 
 
 def _read(clause: str) -> Reading:
@@ -267,9 +294,12 @@ _NO_MOTION: Final = frozenset({Movement.STOP, Movement.QUERY})
 
 
 def _asked_again(previous: Step, step: Step) -> bool:
-    """A stop or a question said again right after itself ("hold it, hold it"; "where are you now?
-    can you tell me where you are?") is the speaker insisting: one stop, one answer. (With a motion
-    between, the second question asks something new: where the robot is now.)"""
+    """A stop, a question or a facing said again right after itself ("hold it, hold it"; "where are you
+    now? can you tell me where you are?"; "face north, face north") is the speaker insisting: one stop,
+    one answer, one turn (the second facing would turn by nothing). (With a motion between, the second
+    question asks something new: where the robot is now.)"""
+    if step.heading_deg is not None and step.target is None and previous.target is None:
+        return step.heading_deg == previous.heading_deg  # "face north, I repeat, face north": facing it once
     return (step.movement in _NO_MOTION and step.movement == previous.movement and step.query == previous.query
             and step.target == previous.target)
 
