@@ -37,3 +37,17 @@ def test_an_instruction_said_again_is_done_once(prompt: str, expected: list[tupl
 def test_a_repeat_asked_for_is_kept(prompt: str, moves: int) -> None:
     steps = translate_offline(prompt).steps
     assert sum(s.movement in (Movement.MOVE, Movement.ROTATE) and s.amount is None for s in steps) >= moves
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("rotate right. you're breaking up. rotate right thirty degrees", [("rotate", "right", None, 30.0)]),
+])
+def test_an_instruction_said_again_with_its_amount_is_done_once(
+        prompt: str, expected: list[tuple[str, str | None, float | None, float | None]]) -> None:
+    """_completes: the bare instruction and its restatement with an amount are one instruction."""
+    assert _plan(prompt) == expected
+
+
+def test_a_bare_turn_then_another_side_is_kept() -> None:
+    assert [s.direction.value for s in translate_offline("turn left. turn right 30 degrees").steps
+            if s.direction] == ["left", "right"]

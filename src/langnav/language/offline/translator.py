@@ -140,6 +140,8 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
             steps[-1] = _amend(steps[-1], new_steps.pop(0), clause)
         if steps and new_steps and not sequenced and _restates(steps[-1], new_steps[0], clause):
             new_steps.pop(0)  # "forward two metres. forward two metres.": said again, done once
+        elif steps and new_steps and not sequenced and _completes(steps[-1], new_steps[0], clause):
+            steps.pop()  # "turn left ... turn left fifty degrees": the same turn said again with its amount
         while steps and new_steps and _asked_again(steps[-1], new_steps[0]):
             new_steps.pop(0)  # "hold it, hold it"; "where are you? can you tell me where you are?"
         steps.extend(new_steps)
@@ -287,6 +289,23 @@ def _restates(previous: Step, step: Step, clause: str) -> bool:
     else:
         a, b = previous.angle_deg, step.angle_deg
     return a is not None and b is not None and abs(a - b) <= _SAME_AMOUNT_TOL
+
+
+def _completes(previous: Step, step: Step, clause: str) -> bool:
+    """The same move or turn said first with no amount and right after again with one ("turn left ...
+    you're breaking up ... turn left fifty degrees"), with no word asking for it once more and no word
+    sequencing the prompt: the speaker is repeating the instruction and completing it, so it is done
+    once, with the amount said. Doing the bare one too would add a default amount nobody asked for and
+    take the robot farther than asked; doing it once never does, and the user can ask again."""
+    if step.movement not in (Movement.MOVE, Movement.ROTATE) or step.movement != previous.movement:
+        return False
+    if step.target is not None or previous.target is not None or step.heading_deg is not None:
+        return False
+    if previous.heading_deg is not None or step.direction != previous.direction or _REPEAT_RE.search(clause):
+        return False
+    if step.movement == Movement.MOVE:
+        return previous.distance_m is None and step.distance_m is not None
+    return previous.angle_deg is None and step.angle_deg is not None
 
 
 #: Steps that move nothing: said twice in a row, they are one request.
