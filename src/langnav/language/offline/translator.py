@@ -273,16 +273,22 @@ _SEQUENCE_RE: Final = re.compile(r"\b(?:then|after\s+that|afterwards|next|follow
 _SAME_AMOUNT_TOL: Final = 1e-6
 
 
+def _same_motion_said_again(previous: Step, step: Step, clause: str) -> bool:
+    """The same plain move or turn (no place, no heading) on the same side, said again with no word
+    asking for it once more: the shared test of _restates and _completes."""
+    if step.movement not in (Movement.MOVE, Movement.ROTATE) or step.movement != previous.movement:
+        return False
+    if step.target is not None or previous.target is not None or step.heading_deg is not None:
+        return False
+    return step.direction == previous.direction and not _REPEAT_RE.search(clause)
+
+
 def _restates(previous: Step, step: Step, clause: str) -> bool:
     """The same move or turn, with the same amount, said again right after it with no word asking
     for it once more, in a prompt with no word that sequences its instructions: a speaker repeating or confirming an instruction ("move forward. Two metres.
     Forward two metres."; "fifty. fifty degrees left.") means it once. Doing it twice would take the
     robot farther than asked; doing it once never does, and the user can ask again."""
-    if step.movement not in (Movement.MOVE, Movement.ROTATE) or step.movement != previous.movement:
-        return False
-    if step.target is not None or previous.target is not None or step.heading_deg is not None:
-        return False
-    if step.direction != previous.direction or _REPEAT_RE.search(clause):
+    if not _same_motion_said_again(previous, step, clause):
         return False
     if step.movement == Movement.MOVE:
         a, b = previous.distance_m, step.distance_m
@@ -297,11 +303,7 @@ def _completes(previous: Step, step: Step, clause: str) -> bool:
     sequencing the prompt: the speaker is repeating the instruction and completing it, so it is done
     once, with the amount said. Doing the bare one too would add a default amount nobody asked for and
     take the robot farther than asked; doing it once never does, and the user can ask again."""
-    if step.movement not in (Movement.MOVE, Movement.ROTATE) or step.movement != previous.movement:
-        return False
-    if step.target is not None or previous.target is not None or step.heading_deg is not None:
-        return False
-    if previous.heading_deg is not None or step.direction != previous.direction or _REPEAT_RE.search(clause):
+    if previous.heading_deg is not None or not _same_motion_said_again(previous, step, clause):
         return False
     if step.movement == Movement.MOVE:
         return previous.distance_m is None and step.distance_m is not None
