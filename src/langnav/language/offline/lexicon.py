@@ -62,7 +62,9 @@ ELEMENT_NOUNS: Final[dict[str, Element]] = {
        for adj in ("unexplored", "unknown", "unmapped", "uncharted", "unseen", "unvisited",
                    "undiscovered", "unscanned")
        for noun in ("area", "areas", "region", "regions", "space", "spaces", "territory",
-                    "part", "parts", "zone", "zones", "section", "sections", "spot", "place")},
+                    "part", "parts", "zone", "zones", "section", "sections", "spot", "place",
+                    # said of a piece of the map: "the unexplored bit at the end of the corridor"
+                    "bit", "bits", "patch", "patches", "stretch")},
     **{w: Element.UNEXPLORED_AREA for w in (
         "frontier", "frontiers", "unexplored", "unknown space", "unknown",
         "exploration frontier")},
@@ -604,6 +606,9 @@ TYPOS: Final[dict[str, str]] = {
     "acw": "anticlockwise", "aprox": "approximately", "abt": "about", "lil": "little", "litle": "little",
     "thn": "then", "nd": "and", "rly": "really",
     "arnd": "around", "til": "till", "untill": "until", "b4": "before",
+    # chat abbreviations of place words ("go btwn the 2 obstacles", "the rm across the hall")
+    "btwn": "between", "btween": "between", "rm": "room", "rms": "rooms", "crnr": "corner",
+    "crnrs": "corners",
 }
 
 #: Words that typo repair may aim at (edit distance 1, words of at least five letters).
