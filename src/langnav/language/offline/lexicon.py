@@ -599,6 +599,9 @@ TYPOS: Final[dict[str, str]] = {
     "arond": "around", "cm.": "cm", "mm.": "mm", "m.": "m", "infront": "in front",
     "inbetween": "in between", "nextto": "next to", "alot": "a lot", "abit": "a bit",
     "alittle": "a little", "wherer": "where", "sohw": "show", "shwo": "show", "mpa": "map",
+    # chat abbreviations of place words ("go btwn the 2 obstacles", "the rm across the hall")
+    "btwn": "between", "btween": "between", "rm": "room", "rms": "rooms", "crnr": "corner",
+    "crnrs": "corners",
     # chat spelling and abbreviations of the words that say which way
     "rt": "right", "rght": "right", "lt": "left", "lft": "left", "str8": "straight", "strait": "straight",
     "staight": "straight", "bk": "back", "bwd": "backward", "bkwd": "backward", "bkwds": "backwards",
@@ -606,9 +609,6 @@ TYPOS: Final[dict[str, str]] = {
     "acw": "anticlockwise", "aprox": "approximately", "abt": "about", "lil": "little", "litle": "little",
     "thn": "then", "nd": "and", "rly": "really",
     "arnd": "around", "til": "till", "untill": "until", "b4": "before",
-    # chat abbreviations of place words ("go btwn the 2 obstacles", "the rm across the hall")
-    "btwn": "between", "btween": "between", "rm": "room", "rms": "rooms", "crnr": "corner",
-    "crnrs": "corners",
 }
 
 #: Words that typo repair may aim at (edit distance 1, words of at least five letters).
