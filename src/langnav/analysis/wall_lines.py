@@ -213,10 +213,14 @@ class _LineSampler(Generic[_Cell]):
         r, c = self.rc(u, v)
         ri, ci = np.rint(r).astype(np.int64), np.rint(c).astype(np.int64)
         h, w = self.mask.shape
-        inside = (ri >= 0) & (ri < h) & (ci >= 0) & (ci < w)
-        # Read every sample (clipped onto the grid), then zero those off it.
-        np.clip(ri, 0, h - 1, out=ri)
-        np.clip(ci, 0, w - 1, out=ci)
+        # On the grid: 0 <= ri < h and 0 <= ci < w (a negative index read unsigned is past the end).
+        inside = (ri.view(np.uint64) < h) & (ci.view(np.uint64) < w)
+        # Read every sample (clamped onto the grid), then zero those off it. (np.maximum /
+        # np.minimum: np.clip's checks of its bounds cost more than clamping small arrays.)
+        np.maximum(ri, 0, out=ri)
+        np.minimum(ri, h - 1, out=ri)
+        np.maximum(ci, 0, out=ci)
+        np.minimum(ci, w - 1, out=ci)
         out = self.mask[ri, ci]
         out *= inside
         return out
