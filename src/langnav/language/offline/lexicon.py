@@ -268,7 +268,7 @@ GO_VERBS: Final = (
     "squeeze", "wander", "journey", "cruise", "zip", "hop", "nudge", "budge", "position", "get over",
     "come over", "swing by", "pull up", "pull over", "pull", "arrive", "set off", "follow", "hug",
     "trace", "track", "skirt", "take", "stay", "keep", "edge", "shuffle", "ease", "stand", "go stand",
-    "go and stand", "go and", "sit", "wait",
+    "go and stand", "go and", "sit", "wait", "retreat", "withdraw",
 )
 
 ROTATE_VERBS: Final = ("turn", "rotate", "spin", "pivot", "swivel", "swing round", "swing around", "face", "look", "twist", "yaw",
@@ -294,6 +294,8 @@ STOP_PHRASES: Final = (
     "hang on a second", "hang on a sec", "hold on a second", "hold on a sec", "wait a second", "wait a sec",
     "wait a moment", "wait a minute", "just a second", "just a moment", "whoa there", "stop stop", "stay right there", "freeze right there",
     "halt right there", "quit moving", "okay stop", "ok stop", "stop right here", "hold up there",
+    # "hold" alone is the radio's stop ("hold, hold"; "turn around and hold")
+    "hold",
 )
 
 #: Questions and their answers.
@@ -316,7 +318,7 @@ QUERY_PATH_PATTERNS: Final = (
 )
 QUERY_MAP_PATTERNS: Final = (
     r"\b(?:show|give|send|display|get|fetch|let\s+me\s+see|can\s+i\s+see|see|view|open|bring\s+up|"
-    r"pull\s+up|print|draw|download|share|provide)\b(?:\s+\w+){0,4}?\s+(?:(?:mini|floor|site|overview)\s*-?\s*)?"
+    r"pull\s+up|print|draw|download|share|provide|transmit|upload|export|post)\b(?:\s+\w+){0,4}?\s+(?:(?:mini|floor|site|overview)\s*-?\s*)?"
     r"(?:map|occupancy\s+grid)\b",
     r"\bwhat\s+does\s+(?:the|your)\s+map\s+look\s+like\b", r"\b(?:the|your|current)\s+map\s*\?",
     r"^\s*(?:the\s+)?map\s*$", r"\bwhat\s+(?:have\s+you|did\s+you)\s+mapped\b",
@@ -395,6 +397,8 @@ LITTLE_PHRASES: Final = (
     "little bit", "a fraction", "a tiny amount", "ever so slightly", "a couple of centimeters",
     "a couple of centimetres", "a couple of degrees", "a smidgen", "gently", "a small bit",
     "just slightly", "very slightly", "only slightly",
+    # "make small turn to the left", "a slight turn right": a turn said to be small is a little turn
+    *(f"{pre}{size} turn" for pre in ("a ", "") for size in ("small", "slight", "tiny", "little", "short", "quick")),
     # "a teeny bit", "just a tiny touch", "a teeny tiny bit", "a lil bit": a small word before a small noun
     *(f"{pre}{size}{noun}" for pre in ("a ", "just a ", "only a ", "") for size in (
         "", "little ", "tiny ", "teeny ", "teeny tiny ", "teensy ", "teensy weensy ", "teeny weeny ", "wee ",
@@ -496,6 +500,7 @@ OUT_OF_SCOPE_PATTERNS: Final = (
     r"\bcome\s+to\s+me\b", r"\bfind\s+(?:me|my|him|her|them|someone|somebody|the\s+person)\b",
     r"\bwhat\s+(?:is|are)\s+(?:you|your\s+name|the\s+meaning)\b(?!.*\b(?:position|location|pose|path|route|map|doing)\b)",
     r"\bwho\s+are\s+you\b", r"\bhow\s+are\s+you\b", r"\bcharging\s+station\b", r"\bdance\b",
+    r"\bhold\s+(?:the|a|an|that|this|my|our)\s+(?!position\b|place\b|spot\b|location\b|pose\b|heading\b)",
     r"\bwatch\b", r"\bguard\b", r"\bpatrol\b", r"\bsearch\s+for\b", r"\blook\s+for\b", r"\bhide\b",
 )
 
@@ -603,7 +608,7 @@ TYPOS: Final[dict[str, str]] = {
     "fwrd": "forward", "frwd": "forward", "fwds": "forwards", "yr": "your", "thx": "thanks",
     "acw": "anticlockwise", "aprox": "approximately", "abt": "about", "lil": "little", "litle": "little",
     "thn": "then", "nd": "and", "rly": "really",
-    "arnd": "around", "til": "till", "untill": "until", "b4": "before",
+    "arnd": "around", "til": "till", "untill": "until", "b4": "before", "shw": "show",
 }
 
 #: Words that typo repair may aim at (edit distance 1, words of at least five letters).

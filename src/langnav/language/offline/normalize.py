@@ -67,6 +67,11 @@ _IDIOMS: Final = (
     (re.compile(r"\b(?:do|make|pull|perform)\s+(?:a|an)\s+(one\s+eighty|180|three\s+sixty|360)\b(?!\s*(?:degrees?|turn))"),
      r"turn \1 degrees"),
     (re.compile(r"\boutside\s+(?:of\s+)?(?=(?:the|this|that|your)\s+(?:room|hallway|corridor|hall)\b)"), "out of "),
+    # "a right angle" is 90 degrees (the "right" of it is no side)
+    (re.compile(r"\b(?:by\s+)?(?:a|one)\s+right\s+angle\b"), "90 degrees"),
+    # "i want see behind", "i need go left": the "to" learners leave out after want / need / like
+    (re.compile(r"\b(want|wanna|need|would\s+like)\s+(?=(?:see|look|go|turn|move|know|check|have|take|get)\b)"),
+     r"\1 to "),
     # "clock wise", "counter clock wise": one word each
     (re.compile(r"\b(?:(counter|anti)\s*)?clock\s+wise\b"), r"\1clockwise"),
     # "so that you are facing north": the facing is the instruction ("so that" is no pronoun "that")
