@@ -211,3 +211,38 @@ def test_every_stage_knows_every_number_word(word: str) -> None:
     assert speech.NUMBER_RESTART.sub("", f"{word}, {word} feet") == f"{word} feet"
     assert splitter._inside_a_number("one hundred", f"{word} degrees")
     assert any(w.startswith(word[:3]) for w in speech.NUMBER_WORD_LIST)
+
+
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("robot, come left ninety, over", [("rotate", "left", None, 90.0)]),
+    ("robot, move up nine feet then come right forty, over",
+     [("move", "forward", round(9 * FT, 4), None), ("rotate", "right", None, 40.0)]),
+    ("robot, hold your position, over", [("stop", None, None, None)]),
+    ("robot, report position, over", [("query", None, None, None)]),
+    ("robot, give me a three sixty, over", [("rotate", "left", None, 360.0)]),
+    ("robot, turn left, turn left, over", [("rotate", "left", None, None)]),
+    ("make the turn around please", [("rotate", "around", None, 180.0)]),
+    ("where you are now", [("query", None, None, None)]),
+    ("lol turn around", [("rotate", "around", None, 180.0)]),
+    ("hey wru", [("query", None, None, None)]),
+    ("trn left 45 n fwd 1m", [("rotate", "left", None, 45.0), ("move", "forward", 1.0, None)]),
+    ("move forward four and three quarter feet", [("move", "forward", round(4.75 * FT, 4), None)]),
+    ("keep turning right, another twenty", [("rotate", "right", None, 20.0)]),
+    ("go forward two feet and again two feet", [("move", "forward", round(2 * FT, 4), None)] * 2),
+    ("robot, back three, uh, three feet, over", [("move", "backward", round(3 * FT, 4), None)]),
+    ("negative robot, i said left, left twenty, over", [("rotate", "left", None, 20.0)]),
+])
+def test_more_words_from_new_speakers(prompt: str, expected: Plan) -> None:
+    assert _plan(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "go forward a few feet",     # how far is "a few"? asked, never guessed
+    "go backside one meter",     # a word not read where the way should be: it may be the way
+])
+def test_a_guess_about_how_far_or_which_way_is_asked(prompt: str) -> None:
+    assert _asks(prompt)
+
+
+def test_a_turn_said_twice_in_sequence_is_done_twice() -> None:
+    assert _plan("turn left, then turn left") == [("rotate", "left", None, None)] * 2

@@ -61,8 +61,8 @@ def _unit_word(previous: Step) -> str | None:
     """The unit the amount of ``previous`` was said in, as a word, or None."""
     if previous.target is not None or previous.heading_deg is not None:
         return None
-    if previous.movement == Movement.ROTATE and previous.angle_deg is not None:
-        return "degrees"  # a turn's bare number is degrees ("turn left ninety")
+    if previous.movement == Movement.ROTATE:
+        return "degrees"  # a turn's bare number is degrees ("turn left ninety"; "keep turning right, another twenty")
     if previous.movement != Movement.MOVE or previous.distance_m is None:
         return None
     lengths = [q for q in find_quantities(normalize(previous.text)) if q.kind == QuantityKind.LENGTH and q.unit > 0]

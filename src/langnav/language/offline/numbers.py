@@ -84,7 +84,7 @@ _HUNDREDS: Final = (rf"(?:(?:a|one|two|three|four|five|six|seven|eight|nine)\s+)
 _DIGIT_WORD: Final = "zero|oh|one|two|three|four|five|six|seven|eight|nine"
 _WORD_NUM: Final = rf"(?:{_HUNDREDS}|{_WORD_INT})(?:\s+point(?:\s+(?:{_DIGIT_WORD}))+)?"
 _DIGIT_NUM: Final = r"(?:\d+\s+\d+\s*/\s*\d+|\d+\s*/\s*\d+|\d+(?:\.\d+)?|\.\d+)"
-_AND_FRACTION: Final = r"(?:\s+and\s+(?:a\s+|one\s+)?(?:half|quarter|third|three\s+quarters))"
+_AND_FRACTION: Final = r"(?:\s+and\s+(?:a\s+|one\s+)?(?:half|quarter|third|three\s+quarters?))"
 #: One number, in digits or words, with an optional "and a half".
 NUMBER: Final = rf"(?:{_DIGIT_NUM}|{_WORD_NUM}){_AND_FRACTION}?"
 _VAGUE: Final = phrase_regex(VAGUE_COUNTS)
@@ -288,7 +288,7 @@ def number_value(text: str) -> float:
     if t in VAGUE_COUNTS:
         return VAGUE_COUNTS[t][0]
     extra = 0.0
-    m = re.fullmatch(r"(?P<head>.+?)\s+and\s+(?:a\s+|one\s+)?(?P<frac>half|quarter|third|three quarters)", t)
+    m = re.fullmatch(r"(?P<head>.+?)\s+and\s+(?:a\s+|one\s+)?(?P<frac>half|quarter|third|three quarters?)", t)
     if m:
         t = m.group("head")
         extra = FRACTIONS[m.group("frac")]

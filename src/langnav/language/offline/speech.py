@@ -147,7 +147,8 @@ RESTATEMENT_MARKERS: Final = re.compile(
 #: Radio procedure words, said alone between commas (people who drive robots often talk as on a radio):
 #: "negative" is no (a correction or a refusal, never the "negative" = clockwise of a turn), "affirmative",
 #: "roger", "copy (that)", "wilco" acknowledge, "over" / "over and out" end the message.
-RADIO_NO: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*negative(?:\s+on\s+that)?\s*(?=[,.;!?]|$)", re.IGNORECASE)
+RADIO_NO: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*negative(?:\s+on\s+that)?(?:\s+(?:robot|rover|bot|base))?\s*(?=[,.;!?]|$)",
+                            re.IGNORECASE)
 #: A radio call opening a message names who is called and who calls ("base to robot, ...", "robot, this is
 #: base, ..."): no instruction.
 _STATION: Final = r"(?:robot|rover|bot|unit|base|command|control|operator|team|hq|headquarters|scout)"
@@ -229,7 +230,7 @@ def plain_speech(prompt: str) -> str:
             kept[i] = kept[i].rstrip(",")  # "the, uh, the first door": one phrase
     kept = [t for i, t in enumerate(kept) if not (i + 1 < len(kept) and t.lower() in _OPEN_WORDS
                                                   and t.lower() == kept[i + 1].lower().strip(",.;:!?"))]
-    text = " ".join(kept)
+    text = NUMBER_RESTART.sub("", " ".join(kept))  # "three, uh, three feet": the restart seen once "uh" is gone
     return _MARKER_INSIDE.sub(_break_before_marker, text)
 
 

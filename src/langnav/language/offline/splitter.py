@@ -128,6 +128,14 @@ _AMOUNT_START: Final = re.compile(
     re.IGNORECASE)
 
 
+#: "... and forward 1 m", "... and again two feet": a second move given by its way (or as more of the
+#: same) and its amount, with no verb.
+_WAY_THEN_AMOUNT: Final = re.compile(
+    rf"^\s*(?:(?:forwards?|backwards?|back|straight(?:\s+ahead)?|ahead|again|another|once\s+more|a\s+further)\s+)+"
+    rf"(?:\d|(?:{NUMBER_WORDS}|a|an|half)\b)", re.IGNORECASE)
+
+
 def _starts_with_amount(rest: str) -> bool:
-    """'... and 2 metres left': a second move given by its amount and direction only."""
-    return _AMOUNT_START.match(rest) is not None
+    """'... and 2 metres left', '... and forward 1 m': a second move given by its amount and direction only."""
+    plain = " ".join(TYPOS.get(w, w) for w in rest.lower().split())  # "... and fwd 1m"
+    return _AMOUNT_START.match(rest) is not None or _WAY_THEN_AMOUNT.match(plain) is not None

@@ -313,6 +313,8 @@ def _restates(previous: Step, step: Step, clause: str) -> bool:
         a, b = previous.distance_m, step.distance_m
     else:
         a, b = previous.angle_deg, step.angle_deg
+        if a is None and b is None and previous.amount == step.amount == Amount.DEFAULT:
+            return True  # "robot, turn left, turn left, over": one turn said twice
     return a is not None and b is not None and abs(a - b) <= _SAME_AMOUNT_TOL
 
 
