@@ -213,11 +213,13 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     # Necessary conditions, vectorised, before the per-core work: a chain of n cells spans at
     # most n * sqrt(2) cells and at most its bounding box's diagonal.
     n_cells = np.bincount(core_id, minlength=m + 1)
-    # Longer than a doorway is deep: judged against this building's own walls (a doorway's way
-    # through is as long as its wall is thick), up to passage_min_length_m.
+    # A chain, its flaring mouths included (about a width more than where it has two sides), is
+    # at least passage_min_length_m long; where it has two sides, longer than a doorway is deep:
+    # judged against this building's own walls (a doorway's way through is as long as its wall
+    # is thick), up to passage_min_length_m.
+    min_cells = params.passage_min_length_m / res - 1.0
     min_len_m = min(params.passage_min_length_m,
                     WALL_LENGTHS * typical_wall_thickness_m(layers.occupied, layers.free, res) + res)
-    min_cells = min_len_m / res - 1.0
     long_enough = np.flatnonzero(n_cells * math.sqrt(2) >= min_cells)
     long_enough = long_enough[long_enough > 0]
     core_r, core_c = np.divmod(core_idx, sub.shape[1])
@@ -259,8 +261,9 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 axis = np.array([0.0, math.copysign(1.0, axis[1])])
             proj = (pts - mean) @ axis
             length_m = (float(proj.max() - proj.min()) + 1.0) * res
-            # Short ones too (a squeeze past furniture beside a wall is as deep as the furniture).
-            if length_m < min_len_m:
+            # Short ones too (a squeeze past furniture beside a wall is as deep as the furniture,
+            # its mouths flaring on either side).
+            if length_m < params.passage_min_length_m:
                 continue
             measured.append((rr, cc, across, pts, mean, axis, proj, length_m))
         side_sets = _side_distances_each(sub, [m[3] for m in measured],
@@ -407,12 +410,15 @@ def typical_wall_thickness_m(occupied: BoolArray, free: BoolArray, res: float) -
     if len(rr) == 0:
         return res
     best = np.full(len(rr), np.inf)
+    span = np.int64(h + w + 1)
     for dr, dc in ((0, 1), (1, 0), (1, 1), (1, -1)):
         # Each line of the direction (key) and the position along it; a run is a stretch of
-        # consecutive positions on one line.
+        # consecutive positions on one line. (np.nonzero lists the cells row by row: already in
+        # line order for rows.)
         key = rr if dr == 0 else cc if dc == 0 else rr - cc if dc == 1 else rr + cc
         pos = cc if dr == 0 else rr
-        order = np.lexsort((pos, key))
+        order = (np.arange(len(rr)) if dr == 0
+                 else np.argsort(key.astype(np.int64) * span + pos, kind="stable"))
         k, p = key[order], pos[order]
         brk = np.ones(len(order), dtype=bool)
         brk[1:] = (k[1:] != k[:-1]) | (p[1:] != p[:-1] + 1)
