@@ -117,10 +117,14 @@ def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np
     r = np.floor(rows).astype(np.int64)
     c = np.floor(cols).astype(np.int64)
     h, w = mask.shape
-    inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
-    # Read every sample (clipped onto the grid), then set those off it: no masked indexing.
-    np.clip(r, 0, h - 1, out=r)
-    np.clip(c, 0, w - 1, out=c)
+    # On the grid: 0 <= r < h and 0 <= c < w (a negative index read unsigned is past the end).
+    inside = (r.view(np.uint64) < h) & (c.view(np.uint64) < w)
+    # Read every sample (clamped onto the grid), then set those off it: no masked indexing.
+    # (np.maximum / np.minimum: np.clip's checks of its bounds cost more than clamping small arrays.)
+    np.maximum(r, 0, out=r)
+    np.minimum(r, h - 1, out=r)
+    np.maximum(c, 0, out=c)
+    np.minimum(c, w - 1, out=c)
     got = np.asarray(mask[r, c], dtype=bool)
     return got | ~inside if outside else got & inside
 
