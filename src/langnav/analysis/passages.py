@@ -6,8 +6,9 @@ specks do not block). Skeleton cells whose width is between the robot's diameter
 ``params.passage_max_width_m`` form candidate chains. A chain's *core* is where the width stays
 close to its typical width (the stretch over which the way stays tight, between two near-parallel
 sides, without the flaring mouths; one pinch point does not shorten it). A core is a passage when
-it is longer than a doorway is deep in this building (``WALL_LENGTHS`` of its typical wall
-thickness, :func:`typical_wall_thickness_m`, up to ``params.passage_min_length_m``), wide enough
+it is longer than a doorway could be deep in this building (``params.door_max_depth_m`` and
+``WALL_LENGTHS`` of its typical wall thickness, :func:`typical_wall_thickness_m`; up to
+``params.passage_min_length_m``), wide enough
 for the robot with a margin, has
 sides along most of its length (or a wall along one side and a single doorway in the other: a
 passage with a door off it), solid ones (walls, furniture, a shelf's unscanned inside: not
@@ -112,8 +113,8 @@ WAY_ROUND_M: Final = 4.0
 TIGHT_WIDTH_M: Final = 0.815
 #: A doorway is as long (along the way through) as its wall is thick, give or take scan noise on
 #: its jambs; a squeeze past things is no doorway when longer than this many wall thicknesses
-#: (plus a cell of that noise). Walls are judged on each map: thin partitions in one building,
-#: thick block walls in another.
+#: (plus a cell of that noise) and than the deepest doorway (``door_max_depth_m``). Walls are
+#: judged on each map: thin partitions in one building, thick block walls in another.
 WALL_LENGTHS: Final = 2.0
 #: The thickest wall: occupied runs thicker than this, scanned from both sides, are furniture or
 #: solid things, not walls (as ``door_max_depth_m`` is the deepest doorway).
@@ -214,12 +215,12 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     # most n * sqrt(2) cells and at most its bounding box's diagonal.
     n_cells = np.bincount(core_id, minlength=m + 1)
     # A chain, its flaring mouths included (about a width more than where it has two sides), is
-    # at least passage_min_length_m long; where it has two sides, longer than a doorway is deep:
-    # judged against this building's own walls (a doorway's way through is as long as its wall
-    # is thick), up to passage_min_length_m.
+    # at least passage_min_length_m long; where it has two sides, longer than a doorway could be
+    # deep: deeper than the deepest doorway (door_max_depth_m) and than this building's own walls
+    # (a doorway's way through is as long as its wall is thick), up to passage_min_length_m.
     min_cells = params.passage_min_length_m / res - 1.0
-    min_len_m = min(params.passage_min_length_m,
-                    WALL_LENGTHS * typical_wall_thickness_m(layers.occupied, layers.free, res) + res)
+    min_len_m = min(params.passage_min_length_m, max(params.door_max_depth_m,
+                    WALL_LENGTHS * typical_wall_thickness_m(layers.occupied, layers.free, res) + res))
     long_enough = np.flatnonzero(n_cells * math.sqrt(2) >= min_cells)
     long_enough = long_enough[long_enough > 0]
     core_r, core_c = np.divmod(core_idx, sub.shape[1])
