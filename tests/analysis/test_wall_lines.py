@@ -298,3 +298,36 @@ def test_an_exit_in_the_outer_wall_at_a_corridors_end_is_a_door() -> None:
     door = door_near(seg.doors, 8.05, 0.75, tol=0.2)
     assert door.connects == (corridor.id, UNKNOWN_ID)
     assert door.width_m == pytest.approx(1.2, abs=POS_TOL_M)
+
+
+def _line_scores_reference(rows: np.ndarray, neg_cols: np.ndarray, degs: np.ndarray) -> np.ndarray:
+    """The wall-direction score written plainly: per direction and its right angle, the cells'
+    line numbers ``rint(-col * sin + row * cos)``, and the sum of squared counts per line."""
+    out = []
+    for d in degs:
+        t = math.radians(float(d))
+        total = 0
+        for c, s in ((math.cos(t), math.sin(t)), (-math.sin(t), math.cos(t))):
+            x = neg_cols * s
+            x += rows * c
+            v = np.rint(x).astype(np.int64)
+            counts = np.bincount(v - v.min())
+            total += int((counts * counts).sum())
+        out.append(total / rows.size)
+    return np.array(out)
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_line_scores_equal_the_plain_rounding_of_every_cell(seed: int) -> None:
+    """The fast score (rounding by adding a large constant) is bit for bit the plain one, on
+    cell sets of every size (one direction per block to many), fine and coarse directions, and
+    the directions whose projections fall exactly half-way between two lines (0, 30, 45, 60 deg)."""
+    from langnav.analysis.wall_lines import _line_scores
+
+    rng = np.random.default_rng(seed)
+    n = int(rng.choice([2, 40, 700, 5000, 40_000]))
+    side = int(rng.choice([8, 64, 900]))
+    rows = rng.integers(0, side, n).astype(np.float64)
+    cols = rng.integers(0, side, n).astype(np.float64)
+    degs = np.concatenate([np.arange(0.0, 90.0, 7.5), rng.uniform(0.0, 90.0, 9), [30.0, 45.0, 60.0]])
+    assert np.array_equal(_line_scores(rows, -cols, degs), _line_scores_reference(rows, -cols, degs))

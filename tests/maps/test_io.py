@@ -20,6 +20,7 @@ from langnav.maps import (
     from_ros_data,
     load_map,
     save_map,
+    written_resolution,
 )
 from langnav.maps.io import load_bare_image
 
@@ -274,3 +275,46 @@ def test_cell_centre_maps_back_to_its_cell(row: int, col: int, ox: float, oy: fl
     x, y = g.cell_to_world(row, col)
     r, c = g.world_to_index(x, y)
     assert (int(r), int(c)) == (row, col)
+
+
+def test_resolution_through_a_float32_reads_as_written() -> None:
+    """nav_msgs/OccupancyGrid carries the resolution as a float32: 0.05 arrives as 0.0500000007."""
+    through_ros = float(np.float32(0.05))
+    assert through_ros != 0.05
+    g = from_ros_data(np.zeros(4, dtype=np.int8), 2, 2, through_ros)
+    assert g.resolution_m == 0.05
+    assert written_resolution(float(np.float32(0.025))) == 0.025
+    # A value that never went through a float32 is kept as it is.
+    assert written_resolution(0.05) == 0.05
+    assert written_resolution(0.1 + 1e-12) == 0.1 + 1e-12
+
+
+def _analysis_summary(grid: OccupancyGrid) -> tuple[object, ...]:
+    from langnav.analysis.pipeline import analyze
+
+    a = analyze(grid)
+    return (tuple((d.center, d.width_m, d.connects) for d in a.doors), tuple(r.id for r in a.rooms),
+            len(a.narrow_passages), len(a.unexplored))
+
+
+@pytest.mark.parametrize("res", [0.05, 0.025, 0.1, 0.03])
+def test_analysis_of_a_map_sent_over_ros_equals_the_saved_one(res: float) -> None:
+    """The same floor gives the same doors and rooms from its YAML as from a ROS message."""
+    from langnav.maps.draw import MapBuilder
+
+    b = MapBuilder(10.0, 6.0, res, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 4.0, 4.0).room(4.0, 0.0, 8.0, 4.0)
+    b.door_v(4.0, 2.0, 0.9)  # between the two rooms
+    b.door_h(1.5, 4.0, 0.875)  # onto the unknown outside, as env1's north door
+    saved = b.build(source="two rooms")
+    sent = from_ros_data(saved.to_ros_data(), saved.width, saved.height, float(np.float32(res)),
+                         saved.origin_x_m, saved.origin_y_m)
+    assert _analysis_summary(sent) == _analysis_summary(saved)
+
+
+def test_bench_env1_over_ros_has_the_doors_of_its_yaml(shared_dir: Path) -> None:
+    """env1 lost its north door when its 0.05 m cells arrived as a float32 (make test-ros2)."""
+    saved = load_map(shared_dir / "bench" / "maps" / "env1.yaml")
+    sent = from_ros_data(saved.to_ros_data(), saved.width, saved.height, float(np.float32(saved.resolution_m)),
+                         saved.origin_x_m, saved.origin_y_m)
+    assert _analysis_summary(sent) == _analysis_summary(saved)

@@ -55,6 +55,12 @@ DIRECTION_MAX_CELLS: Final = 20_000
 CANDIDATE_BLOCK: Final = 256
 #: Directions are scored together up to this many cells times directions (arrays in cache).
 SCORE_BLOCK_ELEMENTS: Final = 32_768
+#: Adding 1.5 * 2**52 to a float64 below 2**51 in size rounds it to an integer, half to even (the
+#: spacing of float64 there is 1, and the sum is rounded to nearest, ties to even, as
+#: ``np.rint`` does); adding an even integer too keeps the ties' parity, so the sum's bits less
+#: those of the rounder are ``rint(x)`` plus that integer.
+_ROUNDER: Final = 1.5 * 2.0**52
+_ROUNDER_BITS: Final = int(np.array(_ROUNDER, dtype=np.float64).view(np.int64))
 #: Bits of the cell code that reads the wall and the floor masks with one lookup.
 WALL_BIT: Final = 1
 FLOOR_BIT: Final = 2
@@ -115,27 +121,42 @@ def _line_scores(rows: FloatArray, neg_cols: FloatArray, degs: FloatArray) -> Fl
     of squared counts of cells per one-cell line across each direction (a wall along a direction
     puts its cells on few lines), over the number of cells. ``neg_cols``: the cells' columns
     negated. Several directions are scored in one array when the cells are few (a door's
-    surroundings), one at a time when they are many (the arrays stay in cache)."""
+    surroundings), one at a time when they are many (the arrays stay in cache).
+
+    A cell's line is ``rint(-col * sin + row * cos)`` (half to even); it is read as the low bits
+    of that sum plus :data:`_ROUNDER` and an even shift per direction (see there): one addition
+    instead of rounding, converting to integers and shifting."""
     n = rows.size
-    block = max(1, SCORE_BLOCK_ELEMENTS // n)
+    block = min(max(1, SCORE_BLOCK_ELEMENTS // n), len(degs))
     # Every line number lies within +-reach (|cos|, |sin| <= 1; rows and columns are >= 0):
-    # shifted by reach, each direction of a block counts into its own span of bins.
+    # shifted by reach, each direction of a block counts into its own span of bins. Both even,
+    # so that every shift is even (see _ROUNDER).
     reach = math.ceil(float(rows.max()) - float(neg_cols.min())) + 1
-    span = 2 * reach + 1
+    reach += reach % 2
+    span = 2 * reach + 2
     out = np.empty(len(degs))
+    # The rounder plus each direction's shift, for every cell (adding a full array is several
+    # times faster than broadcasting a column).
+    offset = np.empty((block, n))
+    offset[...] = (_ROUNDER + reach + np.arange(block, dtype=np.float64) * span)[:, None]
+    x = np.empty((block, n))
+    tmp = np.empty((block, n))
     for b0 in range(0, len(degs), block):
         ts = [math.radians(float(d)) for d in degs[b0:b0 + block]]
-        shift = (reach + np.arange(len(ts)) * span)[:, None]
-        total = np.zeros(len(ts), dtype=np.int64)
+        k = len(ts)
+        xk, tk = x[:k], tmp[:k]
+        total = np.zeros(k, dtype=np.int64)
         for c, s in (([math.cos(t) for t in ts], [math.sin(t) for t in ts]),
                      ([-math.sin(t) for t in ts], [math.cos(t) for t in ts])):
-            x = neg_cols[None, :] * np.array(s)[:, None]
-            x += rows[None, :] * np.array(c)[:, None]
-            v = np.rint(x, out=x).astype(np.intp)
-            v += shift
-            counts = np.bincount(v.ravel(), minlength=len(ts) * span).reshape(len(ts), span)
+            np.multiply.outer(s, neg_cols, out=xk)
+            np.multiply.outer(c, rows, out=tk)
+            xk += tk
+            xk += offset[:k]
+            v = xk.view(np.int64)
+            v -= _ROUNDER_BITS
+            counts = np.bincount(v.ravel(), minlength=k * span).reshape(k, span)
             total += (counts * counts).sum(axis=1)  # exact: integers
-        out[b0:b0 + len(ts)] = total.astype(np.float64) / n
+        out[b0:b0 + k] = total.astype(np.float64) / n
     return out
 
 
@@ -192,10 +213,14 @@ class _LineSampler(Generic[_Cell]):
         r, c = self.rc(u, v)
         ri, ci = np.rint(r).astype(np.int64), np.rint(c).astype(np.int64)
         h, w = self.mask.shape
-        inside = (ri >= 0) & (ri < h) & (ci >= 0) & (ci < w)
-        # Read every sample (clipped onto the grid), then zero those off it.
-        np.clip(ri, 0, h - 1, out=ri)
-        np.clip(ci, 0, w - 1, out=ci)
+        # On the grid: 0 <= ri < h and 0 <= ci < w (a negative index read unsigned is past the end).
+        inside = (ri.view(np.uint64) < h) & (ci.view(np.uint64) < w)
+        # Read every sample (clamped onto the grid), then zero those off it. (np.maximum /
+        # np.minimum: np.clip's checks of its bounds cost more than clamping small arrays.)
+        np.maximum(ri, 0, out=ri)
+        np.minimum(ri, h - 1, out=ri)
+        np.maximum(ci, 0, out=ci)
+        np.minimum(ci, w - 1, out=ci)
         out = self.mask[ri, ci]
         out *= inside
         return out

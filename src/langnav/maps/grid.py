@@ -222,5 +222,23 @@ def from_ros_data(
     cells = np.full((height, width), UNKNOWN, dtype=np.int8)
     cells[(vals >= 0) & (vals <= FREE_MAX_PCT)] = FREE
     cells[vals >= OCCUPIED_MIN_PCT] = OCCUPIED
-    return OccupancyGrid(cells, float(resolution_m), float(origin_x_m), float(origin_y_m),
+    return OccupancyGrid(cells, written_resolution(resolution_m), float(origin_x_m), float(origin_y_m),
                          float(origin_yaw_rad), source)
+
+
+def written_resolution(resolution_m: float) -> float:
+    """The cell size as it was written, from the ``float32`` a ``nav_msgs/OccupancyGrid`` carries.
+
+    The message stores ``info.resolution`` as a float32, so a map saved with 0.05 m cells arrives as
+    0.0500000007 m. Read that way, every length the analysis turns into cells ("0.30 m is 6 cells")
+    can round the other way than for the saved map, and the same floor gives different doors over
+    ROS than from its YAML. The shortest decimal that the float32 stands for is the value the map's
+    author wrote, so that is the resolution read.
+    """
+    value = float(resolution_m)
+    if not math.isfinite(value) or value <= 0.0:
+        return value  # OccupancyGrid itself says what is wrong with it
+    as_float32 = np.float32(value)
+    if float(as_float32) != value:
+        return value  # more precise than a float32 holds: it did not come through one
+    return float(np.format_float_positional(as_float32, unique=True, trim="-"))
