@@ -344,3 +344,25 @@ def test_it_is_the_element_of_the_step_before(name: str, turn: float) -> None:
     room2 = room_holding(a, frame, 5.0, 9.0)
     assert a.room_at(*last_goal(r)) is room2 and math.dist(last_goal(r), room2.centroid) <= 0.75
     assert r.items[1].step.target is not None and r.items[1].step.target.label is not None
+
+
+# ------------------------------------------------------------------------------ across the hall by the bend
+@pytest.mark.parametrize(("name", "turn"), CASES)
+@pytest.mark.parametrize("words", ["go into the room across the hall", "go to the room on the other side of the hall"])
+def test_across_from_a_door_by_the_bend_is_straight_through_it(name: str, turn: float, words: str) -> None:
+    # room 8's door (10.5, 5) is by the bend of the L: the hallway's cells round it run two ways, so
+    # across is taken from the door itself: room 2 (x 1-10, y 7-11) straight over leg A, not room 5,
+    # whose door opens onto leg B round the corner, nor room 7 beside room 8 on the same side
+    a, frame = floor(name)
+    r = plan(words, a, pose_in(frame, 10.5, 3.0, 90.0, turn))
+    assert a.room_at(*last_goal(r)) is room_holding(a, frame, 5.0, 9.0)
+
+
+@pytest.mark.parametrize(("name", "turn"), CASES)
+@pytest.mark.parametrize("words", ["stop between the first and second doors on your right",
+                                   "stop btwn the 1st and 2nd doors on the right"])
+def test_between_two_doors_said_with_one_noun(name: str, turn: float, words: str) -> None:
+    # leg A, facing east: the doors on the right are room 6's (3, 5) and room 7's (7, 5)
+    a, frame = floor(name)
+    r = plan(words, a, pose_in(frame, 2.0, 6.0, 0.0, turn))
+    assert math.dist(last_goal(r), frame((5.0, 5.0))) <= 0.75

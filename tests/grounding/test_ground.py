@@ -59,7 +59,7 @@ CASES = [
      ntp([3.475, 3.975])),
     ("towards the unexplored area",
      AT_A, [step(movement="navigate", detail="towards", target={"kind": "unexplored_area"})],
-     ntp([8.825, 5.525])),
+     ntp([8.575, 5.625])),  # a step short of the middle of the unknown's nearest edge, on the robot's side
     ("between the two doors",
      AT_A, [step(movement="navigate", detail="between", target={"kind": "door"})],
      ntp([5.825, 3.475])),

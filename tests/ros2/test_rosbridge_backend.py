@@ -200,47 +200,17 @@ def test_forty_connect_disconnect_cycles(demo_robot: Callable[..., Any], rosbrid
 
 def test_bench_dev_prompts_through_rosbridge(shared_dir: Path, rosbridge_rs: int) -> None:
     """Every dev prompt of the bench that moves the robot, through rosbridge-server-rs (../shared)."""
-    import json
+    import importlib.util
 
-    from langnav.eval.endpoint import ended_as_expected, expected_end
-    from langnav.language.translator import get_translator
-    from langnav.maps.io import load_map
-    from langnav.pipeline import Planner
-    from langnav.plan.events import pose_tuple
-    from langnav.robot.ros.robot_node import RobotNode
     from langnav.robot.ros.rosbridge_backend import RosbridgeBackend
-    from langnav.robot.sim import create_sim
 
-    root = shared_dir / "bench"
-    cases = [json.loads(line) for line in (root / "prompts_dev.jsonl").read_text().splitlines() if line.strip()]
-    moving = [c for c in cases if isinstance(c["expect"], list) and expected_end(c) is not None]
-    planner = Planner(get_translator("offline"))
-    ok, misses = 0, []
-    for case in moving:
-        world = load_map(root / case["map"])
-        sim = create_sim(world, tuple(case["pose"]), known_map=True)
-        sim.start(realtime=True, speed=4.0)
-        node = RobotNode(sim, static_map=world)
-        robot = RosbridgeBackend(host="127.0.0.1", port=rosbridge_rs, connect_timeout_s=20.0)
-        why = ""
-        try:
-            result = planner.plan(case["prompt"], robot.get_map(20.0), pose_tuple(robot.get_robot_pose(10.0)))
-            if result.clarification is not None:
-                why = f"not planned: {result.clarification}"
-            else:
-                status = PlanExecutor(robot).run(result.items, timeout_s=300)
-                why = "" if status is PlanStatus.SUCCEEDED else f"plan {status.value}"
-        finally:
-            robot.close()
-            node.close()
-            sim.close()
-        x, y = sim.pose.x_m, sim.pose.y_m
-        end = expected_end(case)
-        inside = end is not None and ended_as_expected(end, x, y)
-        if inside and sim.collisions == 0 and not why:
-            ok += 1
-        else:
-            misses.append(f"{case['id']}: {case['prompt']!r}: {why or f'ended at ({x:.2f}, {y:.2f})'}")
-    print(f"\nrosbridge-server-rs: {ok}/{len(moving)} dev prompts that move the robot ended in the goal region")
-    assert len(moving) >= 20
-    assert ok / len(moving) >= 0.95, misses
+    spec = importlib.util.spec_from_file_location("bench_ros2", Path(__file__).resolve().parents[2] / "benchmarks" / "ros2.py")
+    assert spec is not None and spec.loader is not None
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    ok, total, misses = bench.run_bench_prompts(
+        shared_dir / "bench", speed=4.0,
+        connect=lambda: RosbridgeBackend(host="127.0.0.1", port=rosbridge_rs, connect_timeout_s=20.0))
+    print(f"\nrosbridge-server-rs: {ok}/{total} dev prompts that move the robot ended in the goal region")
+    assert total >= 20
+    assert ok / total >= 0.95, misses

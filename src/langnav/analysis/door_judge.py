@@ -11,6 +11,13 @@ thickness the free width along the wall widens into the space beyond. The mouth 
 way between two wings) stays as narrow for longer than any wall is thick: a narrow passage or a
 corridor continuing, not a door.
 
+*A door opens onto places wider than itself.* Beyond a door, on each side, lies a room or a
+corridor running along the wall, wider along the door's line than the door. Where the place on
+one side keeps the opening's own width for a corridor's length (its typical width there: a
+niche, a side door or a ray hole near the mouth does not make a corridor a room), the opening
+is the mouth of that corridor or passage: where a corridor runs into a hall, where a corridor is
+cut across at a jog, not a door.
+
 *A door lies along its wall.* Walls run along a few directions (the building's, or a wing's
 at an angle), and a door is a gap in one: the line from jamb to jamb runs along a direction of
 the walls around it, give or take the tilt of ragged jambs. A slanted gap, from the end of one
@@ -59,6 +66,12 @@ CENTRE_SLACK_M: Final = 0.25
 #: How far through a candidate (m, each side) its free width is followed: beyond a wall's
 #: thickness plus a passage's length, a constriction is a passage whatever follows.
 THROUGH_LOOK_M: Final = 1.5
+#: The place beyond an opening, on each side, is looked at from a wall's thickness
+#: (``door_max_depth_m``) to this far (m): a corridor's length (two door widths and more).
+MOUTH_LOOK_M: Final = 2.0
+#: ... where at least this share of the samples is free (a closet or a wall straight behind the
+#: opening leaves no corridor to judge).
+MOUTH_MIN_FREE_SHARE: Final = 0.5
 #: Free runs across a candidate are first followed this many samples each way (most end within
 #: a wall's thickness of it); only the longer ones are followed across the whole look.
 FIRST_LOOK_SAMPLES: Final = 16
@@ -108,6 +121,10 @@ class DoorEvidence:
     #: The angle (degrees) between the line from jamb to jamb and the nearest direction of the
     #: walls around the opening (0 where there are no jambs or no walls to tell).
     line_turn_deg: float = 0.0
+    #: The typical (median) free width (m) along the opening's line of the place beyond it on
+    #: space ``a``'s side and on the other, from a wall's thickness to MOUTH_LOOK_M (infinite
+    #: where too little of that look is free to tell).
+    beyond_width_m: tuple[float, float] = (math.inf, math.inf)
 
 
 def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np.float64],
@@ -258,12 +275,17 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     # about its line by a few cells (JAMB_BAND_M).
     wall_m = params.seg_wall_min_length_m
     band_m = JAMB_BAND_M
-    t, w = free_widths(free, center_rc, normal_rc, resolution_m, THROUGH_LOOK_M)
+    t_all, w_all = free_widths(free, center_rc, normal_rc, resolution_m, max(THROUGH_LOOK_M, MOUTH_LOOK_M))
+    through = np.abs(t_all) <= THROUGH_LOOK_M + 1e-9
+    t, w = t_all[through], w_all[through]
     depth = constriction_depth(t, w, width_m)
     back = constriction_depth(t, w, width_m, back_only=True)
+    beyond = (typical_width(t_all, w_all, -1.0, params.door_max_depth_m),
+              typical_width(t_all, w_all, 1.0, params.door_max_depth_m))
     jj = jamb_cells(occupied, center_rc, width_m, resolution_m)
     if jj is None:
-        return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(0.0, 0.0), across=(0.0, 0.0))
+        return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(0.0, 0.0), across=(0.0, 0.0),
+                            beyond_width_m=beyond)
     (r1, c1), (r2, c2) = jj
     # The opening's line runs from jamb to jamb (the candidate's own normal is the mean step
     # across a ragged boundary, often slanted).
@@ -281,7 +303,27 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
         along.append(float(shares[:-2].max()))
         across.append(float(shares[-2:].min()))
     return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]),
-                        across=(across[0], across[1]), line_turn_deg=turn)
+                        across=(across[0], across[1]), line_turn_deg=turn, beyond_width_m=beyond)
+
+
+def typical_width(t_m: npt.NDArray[np.float64], width_m: npt.NDArray[np.float64], side: float,
+                  from_m: float) -> float:
+    """The median free width (m) at the offsets ``t_m`` on ``side`` (+1: along the normal) from
+    ``from_m`` to MOUTH_LOOK_M, over the free samples; infinite when fewer than
+    MOUTH_MIN_FREE_SHARE of them are free."""
+    sel = (side * t_m >= from_m) & (side * t_m <= MOUTH_LOOK_M + 1e-9)
+    got = width_m[sel]
+    free = got[got > 0]
+    if got.size == 0 or free.size < MOUTH_MIN_FREE_SHARE * got.size:
+        return math.inf
+    return float(np.median(free))
+
+
+def opens_wider(ev: DoorEvidence, width_m: float, sides: tuple[int, ...] = (0, 1)) -> bool:
+    """Whether the places beyond an opening ``width_m`` wide are wider than it on ``sides`` (0:
+    space ``a``'s side, 1: the other), by WIDEN_FACTOR or WIDEN_MIN_M (see module doc)."""
+    limit = max(width_m * WIDEN_FACTOR, width_m + WIDEN_MIN_M)
+    return all(ev.beyond_width_m[i] > limit for i in sides)
 
 
 def line_turn_deg(occupied: BoolArray, center_rc: tuple[float, float], line_rad: float,
@@ -297,10 +339,12 @@ def line_turn_deg(occupied: BoolArray, center_rc: tuple[float, float], line_rad:
     return math.degrees(min(abs((line_rad - q + math.pi / 2) % math.pi - math.pi / 2) for q in dirs))
 
 
-def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wall_line: bool = False) -> bool:
+def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wall_line: bool = False,
+            width_m: float | None = None) -> bool:
     """The rules of the module doc on one candidate's evidence (``into_unknown``: it opens onto
     unexplored territory, where only its own side was seen; ``in_wall_line``: it is a gap in a
-    wall line, as deep as the wall, found so: its depth was judged there)."""
+    wall line, as deep as the wall, found so: its depth was judged there; ``width_m``: the
+    opening's width, for the places beyond it)."""
     # As deep as a wall (plus the shortest passage): a longer constriction is a passage or a
     # corridor running on. A gap in an outer wall line that deep is an exit at the end of
     # whatever leads to it, a corridor as wide as the door included.
@@ -313,6 +357,11 @@ def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wal
         if ev.constriction_back_m > params.door_max_depth_m / 2 + params.passage_min_length_m:
             return False
     elif ev.constriction_m > params.door_max_depth_m + params.passage_min_length_m:
+        return False
+    # Between two spaces, it opens onto places wider than itself on both sides: the mouth of a
+    # corridor running on at its width is no door. (Into the unexplored only rays through it
+    # were seen beyond; a gap in a wall line is an exit whatever leads to it.)
+    if width_m is not None and not into_unknown and not in_wall_line and not opens_wider(ev, width_m):
         return False
     # Along a wall: the opening's line follows the walls' direction.
     if ev.line_turn_deg > ALONG_MAX_TURN_DEG:
@@ -353,7 +402,7 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
         far = np.sqrt(truncated_sq_edt(~unknown, bound).astype(np.float64)) * resolution_m >= SEEN_FLOOR_MIN_M
     for d in candidates:
         ev = evidence(free, occupied, d.center_rc, d.normal_rc, d.width_m, resolution_m, params)
-        ok = is_door(ev, params, into_unknown=d.b == 0, in_wall_line=d.in_wall_line)
+        ok = is_door(ev, params, into_unknown=d.b == 0, in_wall_line=d.in_wall_line, width_m=d.width_m)
         if ok and far is not None:
             # A place on each side that is a space: its floor was seen, not only rays through
             # the opening (into unexplored territory: the space's own side).
@@ -371,4 +420,4 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
 
 
 __all__ = ["SEEN_FLOOR_MIN_M", "DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "judge_doors",
-           "line_turn_deg"]
+           "line_turn_deg", "opens_wider", "typical_width"]

@@ -113,6 +113,11 @@ INTO_HALL_LEAD_M: Final = 1.0
 NEXT_TO_FACE_INSET_M: Final = 0.25
 #: "towards an unexplored area": README about 1.0 m from its frontier.
 FRONTIER_GOAL_MAX_M: Final = 0.9
+#: The piece of an unexplored area's edge one goes towards: its cells within this of the nearest one
+#: (about a wide doorway's width: the opening it is seen through, or the end of a hallway).
+FRONTIER_PIECE_M: Final = 1.5
+#: A person going towards the unknown stops about this short of its edge, on the side they came from.
+FRONTIER_STANDOFF_M: Final = 0.5
 #: frontier cells tried (nearest first) before giving up on an area.
 FRONTIER_TRIES: Final = 400
 #: "middle of the room", "between A and B": README 0.75 m.
@@ -831,6 +836,9 @@ def _towards_frontier(u: UnexploredArea, ctx: GroundingContext, pose: Pose, comp
     if len(u.frontier) == 0:
         return None
     f = np.asarray(u.frontier, dtype=float).reshape(-1, 2)
+    facing = _facing_the_frontier(f, ctx, pose, comp)
+    if facing is not None:
+        return facing
     order = np.argsort(np.hypot(f[:, 0] - pose.x_m, f[:, 1] - pose.y_m))
     stride = max(1, len(order) // FRONTIER_TRIES)
     for i in order[::stride]:
@@ -839,6 +847,26 @@ def _towards_frontier(u: UnexploredArea, ctx: GroundingContext, pose: Pose, comp
         if g is not None:
             return g
     return None
+
+
+def _facing_the_frontier(f: FloatArray, ctx: GroundingContext, pose: Pose, comp: int) -> Point | None:
+    """Where a person stops "going towards" an unexplored area: in front of the middle of the piece of
+    its edge that is nearest (not at the end of it by a door jamb), a step short of it on the side they
+    came from (not in the doorway it is seen through), still within FRONTIER_GOAL_MAX_M of the edge and
+    with nothing but free floor between the spot and the edge. None when no such spot is free."""
+    near = f[np.argmin(np.hypot(f[:, 0] - pose.x_m, f[:, 1] - pose.y_m))]
+    piece = f[np.hypot(f[:, 0] - near[0], f[:, 1] - near[1]) <= FRONTIER_PIECE_M]
+    centre = piece.mean(axis=0)
+    edge = piece[np.argmin(np.hypot(piece[:, 0] - centre[0], piece[:, 1] - centre[1]))]
+    p = (float(edge[0]), float(edge[1]))
+    if math.dist(p, pose.xy) <= FRONTIER_STANDOFF_M:
+        return None
+    back = unit((pose.x_m - p[0], pose.y_m - p[1]))
+    short = (p[0] + back[0] * FRONTIER_STANDOFF_M, p[1] + back[1] * FRONTIER_STANDOFF_M)
+    g = ctx.space.safe_point_near(p, comp, FRONTIER_GOAL_MAX_M, prefer=short)
+    if g is None or not ctx.space.segment_clear(p, g, 0.0)[0]:
+        return None
+    return g
 
 
 def _room_cells_mask(ctx: GroundingContext, room: Room) -> BoolArray:

@@ -12,7 +12,7 @@ doors down".
   ("on the left") picks that side of the hallway. Facing across the hallway, "down" names no way: a side
   said gives it ("two doors down on your right"), else the robot asks.
 * **across the hall** (``Relation.ACROSS``): a space whose door opens onto the same hallway on the
-  other side of it, straight across from the door of the room named ("the room across from the
+  other side of it (in the hallway's wall there, not off another leg of an L or T), straight across from the door of the room named ("the room across from the
   first room on your left", ``ref.near``), of the robot's room (the robot in a room) or from the
   robot (the robot in the hallway: the side it faces, or, standing by one wall, the other side).
   Straight across: the room's own extent along the hallway comes within ``ACROSS_ALONG_MAX_M`` of
@@ -72,6 +72,11 @@ AXIS_PASSES: Final = 2
 AXIS_MIN_CELLS: Final = 10
 #: A point this close to the hallway's centre line is on neither side of it.
 CENTRE_LINE_EPS_M: Final = 0.1
+#: A door on the far side of the hallway lies in its wall there: its centre within half the hallway's
+#: width and this much more of the hallway's local centre line (a wall's thickness and the door's
+#: placement in it, with room for noise). A door farther out opens onto another leg of the hallway
+#: (round the corner of an L or T), not onto this stretch, so its room is not "across" from here.
+DOOR_IN_WALL_MARGIN_M: Final = 1.0
 #: In the middle of a hallway, the robot faces one side when its heading is within ~70 deg of that
 #: side's normal (cos 70 deg); facing along the hallway names no side.
 FACING_ACROSS_MIN: Final = 0.34
@@ -277,13 +282,21 @@ def _across(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room:
     from_door = base is not None and base is not hall
     if base is None or base is hall:
         origin = pose.xy
+        centre, axis = hall_axis(hall, origin)
+        normal = (-axis[1], axis[0])
     else:
         doors = [d for d in doors_of(analysis) if {hall.id, base.id} <= set(d.connects)]
         if not doors:
             raise GroundingError(f"I see no door from {label_of(base)} onto {label_of(hall)}.")
-        origin = min(doors, key=lambda d: math.dist(d.center, pose.xy)).center
-    centre, axis = hall_axis(hall, origin)
-    normal = (-axis[1], axis[0])
+        door = min(doors, key=lambda d: math.dist(d.center, pose.xy))
+        origin = door.center
+        # Across from a door is straight on through it: the door's own normal is the way across the
+        # hallway there, even by a bend or a junction, where the hallway's cells round the door run two
+        # ways and their main axis says nothing. The hallway's middle line is half its width in.
+        into = 1.0 if door.connects[-1] == hall.id else -1.0  # the normal points from connects[0] to [1]
+        normal = (door.normal[0] * into, door.normal[1] * into)
+        axis = (normal[1], -normal[0])
+        centre = (origin[0] + normal[0] * hall.width_m / 2, origin[1] + normal[1] * hall.width_m / 2)
 
     def across(p: Point) -> float:
         return (p[0] - centre[0]) * normal[0] + (p[1] - centre[1]) * normal[1]
@@ -320,6 +333,8 @@ def _across(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room:
             continue
         if across(d.center) * own >= 0:
             continue  # a door on the robot's own side of the hallway
+        if abs(across(d.center)) > hall.width_m / 2 + DOOR_IN_WALL_MARGIN_M:
+            continue  # a door off another leg of the hallway, round a corner
         # how far along the hallway the room is from here: 0 when its side on the hallway spans here
         cells = np.asarray(other.cells_xy, float).reshape(-1, 2)
         if len(cells):

@@ -62,7 +62,9 @@ ELEMENT_NOUNS: Final[dict[str, Element]] = {
        for adj in ("unexplored", "unknown", "unmapped", "uncharted", "unseen", "unvisited",
                    "undiscovered", "unscanned")
        for noun in ("area", "areas", "region", "regions", "space", "spaces", "territory",
-                    "part", "parts", "zone", "zones", "section", "sections", "spot", "place")},
+                    "part", "parts", "zone", "zones", "section", "sections", "spot", "place",
+                    # said of a piece of the map: "the unexplored bit at the end of the corridor"
+                    "bit", "bits", "patch", "patches", "stretch")},
     **{w: Element.UNEXPLORED_AREA for w in (
         "frontier", "frontiers", "unexplored", "unknown space", "unknown",
         "exploration frontier")},
@@ -597,6 +599,9 @@ TYPOS: Final[dict[str, str]] = {
     "arond": "around", "cm.": "cm", "mm.": "mm", "m.": "m", "infront": "in front",
     "inbetween": "in between", "nextto": "next to", "alot": "a lot", "abit": "a bit",
     "alittle": "a little", "wherer": "where", "sohw": "show", "shwo": "show", "mpa": "map",
+    # chat abbreviations of place words ("go btwn the 2 obstacles", "the rm across the hall")
+    "btwn": "between", "btween": "between", "rm": "room", "rms": "rooms", "crnr": "corner",
+    "crnrs": "corners",
     # chat spelling and abbreviations of the words that say which way
     "rt": "right", "rght": "right", "lt": "left", "lft": "left", "str8": "straight", "strait": "straight",
     "staight": "straight", "bk": "back", "bwd": "backward", "bkwd": "backward", "bkwds": "backwards",

@@ -52,6 +52,9 @@ _CONTRACTIONS: Final = (
     (re.compile(r"\b(what|where|who|how)'re\b"), r"\1 are"),
 )
 #: Idioms rewritten to the plain words they mean (the meaning is safe: poses stay clear of walls).
+#: Ordinal words and their digit forms ("second", "2nd"), and "last".
+_ORDINAL: Final = (r"first|second|third|fourth|fifth|sixth|seventh|eighth|ninth|tenth|last|next|"
+                   r"\d+(?:st|nd|rd|th)")
 _IDIOMS: Final = (
     (re.compile(r"\buntil\s+you\s+(?:hit|bump\s+into|run\s+into|meet)\b"), "until you reach"),
     (re.compile(r"\bout\s+of\s+here\b"), "out of this room"),
@@ -82,6 +85,23 @@ _IDIOMS: Final = (
                 r"\s+(?:that|which|where|you|we|i)\s+(?:(?:you|we|i)\s+)?(?:has|have|had|is|are|was|were|did|do)\s+(?:not|never)\s+"
                 r"(?:yet\s+)?(?:been\s+)?(?:yet\s+)?(?:mapped|explored|scanned|visited|seen|covered|checked|surveyed|map|explore|"
                 r"scan|visit|see|cover|check|survey)(?:\s+yet)?\b"), "the unexplored area"),
+    # "the room on the other side of the hall": the room across it (one place, not two steps; "go to the
+    # other side of the hall" alone is still the far side of the hallway)
+    (re.compile(r"\b(room|office|space)\s+(?:(?:that|which)\s+is\s+)?(?:on|at)\s+the\s+(?:other|opposite|far)\s+side"
+                r"\s+of\s+the\s+(hall|hallway|corridor)\b"), r"\1 across the \2"),
+    # "between the first and second doors on your left": both ordinals share the noun and its side
+    (re.compile(r"\bbetween\s+the\s+(" + _ORDINAL + r")\s+and\s+(?:the\s+)?(" + _ORDINAL + r")\s+"
+                r"(door|doorway|room|obstacle|corner|opening)s?\b(\s+on\s+(?:your|the|my)\s+(?:left|right)"
+                r"(?:\s+(?:hand\s+)?side)?)?"), r"between the \1 \3\4 and the \2 \3\4"),
+    # "go up the corridor to the unexplored bit at the end of it / at the end": the end of the hallway just
+    # named (an "it" or a missing "of ..." after "end" points back at the place of the same sentence)
+    (re.compile(r"\b(hall|hallway|corridor)\b(.*?)\b(at|to|near|by)\s+the\s+(far\s+|other\s+)?end(?:\s+of\s+it\b|(?!\s+of\b))"),
+     r"\1\2\3 the \4end of the \1"),
+    # "back out the door", "back out of the room": leave through it (which way the robot faces while it
+    # leaves is Nav2's business, not a backward move of unsaid length)
+    (re.compile(r"\bback\s+out\s+(?=(?:of|through|the|this|that|via)\b)"), "go out "),
+    # "at end of the corridor": the article dropped in chat and speech
+    (re.compile(r"\b(at|to|near|by|till|until)\s+(?:the\s+)?(far\s+|other\s+)?end\s+of\b"), r"\1 the \2end of"),
     # "more to the right", "further left": the same side, the amount is said elsewhere (or asked)
     (re.compile(r"\b(?:a\s+)?(?:more|further|farther)\s+(?=(?:(?:to|towards?)\s+(?:the|your)\s+)?"
                 r"(?:left|right|forwards?|backwards?|ahead|clockwise|counter\s*clockwise|anti\s*clockwise)\b)"), ""),

@@ -1,0 +1,97 @@
+"""How people say places in buildings, read into one intent step each (the offline translator), and
+where "towards an unexplored area" ends when the area is seen through an opening.
+
+The readings are the ones grounding needs: "between the first and second doors on your left" is two
+doors sharing one noun; "the room on the other side of the hall" is the room across it (one place, not
+a walk to the hallway's far end and then a room); "the unexplored bit at end of this corridor" is the
+unexplored area at the hallway's end; chat abbreviations of place words ("btwn", "rm") are the words.
+"""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from langnav.analysis.params import DEFAULT_PARAMS
+from langnav.analysis.pipeline import analyze
+from langnav.language.intent import Detail, Element, Movement, Relation, Side, Superlative
+from langnav.language.offline import translate_offline
+from langnav.language.translator import get_translator
+from langnav.maps.draw import MapBuilder
+from langnav.pipeline import Planner
+from langnav.plan.commands import NavigateThroughPoses
+
+
+@pytest.mark.parametrize(("prompt", "side"), [
+    ("Stop between the first and second doors on your left.", Side.LEFT),
+    ("stop btwn the 1st and 2nd doors on the right", Side.RIGHT),
+    ("go between the first and the second door on your left", Side.LEFT),
+])
+def test_two_ordinals_share_the_noun_and_the_side(prompt: str, side: Side) -> None:
+    intent = translate_offline(prompt)
+    assert intent.clarification is None and len(intent.steps) == 1
+    step = intent.steps[0]
+    assert step.detail == Detail.BETWEEN
+    assert step.target is not None and step.second_target is not None
+    assert (step.target.kind, step.target.ordinal, step.target.side) == (Element.DOOR, 1, side)
+    assert (step.second_target.kind, step.second_target.ordinal, step.second_target.side) == (Element.DOOR, 2, side)
+
+
+def test_btwn_is_between() -> None:
+    step, = translate_offline("go btwn the 2 obstacles").steps
+    assert step.detail == Detail.BETWEEN and step.target is not None and step.target.kind == Element.OBSTACLE
+
+
+@pytest.mark.parametrize("prompt", [
+    "Would you go to the room on the other side of the hall, dear?",
+    "room on the other side of the corridor",
+    "go into the rm across the hall",
+])
+def test_the_room_on_the_other_side_of_the_hall_is_the_room_across(prompt: str) -> None:
+    step, = translate_offline(prompt).steps
+    assert step.target is not None
+    assert (step.target.kind, step.target.relation) == (Element.ROOM, Relation.ACROSS)
+
+
+def test_the_other_side_of_the_hall_alone_is_still_its_far_side() -> None:
+    step, = translate_offline("go to the other side of the hall").steps
+    assert step.detail == Detail.OPPOSITE_SIDE_OF and step.target is not None
+    assert step.target.kind == Element.HALLWAY
+
+
+@pytest.mark.parametrize("prompt", [
+    "go towards unexplored bit at end of this corridor",
+    "go towards unexplored area at end of hall",
+    "go down the hall to the unexplored area at the end",
+])
+def test_the_unexplored_bit_at_the_end_of_the_corridor_is_one_place(prompt: str) -> None:
+    step, = translate_offline(prompt).steps
+    assert step.detail == Detail.TOWARDS and step.target is not None
+    assert (step.target.kind, step.target.superlative) == (Element.UNEXPLORED_AREA, Superlative.FARTHEST)
+
+
+def test_back_out_the_door_is_leaving_through_it() -> None:
+    out, turn = translate_offline("back out the door and turn left").steps
+    assert (out.detail, out.target.kind if out.target else None) == (Detail.THROUGH, Element.DOOR)
+    assert turn.movement == Movement.ROTATE
+
+
+# ------------------------------------------------------------------------------ towards the unknown
+def test_towards_an_area_seen_through_an_opening_stops_in_front_of_its_middle() -> None:
+    """A room (x 1-9, y 1-7) with a 1.6 m opening in its south wall at x 5 onto unknown: the robot, in
+    the north-west, goes towards it and stops inside the room, a step short of the opening's middle,
+    not in the opening by its west jamb (the nearest end of the unknown's edge)."""
+    b = MapBuilder(10.0, 8.0)
+    b.room(1.0, 1.0, 9.0, 7.0)
+    b.unknown(0.0, 0.0, 10.0, 0.9)
+    b.door_h(5.0, 1.0, 1.6)
+    b.unknown(4.2, 0.0, 5.8, 0.95)
+    a = analyze(b.build("opening_onto_unknown"), DEFAULT_PARAMS)
+    r = Planner(get_translator("offline")).plan("go towards the nearest unexplored area", a, (2.0, 6.0, 0.0))
+    assert r.ok, r.clarification
+    nav = [c for c in r.commands if isinstance(c, NavigateThroughPoses)]
+    x, y = nav[-1].poses[-1][:2]
+    assert y > 1.1  # in the room, not in the opening
+    assert abs(x - 5.0) <= 0.5  # in front of its middle
+    assert math.dist((x, y), (5.0, 1.0)) <= 1.0  # still "towards": within about 1 m of the edge
