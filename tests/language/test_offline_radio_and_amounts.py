@@ -246,3 +246,57 @@ def test_a_guess_about_how_far_or_which_way_is_asked(prompt: str) -> None:
 
 def test_a_turn_said_twice_in_sequence_is_done_twice() -> None:
     assert _plan("turn left, then turn left") == [("rotate", "left", None, None)] * 2
+
+
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("carry on forward another metre", [("move", "forward", 1.0, None)]),
+    ("advance niner feet, over", [("move", "forward", round(9 * FT, 4), None)]),
+    ("go straight only, three metres", [("move", "forward", 3.0, None)]),
+    ("be a love and turn round", [("rotate", "around", None, 180.0)]),
+    ("where've you got to", [("query", None, None, None)]),
+    ("can you do a twirl", [("rotate", "left", None, 360.0)]),
+    ("come about, then advance one zero feet, over", [("rotate", "around", None, 180.0),
+                                                     ("move", "forward", round(10 * FT, 4), None)]),
+    ("now turn to your left, a quarter of the way round", [("rotate", "left", None, 90.0)]),
+    ("turn to your right, a quarter turn", [("rotate", "right", None, 90.0)]),
+    ("have a look to your right", [("rotate", "right", None, None)]),
+    ("turn left no right thirty degrees", [("rotate", "right", None, 30.0)]),
+    ("move forward seven feet turn right", [("move", "forward", round(7 * FT, 4), None), ("rotate", "right", None, None)]),
+    ("move forward five feet stop", [("move", "forward", round(5 * FT, 4), None), ("stop", None, None, None)]),
+    ("go forward and stop after two metres", [("move", "forward", 2.0, None)]),
+    ("please do one thing, turn left ninety degrees", [("rotate", "left", None, 90.0)]),
+    ("180 then fwd 5 ft", [("rotate", "around", None, 180.0), ("move", "forward", round(5 * FT, 4), None)]),
+    ("one eighty, then go forward 2 m", [("rotate", "around", None, 180.0), ("move", "forward", 2.0, None)]),
+    ("go forward five-ish feet", [("move", "forward", round(5 * FT, 4), None)]),
+    ("go forward 2 metres or 6 feet", [("move", "forward", round(6 * FT, 4), None)]),
+    ("go forward six feet or two metres", [("move", "forward", round(6 * FT, 4), None)]),
+    ("go forward 2 metres and stop after the door", [("move", "forward", 2.0, None), ("navigate", None, None, None)]),
+])
+def test_words_from_a_third_set_of_speakers(prompt: str, expected: Plan) -> None:
+    assert _plan(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "one eighty, then go forward",          # the turn, then a move of unsaid length: asked
+    "move two feet twelve inches",          # no compound (12 inches is a foot): which amount?
+    "okay so advance about two ft, maybe 12 inches.",
+])
+def test_amounts_that_disagree_are_asked_about(prompt: str) -> None:
+    assert _asks(prompt)
+
+
+_SPOKEN_AMOUNTS = st.sampled_from([("two feet", 2 * FT), ("three metres", 3.0), ("eight inches", 8 * IN),
+                                   ("1.5 m", 1.5), ("a yard", 0.9144), ("twenty five feet", 25 * FT)])
+
+
+@given(first=_SPOKEN_AMOUNTS, second=_SPOKEN_AMOUNTS,
+       frame=st.sampled_from(["move forward {a}, {b}", "move forward {a}, i mean {b}", "move forward {a} or {b}",
+                              "move forward {a}, sorry, {b}", "move forward {a}. move forward {a}",
+                              "move forward. you're breaking up. move forward {a}", "go forward {a}, that's {a}",
+                              "uh, go forward, uh, {a}, go forward {a}", "move forward {a}, no, {b}"]))
+@example(first=("three metres", 3.0), second=("two feet", 2 * FT), frame="move forward {a}, {b}")
+def test_one_move_said_in_pieces_never_goes_farther_than_the_largest_amount_said(
+        first: tuple[str, float], second: tuple[str, float], frame: str) -> None:
+    prompt = frame.format(a=first[0], b=second[0])
+    moved = sum(s.distance_m or 0.0 for s in translate_offline(prompt).steps if s.movement == Movement.MOVE)
+    assert moved <= max(first[1], second[1]) + 1e-9

@@ -20,6 +20,7 @@ from langnav.language.offline import lexicon as lx
 from langnav.language.offline.amounts import unit_word, with_unit
 from langnav.language.offline.clock import CLOCK_RE
 from langnav.language.offline.compass import COMPASS_RE
+from langnav.language.offline.idioms import named_turn_alone
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import find_quantities
 from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE, STOP_RE, rx
@@ -121,7 +122,9 @@ def join_fragments(clauses: list[str], is_open: IsOpen) -> list[str]:
                 i += 1
                 continue
             nxt = clauses[i + 1] if i + 1 < len(clauses) else None
-            if nxt is not None and not is_fragment(nxt) and is_open(nxt) and not _whole_move(clause):
+            if nxt is not None and not is_fragment(nxt) and is_open(nxt) and not _whole_move(clause) \
+                    and named_turn_alone(normalize(clause)) == normalize(clause):
+                # ("one eighty, then go forward": a named turn said alone is that turn, never 180 metres)
                 out.append(f"{nxt} {clause}")
                 i += 2
                 continue

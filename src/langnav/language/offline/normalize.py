@@ -44,7 +44,7 @@ _SYMBOLS: Final = (
 )
 _CONTRACTIONS: Final = (
     (re.compile(r"\b(you|we|they)'re\b"), r"\1 are"), (re.compile(r"\bi'm\b"), "i am"),
-    (re.compile(r"\b(you|we|they|i)'ve\b"), r"\1 have"), (re.compile(r"\b(i|you|we|they)'d\b"), r"\1 would"),
+    (re.compile(r"\b(you|we|they|i|where|what|who|how)'ve\b"), r"\1 have"), (re.compile(r"\b(i|you|we|they)'d\b"), r"\1 would"),
     (re.compile(r"\b(i|you|we|they|that|it|this)'ll\b"), r"\1 will"), (re.compile(r"\bcan't\b"), "cannot"),
     (re.compile(r"\bwon't\b"), "will not"), (re.compile(r"\b(\w+)n't\b"), r"\1 not"),
     (re.compile(r"\blet's\b"), "let us"),
@@ -79,6 +79,10 @@ _IDIOMS: Final = (
     (re.compile(r"\bcome\s+about\b"), "turn around"),
     # "make the turn around", "do a turn around": the turn around
     (re.compile(r"\b(?:make|do)\s+(?:the\s+|a\s+)?turn\s+(?=(?:a)?round\b)"), "turn "),
+    # "do a twirl", "do a spin": one whole turn
+    (re.compile(r"\b(?:do|make|perform)\s+(?:a|one)\s+(?:little\s+)?(?:twirl|pirouette|spin)\b"), "turn 360 degrees"),
+    # "a quarter of the way round", "half of the way around": that part of a turn
+    (re.compile(r"\b(a\s+quarter|one\s+quarter|half|three\s+quarters)\s+of\s+the\s+way\s+(?:a)?round\b"), r"\1 turn"),
     # "a right angle" is 90 degrees (the "right" of it is no side)
     (re.compile(r"\b(?:by\s+)?(?:a|one)\s+right\s+angle\b"), "90 degrees"),
     # "i want see behind", "i need go left": the "to" learners leave out after want / need / like

@@ -53,6 +53,8 @@ CORRECTION_MARKERS: Final = (
     r"scratch\s+that", r"never\s*mind", r"correction", r"oops",
     # "turn eighty degrees right no eighty five": "no" right before a number corrects the amount
     rf"no(?=\s+(?:\d|a\s+hundred|half|{NUMBER_WORDS})\b)",
+    # "turn left no right thirty degrees": "no" right before another side corrects the side
+    r"(?:(?<=\bleft\s)|(?<=\bright\s))no(?=\s+(?:(?:to\s+(?:the|your)\s+)?(?:left|right)|clockwise|counter\s*clockwise)\b)",
 )
 _MARKER_INSIDE: Final = re.compile(r"(?P<before>\S+)\s+(?=(?:" + "|".join(CORRECTION_MARKERS) + r")\b)",
                                    re.IGNORECASE)
@@ -111,6 +113,8 @@ REMARKS: Final = re.compile(
     r"[^,.;!?]*"
     r"|(?:and\s+)?(?:be\s+)?careful\s+not\s+to\s+(?:crash|hit|bump|collide|smash|run\s+into|touch)\b[^,.;!?]*)"
     r"|\bso\s+(?:that\s+)?(?:i|we)\s+(?:can|could|may|might|will)\b[^,.;!?]*"
+    # "please do one thing, ...": announces the request that follows
+    r"|(?:^|(?<=[,.;!?]))\s*(?:please\s+)?do\s+one\s+thing\b[^,.;!?]*"
     # thanks said ahead: "..., that would be great", "that'd be awesome"
     r"|\b(?:that|it|this)(?:'d|\s+would|\s+will)\s+be\s+(?:(?:really|very|so|just|super)\s+)?(?:great|nice|good|perfect|"
     r"awesome|helpful|wonderful|lovely|fantastic|brilliant|appreciated|ideal|amazing|cool)\b[^,.;!?]*"
@@ -172,6 +176,10 @@ _ALTERNATIVE: Final = (rf"(?:(?:to\s+(?:the|your)\s+)?(?:left|right|forwards?|ba
 CONTRAST_AFTER: Final = re.compile(rf"\b(?P<said>{_ALTERNATIVE})\s*,?\s+(?:and\s+|but\s+)?not\s+{_ALTERNATIVE}\b"
                                    r"(?!\s+(?:but|rather)\b)", re.IGNORECASE)
 CONTRAST_BEFORE: Final = re.compile(rf"\bnot\s+{_ALTERNATIVE}\s*,?\s+(?:but|rather)\s+(?=\S)", re.IGNORECASE)
+#: "go forward and stop after two metres": the amount is how far the move goes (a stop after a place,
+#: "stop after the door", is read where places are).
+STOP_AFTER_AMOUNT: Final = re.compile(rf"\s*,?\s+(?:and\s+)?stop\s+after\s+(?=(?:\d|a\b|an\b|half\b|(?:{NUMBER_WORDS})\b))",
+                                      re.IGNORECASE)
 #: "twenty feet even", "two metres flat", "ninety degrees exactly": the amount, exactly (no word of its own).
 _UNIT_THEN_EXACT: Final = re.compile(
     r"\b(?P<unit>feet|foot|ft|inch(?:es)?|yards?|met(?:er|re)s?|centimet(?:er|re)s?|cm|degrees?)\s+"
@@ -197,6 +205,7 @@ def plain_speech(prompt: str) -> str:
     text = HOLDING_THE_FLOOR.sub("", TAG_QUESTION.sub(".", text))
     text = RESTATEMENT_MARKERS.sub(", ", text)
     text = CONTRAST_AFTER.sub(r"\g<said>", CONTRAST_BEFORE.sub("", text))
+    text = STOP_AFTER_AMOUNT.sub(" ", text)
     text = RADIO_NOISE.sub(" ", RADIO_NO.sub(" no", RADIO_CALL.sub(" ", text)))
     text = _UNIT_THEN_EXACT.sub(r"\g<unit>", NUMBER_RESTART.sub("", text))
     text = REQUEST_FRAMES.sub(" ", text)
