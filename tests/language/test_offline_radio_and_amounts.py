@@ -46,21 +46,31 @@ def test_a_bare_move_said_twice_still_asks_how_far() -> None:
 
 
 @pytest.mark.parametrize(("prompt", "expected"), [
-    ("move forward four metres, er, four feet", [("move", "forward", round(4 * FT, 4), None)]),
     ("go forward seven feet, my bad, six feet", [("move", "forward", round(6 * FT, 4), None)]),
-    ("turn left forty, fifty degrees", [("rotate", "left", None, 50.0)]),
+    ("go forward 2 feet, sorry, 3 feet", [("move", "forward", round(3 * FT, 4), None)]),
+    ("move forward two metres, two metres", [("move", "forward", 2.0, None)]),
 ])
-def test_an_amount_alone_with_no_word_of_more_puts_the_amount_right(prompt: str, expected: Plan) -> None:
+def test_an_amount_alone_put_right_or_said_again_is_done_once(prompt: str, expected: Plan) -> None:
     assert _plan(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "move forward four metres, er, four feet",   # no word corrects the first: which one?
+    "turn left forty, fifty degrees",
+    "go forward ten feet... ten metres",
+])
+def test_a_different_amount_alone_with_no_correcting_word_is_asked_about(prompt: str) -> None:
+    assert _asks(prompt)
 
 
 @given(a=st.integers(1, 30), b=st.integers(1, 30), unit=st.sampled_from(["feet", "metres", "inches"]))
 @example(a=2, b=3, unit="metres")
 def test_an_amount_said_again_never_adds_up(a: int, b: int, unit: str) -> None:
-    """Never farther than the last amount said: "move forward A units, B units" is B units."""
+    """"move forward A units, B units" is A units once when A == B, and asks otherwise: never the sum."""
     metres = {"feet": FT, "metres": 1.0, "inches": IN}[unit]
     steps = translate_offline(f"move forward {a} {unit}, {b} {unit}").steps
-    assert [(s.movement, s.distance_m) for s in steps] == [(Movement.MOVE, pytest.approx(b * metres))]
+    expected = [(Movement.MOVE, pytest.approx(a * metres))] if a == b else []
+    assert [(s.movement, s.distance_m) for s in steps] == expected
 
 
 @pytest.mark.parametrize(("prompt", "expected"), [
@@ -121,6 +131,15 @@ def test_radio_talk(prompt: str, expected: Plan) -> None:
 ])
 def test_digits_that_may_be_a_range_are_asked_about(prompt: str) -> None:
     assert _asks(prompt)
+
+
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("okay so turn right ninety degrees. Again: turn right ninety degrees.", [("rotate", "right", None, 90.0)]),
+    ("turn left ninety. Again, turn left ninety", [("rotate", "left", None, 90.0)]),
+    ("turn left ninety. again.", [("rotate", "left", None, 90.0)] * 2),
+])
+def test_again_opening_the_same_instruction_says_it_again(prompt: str, expected: Plan) -> None:
+    assert _plan(prompt) == expected
 
 
 @given(n=st.integers(10, 9999))
@@ -293,7 +312,8 @@ _SPOKEN_AMOUNTS = st.sampled_from([("two feet", 2 * FT), ("three metres", 3.0), 
        frame=st.sampled_from(["move forward {a}, {b}", "move forward {a}, i mean {b}", "move forward {a} or {b}",
                               "move forward {a}, sorry, {b}", "move forward {a}. move forward {a}",
                               "move forward. you're breaking up. move forward {a}", "go forward {a}, that's {a}",
-                              "uh, go forward, uh, {a}, go forward {a}", "move forward {a}, no, {b}"]))
+                              "uh, go forward, uh, {a}, go forward {a}", "move forward {a}, no, {b}",
+                              "move forward {a}. Again: move forward {a}", "move forward {a}... {b}"]))
 @example(first=("three metres", 3.0), second=("two feet", 2 * FT), frame="move forward {a}, {b}")
 def test_one_move_said_in_pieces_never_goes_farther_than_the_largest_amount_said(
         first: tuple[str, float], second: tuple[str, float], frame: str) -> None:

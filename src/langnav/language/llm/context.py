@@ -104,9 +104,10 @@ bit", "a lil bit", "just a little bit" -> amount little (never the 90 degrees of
 - An amount alone after a move or turn goes the same way: "back up 2 m and then another 3 feet" -> two \
 moves backward; "turn left 45, then another 20 degrees" -> two left turns. Said to be more with no unit, it \
 is in the unit just used ("go forward two feet, then two more" -> two moves of 0.6096 m; "turn right ninety, \
-then another ninety" -> two right turns of 90); with no "more", "another", "again" or "then" it is the amount \
-said again or put right, and only the last counts ("go forward seven feet, my bad, six feet" -> 1.8288 m; \
-"move forward four metres, er, four feet" -> 1.2192 m), never the sum. "and again", "do it again", "repeat \
+then another ninety" -> two right turns of 90); with no "more", "another", "again" or "then" it is the same \
+amount said again (done once) or, after a word that corrects ("no", "sorry", "I mean", "my bad"), put right: \
+the last counts ("go forward seven feet, my bad, six feet" -> 1.8288 m); a different amount with no such word \
+("move forward four metres, er, four feet") -> ask which one; never the sum. "X. Again: X" says X again (once). "and again", "do it again", "repeat \
 that" -> the move or turn before it once more. A bare move said again with its amount ("move forward ... \
 you're breaking up ... move forward two metres") is one move of that amount.
 - Radio talk: digits said one at a time are one number ("move ahead one five feet" -> 4.572 m; "rotate left \

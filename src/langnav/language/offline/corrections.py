@@ -28,7 +28,7 @@ from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB
 #: Words that open a correction of the instruction before ("actually", "no wait", "i'm sorry").
 CORRECTION_START_RE: Final = re.compile(
     r"^(?:(?:actually|no\s+wait|no(?!\s+(?:further|longer|more|need)\b)|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
-    r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|or\s+rather|rather|make\s+that|make\s+it|correction|"
+    r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|my\s+(?:bad|mistake)|or\s+rather|rather|make\s+that|make\s+it|correction|"
     r"oops)\b[\s,]*)+", re.IGNORECASE)
 #: Words that take back what was said before ("never mind", "scratch that").
 CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|forget\s+(?:it|that|everything|all\s+(?:of\s+)?that)|"

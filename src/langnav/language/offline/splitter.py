@@ -56,7 +56,8 @@ _WEAK_STEP_VERBS: Final = frozenset({"get", "keep", "make", "do", "stay", "posit
 #: instruction, and a verb that starts one right after it starts the next.
 _UNIT_THEN_VERB: Final = re.compile(
     r"\b(?:feet|foot|ft|inch(?:es)?|yards?|met(?:er|re)s?|centimet(?:er|re)s?|cm|degrees?|deg)\s+"
-    r"(?=(?:rotate|pivot|face|move|go|drive|head|advance|proceed|reverse|stop|halt|freeze)\b"
+    # (a verb said last closes its own instruction: "right 30 degrees rotate" is one turn)
+    r"(?=(?:rotate|pivot|face|move|go|drive|head|advance|proceed|reverse)\s+[a-z0-9]|(?:stop|halt|freeze)\b"
     # "turn" / "spin" after a unit is a noun ("a 360 degree turn") unless a side follows it ("... turn right")
     r"|(?:turn|spin)\s+(?:to\s+(?:the|your)\s+)?(?:left|right|around|round|back)\b)",
     re.IGNORECASE)
