@@ -119,3 +119,27 @@ def test_landmarks_the_map_shows_are_read(prompt: str) -> None:
 def test_a_landmark_the_user_named_is_not_asked_about() -> None:
     intent = translate_offline("go into the room next to the kitchen", known_names=("kitchen",))
     assert intent.clarification is None or "don't know" not in intent.clarification
+
+
+def test_a_sentence_saying_where_a_compass_point_lies_is_no_instruction() -> None:
+    intent = translate_offline("Let us try something new. Face south. South is behind the whiteboard.")
+    assert intent.clarification is None
+    step, = intent.steps
+    assert step.movement == Movement.ROTATE and step.heading_deg == 270.0
+
+
+@pytest.mark.parametrize("prompt", ["go halfway between the first door on the left and the second one",
+                                    "wait in between the first two doors on your left"])
+def test_the_second_one_and_the_first_two_name_two_doors(prompt: str) -> None:
+    step, = translate_offline(prompt).steps
+    assert step.detail == Detail.BETWEEN and step.target is not None and step.second_target is not None
+    assert (step.target.ordinal, step.second_target.ordinal) == (1, 2)
+    assert step.target.side == step.second_target.side == Side.LEFT
+
+
+@pytest.mark.parametrize("prompt", ["go in the room across the hallway", "go into the room across the hallway from here",
+                                    "go in the room on the opposite side of the hallway"])
+def test_across_the_hallway_is_read_whole(prompt: str) -> None:
+    # "hallway" is not "hall" followed by an unknown place "way"
+    step, = translate_offline(prompt).steps
+    assert step.target is not None and (step.target.kind, step.target.relation) == (Element.ROOM, Relation.ACROSS)
