@@ -52,7 +52,7 @@ import numpy.typing as npt
 from scipy import ndimage as ndi
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import truncated_sq_edt
+from langnav.analysis.precompute import take2, truncated_sq_edt
 from langnav.analysis.seg_doors import SEEN_FLOOR_MIN_M, RawDoor
 from langnav.analysis.wall_lines import WALL_MAX_THICKNESS_M, dominant_directions
 
@@ -161,7 +161,7 @@ def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np
     np.minimum(r, h - 1, out=r)
     np.maximum(c, 0, out=c)
     np.minimum(c, w - 1, out=c)
-    got = np.asarray(mask[r, c], dtype=bool)
+    got = np.asarray(take2(mask, r, c), dtype=bool)
     return got | ~inside if outside else got & inside
 
 
