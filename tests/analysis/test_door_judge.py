@@ -18,9 +18,12 @@ from langnav.analysis.door_judge import (
     floor_beyond,
     free_widths,
     is_door,
+    is_furniture,
+    judge_doors,
     line_turn_deg,
 )
 from langnav.analysis.params import DEFAULT_PARAMS
+from langnav.analysis.seg_doors import RawDoor
 from langnav.analysis.segmentation import UNKNOWN_ID, Segmentation, segment_spaces
 from langnav.maps.draw import MapBuilder
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
@@ -219,3 +222,105 @@ def test_no_door_onto_the_unexplored_has_seen_floor_beyond_it() -> None:
     seg = segment_spaces(grid)
     assert len(seg.rooms) == 1
     assert seg.doors == ()
+
+
+def corridor_mouth_beside_a_door() -> OccupancyGrid:
+    """A 6 m x 6 m hall; a corridor 1.5 m wide runs 6 m east from its east wall (y 1.05-2.55);
+    an office north of the corridor has its 0.8 m door in the corridor's north wall right beside
+    the mouth (x 6.3-7.1), so the corridor widens into the office just past its mouth."""
+    b = MapBuilder(14.0, 9.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 6.0, 6.0)
+    b.wall(6.0, 1.0, 12.0, 1.0).wall(6.0, 2.6, 12.0, 2.6).wall(12.0, 1.0, 12.0, 2.6)
+    b.free(5.95, 1.05, 11.95, 2.55)
+    b.room(6.0, 2.6, 9.0, 5.0).door_h(6.7, 2.6, 0.8)
+    return b.build("corridor mouth beside a door")
+
+
+def test_the_mouth_of_a_corridor_is_no_door_the_door_beside_it_is() -> None:
+    """Where the corridor runs into the hall, the hall's wall runs on past both of its walls and
+    the office door beside the mouth breaks the corridor's narrowness just behind it: a
+    candidate there looks like a door in the hall's wall. But the corridor behind it keeps the
+    opening's width along most of its length: it is the corridor's mouth, not a door."""
+    grid = corridor_mouth_beside_a_door()
+    free, occ = grid.cells == FREE, grid.cells == OCCUPIED
+    res = grid.resolution_m
+    r, c = grid.world_to_cell(6.0, 1.8)
+    mouth = RawDoor(1, 2, (float(r), float(c)), (0.0, 1.0), 1.5)
+    r, c = grid.world_to_cell(6.7, 2.6)
+    office = RawDoor(2, 3, (float(r), float(c)), (1.0, 0.0), 0.8)
+    ev = evidence(free, occ, mouth.center_rc, mouth.normal_rc, mouth.width_m, res, DEFAULT_PARAMS)
+    # Behind the mouth: the hall (6 m along the opening's line), the corridor (its 1.5 m width).
+    assert ev.beyond_width_m[0] >= 5.0
+    assert ev.beyond_width_m[1] == pytest.approx(1.5, abs=0.15)
+    # The corridor's narrowness is broken just past the mouth: depth alone cannot tell.
+    assert ev.constriction_m < DEFAULT_PARAMS.door_max_depth_m + DEFAULT_PARAMS.passage_min_length_m
+    doors, rest = judge_doors([mouth, office], free, occ, res, DEFAULT_PARAMS, unknown=grid.cells == UNKNOWN)
+    assert doors == [office] and rest == [mouth]
+    # The whole analysis: the office door, and no door where the corridor meets the hall.
+    seg = segment_spaces(grid)
+    assert len(seg.doors) == 1
+    assert math.dist(seg.doors[0].center, (6.7, 2.6)) <= POS_TOL_M
+
+
+def corridor_into_hall() -> OccupancyGrid:
+    """A 6 m x 5 m hall; a corridor 1.4 m wide runs 6 m south from its south-west corner (its
+    west wall runs on as the hall's west wall: a wide junction, no wall between them); an office
+    east of the corridor through a 0.9 m door."""
+    b = MapBuilder(12.0, 14.0, origin=(-1.0, -1.0))
+    b.room(0.0, 6.0, 6.0, 11.0)
+    b.room(0.0, 0.0, 1.4, 6.0)
+    b.free(0.0, 5.8, 1.4, 6.3)
+    b.room(1.5, 1.0, 4.5, 4.0).door_v(1.45, 2.5, 0.9)
+    return b.build("corridor into a hall")
+
+
+def test_a_corridor_running_into_a_hall_has_no_door_there() -> None:
+    """The exact doors: the office's, and none where the corridor widens into the hall."""
+    grid = corridor_into_hall()
+    seg = segment_spaces(grid)
+    office, hall = space_at(seg, grid, 3.0, 2.5), space_at(seg, grid, 3.0, 8.5)
+    assert office.id != hall.id
+    assert len(seg.doors) == 1
+    door = door_near(seg.doors, 1.45, 2.5)
+    assert door.width_m == pytest.approx(0.9, abs=POS_TOL_M)
+    assert set(door.connects) == {office.id, space_at(seg, grid, 0.7, 2.5).id}
+
+
+def cabinet_row() -> OccupancyGrid:
+    """A 10 m x 6 m open-plan floor with a row of three cabinets (1.5 m long, 0.6 m deep, seen
+    only from around: an outline with the unknown inside) standing free across it at y 3.0-3.6,
+    with 1 m gaps between them; an office east of the floor through a 0.9 m door."""
+    b = MapBuilder(15.0, 8.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 10.0, 6.0).room(10.1, 0.0, 13.0, 3.0).door_v(10.05, 1.5, 0.9)
+    for x0 in (1.0, 3.5, 6.0):
+        b.rect(x0, 3.0, x0 + 1.5, 3.6, OCCUPIED).unknown(x0 + 0.05, 3.05, x0 + 1.45, 3.55)
+    return b.build("cabinet row")
+
+
+def test_a_gap_between_cabinets_is_no_door_the_door_in_the_wall_is() -> None:
+    """The gap between two cabinets has wall-like jambs along its line (the cabinets' faces),
+    but each jamb is a body standing free, unscanned inside, as deep as a cabinet: furniture.
+    The office door's jambs are the building's walls."""
+    grid = cabinet_row()
+    free, occ, unknown = grid.cells == FREE, grid.cells == OCCUPIED, grid.cells == UNKNOWN
+    res = grid.resolution_m
+    r, c = grid.world_to_cell(3.0, 3.3)
+    gap = RawDoor(1, 2, (float(r), float(c)), (1.0, 0.0), 1.0)
+    r, c = grid.world_to_cell(10.05, 1.5)
+    office = RawDoor(1, 3, (float(r), float(c)), (0.0, 1.0), 0.9)
+    assert evidence(free, occ, gap.center_rc, gap.normal_rc, 1.0, res, DEFAULT_PARAMS, unknown).furniture_jamb
+    assert not evidence(free, occ, office.center_rc, office.normal_rc, 0.9, res, DEFAULT_PARAMS, unknown).furniture_jamb
+    doors, rest = judge_doors([gap, office], free, occ, res, DEFAULT_PARAMS, unknown=unknown)
+    assert doors == [office] and rest == [gap]
+    # A closet never entered (1.2 m deep) is walled the same way, but deeper than furniture.
+    r, c = grid.world_to_cell(1.0, 3.3)
+    assert is_furniture(free, unknown, (float(r), float(c)), res)
+    b = MapBuilder(8.0, 8.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 6.0, 6.0).rect(1.0, 3.0, 3.0, 4.2, OCCUPIED).unknown(1.05, 3.05, 2.95, 4.15)
+    closet = b.build("closet")
+    r, c = closet.world_to_cell(1.0, 3.5)
+    assert not is_furniture(closet.cells == FREE, closet.cells == UNKNOWN, (float(r), float(c)), res)
+    # The whole analysis: one floor, the office, and the office door only.
+    seg = segment_spaces(grid)
+    assert len(seg.doors) == 1
+    assert math.dist(seg.doors[0].center, (10.05, 1.5)) <= POS_TOL_M

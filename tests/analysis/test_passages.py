@@ -9,7 +9,7 @@ from scipy import ndimage as ndi
 
 from langnav.analysis.elements import Door
 from langnav.analysis.params import DEFAULT_PARAMS
-from langnav.analysis.passages import find_passages
+from langnav.analysis.passages import find_passages, typical_wall_thickness_m
 from langnav.analysis.pipeline import analyze, labels_for_free_components
 from langnav.analysis.precompute import GridLayers
 from langnav.analysis.unexplored import find_unexplored
@@ -298,17 +298,17 @@ def test_strip_between_a_shelf_and_an_unexplored_area_is_no_passage() -> None:
     assert p.center == pytest.approx((4.0, 2.3), abs=0.05)
 
 
-def sofa_squeeze(shelf_to_x: float | None = 8.0) -> OccupancyGrid:
+def sofa_squeeze(shelf_to_x: float | None = 8.0, gap_m: float = 0.6) -> OccupancyGrid:
     """An 8 x 6 m room split by furniture: a 2.4 x 0.7 m sofa (outline scanned, inside unknown)
-    0.6 m from the west wall (x 0.6 to 3.0, y 3.0 to 3.7), and a 0.3 m deep shelf from the sofa
-    to x = ``shelf_to_x`` (8: the east wall; None: no shelf, the sofa stands free). The 0.6 m
-    squeeze between the sofa and the west wall is the way into the north part of the room."""
+    ``gap_m`` from the west wall (y 3.0 to 3.7), and a 0.3 m deep shelf from the sofa's east end
+    to x = ``shelf_to_x`` (8: the east wall; None: no shelf, the sofa stands free). The squeeze
+    between the sofa and the west wall is the way into the north part of the room."""
     b = MapBuilder(10.0, 8.0, origin=(-1.0, -1.0))
     b.room(0.0, 0.0, 8.0, 6.0)
-    b.box(0.6, 3.0, 3.0, 3.7).unknown(0.65, 3.05, 2.95, 3.65)
+    b.box(gap_m, 3.0, gap_m + 2.4, 3.7).unknown(gap_m + 0.05, 3.05, gap_m + 2.35, 3.65)
     if shelf_to_x is not None:
-        b.box(3.0, 3.2, shelf_to_x, 3.5)
-    return b.build(source=f"sofa_squeeze_{shelf_to_x}")
+        b.box(gap_m + 2.4, 3.2, shelf_to_x, 3.5)
+    return b.build(source=f"sofa_squeeze_{shelf_to_x}_{gap_m}")
 
 
 def test_squeeze_between_furniture_and_a_wall_that_is_the_only_way_is_a_passage() -> None:
@@ -319,10 +319,22 @@ def test_squeeze_between_furniture_and_a_wall_that_is_the_only_way_is_a_passage(
     assert p.length_m == pytest.approx(0.7, abs=0.15)
 
 
-def test_the_same_squeeze_with_a_way_round_is_no_passage() -> None:
-    # The shelf stops short of the east wall: one walks round the other end; the squeeze is a
-    # gap beside a sofa.
-    assert passages_of(sofa_squeeze(shelf_to_x=6.5)) == ()
+def test_a_tight_squeeze_with_a_way_round_is_still_a_passage() -> None:
+    # The shelf stops short of the east wall: one could walk round the other end, but a 0.6 m
+    # squeeze between a sofa and a wall is what a person calls a narrow passage (tighter than
+    # any accessible route), as the squeeze between a buffet counter and a wall.
+    (p,) = passages_of(sofa_squeeze(shelf_to_x=6.5))
+    assert p.center == pytest.approx((0.3, 3.35), abs=0.06)
+    assert p.width_m == pytest.approx(0.6, abs=0.051)
+
+
+def test_a_roomy_gap_beside_a_sofa_with_a_way_round_is_no_passage() -> None:
+    # The same sofa 0.95 m from the wall, the shelf short of the east wall: room for two to pass
+    # sideways, and a way round the other end; the gap is the floor beside the sofa.
+    assert passages_of(sofa_squeeze(shelf_to_x=6.5, gap_m=0.95)) == ()
+    # ... but the only way past the sofa and the shelf, it is a passage.
+    (p,) = passages_of(sofa_squeeze(gap_m=0.95))
+    assert p.width_m == pytest.approx(0.95, abs=0.051)
 
 
 def test_a_squeeze_in_a_ring_corridor_is_the_way_past() -> None:
@@ -426,9 +438,14 @@ def test_squeeze_between_two_things_in_a_corridor_is_a_passage() -> None:
     assert p.length_m == pytest.approx(1.0, abs=0.15)
 
 
-def test_gap_between_two_things_one_walks_round_is_no_passage() -> None:
-    # The bed stands off the wall: there is a way round it; the gap beside it is not the way.
-    assert passages_of(corridor_squeeze(bed_to_wall=False)) == ()
+def test_a_bed_standing_off_the_wall_leaves_its_tight_side_a_passage() -> None:
+    # The bed stands off the south wall (0.9 m, y 0.9..1.65), 0.75 m from the north wall: there is
+    # a way round it on either side. The 0.9 m gap beside it is roomy floor with a way round; the
+    # 0.75 m strip along the north wall is tight for a person (a squeeze between a bed and a
+    # wall, as a person would point at it) and stays a passage, for all the way round.
+    (p,) = passages_of(corridor_squeeze(bed_to_wall=False))
+    assert p.center == pytest.approx((6.0, 2.02), abs=0.06)
+    assert p.width_m == pytest.approx(0.75, abs=0.051)
 
 
 def furniture_row(depth_m: float) -> OccupancyGrid:
@@ -529,3 +546,49 @@ def test_a_door_found_at_the_end_of_a_thick_partition_is_that_door() -> None:
     (p,) = passages_of(grid)
     assert p.center == pytest.approx((3.3, 0.45), abs=0.06)
 
+
+
+def bench_rows(wall_m: float, depth_m: float = 0.55) -> OccupancyGrid:
+    """A 10 x 8.5 m waiting room (x 0..10, y 0..8.5) with a partition ``wall_m`` thick across it
+    at y 6.9 (a 0.9 m doorway at x 8) and three fixed bench rows ``depth_m`` deep (outline
+    scanned, inside unknown) from x 0.75 to 5.0 at y 1.2, 3.15 and 5.1: each row's end leaves a
+    0.75 m gap to the west wall, as long as the bench is deep, between 1.4 m aisles."""
+    b = MapBuilder(12.0, 10.5, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 10.0, 8.5)
+    b.wall(0.0, 6.9, 10.0, 6.9, thickness_m=wall_m)
+    b.door_h(8.0, 6.9, 0.9, depth_m=wall_m + 0.1)
+    for y0 in (1.2, 3.15, 5.1):
+        b.box(0.75, y0, 5.0, y0 + depth_m).unknown(0.8, y0 + 0.05, 4.95, y0 + depth_m - 0.05)
+    return b.build(source=f"bench_rows_{wall_m}_{depth_m}")
+
+
+def test_typical_wall_thickness_is_read_from_walls_scanned_on_both_sides() -> None:
+    # The partition (scanned from both sides) sets it; the outer walls (unknown behind them) and
+    # the benches (deeper than any wall) do not.
+    for wall_m in (0.1, 0.2, 0.35):
+        layers = GridLayers(bench_rows(wall_m))
+        assert typical_wall_thickness_m(layers.occupied, layers.free, 0.05) == pytest.approx(wall_m, abs=0.026)
+
+
+def test_gaps_between_bench_ends_and_a_wall_are_passages_when_longer_than_two_walls() -> None:
+    # 0.55 m long, under passage_min_length_m: in a building of 0.1 m partitions a 0.55 m deep
+    # gap is no doorway (a doorway is as long as its wall is thick), so the three 0.75 m gaps
+    # between the bench ends and the west wall are narrow passages, although one could walk
+    # round the 4.25 m benches at their east ends.
+    found = sorted(passages_of(bench_rows(0.1)), key=lambda p: p.center[1])
+    assert [p.center for p in found] == [pytest.approx((0.375, y + 0.275), abs=0.06) for y in (1.2, 3.15, 5.1)]
+    assert all(p.width_m == pytest.approx(0.75, abs=0.051) for p in found)
+    assert all(p.length_m == pytest.approx(0.55, abs=0.1) for p in found)
+    # The whole analysis (doors found first) reads them the same.
+    assert len(analyze(bench_rows(0.1)).narrow_passages) == 3
+
+
+def test_the_same_gaps_in_a_building_of_thick_walls_are_no_passages() -> None:
+    # With 0.35 m walls a 0.55 m deep gap is as long as a doorway in one of them.
+    assert passages_of(bench_rows(0.35)) == ()
+
+
+def test_a_gap_no_deeper_than_a_doorway_is_no_passage_however_thin_the_walls() -> None:
+    # 0.4 m deep bench ends: within the deepest doorway (door_max_depth_m), even where the
+    # building's partitions are 0.1 m.
+    assert passages_of(bench_rows(0.1, depth_m=0.4)) == ()

@@ -217,3 +217,26 @@ def test_a_rotated_flat_with_lidar_noise_keeps_its_rooms_doors_and_hallway() -> 
 def test_the_whole_analysis_of_the_ray_fan_map_names_one_room() -> None:
     a = analyze(room_with_ray_fan())
     assert [r.kind for r in a.rooms] == [ElementKind.ROOM]
+
+
+def store_behind_a_cabinet() -> OccupancyGrid:
+    """A 12 x 6 m hall and a 12 x 4 m store north of it, parted by a wall whose one doorway
+    (1.0 m) is blocked by a 0.4 m cabinet standing in it: a 0.3 m slit either side."""
+    b = MapBuilder(14.0, 12.0)
+    b.room(1.0, 1.0, 13.0, 11.0)
+    b.wall(1.0, 7.0, 13.0, 7.0)
+    b.door_h(4.0, 7.0, 1.0)
+    b.box(3.8, 6.5, 4.2, 7.5)
+    return b.build("store behind a cabinet")
+
+
+def test_a_slit_beside_furniture_too_narrow_to_pass_does_not_join_two_rooms() -> None:
+    grid = store_behind_a_cabinet()
+    seg = segment_spaces(grid)
+    hall, store = space_at(seg, grid, 6.0, 4.0), space_at(seg, grid, 6.0, 9.0)
+    assert hall is not store
+    assert len(seg.rooms) == 2
+    assert seg.doors == ()
+    # The slits are openings to a person (narrow doors), never a way through for the robot.
+    assert sorted(round(d.center[0], 2) for d in seg.narrow_doors) == [3.65, 4.35]
+    assert all(set(d.connects) == {hall.id, store.id} for d in seg.narrow_doors)

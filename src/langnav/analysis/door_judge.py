@@ -11,6 +11,13 @@ thickness the free width along the wall widens into the space beyond. The mouth 
 way between two wings) stays as narrow for longer than any wall is thick: a narrow passage or a
 corridor continuing, not a door.
 
+*A door opens onto places wider than itself.* Beyond a door, on each side, lies a room or a
+corridor running along the wall, wider along the door's line than the door. Where the place on
+one side keeps the opening's own width for a corridor's length (its typical width there: a
+niche, a side door or a ray hole near the mouth does not make a corridor a room), the opening
+is the mouth of that corridor or passage: where a corridor runs into a hall, where a corridor is
+cut across at a jog, not a door.
+
 *A door lies along its wall.* Walls run along a few directions (the building's, or a wing's
 at an angle), and a door is a gap in one: the line from jamb to jamb runs along a direction of
 the walls around it, give or take the tilt of ragged jambs. A slanted gap, from the end of one
@@ -22,6 +29,11 @@ the opening's line (scanned, occupied cells for a wall's length, allowing for th
 leaves in walls), or a wall the opening's wall abuts, crossing its line (a door beside a room's
 corner). The tip of a laser ray, a speck of clutter, the corner where a corridor's wall turns
 away into a hall, are not: a gap beside them is no door.
+
+*A door's jambs are walls, not furniture.* A jamb on a compact body standing free in the floor
+(all of it within a few metres, its inside never scanned: a cabinet, a desk block, a counter
+seen only from around it), deeper than a wall is thick and shallower than a room, is a piece of
+furniture: the gap beside it is a way past the furniture, not a door.
 
 A candidate between two spaces that is no door is still a way between them (an opening); one
 into unexplored territory is nothing a person would point at.
@@ -37,11 +49,12 @@ from typing import Final
 
 import numpy as np
 import numpy.typing as npt
+from scipy import ndimage as ndi
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import truncated_sq_edt
+from langnav.analysis.precompute import take2, truncated_sq_edt
 from langnav.analysis.seg_doors import SEEN_FLOOR_MIN_M, RawDoor
-from langnav.analysis.wall_lines import dominant_directions
+from langnav.analysis.wall_lines import WALL_MAX_THICKNESS_M, dominant_directions
 
 BoolArray = npt.NDArray[np.bool_]
 
@@ -59,6 +72,12 @@ CENTRE_SLACK_M: Final = 0.25
 #: How far through a candidate (m, each side) its free width is followed: beyond a wall's
 #: thickness plus a passage's length, a constriction is a passage whatever follows.
 THROUGH_LOOK_M: Final = 1.5
+#: The place beyond an opening, on each side, is looked at from a wall's thickness
+#: (``door_max_depth_m``) to this far (m): a corridor's length (two door widths and more).
+MOUTH_LOOK_M: Final = 2.0
+#: ... where at least this share of the samples is free (a closet or a wall straight behind the
+#: opening leaves no corridor to judge).
+MOUTH_MIN_FREE_SHARE: Final = 0.5
 #: Free runs across a candidate are first followed this many samples each way (most end within
 #: a wall's thickness of it); only the longer ones are followed across the whole look.
 FIRST_LOOK_SAMPLES: Final = 16
@@ -87,6 +106,16 @@ JAMB_REACH_M: Final = 0.3
 #: ... or the jamb is a wall crossing the opening's line: occupied on at least this share of a
 #: wall's length on both sides of the line (a T or a corner the door stands beside).
 JAMB_ACROSS_MIN_SHARE: Final = 0.8
+#: A jamb's body is looked at within this distance (m) of it: a piece of furniture lies
+#: wholly inside it, a wall runs on beyond it (to other walls, or along the unknown outside).
+BODY_LOOK_M: Final = 3.0
+#: A body standing free is furniture when at least this share of it was never scanned (its
+#: inside: a scanned wall is occupied cells, a cabinet an outline around the unknown) ...
+BODY_MIN_UNKNOWN_SHARE: Final = 0.45
+#: ... and it is deeper than a wall is thick (m, WALL_MAX_THICKNESS of the wall lines) and at
+#: most this deep (m): cabinets, desks and counters are 0.4-0.8 m deep; a closet or a small
+#: room never entered, walled in the same way, is deeper.
+BODY_MAX_DEPTH_M: Final = 0.8
 #: The walls around a door, whose directions its line must follow: those within this distance
 #: (m) of it (the room or corridor it opens from; a wing at an angle has its own directions).
 LOCAL_WALLS_M: Final = 3.0
@@ -108,6 +137,13 @@ class DoorEvidence:
     #: The angle (degrees) between the line from jamb to jamb and the nearest direction of the
     #: walls around the opening (0 where there are no jambs or no walls to tell).
     line_turn_deg: float = 0.0
+    #: The typical (median) free width (m) along the opening's line of the place beyond it on
+    #: space ``a``'s side and on the other, from a wall's thickness to MOUTH_LOOK_M (infinite
+    #: where too little of that look is free to tell).
+    beyond_width_m: tuple[float, float] = (math.inf, math.inf)
+    #: Whether either jamb is on a piece of furniture (see module doc; False where the unknown
+    #: cells were not given).
+    furniture_jamb: bool = False
 
 
 def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np.float64],
@@ -125,7 +161,7 @@ def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np
     np.minimum(r, h - 1, out=r)
     np.maximum(c, 0, out=c)
     np.minimum(c, w - 1, out=c)
-    got = np.asarray(mask[r, c], dtype=bool)
+    got = np.asarray(take2(mask, r, c), dtype=bool)
     return got | ~inside if outside else got & inside
 
 
@@ -252,18 +288,24 @@ _ALONG_ANGLES: Final = tuple(math.radians(a) for a in
 
 def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float],
              normal_rc: tuple[float, float], width_m: float, resolution_m: float,
-             params: AnalysisParams) -> DoorEvidence:
-    """The evidence of one candidate (``center_rc`` in cell-corner coordinates, unit normal)."""
+             params: AnalysisParams, unknown: BoolArray | None = None) -> DoorEvidence:
+    """The evidence of one candidate (``center_rc`` in cell-corner coordinates, unit normal;
+    ``unknown``: the unscanned cells, to tell furniture at a jamb)."""
     # A wall's length: the shortest wall stub that is a jamb; a scanned wall's cells scatter
     # about its line by a few cells (JAMB_BAND_M).
     wall_m = params.seg_wall_min_length_m
     band_m = JAMB_BAND_M
-    t, w = free_widths(free, center_rc, normal_rc, resolution_m, THROUGH_LOOK_M)
+    t_all, w_all = free_widths(free, center_rc, normal_rc, resolution_m, max(THROUGH_LOOK_M, MOUTH_LOOK_M))
+    through = np.abs(t_all) <= THROUGH_LOOK_M + 1e-9
+    t, w = t_all[through], w_all[through]
     depth = constriction_depth(t, w, width_m)
     back = constriction_depth(t, w, width_m, back_only=True)
+    beyond = (typical_width(t_all, w_all, -1.0, params.door_max_depth_m),
+              typical_width(t_all, w_all, 1.0, params.door_max_depth_m))
     jj = jamb_cells(occupied, center_rc, width_m, resolution_m)
     if jj is None:
-        return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(0.0, 0.0), across=(0.0, 0.0))
+        return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(0.0, 0.0), across=(0.0, 0.0),
+                            beyond_width_m=beyond)
     (r1, c1), (r2, c2) = jj
     # The opening's line runs from jamb to jamb (the candidate's own normal is the mean step
     # across a ragged boundary, often slanted).
@@ -280,8 +322,53 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
                                               (nr, nc), (-nr, -nc)], resolution_m, wall_m, band_m)
         along.append(float(shares[:-2].max()))
         across.append(float(shares[-2:].min()))
+    furniture = unknown is not None and any(is_furniture(free, unknown, j, resolution_m) for j in jj)
     return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]),
-                        across=(across[0], across[1]), line_turn_deg=turn)
+                        across=(across[0], across[1]), line_turn_deg=turn, beyond_width_m=beyond,
+                        furniture_jamb=furniture)
+
+
+def is_furniture(free: BoolArray, unknown: BoolArray, cell_rc: tuple[float, float], resolution_m: float) -> bool:
+    """Whether the occupied cell at ``cell_rc`` is on a piece of furniture: the body of
+    not-free cells holding it lies within BODY_LOOK_M of it, at least BODY_MIN_UNKNOWN_SHARE of
+    it unscanned, and it is deeper than a wall and at most BODY_MAX_DEPTH_M deep (twice its
+    largest inner clearance)."""
+    rad = math.ceil(BODY_LOOK_M / resolution_m)
+    r, c = math.floor(cell_rc[0]), math.floor(cell_rc[1])
+    h, w = free.shape
+    body = np.ones((2 * rad + 1, 2 * rad + 1), dtype=bool)  # off the grid: not free
+    unk = np.zeros(body.shape, dtype=bool)
+    r0, r1, c0, c1 = max(r - rad, 0), min(r + rad + 1, h), max(c - rad, 0), min(c + rad + 1, w)
+    body[r0 - r + rad:r1 - r + rad, c0 - c + rad:c1 - c + rad] = ~free[r0:r1, c0:c1]
+    unk[r0 - r + rad:r1 - r + rad, c0 - c + rad:c1 - c + rad] = unknown[r0:r1, c0:c1]
+    pieces, _ = ndi.label(body, structure=np.ones((3, 3), dtype=bool))
+    mine = pieces == pieces[rad, rad]
+    if mine[0].any() or mine[-1].any() or mine[:, 0].any() or mine[:, -1].any():
+        return False  # it runs on beyond the look: a wall
+    if (unk & mine).sum() < BODY_MIN_UNKNOWN_SHARE * mine.sum():
+        return False
+    depth_m = 2.0 * float(ndi.distance_transform_edt(mine).max()) * resolution_m
+    return WALL_MAX_THICKNESS_M < depth_m <= BODY_MAX_DEPTH_M
+
+
+def typical_width(t_m: npt.NDArray[np.float64], width_m: npt.NDArray[np.float64], side: float,
+                  from_m: float) -> float:
+    """The median free width (m) at the offsets ``t_m`` on ``side`` (+1: along the normal) from
+    ``from_m`` to MOUTH_LOOK_M, over the free samples; infinite when fewer than
+    MOUTH_MIN_FREE_SHARE of them are free."""
+    sel = (side * t_m >= from_m) & (side * t_m <= MOUTH_LOOK_M + 1e-9)
+    got = width_m[sel]
+    free = got[got > 0]
+    if got.size == 0 or free.size < MOUTH_MIN_FREE_SHARE * got.size:
+        return math.inf
+    return float(np.median(free))
+
+
+def opens_wider(ev: DoorEvidence, width_m: float, sides: tuple[int, ...] = (0, 1)) -> bool:
+    """Whether the places beyond an opening ``width_m`` wide are wider than it on ``sides`` (0:
+    space ``a``'s side, 1: the other), by WIDEN_FACTOR or WIDEN_MIN_M (see module doc)."""
+    limit = max(width_m * WIDEN_FACTOR, width_m + WIDEN_MIN_M)
+    return all(ev.beyond_width_m[i] > limit for i in sides)
 
 
 def line_turn_deg(occupied: BoolArray, center_rc: tuple[float, float], line_rad: float,
@@ -297,10 +384,12 @@ def line_turn_deg(occupied: BoolArray, center_rc: tuple[float, float], line_rad:
     return math.degrees(min(abs((line_rad - q + math.pi / 2) % math.pi - math.pi / 2) for q in dirs))
 
 
-def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wall_line: bool = False) -> bool:
+def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wall_line: bool = False,
+            width_m: float | None = None) -> bool:
     """The rules of the module doc on one candidate's evidence (``into_unknown``: it opens onto
     unexplored territory, where only its own side was seen; ``in_wall_line``: it is a gap in a
-    wall line, as deep as the wall, found so: its depth was judged there)."""
+    wall line, as deep as the wall, found so: its depth was judged there; ``width_m``: the
+    opening's width, for the places beyond it)."""
     # As deep as a wall (plus the shortest passage): a longer constriction is a passage or a
     # corridor running on. A gap in an outer wall line that deep is an exit at the end of
     # whatever leads to it, a corridor as wide as the door included.
@@ -314,8 +403,16 @@ def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wal
             return False
     elif ev.constriction_m > params.door_max_depth_m + params.passage_min_length_m:
         return False
+    # Between two spaces, it opens onto places wider than itself on both sides: the mouth of a
+    # corridor running on at its width is no door. (Into the unexplored only rays through it
+    # were seen beyond; a gap in a wall line is an exit whatever leads to it.)
+    if width_m is not None and not into_unknown and not in_wall_line and not opens_wider(ev, width_m):
+        return False
     # Along a wall: the opening's line follows the walls' direction.
     if ev.line_turn_deg > ALONG_MAX_TURN_DEG:
+        return False
+    # Its jambs are walls, not furniture.
+    if ev.furniture_jamb:
         return False
     # Both jambs are wall.
     return all(a >= JAMB_ALONG_MIN_SHARE or x >= JAMB_ACROSS_MIN_SHARE
@@ -352,8 +449,8 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
         bound = math.ceil(SEEN_FLOOR_MIN_M / resolution_m) + 1
         far = np.sqrt(truncated_sq_edt(~unknown, bound).astype(np.float64)) * resolution_m >= SEEN_FLOOR_MIN_M
     for d in candidates:
-        ev = evidence(free, occupied, d.center_rc, d.normal_rc, d.width_m, resolution_m, params)
-        ok = is_door(ev, params, into_unknown=d.b == 0, in_wall_line=d.in_wall_line)
+        ev = evidence(free, occupied, d.center_rc, d.normal_rc, d.width_m, resolution_m, params, unknown)
+        ok = is_door(ev, params, into_unknown=d.b == 0, in_wall_line=d.in_wall_line, width_m=d.width_m)
         if ok and far is not None:
             # A place on each side that is a space: its floor was seen, not only rays through
             # the opening (into unexplored territory: the space's own side).
@@ -370,5 +467,5 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
     return doors, rest
 
 
-__all__ = ["SEEN_FLOOR_MIN_M", "DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "judge_doors",
-           "line_turn_deg"]
+__all__ = ["SEEN_FLOOR_MIN_M", "DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "is_furniture", "judge_doors",
+           "line_turn_deg", "opens_wider", "typical_width"]

@@ -6,9 +6,11 @@ specks do not block). Skeleton cells whose width is between the robot's diameter
 ``params.passage_max_width_m`` form candidate chains. A chain's *core* is where the width stays
 close to its typical width (the stretch over which the way stays tight, between two near-parallel
 sides, without the flaring mouths; one pinch point does not shorten it). A core is a passage when
-it is longer than ``params.passage_min_length_m``, wide enough for the robot with a margin, has
-sides along most of its length (or a wall along one side and a single doorway in the other: a
-passage with a door off it), solid ones (walls, furniture, a shelf's unscanned inside: not
+it is longer than a doorway could be deep in this building (``params.door_max_depth_m`` and
+``WALL_LENGTHS`` of its typical wall thickness, :func:`typical_wall_thickness_m`; up to
+``params.passage_min_length_m``), wide enough for the robot with a margin, has sides along most
+of its length (or a wall along one side and a single doorway in the other: a passage with a door
+off it), solid ones (walls, furniture, a shelf's unscanned inside: not
 laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
 unexplored area), leads somewhere (both mouths open into free space wider than any passage: a
 dead-end slot does not), is not a door's own gap (a door across its middle; a door at one of its
@@ -17,11 +19,13 @@ deeper than any wall, is no door), and is
 
 * clearly longer than wide (``PASSAGE_MIN_ELONGATION``: an aisle, a checkout lane, a corridor),
   except a strip between a wall and a thing one can walk round (a pallet), which is one only when
-  as elongated as a corridor (an aisle along a shelf); or
-* a short squeeze, longer than a wall is thick, that is the only way from one side to the other,
-  between a wall and a thing deeper than any wall (a sofa, a housekeeping cart: not a door leaf)
-  or between two such things (a parked bed and a trolley in a corridor, a wardrobe and a desk
-  across a room): its sides are no wall with a doorway in it.
+  as elongated as a corridor (an aisle along a shelf) or tight, as below; or
+* a short squeeze, longer than a wall is thick, between a wall and a thing deeper than any wall
+  (a sofa, a bench row's end, a buffet counter: not a door leaf) or between two such things (a
+  parked bed and a trolley in a corridor, a column and a planter): its sides are no wall with a
+  doorway in it. It is a passage however one could go round when it is tight for a person
+  (``TIGHT_WIDTH_M``), except beside a lone thing by a wall that open floor leads round nearby
+  (a pallet: one walks round it); a roomier one only when it is the only way past.
 
 A passage along a wall (between the wall and a long shelf) shares its skeleton line with the
 one-sided strip along the rest of the room's walls: a core without sides along most of its length
@@ -101,6 +105,19 @@ DOOR_ACROSS_COS: Final = math.cos(math.radians(45.0))
 #: past. A way through other rooms, round a ring corridor or a long machine line, is a detour:
 #: the squeeze is still the way.
 WAY_ROUND_M: Final = 4.0
+#: A squeeze one could go round is a narrow passage only when it is tight for a person: narrower
+#: than the narrowest point of an accessible route (0.815 m, 32 in: ADA 403.5.1 lets a 0.915 m
+#: route narrow to that for at most 0.61 m), where two people cannot pass and one turns sideways.
+#: A roomier gap beside a thing one can walk round is the floor beside it (a pallet by a wall).
+TIGHT_WIDTH_M: Final = 0.815
+#: A doorway is as long (along the way through) as its wall is thick, give or take scan noise on
+#: its jambs; a squeeze past things is no doorway when longer than this many wall thicknesses
+#: (plus a cell of that noise) and than the deepest doorway (``door_max_depth_m``). Walls are
+#: judged on each map: thin partitions in one building, thick block walls in another.
+WALL_LENGTHS: Final = 2.0
+#: The thickest wall: occupied runs thicker than this, scanned from both sides, are furniture or
+#: solid things, not walls (as ``door_max_depth_m`` is the deepest doorway).
+WALL_MAX_THICKNESS_M: Final = 0.45
 #: Look this far beyond a mouth for the space the passage opens into.
 MOUTH_SEARCH_M: Final = 1.0
 #: A passage leaves the robot at least this much room on each side (about a robot's
@@ -192,10 +209,17 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     passages: list[NarrowPassage] = []
     # Where the robot's centre fits with its margin (the distance table is exact that far).
     fits = dist_of[d2] > params.robot_radius_m + PASSAGE_SIDE_MARGIN_M
+    wide = dist_of[d2] > params.passage_max_width_m / 2.0
     # Necessary conditions, vectorised, before the per-core work: a chain of n cells spans at
     # most n * sqrt(2) cells and at most its bounding box's diagonal.
     n_cells = np.bincount(core_id, minlength=m + 1)
+    # A chain, its flaring mouths included (about a width more than where it has two sides), is
+    # at least passage_min_length_m long; where it has two sides, longer than a doorway could be
+    # deep: deeper than the deepest doorway (door_max_depth_m) and than this building's own walls
+    # (a doorway's way through is as long as its wall is thick), up to passage_min_length_m.
     min_cells = params.passage_min_length_m / res - 1.0
+    min_len_m = min(params.passage_min_length_m, max(params.door_max_depth_m,
+                    WALL_LENGTHS * typical_wall_thickness_m(layers.occupied, layers.free, res) + res))
     long_enough = np.flatnonzero(n_cells * math.sqrt(2) >= min_cells)
     long_enough = long_enough[long_enough > 0]
     core_r, core_c = np.divmod(core_idx, sub.shape[1])
@@ -237,7 +261,8 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 axis = np.array([0.0, math.copysign(1.0, axis[1])])
             proj = (pts - mean) @ axis
             length_m = (float(proj.max() - proj.min()) + 1.0) * res
-            # Short ones too (a squeeze past furniture beside a wall is as deep as the furniture).
+            # Short ones too (a squeeze past furniture beside a wall is as deep as the furniture,
+            # its mouths flaring on either side).
             if length_m < params.passage_min_length_m:
                 continue
             measured.append((rr, cc, across, pts, mean, axis, proj, length_m))
@@ -256,7 +281,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             # It runs where it has two sides: not on into its flaring mouths.
             lo, hi = float(proj[bounded].min()), float(proj[bounded].max())
             length_m = (hi - lo + 1.0) * res
-            if length_m < params.passage_min_length_m:
+            if length_m < min_len_m:
                 continue
             # Wide enough for the robot to pass, and narrow (the band's test used the skeleton's
             # width, up to a cell off).
@@ -310,18 +335,26 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                         < WALL_RUNS_ON_SHARE))
                     if not squeeze:
                         continue
-                # A squeeze between two things inside one space (no door found at it: a corridor
-                # narrowed by a trolley and a cart) is the way past them unless a way round is
-                # near (WAY_ROUND_M); a gap where a door was found parts two spaces, and is a
-                # passage only when it is the only way between them (else it is one of their
-                # doorways, however thick the wall looks); a strip between a wall and a thing is
-                # walked round whenever the thing has another end (past a row of shelf ends).
+                # A gap where a door was found parts two spaces, and is a passage only when it is
+                # the only way between them (else it is one of their doorways, however thick the
+                # wall looks). Otherwise a squeeze one can go round is still a passage when it is
+                # tight for a person (TIGHT_WIDTH_M: a gap between a column and a planter, between
+                # a bench row's end and a wall, a bed and a wall), and a roomier one is the way
+                # past only when there is no way round: between two things, none near
+                # (WAY_ROUND_M: a corridor narrowed by a trolley and a cart, with the ring's far
+                # side as a detour); between a wall and a thing, none at all (past a row of shelf
+                # ends). A tight strip between a wall and a lone thing that open floor, wider
+                # than any passage, leads round nearby is walked round too (a pallet by a wall).
                 cw = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
                 door_at = any(math.dist(d.center, (float(cw[0]), float(cw[1])))
                               <= length_m / 2 + params.door_max_depth_m for d in doors)
                 round_reach = WAY_ROUND_M / res if thing is None and not door_at else math.inf
-                if (thing is not None or squeeze) and _way_round(fits, centre_g, axis, (hi - lo + 1.0) / 2.0,
-                                                                 width_m / res, round_reach):
+                half_len = (hi - lo + 1.0) / 2.0
+                if (thing is not None or squeeze) and (door_at or width_m > TIGHT_WIDTH_M) and _way_round(
+                        fits, fits, centre_g, axis, half_len, width_m / res, round_reach):
+                    continue
+                if thing is not None and not door_at and _way_round(wide, fits, centre_g, axis, half_len,
+                                                                   width_m / res, WAY_ROUND_M / res):
                     continue
             cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
             centre = (float(cx), float(cy))
@@ -363,6 +396,48 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             two_r, two_c = _two_sided(sub, long_r, long_c, dist_of[d2[long_r, long_c]] / res, SIDE_TOL_M / res)
             pieces = [(pr, pc, None) for pr, pc in _pieces(two_r, two_c, sub.shape, min_cells)]
     return tuple(passages)
+
+
+def typical_wall_thickness_m(occupied: BoolArray, free: BoolArray, res: float) -> float:
+    """The building's typical wall thickness (m): the median, over occupied cells, of the thinnest
+    run of occupied cells through each along the four grid directions (rows, columns, both
+    diagonals: within 22.5 degrees of across any wall) that has free floor at both of its ends (a
+    wall scanned from both sides; an outer wall's skin with the unknown world behind it is no
+    measure), up to ``WALL_MAX_THICKNESS_M`` (thicker runs are furniture). One cell when nothing
+    is measured."""
+    h, w = occupied.shape
+    rr, cc = np.nonzero(occupied)
+    if len(rr) == 0:
+        return res
+    best = np.full(len(rr), np.inf)
+    span = np.int64(h + w + 1)
+    for dr, dc in ((0, 1), (1, 0), (1, 1), (1, -1)):
+        # Each line of the direction (key) and the position along it; a run is a stretch of
+        # consecutive positions on one line. (np.nonzero lists the cells row by row: already in
+        # line order for rows.)
+        key = rr if dr == 0 else cc if dc == 0 else rr - cc if dc == 1 else rr + cc
+        pos = cc if dr == 0 else rr
+        order = (np.arange(len(rr)) if dr == 0
+                 else np.argsort(key.astype(np.int64) * span + pos, kind="stable"))
+        k, p = key[order], pos[order]
+        brk = np.ones(len(order), dtype=bool)
+        brk[1:] = (k[1:] != k[:-1]) | (p[1:] != p[:-1] + 1)
+        run = np.cumsum(brk) - 1
+        starts = np.flatnonzero(brk)
+        ends = np.append(starts[1:], len(order)) - 1
+        # The cells just before and after each run.
+        r0, c0 = rr[order[starts]] - dr, cc[order[starts]] - dc
+        r1, c1 = rr[order[ends]] + dr, cc[order[ends]] + dc
+        bounded = np.ones(len(starts), dtype=bool)
+        for r, c in ((r0, c0), (r1, c1)):
+            ok = (r >= 0) & (r < h) & (c >= 0) & (c < w)
+            bounded &= ok
+            bounded[ok] &= free[r[ok], c[ok]]
+        step = math.sqrt(2.0) if dr and dc else 1.0
+        thick = np.where(bounded, (ends - starts + 1) * step * res, np.inf)
+        best[order] = np.minimum(best[order], thick[run])  # (order visits each cell once)
+    walls = best[best <= WALL_MAX_THICKNESS_M]
+    return float(np.median(walls)) if len(walls) else res
 
 
 def _parallel(sides: npt.NDArray[np.float64], res: float) -> bool:
@@ -420,11 +495,12 @@ def _deep(open_: BoolArray, pts: npt.NDArray[np.float64], outward: npt.NDArray[n
     return bool((blocked.mean(axis=1) >= DEEP_SHARE).mean() >= MIN_BOUNDED_FRACTION)
 
 
-def _way_round(fits: BoolArray, centre_g: npt.NDArray[np.float64], axis: npt.NDArray[np.float64],
+def _way_round(floor: BoolArray, fits: BoolArray, centre_g: npt.NDArray[np.float64], axis: npt.NDArray[np.float64],
                half_len: float, width: float, reach: float) -> bool:
     """Can the robot get from one mouth of a squeeze (``centre_g``, unit ``axis``, ``half_len`` and
     ``width`` in cells) to the other without going through it, within ``reach`` cells of it
-    (``WAY_ROUND_M``)? Through the cells where its centre ``fits``."""
+    (``WAY_ROUND_M``)? Over the ``floor`` cells (where its centre ``fits``, or only open floor
+    wider than any passage), and where it fits just beyond each mouth."""
     h, w = fits.shape
     # The squeeze's box (with a cell of slack at its ends) and the floor just beyond each mouth
     # (within a width of its end, ahead of it), in a window around it that holds the way round.
@@ -437,7 +513,7 @@ def _way_round(fits: BoolArray, centre_g: npt.NDArray[np.float64], axis: npt.NDA
     across = np.abs(-dx * axis[1] + dy * axis[0])
     cut = (np.abs(along) <= half_len + 1.0) & (across <= width / 2.0 + 1.0)
     ahead = (across <= width) & (np.abs(along) <= half_len + 1.0 + width) & ~cut
-    win, _n = ndi.label(fits[r0:r1, c0:c1] & ~cut, structure=np.ones((3, 3), dtype=bool))
+    win, _n = ndi.label((floor[r0:r1, c0:c1] | (fits[r0:r1, c0:c1] & ahead)) & ~cut, structure=np.ones((3, 3), dtype=bool))
     first = np.unique(win[ahead & (along > half_len + 1.0) & (win > 0)])
     second = np.unique(win[ahead & (along < -half_len - 1.0) & (win > 0)])
     return bool(np.intersect1d(first, second).size)

@@ -23,6 +23,8 @@ and merging steps of ROSE², RA-L 2022):
    both of its jambs (ROSE²'s rooms bounded by the building's wall lines, in local form).
 5. *Jambs*: the widest opening left between two spaces must be cut in a wall: both of its jambs
    belong to the wall network or to a wall stub running along the gap (:class:`JambJudge`).
+   A crack narrower than a door (a slit beside a cabinet, a pane of a glass front) is no way
+   through: failing the test, it does not join the spaces; their wider openings decide.
 6. A space whose opening is wide for its size (``seg_merge_gap_ratio``: a bay) and pieces
    smaller than ``room_min_area_m2`` join their neighbour; isolated fragments below that size
    are dropped. A single door's width cut in a wall across a part of a small room's side (a
@@ -483,6 +485,11 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
     # A crossing whose jambs are not both walls is a gap around furniture: one space.
     # Two spaces are judged on their widest opening: a wall with several gaps (a dashed wall
     # in a drawing, a doorway beside a broken wall) keeps them apart if that one is a doorway.
+    # A crack too narrow to walk through (narrower than the narrowest door) is no way between
+    # two spaces whatever stands at its sides: beside furniture it is a slit behind a cabinet,
+    # in a glass front a pane the laser saw through; it neither joins them nor settles that
+    # they are apart (their wider openings are judged on their own).
+    crack_clear = (params.door_min_width_m - resolution_m) / 2
     if judge is not None:
         judged: set[tuple[int, int]] = set()
         for a, b, s, loc in sorted(kept, key=lambda e: -e[2]):
@@ -491,7 +498,7 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
                 continue
             if judge.is_doorway(loc // width, loc % width, s):
                 judged.add((min(ra, rb), max(ra, rb)))
-            else:
+            elif s >= crack_clear:
                 join(ra, rb)
     # Spaces joined through many door-wide openings are one space with a row of clutter.
     if params.seg_max_openings_between > 0:
