@@ -8,10 +8,9 @@ close to its typical width (the stretch over which the way stays tight, between 
 sides, without the flaring mouths; one pinch point does not shorten it). A core is a passage when
 it is longer than a doorway could be deep in this building (``params.door_max_depth_m`` and
 ``WALL_LENGTHS`` of its typical wall thickness, :func:`typical_wall_thickness_m`; up to
-``params.passage_min_length_m``), wide enough
-for the robot with a margin, has
-sides along most of its length (or a wall along one side and a single doorway in the other: a
-passage with a door off it), solid ones (walls, furniture, a shelf's unscanned inside: not
+``params.passage_min_length_m``), wide enough for the robot with a margin, has sides along most
+of its length (or a wall along one side and a single doorway in the other: a passage with a door
+off it), solid ones (walls, furniture, a shelf's unscanned inside: not
 laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
 unexplored area), leads somewhere (both mouths open into free space wider than any passage: a
 dead-end slot does not), is not a door's own gap (a door across its middle; a door at one of its
@@ -20,7 +19,7 @@ deeper than any wall, is no door), and is
 
 * clearly longer than wide (``PASSAGE_MIN_ELONGATION``: an aisle, a checkout lane, a corridor),
   except a strip between a wall and a thing one can walk round (a pallet), which is one only when
-  as elongated as a corridor (an aisle along a shelf); or
+  as elongated as a corridor (an aisle along a shelf) or tight, as below; or
 * a short squeeze, longer than a wall is thick, between a wall and a thing deeper than any wall
   (a sofa, a bench row's end, a buffet counter: not a door leaf) or between two such things (a
   parked bed and a trolley in a corridor, a column and a planter): its sides are no wall with a

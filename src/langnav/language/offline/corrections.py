@@ -17,6 +17,7 @@ from collections.abc import Callable
 from typing import Final
 
 from langnav.language.offline import lexicon as lx
+from langnav.language.offline.amounts import unit_word, with_unit
 from langnav.language.offline.clock import CLOCK_RE
 from langnav.language.offline.compass import COMPASS_RE
 from langnav.language.offline.normalize import normalize
@@ -26,7 +27,7 @@ from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB
 #: Words that open a correction of the instruction before ("actually", "no wait", "i'm sorry").
 CORRECTION_START_RE: Final = re.compile(
     r"^(?:(?:actually|no\s+wait|no(?!\s+(?:further|longer|more|need)\b)|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
-    r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|or\s+rather|rather|make\s+that|make\s+it|correction|"
+    r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|or\s+rather|rather|make\s+that|make\s+it|correction|"
     r"oops)\b[\s,]*)+", re.IGNORECASE)
 #: Words that take back what was said before ("never mind", "scratch that").
 CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|forget\s+(?:it|that|everything|all\s+(?:of\s+)?that)|"
@@ -168,6 +169,8 @@ def apply_corrections(clauses: list[str]) -> list[str]:
         if start is not None:
             clause = clause[start.end():].strip()
             if not clause:
+                if out and _HOLD_RE.match(out[-1]):
+                    out.pop()  # "..., wait, no, forward two feet": the "wait" opened the correction, it is no stop
                 correct_next = bool(out)
                 continue
             correcting = True
@@ -203,7 +206,10 @@ def _corrected(previous: str, fragment: str) -> str:
         norm_prev = COMPASS_RE.sub(" ", norm_prev)
     quantities = find_quantities(norm_frag)
     if quantities:
-        for q in reversed(find_quantities(norm_prev)):
+        said = find_quantities(norm_prev)
+        # "go forward ten feet, actually make that eight": the number put right is in the unit said before
+        norm_frag = with_unit(norm_frag, unit_word(said[-1]) if said else None)
+        for q in reversed(said):
             norm_prev = norm_prev[:q.start] + " " + norm_prev[q.end:]
     return " ".join(f"{norm_prev} {norm_frag}".split())
 

@@ -67,9 +67,23 @@ _IDIOMS: Final = (
      "turn 360 degrees"),
     (re.compile(r"\b(?:do|make)\s+a\s+(?:full\s+|complete\s+)?circle\b"), "turn 360 degrees"),
     # "do a one eighty", "pull a three sixty": a half or full turn named by its degrees
-    (re.compile(r"\b(?:do|make|pull|perform)\s+(?:a|an)\s+(one\s+eighty|180|three\s+sixty|360)\b(?!\s*(?:degrees?|turn))"),
+    (re.compile(r"\b(?:do|make|pull|perform|execute|hit|give\s+(?:me|us))\s+(?:a|an)\s+(one\s+eighty|180|three\s+sixty|360)\b"
+                r"(?!\s*(?:degrees?|turn))"),
      r"turn \1 degrees"),
     (re.compile(r"\boutside\s+(?:of\s+)?(?=(?:the|this|that|your)\s+(?:room|hallway|corridor|hall)\b)"), "out of "),
+    # "keep turning right", "continue rotating": a turn (the amount follows, or is asked)
+    (re.compile(r"\b(?:keep(?:\s+on)?|continue|carry\s+on|go\s+on)\s+(?:turning|rotating|spinning|pivoting|to\s+turn|"
+                r"to\s+rotate)\b"), "turn"),
+    # "come left / right" is the helm's and the pilot's turn; "come about" is turning around
+    (re.compile(r"\bcome\s+(?=(?:hard\s+)?(?:left|right)\b)"), "turn "),
+    (re.compile(r"\bcome\s+about\b"), "turn around"),
+    # "make the turn around", "do a turn around": the turn around
+    (re.compile(r"\b(?:make|do)\s+(?:the\s+|a\s+)?turn\s+(?=(?:a)?round\b)"), "turn "),
+    # "a right angle" is 90 degrees (the "right" of it is no side)
+    (re.compile(r"\b(?:by\s+)?(?:a|one)\s+right\s+angle\b"), "90 degrees"),
+    # "i want see behind", "i need go left": the "to" learners leave out after want / need / like
+    (re.compile(r"\b(want|wanna|need|would\s+like)\s+(?=(?:see|look|go|turn|move|know|check|have|take|get)\b)"),
+     r"\1 to "),
     # "clock wise", "counter clock wise": one word each
     (re.compile(r"\b(?:(counter|anti)\s*)?clock\s+wise\b"), r"\1clockwise"),
     # "so that you are facing north": the facing is the instruction ("so that" is no pronoun "that")

@@ -179,9 +179,11 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
         return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.DURATION)
     unnumbered = [st for st in steps if st.movement in (Movement.MOVE, Movement.ROTATE)
                   and st.target is None] if not find_quantities(norm) else []
-    if (guessed or unnumbered) and (leftovers or c.lost):
-        # a default move or turn built around words not understood ("take the stairs ...") is a
-        # misreading: never motion, hand the clause on instead
+    way_unread = c.guessed_direction and any(_WAY_INSIDE_RE.search(w) for w in leftovers)
+    if ((guessed or unnumbered) and (leftovers or c.lost)) or way_unread:
+        # a default move or turn built around words not understood ("take the stairs ..."), or a move
+        # whose way was assumed while a word not understood has a way in it ("go backside one metre":
+        # it may be the way) is a misreading: never motion, hand the clause on instead
         return Reading(unread=(text,), confidence=NOTHING_READ_CONFIDENCE, problem=Problem.UNREADABLE)
     c.lost.extend(c.s.text[m.start():m.end()].strip() for m in durations)
     if not steps:
@@ -202,6 +204,8 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
                    through_previous=c.through_previous, open=_is_open(steps, norm), asks=tuple(c.asks))
 
 
+#: A word not read that has a way inside it ("backside", "leftways", "rearward"): it may say the way.
+_WAY_INSIDE_RE: Final = re.compile(r"back|side|left|right|front|rear|revers|ward|round")
 #: Words that give the side of a move or a turn.
 _SIDE_WORD_RE: Final = re.compile(r"\b(?:left|right|forwards?|ahead|straight|back|backwards?|reverse|around|round|"
                                   r"clockwise|counter\s*clockwise|anti\s*clockwise|sideways)\b")

@@ -8,12 +8,14 @@ from collections.abc import Sequence
 from typing import Final
 
 from langnav.language.intent import Amount, Detail, Direction, ElementRef, Intent, Movement, Step
+from langnav.language.offline.amounts import said_again, same_way_again, with_unit_said_before
 from langnav.language.offline.ask import ask_message, spatial
 from langnav.language.offline.composition import read_composed
 from langnav.language.offline.corrections import (
     CANCEL_RE,
     apply_corrections,
     is_bare_verb,
+    is_fragment,
     is_hedge,
     join_fragments,
 )
@@ -102,8 +104,15 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     previous_target: ElementRef | None = None
     asked: tuple[Problem, str, Reading] | None = None  # "which is the largest room?" before "drive into it"
     questions: list[str] = []   # what the reading would have to guess
+    last_asks: tuple[str, ...] = ()  # what the clause before asked, when its one step is the last step
     blocking: list[str] = []    # words left unread that could change where or how far
     for clause in clauses:
+        clause = with_unit_said_before(clause, previous, is_fragment(clause))
+        again = said_again(clause, previous)
+        if again is not None:
+            steps.append(again)  # "turn left ninety, and again": the same turn once more
+            previous = again
+            continue
         reading = read_composed(clause, previous, known_names, previous_target)
         if reading.problem == Problem.QUESTION and reading.referent is not None:
             asked = (reading.problem, clause, reading)
@@ -138,13 +147,23 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
                                                      "text": f"{steps[-1].text}, {clause}"[:500]})
         if reading.amends_previous and steps and new_steps and _amendable(steps[-1], new_steps[0]):
             steps[-1] = _amend(steps[-1], new_steps.pop(0), clause)
-        if steps and new_steps and not sequenced and _restates(steps[-1], new_steps[0], clause):
+        if (reading.amends_previous and steps and new_steps and not sequenced and not _REPEAT_RE.search(clause)
+                and same_way_again(steps[-1], new_steps[0])):
+            steps.pop()  # "seven feet, my bad, six feet": an amount alone said again or put right, the last counts
+        elif steps and new_steps and not sequenced and _restates(steps[-1], new_steps[0], clause):
             new_steps.pop(0)  # "forward two metres. forward two metres.": said again, done once
         elif steps and new_steps and not sequenced and _completes(steps[-1], new_steps[0], clause):
             steps.pop()  # "turn left ... turn left fifty degrees": the same turn said again with its amount
+            for question in last_asks:
+                # "move forward ... you're breaking up ... move forward two metres": the bare move's
+                # question ("how far?") is answered by the move said again with its amount
+                if question in questions and question not in reading.asks:
+                    questions.remove(question)
         while steps and new_steps and _asked_again(steps[-1], new_steps[0]):
             new_steps.pop(0)  # "hold it, hold it"; "where are you? can you tell me where you are?"
         steps.extend(new_steps)
+        if new_steps:
+            last_asks = reading.asks if len(new_steps) == 1 else ()
         if steps:
             previous = steps[-1]
             targets = [s.target for s in steps if s.target is not None]
@@ -294,6 +313,8 @@ def _restates(previous: Step, step: Step, clause: str) -> bool:
         a, b = previous.distance_m, step.distance_m
     else:
         a, b = previous.angle_deg, step.angle_deg
+        if a is None and b is None and previous.amount == step.amount == Amount.DEFAULT:
+            return True  # "robot, turn left, turn left, over": one turn said twice
     return a is not None and b is not None and abs(a - b) <= _SAME_AMOUNT_TOL
 
 
