@@ -324,3 +324,28 @@ def test_a_gap_between_cabinets_is_no_door_the_door_in_the_wall_is() -> None:
     seg = segment_spaces(grid)
     assert len(seg.doors) == 1
     assert math.dist(seg.doors[0].center, (10.05, 1.5)) <= POS_TOL_M
+
+
+def wall_stub_and_pillar() -> OccupancyGrid:
+    """A 9 m x 6 m room; a wall stub runs 3 m south from its north wall at x = 4 and ends in
+    open floor at y = 3; a pillar 0.3 m square stands 0.75 m south of the stub's end."""
+    b = MapBuilder(12.0, 9.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 9.0, 6.0)
+    b.wall(4.0, 6.0, 4.0, 3.0)
+    b.box(3.85, 1.95, 4.15, 2.25)
+    return b.build("wall stub and pillar")
+
+
+def test_the_gap_between_a_wall_stubs_end_and_a_pillar_is_no_door() -> None:
+    """The stub's end is a jamb (its wall runs on along the gap's line), but the pillar's face
+    is no wall: it fills part of a wall's length along the line and stops, a post standing in
+    the floor. A door beside a corner keeps its jamb: there the wall turns across the line."""
+    grid = wall_stub_and_pillar()
+    free, occ, unknown = grid.cells == FREE, grid.cells == OCCUPIED, grid.cells == UNKNOWN
+    r, c = grid.world_to_cell(4.0, 2.6)
+    gap = RawDoor(1, 2, (float(r), float(c)), (0.0, 1.0), 0.7)
+    ev = evidence(free, occ, gap.center_rc, gap.normal_rc, 0.7, grid.resolution_m, DEFAULT_PARAMS, unknown)
+    assert max(ev.along) == pytest.approx(1.0) and min(ev.along) == 0.0
+    assert judge_doors([gap], free, occ, grid.resolution_m, DEFAULT_PARAMS, unknown=unknown)[0] == []
+    seg = segment_spaces(grid)
+    assert len(seg.rooms) == 1 and seg.doors == ()

@@ -266,13 +266,21 @@ def wall_share(occupied: BoolArray, start_rc: tuple[float, float], direction_rc:
 def wall_shares(occupied: BoolArray, start_rc: tuple[float, float], directions_rc: list[tuple[float, float]],
                 resolution_m: float, length_m: float, band_m: float) -> npt.NDArray[np.float64]:
     """:func:`wall_share` along each of ``directions_rc``, all at once."""
+    return np.asarray(wall_hits(occupied, start_rc, directions_rc, resolution_m, length_m, band_m).mean(axis=1),
+                      dtype=np.float64)
+
+
+def wall_hits(occupied: BoolArray, start_rc: tuple[float, float], directions_rc: list[tuple[float, float]],
+              resolution_m: float, length_m: float, band_m: float) -> BoolArray:
+    """Per direction of ``directions_rc`` and step along it from ``start_rc`` (up to
+    ``length_m``): whether an occupied cell lies within ``band_m`` either side of the line."""
     dr = np.array([d[0] for d in directions_rc])[:, None, None]
     dc = np.array([d[1] for d in directions_rc])[:, None, None]
     s = np.arange(_STEP_CELLS, length_m / resolution_m + 1e-9, _STEP_CELLS)[None, :, None]
     b = np.arange(-band_m / resolution_m, band_m / resolution_m + 1e-9, _STEP_CELLS)[None, None, :]
     rows = start_rc[0] + s * dr - b * dc
     cols = start_rc[1] + s * dc + b * dr
-    return np.asarray(_sample(occupied, rows, cols, outside=False).any(axis=2).mean(axis=1), dtype=np.float64)
+    return np.asarray(_sample(occupied, rows, cols, outside=False).any(axis=2), dtype=bool)
 
 
 def _turned(dr: float, dc: float, angle: float) -> tuple[float, float]:
@@ -318,9 +326,16 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     for jamb, sign in (((r1, c1), -1.0), ((r2, c2), 1.0)):
         # The wall runs on along (nearly) the opening's line: jamb to jamb is a short baseline
         # across ragged wall ends, so the wall may leave it at a small angle.
-        shares = wall_shares(occupied, jamb, [*(_turned(sign * tr, sign * tc, a) for a in _ALONG_ANGLES),
-                                              (nr, nc), (-nr, -nc)], resolution_m, wall_m, band_m)
-        along.append(float(shares[:-2].max()))
+        hits = wall_hits(occupied, jamb, [*(_turned(sign * tr, sign * tc, a) for a in _ALONG_ANGLES),
+                                          (nr, nc), (-nr, -nc)], resolution_m, wall_m, band_m)
+        shares = hits.mean(axis=1)
+        # A wall runs on for a wall's length: one that stops short of its last third is a post,
+        # a pillar or a speck of clutter, whatever share of the look it fills.
+        runs_on = hits[:, -max(1, hits.shape[1] // 3):].any(axis=1)
+        # ... unless the wall turns there (a door beside a corner: the short return along the
+        # opening's line, the wall running on across it).
+        turns = shares[-2:].max() >= JAMB_ACROSS_MIN_SHARE
+        along.append(float(np.where(runs_on | turns, shares, 0.0)[:-2].max()))
         across.append(float(shares[-2:].min()))
     furniture = unknown is not None and any(is_furniture(free, unknown, j, resolution_m) for j in jj)
     return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]),
