@@ -130,8 +130,7 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     touches[pairs[:, 1]] = True
     # Where the robot can come up to from the floor it drove on: an area's frontier is the part
     # of its edge there, and only an area with enough of it is worth a trip.
-    near = reachable_floor(grid, params, layers, specks)
-    pairs = pairs[near.ravel()[pairs[:, 0]]]
+    pairs = pairs[reachable_floor(grid, params, layers, specks, pairs[:, 0])]
     worth = _worth_a_trip(grid, params, layers, lab, n, sizes, outside, pairs)
 
     # Map component label -> area index (1-based); all outside components share one index.
@@ -399,11 +398,11 @@ def _edge_adjacent(lab: IntArray, pairs: npt.NDArray[np.int64]) -> BoolArray:
     return out
 
 
-def reachable_floor(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, specks: BoolArray
-                    ) -> BoolArray:
-    """The cells the robot can come up to from the main free space: the cells its body covers
-    (a disc of ``params.robot_radius_m``) somewhere in the largest connected region where its
-    centre fits, and their 8-neighbours.
+def reachable_floor(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, specks: BoolArray,
+                    cells: npt.NDArray[np.int64]) -> BoolArray:
+    """Per cell (flat index): can the robot come up to it from the main free space, i.e. is it
+    a cell its body (a disc of ``params.robot_radius_m``) covers somewhere in the largest
+    connected region where its centre fits, or an 8-neighbour of one?
 
     The robot's centre fits where every blocking cell (occupied, or unknown other than a noise
     speck; the grid's edge too) is at least its radius away, as the planner that drives it to a
@@ -414,9 +413,9 @@ def reachable_floor(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     one a person would send the robot to look at: it cannot drive there, and a goal for it would
     be a spot beside the glass.
     """
-    out = np.zeros(grid.cells.shape, dtype=bool)
+    out = np.zeros(len(cells), dtype=bool)
     rows, cols = nonzero2(layers.free)
-    if len(rows) == 0:
+    if len(rows) == 0 or len(cells) == 0:
         return out
     rects = _disc_rectangles(params.robot_radius_m / grid.resolution_m)
     # Over the free cells' bounding box (a real map's unknown margin is most of it), with room
@@ -435,13 +434,26 @@ def reachable_floor(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     comps = label8(centre)
     if comps.n == 0:
         return out
-    main = comps.labels == 1 + int(np.argmax(comps.sizes[1:]))
-    covered = _rectangle_counts(main, rects, edge=0)
-    body = covered[0]
-    for more in covered[1:]:
-        body |= more
-    out[r0:r1, c0:c1] = dilate8(body)
+    # A cell is come up to when a centre of the main region lies within the disc round it or
+    # round one of its neighbours: looked up at those offsets, on the region padded so that
+    # none falls off it.
+    main = np.pad(comps.labels == 1 + int(np.argmax(comps.sizes[1:])), pad, constant_values=False)
+    rr, cc = np.divmod(cells, grid.width)
+    inside = (rr >= r0) & (rr < r1) & (cc >= c0) & (cc < c1)
+    flat = (rr[inside] - r0 + pad) * main.shape[1] + (cc[inside] - c0 + pad)
+    main_flat = main.ravel()
+    hit = np.zeros(len(flat), dtype=bool)
+    for dr, dc in _disc_and_neighbours(rects):
+        hit |= main_flat[flat + (dr * main.shape[1] + dc)]
+    out[inside] = hit
     return out
+
+
+def _disc_and_neighbours(rects: list[tuple[int, int]]) -> list[tuple[int, int]]:
+    """The offsets (rows, columns) of the disc given by its rectangles, grown by one cell all
+    round (its cells and their 8-neighbours)."""
+    disc = {(dy, dx) for hx, hy in rects for dy in range(-hy, hy + 1) for dx in range(-hx, hx + 1)}
+    return sorted({(dy + a, dx + b) for dy, dx in disc for a in (-1, 0, 1) for b in (-1, 0, 1)})
 
 
 def _rectangle_counts(mask: BoolArray, rects: list[tuple[int, int]], edge: int) -> list[BoolArray]:
