@@ -240,3 +240,36 @@ def test_a_slit_beside_furniture_too_narrow_to_pass_does_not_join_two_rooms() ->
     # The slits are openings to a person (narrow doors), never a way through for the robot.
     assert sorted(round(d.center[0], 2) for d in seg.narrow_doors) == [3.65, 4.35]
     assert all(set(d.connects) == {hall.id, store.id} for d in seg.narrow_doors)
+
+
+def ward_with_windowed_bays() -> OccupancyGrid:
+    """A 2.2 m corridor (y 5.0-7.2) with four 4.5 m bays south of it (y 1-5). Each bay's front
+    is a wall with a 1.8 m sliding door between two 0.45 m windows the laser saw through: short
+    piers of wall (0.4 m) stand between each window and the door."""
+    b = MapBuilder(21.0, 9.0)
+    b.room(1.0, 1.0, 19.0, 7.2)
+    for i in range(4):
+        x0 = 1.0 + 4.5 * i
+        if i:
+            b.wall(x0, 1.0, x0, 5.0)  # the side wall between two bays
+        b.wall(x0, 5.0, x0 + 4.5, 5.0)  # the front, then its openings
+        b.free(x0 + 0.45, 4.8, x0 + 0.9, 5.2)  # a window
+        b.free(x0 + 1.3, 4.8, x0 + 3.1, 5.2)  # the sliding door
+        b.free(x0 + 3.5, 4.8, x0 + 3.95, 5.2)  # a window
+    return b.build("ward with windowed bays")
+
+
+def test_short_piers_between_windows_and_a_door_are_wall_and_each_bay_is_a_room() -> None:
+    grid = ward_with_windowed_bays()
+    seg = segment_spaces(grid)
+    corridor = space_at(seg, grid, 9.0, 6.1)
+    assert corridor.kind == ElementKind.HALLWAY
+    bays = [space_at(seg, grid, x, 3.0) for x in (3.0, 7.5, 12.0, 16.5)]
+    assert len({b.id for b in bays} | {corridor.id}) == 5
+    assert all(b.kind == ElementKind.ROOM for b in bays)
+    assert len(seg.rooms) == 5
+    assert len(seg.doors) == 4
+    for x, bay in zip((3.2, 7.7, 12.2, 16.7), bays, strict=True):
+        d = door_near(seg.doors, x, 5.0)
+        assert set(d.connects) == {corridor.id, bay.id}
+        assert d.width_m == pytest.approx(1.8, abs=0.05)

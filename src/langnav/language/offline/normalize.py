@@ -111,6 +111,17 @@ _IDIOMS: Final = (
     # named (an "it" or a missing "of ..." after "end" points back at the place of the same sentence)
     (re.compile(r"\b(hall|hallway|corridor)\b(.*?)\b(at|to|near|by)\s+the\s+(far\s+|other\s+)?end(?:\s+of\s+it\b|(?!\s+of\b))"),
      r"\1\2\3 the \4end of the \1"),
+    # "face south. south is behind the whiteboard": a sentence saying where a compass point lies is the
+    # speaker explaining, not an instruction (the compass of the map is what "face south" turns to)
+    (re.compile(r"^(?:and\s+|so\s+)?(?:north|south|east|west)(?:\s+is|\s+'s|'s)\s+(?:behind|in\s+front\s+of|over|"
+                r"where|towards?|by|beside|next\s+to|past|beyond|that\s+way|this\s+way|on\s+the\s+side)\b.*$"), ""),
+    # "between the first door on the left and the second one": "one" is the same noun, on the same side
+    (re.compile(r"\bbetween\s+the\s+(" + _ORDINAL + r")\s+(door|doorway|room|obstacle|corner|opening)\b(\s+on\s+(?:your|the|my)\s+"
+                r"(?:left|right)(?:\s+(?:hand\s+)?side)?)?\s+and\s+(?:the\s+)?(" + _ORDINAL + r")\s+one\b"),
+     r"between the \1 \2\3 and the \4 \2\3"),
+    # "between the first two doors on your left": the first and the second of them
+    (re.compile(r"\bbetween\s+the\s+first\s+(?:two|2)\s+(door|doorway|room|obstacle|corner|opening)s\b(\s+on\s+(?:your|the|my)\s+"
+                r"(?:left|right)(?:\s+(?:hand\s+)?side)?)?"), r"between the first \1\2 and the second \1\2"),
     # "back out the door", "back out of the room": leave through it (which way the robot faces while it
     # leaves is Nav2's business, not a backward move of unsaid length)
     (re.compile(r"\bback\s+out\s+(?=(?:of|through|the|this|that|via)\b)"), "go out "),

@@ -52,7 +52,7 @@ from langnav.language.offline.compass import compass_steps
 from langnav.language.offline.details import assign_details
 from langnav.language.offline.idioms import named_turn_alone
 from langnav.language.offline.moves import move_steps
-from langnav.language.offline.names import named, unknown_destination
+from langnav.language.offline.names import named, unknown_destination, unknown_landmark
 from langnav.language.offline.navigation import navigate_steps, stop_steps
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import find_quantities
@@ -138,6 +138,10 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
     phrases, name = find_phrases(c.s, previous_target)
     if name is not None:
         return named(c, name, known_names)
+    if phrases:
+        landmark = unknown_landmark(c.s.masked(), known_names)
+        if landmark is not None:
+            return named(c, landmark, known_names)  # "the room next to the kitchen": which room is a guess
     if start_place is not None:
         phrases.append(Phrase(ref=START_REF, start=start_place.start(), end=start_place.end(),
                                head_start=start_place.start(), detail=Detail.TO))
