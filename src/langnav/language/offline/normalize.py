@@ -126,6 +126,9 @@ _IDIOMS: Final = (
     # "between the first two doors on your left": the first and the second of them
     (re.compile(r"\bbetween\s+the\s+first\s+(?:two|2)\s+(door|doorway|room|obstacle|corner|opening)s\b(\s+on\s+(?:your|the|my)\s+"
                 r"(?:left|right)(?:\s+(?:hand\s+)?side)?)?"), r"between the first \1\2 and the second \1\2"),
+    # "go out and turn right", "step out, please": out of the room the robot is in (no place called "out")
+    (re.compile(r"\b(go|get|step|head|walk|drive|move)\s+out\b(?=\s*(?:$|,|and\b|then\b|now\b|please\b))"),
+     r"\1 out of this room"),
     # "back out the door", "back out of the room": leave through it (which way the robot faces while it
     # leaves is Nav2's business, not a backward move of unsaid length)
     (re.compile(r"\bback\s+out\s+(?=(?:of|through|the|this|that|via)\b)"), "go out "),
