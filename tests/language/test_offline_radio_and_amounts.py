@@ -320,3 +320,25 @@ def test_one_move_said_in_pieces_never_goes_farther_than_the_largest_amount_said
     prompt = frame.format(a=first[0], b=second[0])
     moved = sum(s.distance_m or 0.0 for s in translate_offline(prompt).steps if s.movement == Movement.MOVE)
     assert moved <= max(first[1], second[1]) + 1e-9
+
+
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("where are ya", [("query", None, None, None)]),
+    ("where is you", [("query", None, None, None)]),
+    ("I would like you to move forward a distance of exactly two metres, please", [("move", "forward", 2.0, None)]),
+    ("please rotate to your left by an angle of forty-five degrees", [("rotate", "left", None, 45.0)]),
+    ("move in the backward direction two feet", [("move", "backward", round(2 * FT, 4), None)]),
+    ("go forward eight feet, oh sorry, eight inches", [("move", "forward", round(8 * IN, 4), None)]),
+    ("forward five metres, oops, I meant feet", [("move", "forward", round(5 * FT, 4), None)]),
+    ("one more turn to the left, ninety degrees", [("rotate", "left", None, 90.0)]),
+    ("turn left one more time", [("rotate", "left", None, None)]),
+    # the same amount said again in another unit is one move, the smaller of the two
+    ("move forward two metres, that is, about six and a half feet", [("move", "forward", round(6.5 * FT, 4), None)]),
+    ("go forward ten feet, about three metres", [("move", "forward", 3.0, None)]),
+])
+def test_words_from_a_fourth_set_of_speakers(prompt: str, expected: Plan) -> None:
+    assert _plan(prompt) == expected
+
+
+def test_a_number_word_left_unread_is_asked_about() -> None:
+    assert _asks("rover, advance one two feet, over")

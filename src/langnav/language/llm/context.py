@@ -126,7 +126,12 @@ forward and stop after two metres" -> move forward 2; "a quarter of the way roun
 position" -> pose query; "hold your position" -> stop (not a query); "turn left, turn left" (no again/then) -> \
 one turn; "turn left no right thirty" -> right 30; "move forward seven feet turn right" (no punctuation) -> \
 two steps; "carry on forward" -> move; "be a love and ...", "please do one thing, ..." mean nothing. A vague \
-count ("a few feet", "several metres") -> ask how far, never a guessed number.
+count ("a few feet", "several metres") -> ask how far, never a guessed number. The same amount said again in \
+another unit ("two metres, that is, about six and a half feet") -> one move, the smaller. "forward five metres, \
+oops, I meant feet" -> 1.524 m; "oh sorry, eight inches" corrects like "sorry". "a distance of", "by an angle \
+of", "in a forward direction" only announce the amount or the way; "one more time" / "once more" = again; \
+"one more turn to the left, ninety degrees" -> rotate left 90; "where are ya", "where is you" -> pose query. A \
+number word left over ("advance one two feet") -> ask.
 - Polite frames and remarks change nothing: "is it okay if you ...", "would it be possible for you to ...", \
 "may I ask you to ...", "I'd be grateful if you could ...", "is that a thing you can do?", "sorry if that's a \
 weird number", "so that I can see ...", "I don't want to crash it" (a worry, not a request to crash).

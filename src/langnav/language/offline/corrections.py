@@ -27,7 +27,7 @@ from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB
 
 #: Words that open a correction of the instruction before ("actually", "no wait", "i'm sorry").
 CORRECTION_START_RE: Final = re.compile(
-    r"^(?:(?:actually|no\s+wait|no(?!\s+(?:further|longer|more|need)\b)|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
+    r"^(?:(?:(?:oh|ah|uh|um)\s*,?\s+(?=sorry|no\b|i\s+mean)|actually|no\s+wait|no(?!\s+(?:further|longer|more|need)\b)|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
     r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|my\s+(?:bad|mistake)|or\s+rather|rather|make\s+that|make\s+it|correction|"
     r"oops)\b[\s,]*)+", re.IGNORECASE)
 #: Words that take back what was said before ("never mind", "scratch that").
@@ -180,6 +180,9 @@ def apply_corrections(clauses: list[str]) -> list[str]:
         if correcting and out and _ONE_RE.match(clause):
             out.append(clause)  # "the doorway on the right, I mean the one after the second": it says more
             continue
+        if correcting and out and _UNIT_ONLY_RE.match(normalize(clause)):
+            out[-1] = _unit_corrected(out[-1], normalize(clause))  # "five metres, oops, I meant feet"
+            continue
         if correcting and out:
             out[-1] = _corrected(out[-1], clause) if is_fragment(clause) else _restated(out[-1], clause)
             continue
@@ -187,6 +190,23 @@ def apply_corrections(clauses: list[str]) -> list[str]:
     if take_back is not None:
         _take_back(out, take_back)  # "turn left thirty five degrees, never mind": nothing is left
     return out
+
+
+#: A correction that only names a unit ("I meant feet"): the amount said before, in that unit.
+_UNIT_ONLY_RE: Final = re.compile(r"^(?:in\s+)?(?P<unit>feet|foot|met(?:er|re)s?|inch(?:es)?|yards?|centimet(?:er|re)s?|"
+                                  r"degrees?)$")
+
+
+def _unit_corrected(previous: str, unit: str) -> str:
+    """'forward five metres' corrected by 'feet': the last amount's number with the unit put right (left as
+    said when its unit cannot be told apart from its number)."""
+    norm = normalize(previous)
+    said = [q for q in find_quantities(norm) if q.unit > 0]
+    if not said:
+        return f"{norm} {unit}"  # "turn left forty, I meant degrees": the unit the number lacked
+    q = said[-1]
+    words = norm[q.start:q.end].split()
+    return f"{norm[:q.start]}{' '.join(words[:-1])} {unit}{norm[q.end:]}" if len(words) > 1 else norm
 
 
 def _take_back(out: list[str], everything: bool) -> None:

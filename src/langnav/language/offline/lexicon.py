@@ -310,7 +310,8 @@ QUERY_POSE_PATTERNS: Final = (
     r"\b(?:report|send|give|tell)\s+(?:me\s+|us\s+)?(?:your\s+)?(?:current\s+|present\s+)?"
     r"(?:position|location|pose|coordinates|whereabouts)\b",
     r"\bwhich\s+(?:way|direction)\s+are\s+you\s+(?:facing|pointing|heading|looking)\b",
-    r"\bwhere\s+(?:is\s+it|are\s+we)\b", r"^\s*where\s+(?:you|u)\s+(?:are|r)\b", r"\b(?:tell|show|say|know|report)\b.*\bwhere\s+you\s+are\b", r"\blocali[sz]e\s+yourself\b",
+    r"\bwhere\s+(?:is\s+it|are\s+we)\b", r"^\s*where\s+(?:you|u)\s+(?:are|r)\b",
+    r"\bwhere\s+(?:is|are|r)\s+(?:you|u|ya)\b(?!\s+(?:going|heading|headed|driving|off\s+to))", r"\b(?:tell|show|say|know|report)\b.*\bwhere\s+you\s+are\b", r"\blocali[sz]e\s+yourself\b",
     r"\bwhat\s+is\s+your\s+(?:position|location|pose)\b", r"\bwhere\s+abouts\b",
     r"\bwhat\s+room\s+are\s+you\s+in\b", r"\bwhere\s+have\s+you\s+got\s+to\b",
 )
@@ -421,6 +422,8 @@ FILLER_PATTERNS: Final = (
     r"\b(?:i|we)\s+(?:want|need)\s+(?:you\s+)?(?:to\s+)?", r"\bplease\b", r"\bpls\b", r"\bplz\b",
     r"\bkindly\b", r"\bthanks?(?:\s+you)?(?:\s+so\s+much|\s+a\s+lot)?\b", r"\bthank\s+you\b",
     r"\bcheers\b", r"\bonly\b",
+    # "a distance of two metres", "by an angle of forty-five degrees": the words that announce the amount
+    r"\b(?:(?:for|by|over|through)\s+)?a\s+distance\s+of\b", r"\b(?:(?:by|through)\s+)?an\s+angle\s+of\b",
     r"\bbe\s+(?:a\s+(?:dear|love|darling|star|sweetheart|good\s+robot)|so\s+kind)\s+(?:and|as\s+to)\b",
     r"\bdo\s+me\s+a\s+favou?r(?:\s+and)?\b", r"\b(?:lol|lmao|rofl|haha+|hehe+|omg|btw|tbh)\b", r"\b(?:hey|hi|hello|ok(?:ay)?|alright|all\s+right|right\s+then|so|well|now|um+|uh+|er+m?|hmm+)\b",
     r"\b(?:dear\s+)?robot\b", r"\brobo\b", r"\bbuddy\b", r"\bmate\b", r"\bfirst\s+of\s+all\b",

@@ -83,6 +83,13 @@ _IDIOMS: Final = (
     (re.compile(r"\b(?:do|make|perform)\s+(?:a|one)\s+(?:little\s+)?(?:twirl|pirouette|spin)\b"), "turn 360 degrees"),
     # "a quarter of the way round", "half of the way around": that part of a turn
     (re.compile(r"\b(a\s+quarter|one\s+quarter|half|three\s+quarters)\s+of\s+the\s+way\s+(?:a)?round\b"), r"\1 turn"),
+    # "in a forward direction", "in the counterclockwise direction": that way
+    (re.compile(r"\bin\s+(?:a|the)\s+(forwards?|backwards?|clockwise|counter\s*clockwise|anti\s*clockwise)\s+direction\b"),
+     r"\1"),
+    # "turn left one more time", "once more": again (no amount)
+    (re.compile(r"\b(?:one\s+more\s+time|once\s+more|once\s+again)\b"), "again"),
+    # "one more turn to the left", "another turn": a turn (not one whole turn, not an amount)
+    (re.compile(r"\b(?:one\s+more|another|a\s+further)\s+turn\b(?!\s+(?:of|and))"), "turn"),
     # "a right angle" is 90 degrees (the "right" of it is no side)
     (re.compile(r"\b(?:by\s+)?(?:a|one)\s+right\s+angle\b"), "90 degrees"),
     # "i want see behind", "i need go left": the "to" learners leave out after want / need / like

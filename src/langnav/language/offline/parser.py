@@ -56,7 +56,7 @@ from langnav.language.offline.moves import move_steps
 from langnav.language.offline.names import named, unknown_destination, unknown_landmark
 from langnav.language.offline.navigation import navigate_steps, stop_steps
 from langnav.language.offline.normalize import normalize
-from langnav.language.offline.numbers import find_quantities
+from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS, find_quantities
 from langnav.language.offline.patterns import (
     EXPLORE_RE,
     FILLER_RE,
@@ -174,7 +174,7 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
         # a distance with no verb and no direction ("banana 2", "alert(1)", a lone "2 m") is no
         # instruction of its own: it may only complete the step before it ("move forward, 2 m")
         return Reading(unread=(text,), confidence=NOTHING_READ_CONFIDENCE, problem=Problem.UNREADABLE)
-    if steps and any(NUMBERISH_RE.search(w) for w in leftovers):
+    if steps and (any(NUMBERISH_RE.search(w) for w in leftovers) or _number_word_left([w for x in (*leftovers, *c.lost) for w in x.split()], norm)):
         # a number left unread ("the 25th door", "ninety billion degrees", "3.5.5 m") means the
         # step was read without it: never move on a misread number, ask instead
         return Reading(unread=(text,), confidence=NOTHING_READ_CONFIDENCE, problem=Problem.BAD_NUMBER)
@@ -209,6 +209,15 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
                    through_previous=c.through_previous, open=_is_open(steps, norm), asks=tuple(c.asks))
 
 
+def _number_word_left(leftovers: list[str], norm: str) -> bool:
+    """A number word left unread ("rover, advance one two feet": the "one"): the amount was not read in
+    full. ("one" is also a pronoun, "the one on the left": only right before another number is it one.)"""
+    return any(w in NUMBER_WORD_SET and w != "one" for w in leftovers) or (
+        "one" in leftovers and _ONE_BEFORE_NUMBER_RE.search(norm) is not None)
+
+
+_ONE_BEFORE_NUMBER_RE: Final = re.compile(rf"\bone\s+(?:\d|(?:{NUMBER_WORDS})\b)")
+NUMBER_WORD_SET: Final = frozenset(NUMBER_WORD_LIST)
 #: A word not read that has a way inside it ("backside", "leftways", "rearward"): it may say the way.
 _WAY_INSIDE_RE: Final = re.compile(r"back|side|left|right|front|rear|revers|ward|round")
 #: Words that give the side of a move or a turn.

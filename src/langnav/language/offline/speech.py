@@ -161,7 +161,7 @@ RADIO_NO: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*negative(?:\s+on\s+that)?(?:
 _STATION: Final = r"(?:robot|rover|bot|unit|base|command|control|operator|team|hq|headquarters|scout)"
 RADIO_CALL: Final = re.compile(rf"^\s*(?:{_STATION}\s+to\s+{_STATION}|{_STATION},?\s+this\s+is\s+{_STATION})\s*(?=[,.;!?]|$)",
                                re.IGNORECASE)
-RADIO_NOISE: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*(?:affirmative|roger(?:\s+that)?|copy(?:\s+that)?|wilco|"
+RADIO_NOISE: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*(?:affirmative|roger(?:\s+that)?|copy(?:\s+that)?|wilco|that\s+is|i\.?e|"
                                 r"over(?:\s+and\s+out)?|out)\s*(?=[,.;!?]|$)", re.IGNORECASE)
 #: A number started and said again whole ("four, four and a half metres", "twenty, twenty feet"): the
 #: first try is no amount of its own.

@@ -153,7 +153,7 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
             # ("no", "sorry", "I mean") or adds to it: two readings of how far, so ask (never the sum)
             questions.append(ASK_AMOUNT.format(amounts=f"'{steps[-1].text}', '{clause}'"))
         elif steps and new_steps and not sequenced and _restates(steps[-1], new_steps[0], clause):
-            new_steps.pop(0)  # "forward two metres. forward two metres.": said again, done once
+            steps[-1] = _smaller(steps[-1], new_steps.pop(0))  # "forward two metres. forward two metres.": done once
         elif steps and new_steps and not sequenced and _completes(steps[-1], new_steps[0], clause):
             steps.pop()  # "turn left ... turn left fifty degrees": the same turn said again with its amount
             for question in last_asks:
@@ -292,6 +292,10 @@ _REPEAT_RE: Final = re.compile(r"\b(?:again|another|more|further|twice|second\s+
 _SEQUENCE_RE: Final = re.compile(r"\b(?:then|after\s+that|afterwards|next|followed\s+by)\b", re.IGNORECASE)
 #: Two amounts closer than this are the same amount said again (less than one 3 cm / 10 degree step).
 _SAME_AMOUNT_TOL: Final = 1e-6
+#: Two amounts within this fraction of each other are one amount said again in another unit or rounded
+#: ("two metres, that is, about six and a half feet": 1.98 m; "ten feet, about three metres"): unit
+#: conversions people say in their head are this close; done once, the smaller.
+_SAME_AMOUNT_REL: Final = 0.05
 
 
 def _same_motion_said_again(previous: Step, step: Step, clause: str) -> bool:
@@ -317,7 +321,14 @@ def _restates(previous: Step, step: Step, clause: str) -> bool:
         a, b = previous.angle_deg, step.angle_deg
         if a is None and b is None and previous.amount == step.amount == Amount.DEFAULT:
             return True  # "robot, turn left, turn left, over": one turn said twice
-    return a is not None and b is not None and abs(a - b) <= _SAME_AMOUNT_TOL
+    return a is not None and b is not None and abs(a - b) <= max(_SAME_AMOUNT_TOL, _SAME_AMOUNT_REL * max(a, b))
+
+
+def _smaller(previous: Step, step: Step) -> Step:
+    """Of one motion said twice, the one that goes less far (never farther than either said)."""
+    if step.movement == Movement.MOVE:
+        return step if (step.distance_m or 0.0) < (previous.distance_m or 0.0) else previous
+    return step if (step.angle_deg or 0.0) < (previous.angle_deg or 0.0) else previous
 
 
 def _completes(previous: Step, step: Step, clause: str) -> bool:
