@@ -425,3 +425,36 @@ def test_rooms_counted_from_a_hallway_are_the_rooms_along_it(words: str, room_po
     assert inner is not None and inner.kind == ElementKind.ROOM
     goal = last_goal(plan(f"go into the {words} room on your left", a, (1.8, 6.0, 0.0)))
     assert a.room_at(*goal) is a.room_at(*room_point)
+
+
+# ------------------------------------------------------------------------------ no short cut through a room
+def build_corner_room() -> MapAnalysis:
+    """An L corridor: leg A (y 1-3, x 1-15) then leg B (x 13-15, y 3-15); a room in the bend's inner corner
+    (x 8-13, y 3-8) has a door onto each leg, (10.5, 3) and (13, 5.5): the shortest walk up the corridor
+    cuts through it."""
+    b = MapBuilder(16.0, 16.0)
+    b.room(1.0, 1.0, 15.0, 15.0)
+    b.wall(1.0, 3.0, 13.0, 3.0)
+    b.wall(13.0, 3.0, 13.0, 15.0)
+    b.wall(8.0, 3.0, 8.0, 8.0)
+    b.wall(8.0, 8.0, 13.0, 8.0)
+    b.unknown(1.2, 3.2, 7.8, 14.8)
+    b.unknown(8.2, 8.2, 12.8, 14.8)
+    b.door_h(10.5, 3.0, 0.9)
+    b.door_v(13.0, 5.5, 0.9)
+    return analyze(b.build("corner_room"), DEFAULT_PARAMS)
+
+
+@pytest.mark.parametrize(("prompt", "box"), [
+    ("go to the end of the corridor", (11.5, 15.0, 1.0, 3.5)),       # at the bend
+    ("go halfway down the corridor", (6.0, 9.5, 1.0, 3.0)),          # half of leg A, not through the room
+])
+def test_down_the_corridor_walks_the_corridor(prompt: str, box: tuple[float, float, float, float]) -> None:
+    a = build_corner_room()
+    hall = a.room_at(4.0, 2.0)
+    assert hall is not None and hall.kind == ElementKind.HALLWAY and a.room_at(14.0, 10.0) is hall
+    r = plan(prompt, a, (2.0, 2.0, 0.0))
+    x, y = last_goal(r)
+    assert box[0] <= x <= box[1] and box[2] <= y <= box[3]
+    navs = [c for c in r.commands if isinstance(c, NavigateThroughPoses)]
+    assert all(a.room_at(p[0], p[1]) is hall for c in navs for p in c.poses)

@@ -143,3 +143,11 @@ def test_across_the_hallway_is_read_whole(prompt: str) -> None:
     # "hallway" is not "hall" followed by an unknown place "way"
     step, = translate_offline(prompt).steps
     assert step.target is not None and (step.target.kind, step.target.relation) == (Element.ROOM, Relation.ACROSS)
+
+
+@pytest.mark.parametrize("prompt", ["go out and turn right", "step out, please"])
+def test_go_out_alone_is_out_of_this_room(prompt: str) -> None:
+    # no place called "out": the way out of the room the robot is in
+    out = translate_offline(prompt).steps[0]
+    assert out.detail == Detail.THROUGH and out.target is not None
+    assert (out.target.kind, out.target.in_current_room) == (Element.DOOR, True)

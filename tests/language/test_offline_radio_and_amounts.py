@@ -46,21 +46,31 @@ def test_a_bare_move_said_twice_still_asks_how_far() -> None:
 
 
 @pytest.mark.parametrize(("prompt", "expected"), [
-    ("move forward four metres, er, four feet", [("move", "forward", round(4 * FT, 4), None)]),
     ("go forward seven feet, my bad, six feet", [("move", "forward", round(6 * FT, 4), None)]),
-    ("turn left forty, fifty degrees", [("rotate", "left", None, 50.0)]),
+    ("go forward 2 feet, sorry, 3 feet", [("move", "forward", round(3 * FT, 4), None)]),
+    ("move forward two metres, two metres", [("move", "forward", 2.0, None)]),
 ])
-def test_an_amount_alone_with_no_word_of_more_puts_the_amount_right(prompt: str, expected: Plan) -> None:
+def test_an_amount_alone_put_right_or_said_again_is_done_once(prompt: str, expected: Plan) -> None:
     assert _plan(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "move forward four metres, er, four feet",   # no word corrects the first: which one?
+    "turn left forty, fifty degrees",
+    "go forward ten feet... ten metres",
+])
+def test_a_different_amount_alone_with_no_correcting_word_is_asked_about(prompt: str) -> None:
+    assert _asks(prompt)
 
 
 @given(a=st.integers(1, 30), b=st.integers(1, 30), unit=st.sampled_from(["feet", "metres", "inches"]))
 @example(a=2, b=3, unit="metres")
 def test_an_amount_said_again_never_adds_up(a: int, b: int, unit: str) -> None:
-    """Never farther than the last amount said: "move forward A units, B units" is B units."""
+    """"move forward A units, B units" is A units once when A == B, and asks otherwise: never the sum."""
     metres = {"feet": FT, "metres": 1.0, "inches": IN}[unit]
     steps = translate_offline(f"move forward {a} {unit}, {b} {unit}").steps
-    assert [(s.movement, s.distance_m) for s in steps] == [(Movement.MOVE, pytest.approx(b * metres))]
+    expected = [(Movement.MOVE, pytest.approx(a * metres))] if a == b else []
+    assert [(s.movement, s.distance_m) for s in steps] == expected
 
 
 @pytest.mark.parametrize(("prompt", "expected"), [
@@ -121,6 +131,15 @@ def test_radio_talk(prompt: str, expected: Plan) -> None:
 ])
 def test_digits_that_may_be_a_range_are_asked_about(prompt: str) -> None:
     assert _asks(prompt)
+
+
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("okay so turn right ninety degrees. Again: turn right ninety degrees.", [("rotate", "right", None, 90.0)]),
+    ("turn left ninety. Again, turn left ninety", [("rotate", "left", None, 90.0)]),
+    ("turn left ninety. again.", [("rotate", "left", None, 90.0)] * 2),
+])
+def test_again_opening_the_same_instruction_says_it_again(prompt: str, expected: Plan) -> None:
+    assert _plan(prompt) == expected
 
 
 @given(n=st.integers(10, 9999))
@@ -246,3 +265,58 @@ def test_a_guess_about_how_far_or_which_way_is_asked(prompt: str) -> None:
 
 def test_a_turn_said_twice_in_sequence_is_done_twice() -> None:
     assert _plan("turn left, then turn left") == [("rotate", "left", None, None)] * 2
+
+
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("carry on forward another metre", [("move", "forward", 1.0, None)]),
+    ("advance niner feet, over", [("move", "forward", round(9 * FT, 4), None)]),
+    ("go straight only, three metres", [("move", "forward", 3.0, None)]),
+    ("be a love and turn round", [("rotate", "around", None, 180.0)]),
+    ("where've you got to", [("query", None, None, None)]),
+    ("can you do a twirl", [("rotate", "left", None, 360.0)]),
+    ("come about, then advance one zero feet, over", [("rotate", "around", None, 180.0),
+                                                     ("move", "forward", round(10 * FT, 4), None)]),
+    ("now turn to your left, a quarter of the way round", [("rotate", "left", None, 90.0)]),
+    ("turn to your right, a quarter turn", [("rotate", "right", None, 90.0)]),
+    ("have a look to your right", [("rotate", "right", None, None)]),
+    ("turn left no right thirty degrees", [("rotate", "right", None, 30.0)]),
+    ("move forward seven feet turn right", [("move", "forward", round(7 * FT, 4), None), ("rotate", "right", None, None)]),
+    ("move forward five feet stop", [("move", "forward", round(5 * FT, 4), None), ("stop", None, None, None)]),
+    ("go forward and stop after two metres", [("move", "forward", 2.0, None)]),
+    ("please do one thing, turn left ninety degrees", [("rotate", "left", None, 90.0)]),
+    ("180 then fwd 5 ft", [("rotate", "around", None, 180.0), ("move", "forward", round(5 * FT, 4), None)]),
+    ("one eighty, then go forward 2 m", [("rotate", "around", None, 180.0), ("move", "forward", 2.0, None)]),
+    ("go forward five-ish feet", [("move", "forward", round(5 * FT, 4), None)]),
+    ("go forward 2 metres or 6 feet", [("move", "forward", round(6 * FT, 4), None)]),
+    ("go forward six feet or two metres", [("move", "forward", round(6 * FT, 4), None)]),
+    ("go forward 2 metres and stop after the door", [("move", "forward", 2.0, None), ("navigate", None, None, None)]),
+])
+def test_words_from_a_third_set_of_speakers(prompt: str, expected: Plan) -> None:
+    assert _plan(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "one eighty, then go forward",          # the turn, then a move of unsaid length: asked
+    "move two feet twelve inches",          # no compound (12 inches is a foot): which amount?
+    "okay so advance about two ft, maybe 12 inches.",
+])
+def test_amounts_that_disagree_are_asked_about(prompt: str) -> None:
+    assert _asks(prompt)
+
+
+_SPOKEN_AMOUNTS = st.sampled_from([("two feet", 2 * FT), ("three metres", 3.0), ("eight inches", 8 * IN),
+                                   ("1.5 m", 1.5), ("a yard", 0.9144), ("twenty five feet", 25 * FT)])
+
+
+@given(first=_SPOKEN_AMOUNTS, second=_SPOKEN_AMOUNTS,
+       frame=st.sampled_from(["move forward {a}, {b}", "move forward {a}, i mean {b}", "move forward {a} or {b}",
+                              "move forward {a}, sorry, {b}", "move forward {a}. move forward {a}",
+                              "move forward. you're breaking up. move forward {a}", "go forward {a}, that's {a}",
+                              "uh, go forward, uh, {a}, go forward {a}", "move forward {a}, no, {b}",
+                              "move forward {a}. Again: move forward {a}", "move forward {a}... {b}"]))
+@example(first=("three metres", 3.0), second=("two feet", 2 * FT), frame="move forward {a}, {b}")
+def test_one_move_said_in_pieces_never_goes_farther_than_the_largest_amount_said(
+        first: tuple[str, float], second: tuple[str, float], frame: str) -> None:
+    prompt = frame.format(a=first[0], b=second[0])
+    moved = sum(s.distance_m or 0.0 for s in translate_offline(prompt).steps if s.movement == Movement.MOVE)
+    assert moved <= max(first[1], second[1]) + 1e-9

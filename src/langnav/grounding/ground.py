@@ -1225,7 +1225,13 @@ def _on_the_way(hall: Room, way: compose.Way, s_m: float, s_max: float, ctx: Gro
 def _way_down(hall: Room, direction: Point, ctx: GroundingContext, pose: Pose) -> compose.Way | None:
     """The way down the hallway setting off in ``direction``: the walk to the hallway's farthest cell
     with the way back shut, ending on the hallway's middle line."""
-    walk = walk_from(ctx.space, pose.xy, onward=direction, onward_m=hall.width_m + FOLLOW_CLOSE_MARGIN_M)
+    labels = ctx.analysis.labels
+    start = ctx.space.start_cell(*pose.xy)
+    # down the hallway is along it: a room with two doors onto it is no short cut (from outside the
+    # hallway the walk may start anywhere)
+    inside = start is not None and labels.shape == ctx.space.components.shape and labels[start] == hall.label
+    walk = walk_from(ctx.space, pose.xy, onward=direction, onward_m=hall.width_m + FOLLOW_CLOSE_MARGIN_M,
+                     within=(labels, hall.label) if inside else None)
     if walk is None:
         return None
     cells = np.asarray(hall.cells_xy, dtype=float).reshape(-1, 2)

@@ -20,6 +20,7 @@ from langnav.language.offline import lexicon as lx
 from langnav.language.offline.amounts import unit_word, with_unit
 from langnav.language.offline.clock import CLOCK_RE
 from langnav.language.offline.compass import COMPASS_RE
+from langnav.language.offline.idioms import named_turn_alone
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import find_quantities
 from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE, STOP_RE, rx
@@ -27,7 +28,7 @@ from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB
 #: Words that open a correction of the instruction before ("actually", "no wait", "i'm sorry").
 CORRECTION_START_RE: Final = re.compile(
     r"^(?:(?:actually|no\s+wait|no(?!\s+(?:further|longer|more|need)\b)|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
-    r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|or\s+rather|rather|make\s+that|make\s+it|correction|"
+    r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|my\s+(?:bad|mistake)|or\s+rather|rather|make\s+that|make\s+it|correction|"
     r"oops)\b[\s,]*)+", re.IGNORECASE)
 #: Words that take back what was said before ("never mind", "scratch that").
 CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|forget\s+(?:it|that|everything|all\s+(?:of\s+)?that)|"
@@ -121,7 +122,9 @@ def join_fragments(clauses: list[str], is_open: IsOpen) -> list[str]:
                 i += 1
                 continue
             nxt = clauses[i + 1] if i + 1 < len(clauses) else None
-            if nxt is not None and not is_fragment(nxt) and is_open(nxt) and not _whole_move(clause):
+            if nxt is not None and not is_fragment(nxt) and is_open(nxt) and not _whole_move(clause) \
+                    and named_turn_alone(normalize(clause)) == normalize(clause):
+                # ("one eighty, then go forward": a named turn said alone is that turn, never 180 metres)
                 out.append(f"{nxt} {clause}")
                 i += 2
                 continue

@@ -420,7 +420,9 @@ FILLER_PATTERNS: Final = (
     r"\b(?:i(?:\s+would|\s+will)?|we(?:\s+would)?)\s+(?:like|love|want|need|wish)\s+(?:you\s+)?(?:to\s+)?",
     r"\b(?:i|we)\s+(?:want|need)\s+(?:you\s+)?(?:to\s+)?", r"\bplease\b", r"\bpls\b", r"\bplz\b",
     r"\bkindly\b", r"\bthanks?(?:\s+you)?(?:\s+so\s+much|\s+a\s+lot)?\b", r"\bthank\s+you\b",
-    r"\bcheers\b", r"\b(?:lol|lmao|rofl|haha+|hehe+|omg|btw|tbh)\b", r"\b(?:hey|hi|hello|ok(?:ay)?|alright|all\s+right|right\s+then|so|well|now|um+|uh+|er+m?|hmm+)\b",
+    r"\bcheers\b", r"\bonly\b",
+    r"\bbe\s+(?:a\s+(?:dear|love|darling|star|sweetheart|good\s+robot)|so\s+kind)\s+(?:and|as\s+to)\b",
+    r"\bdo\s+me\s+a\s+favou?r(?:\s+and)?\b", r"\b(?:lol|lmao|rofl|haha+|hehe+|omg|btw|tbh)\b", r"\b(?:hey|hi|hello|ok(?:ay)?|alright|all\s+right|right\s+then|so|well|now|um+|uh+|er+m?|hmm+)\b",
     r"\b(?:dear\s+)?robot\b", r"\brobo\b", r"\bbuddy\b", r"\bmate\b", r"\bfirst\s+of\s+all\b",
     r"\bto\s+begin(?:\s+with)?\b", r"\bstart\s+by\b", r"\bbegin\s+by\b", r"\bjust\b", r"\balso\b",
     r"\bfor\s+me\b", r"\bif\s+you\s+(?:can|could|would|do\s+not\s+mind|please)\b", r"\bgo\s+ahead\s+and\b",
@@ -484,7 +486,7 @@ UNSAFE_PATTERNS: Final = (
 
 #: Verbs of things the robot cannot do (it only drives, turns, stops, explores and reports).
 OUT_OF_SCOPE_PATTERNS: Final = (
-    r"\bpick\s+(?:\w+\s+)?up\b", r"\bgrab\b", r"\bfetch\b", r"\bcarry\b", r"\bbring\s+(?:me|us)\s+(?!to\b|back\b)",
+    r"\bpick\s+(?:\w+\s+)?up\b", r"\bgrab\b", r"\bfetch\b", r"\bcarry\b(?!\s+on\b)", r"\bbring\s+(?:me|us)\s+(?!to\b|back\b)",
     r"\bbring\b(?!\s+(?:me|us)\b)", r"\bmake\s+(?:me|us)\b", r"\bcook\b", r"\bclean\b", r"\bvacuum\b",
     r"\bmop\b", r"\bsweep\b", r"\b(?:open|close)\s+(?:the|a|an|that|this|it|them|your|my|up)\b",
     r"(?<!\bthe\s)(?<!\ba\s)\bclose\s+(?:doors?|doorways?|gates?|windows?)\b",
@@ -618,7 +620,7 @@ TYPOS: Final[dict[str, str]] = {
     "acw": "anticlockwise", "aprox": "approximately", "abt": "about", "lil": "little", "litle": "little",
     "thn": "then", "nd": "and", "rly": "really",
     "arnd": "around", "til": "till", "untill": "until", "b4": "before", "shw": "show",
-    "wru": "where are you", "wya": "where are you", "nrth": "north", "noth": "north", "nort": "north",
+    "niner": "nine", "wru": "where are you", "wya": "where are you", "nrth": "north", "noth": "north", "nort": "north",
     "souht": "south", "suoth": "south", "wset": "west", "esat": "east",
 }
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import StrEnum
 from typing import Final
 
@@ -126,8 +126,13 @@ class Quantity:
     unit: float = 0.0
     #: said as more than what came before ("two more metres", "another foot"): it adds to it
     adds: bool = False
+    #: said as another way of giving the amount before it ("2 metres or 6 feet"): one of the two
+    alternative: bool = False
 
 
+#: Between two amounts: the second is another way of saying the first ("2 metres or 6 feet").
+_OR_BEFORE: Final = re.compile(r"^\s*,?\s*(?:or|maybe|perhaps|possibly|or\s+(?:about|around|roughly|maybe|perhaps|like|so))"
+                               r"(?:\s+(?:about|around|roughly|like))?\s*,?\s*$")
 _ADDS_RE: Final = re.compile(r"\b(?:more|another|further|additional|extra)\b")
 
 #: Two amounts closer than this are the same amount (a millimetre, a hundredth of a degree).
@@ -141,7 +146,8 @@ def one_amount(quantities: list[Quantity]) -> float | None:
     centimetres", "a yard and a foot"): each part in a smaller unit than the one before adds to it.
     The same amount said again, in any unit ("a full spin, three sixty"; "two hundred centimetres,
     that's two metres") is that amount once: adding it would take the robot farther than asked.
-    An amount said to be more ("4 feet, then two more metres") adds to the one before.
+    An amount said to be more ("4 feet, then two more metres") adds to the one before; one said as
+    another way of giving it ("2 metres or 6 feet") is the smaller of the two.
     Anything else (two different amounts in the same unit, or a larger unit after a smaller one)
     is no reading of one amount: the caller asks which one was meant."""
     if not quantities:
@@ -149,12 +155,17 @@ def one_amount(quantities: list[Quantity]) -> float | None:
     total = quantities[0].value
     unit = quantities[0].unit
     for q in quantities[1:]:
+        if q.alternative:
+            total = min(total, q.value)  # "2 metres or 6 feet": never farther than either
+            unit = q.unit
+            continue
         if q.adds:
             total += q.value  # "go 4 feet, two more metres"
             continue
         if abs(q.value - total) <= SAME_AMOUNT_TOL or abs(q.value - quantities[0].value) <= SAME_AMOUNT_TOL:
             continue  # said again
-        if unit > 0 and 0 < q.unit < unit:
+        if unit > 0 and 0 < q.unit < unit and q.value < unit - SAME_AMOUNT_TOL:
+            # (a part of a compound is less than one of the unit before it: "two feet twelve inches" is none)
             total += q.value
             unit = q.unit
             continue
@@ -243,6 +254,10 @@ DIGIT_RUN: Final = re.compile(
     r"(?!\s+(?:point|hundred|thousand|and\s+(?:a\s+)?(?:half|quarter))\b)(?![\w-])", re.IGNORECASE)
 
 
+#: "five-ish feet", "90ish degrees": about that number.
+_ISH: Final = re.compile(rf"\b(?P<num>\d+(?:\.\d+)?|{NUMBER_WORDS})[\s-]?ish\b", re.IGNORECASE)
+
+
 def _digits(m: re.Match[str]) -> str:
     """A run of digit words as the number it spells, when it can only be that number: its digits are
     not one digit said again ("four four": a restart, read there), and two digits one apart ("two
@@ -253,7 +268,7 @@ def _digits(m: re.Match[str]) -> str:
     if words[0] == words[1]:
         words = words[1:]  # "one one five": a stutter on the first digit, then the number
     values = [0 if w == "oh" else _DIGIT_VALUES[w] for w in words]
-    if len(values) < 2 or (len(values) == 2 and abs(values[1] - values[0]) == 1):
+    if len(values) < 2 or (len(values) == 2 and abs(values[1] - values[0]) == 1 and 0 not in values):
         return m.group(0)
     return str(int("".join(map(str, values))))
 
@@ -264,6 +279,7 @@ def canonical_numbers(text: str) -> str:
     dropped ("1,000,000" -> "1000000") and numbers said digit by digit written as the number
     ("one three five" -> "135")."""
     text = _THOUSANDS.sub(lambda m: m.group(0).replace(",", ""), text)
+    text = _ISH.sub(r"about \g<num>", text)
     return DIGIT_RUN.sub(_digits, _SCIENTIFIC.sub(_write_out, text))
 
 
@@ -413,7 +429,9 @@ def find_quantities(text: str) -> list[Quantity]:
             except ValueError:
                 continue
             add(Quantity(QuantityKind.BARE, value, m.start(), m.end()))
-    return sorted(found, key=lambda q: q.start)
+    found.sort(key=lambda q: q.start)
+    return [replace(q, alternative=True) if i and _OR_BEFORE.search(text[found[i - 1].end:q.start]) else q
+            for i, q in enumerate(found)]
 
 
 def _unit_quantity(kind: QuantityKind, m: re.Match[str]) -> Quantity | None:

@@ -41,6 +41,7 @@ from typing import Final
 from langnav.language.intent import (
     Amount,
     Detail,
+    Direction,
     Element,
     ElementRef,
     Movement,
@@ -228,7 +229,10 @@ def _is_open(steps: list[Step], norm: str) -> bool:
             or last.heading_deg is not None:
         return False
     sides = _TURN_SIDE_RE if last.movement == Movement.ROTATE else _SIDE_WORD_RE
-    return last.amount in (Amount.DEFAULT, Amount.LITTLE) or sides.search(norm) is None
+    if last.amount in (Amount.DEFAULT, Amount.LITTLE):
+        return True
+    # a turn around ("180") has its side: either way is the same turn
+    return sides.search(norm) is None and last.direction != Direction.AROUND
 
 
 def _compass_reading(c: Clause, steps: list[Step], open_: bool) -> Reading:

@@ -25,7 +25,7 @@ PHOTO_RE: Final = re.compile(
     # "i want to see behind you", "i'd like to look to the left" (learners: "i want see behind")
     r"|(?:i|we)(?:\s+want|\s+would\s+like|'?d\s+like|\s+need|\s+wanna)\s+(?:to\s+)?(?:see|look)"
     r"(?=\s+(?:behind|around|to\s+(?:the|your)|on\s+(?:the|your)|at\s+(?:the|your))\b)"
-    r"|(?:take|have)\s+a\s+look(?:\s+around)?(?=\s*$)"
+    r"|(?:take|have)\s+a\s+look(?:\s+around)?(?=\s*$|\s+(?:to|on)\s+(?:your|the)\s+(?:left|right)\b)"
     r"|(?:turn|switch)\s+on\s+(?:the\s+|your\s+)?(?:video\s+)?camera|(?:start|begin)\s+(?:recording|filming)"
     r"|record\s+(?:a\s+)?video"
     r"|" + _PHOTO_NOUN + r"\s+(?:please|now)?\s*$)\b")

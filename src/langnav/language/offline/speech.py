@@ -49,10 +49,12 @@ _RESTART: Final = re.compile(r"\b(?:can|could|will|would)\s+you\s+(?:(?!(?:and|t
 CORRECTION_MARKERS: Final = (
     r"actually(?:\s+no)?(?:\s+i\s+meant|\s+i\s+mean)?", r"no,?\s+wait", r"no\s+no", r"wait,?\s+no", r"oh\s+wait",
     r"i\s+meant\s+to\s+say", r"i\s+mean\s+to\s+say", rf"make\s+it(?=\s+(?:\d|a\b|an\b|half|just|only|(?:{NUMBER_WORDS})\b))",
-    r"(?:i'?m|i\s+am|im)\s+sorry", r"sorry", r"i\s+meant", r"i\s+mean", r"i\s+said", r"or\s+rather", r"make\s+that",
+    r"(?:i'?m|i\s+am|im)\s+sorry", r"sorry", r"i\s+meant", r"i\s+mean", r"i\s+said", r"my\s+(?:bad|mistake)", r"or\s+rather", r"make\s+that",
     r"scratch\s+that", r"never\s*mind", r"correction", r"oops",
     # "turn eighty degrees right no eighty five": "no" right before a number corrects the amount
     rf"no(?=\s+(?:\d|a\s+hundred|half|{NUMBER_WORDS})\b)",
+    # "turn left no right thirty degrees": "no" right before another side corrects the side
+    r"(?:(?<=\bleft\s)|(?<=\bright\s))no(?=\s+(?:(?:to\s+(?:the|your)\s+)?(?:left|right)|clockwise|counter\s*clockwise)\b)",
 )
 _MARKER_INSIDE: Final = re.compile(r"(?P<before>\S+)\s+(?=(?:" + "|".join(CORRECTION_MARKERS) + r")\b)",
                                    re.IGNORECASE)
@@ -106,11 +108,13 @@ REQUEST_FRAMES: Final = re.compile(
 REMARKS: Final = re.compile(
     r"(?:^|(?<=[,.;!?])|\b(?=(?:is|would|will)\s+(?:that|this)\b))\s*(?:(?:is|would|will)\s+(?:that|this|it)\s+(?:be\s+)?"
     r"(?:ok(?:ay)?|alright|possible|fine|doable|a\s+(?:thing|problem)|something|too\s+much)\b[^,.;!?]*"
-    r"|sorry\s+if\b[^,.;!?]*|(?:sorry|apologies)\s+(?:about|for)\s+(?:that|this)\b|my\s+(?:bad|mistake)\b"
+    r"|sorry\s+if\b[^,.;!?]*|(?:sorry|apologies)\s+(?:about|for)\s+(?:that|this)\b"
     r"|(?:i|we)\s+(?:do\s+not|don't|dont)\s+want\s+(?:you\s+|it\s+)?to\s+(?:crash|hit|bump|collide|smash|run\s+into)\b"
     r"[^,.;!?]*"
     r"|(?:and\s+)?(?:be\s+)?careful\s+not\s+to\s+(?:crash|hit|bump|collide|smash|run\s+into|touch)\b[^,.;!?]*)"
     r"|\bso\s+(?:that\s+)?(?:i|we)\s+(?:can|could|may|might|will)\b[^,.;!?]*"
+    # "please do one thing, ...": announces the request that follows
+    r"|(?:^|(?<=[,.;!?]))\s*(?:please\s+)?do\s+one\s+thing\b[^,.;!?]*"
     # thanks said ahead: "..., that would be great", "that'd be awesome"
     r"|\b(?:that|it|this)(?:'d|\s+would|\s+will)\s+be\s+(?:(?:really|very|so|just|super)\s+)?(?:great|nice|good|perfect|"
     r"awesome|helpful|wonderful|lovely|fantastic|brilliant|appreciated|ideal|amazing|cool)\b[^,.;!?]*"
@@ -143,7 +147,10 @@ HOLDING_THE_FLOOR: Final = re.compile(r"^\s*(?:(?:oh|um|uh|okay|ok|so)\s*,?\s+)*
 #: again, and are no such marker.)
 RESTATEMENT_MARKERS: Final = re.compile(
     r"[,.;]?\s*\b(?:i\s+say\s+again|say\s+again|i\s+repeat|let\s+me\s+repeat(?:\s+that)?|(?:like|as)\s+i\s+said|"
-    r"in\s+other\s+words|that\s+is\s+to\s+say|once\s+again\s+i\s+say)\b\s*[,.;:]?", re.IGNORECASE)
+    r"in\s+other\s+words|that\s+is\s+to\s+say|once\s+again\s+i\s+say)\b\s*[,.;:]?"
+    # "... Again: move forward 2 m" / "again, turn left": "again" opening what is said once more (said after
+    # it, "turn left again", or alone, "... again.", it asks for the motion once more)
+    r"|(?:^|(?<=[.;!?]))\s*(?:(?:and|so|ok(?:ay)?)\s+)?(?:once\s+)?again\s*[:,;-]\s*(?=[a-z])", re.IGNORECASE)
 #: Radio procedure words, said alone between commas (people who drive robots often talk as on a radio):
 #: "negative" is no (a correction or a refusal, never the "negative" = clockwise of a turn), "affirmative",
 #: "roger", "copy (that)", "wilco" acknowledge, "over" / "over and out" end the message.
@@ -172,6 +179,10 @@ _ALTERNATIVE: Final = (rf"(?:(?:to\s+(?:the|your)\s+)?(?:left|right|forwards?|ba
 CONTRAST_AFTER: Final = re.compile(rf"\b(?P<said>{_ALTERNATIVE})\s*,?\s+(?:and\s+|but\s+)?not\s+{_ALTERNATIVE}\b"
                                    r"(?!\s+(?:but|rather)\b)", re.IGNORECASE)
 CONTRAST_BEFORE: Final = re.compile(rf"\bnot\s+{_ALTERNATIVE}\s*,?\s+(?:but|rather)\s+(?=\S)", re.IGNORECASE)
+#: "go forward and stop after two metres": the amount is how far the move goes (a stop after a place,
+#: "stop after the door", is read where places are).
+STOP_AFTER_AMOUNT: Final = re.compile(rf"\s*,?\s+(?:and\s+)?stop\s+after\s+(?=(?:\d|a\b|an\b|half\b|(?:{NUMBER_WORDS})\b))",
+                                      re.IGNORECASE)
 #: "twenty feet even", "two metres flat", "ninety degrees exactly": the amount, exactly (no word of its own).
 _UNIT_THEN_EXACT: Final = re.compile(
     r"\b(?P<unit>feet|foot|ft|inch(?:es)?|yards?|met(?:er|re)s?|centimet(?:er|re)s?|cm|degrees?)\s+"
@@ -197,6 +208,7 @@ def plain_speech(prompt: str) -> str:
     text = HOLDING_THE_FLOOR.sub("", TAG_QUESTION.sub(".", text))
     text = RESTATEMENT_MARKERS.sub(", ", text)
     text = CONTRAST_AFTER.sub(r"\g<said>", CONTRAST_BEFORE.sub("", text))
+    text = STOP_AFTER_AMOUNT.sub(" ", text)
     text = RADIO_NOISE.sub(" ", RADIO_NO.sub(" no", RADIO_CALL.sub(" ", text)))
     text = _UNIT_THEN_EXACT.sub(r"\g<unit>", NUMBER_RESTART.sub("", text))
     text = REQUEST_FRAMES.sub(" ", text)

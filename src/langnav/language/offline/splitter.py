@@ -29,7 +29,7 @@ _ONE_RE: Final = re.compile(r"^\s*(?:the|that)\s+one\b", re.IGNORECASE)
 _DECIMAL_COMMA: Final = re.compile(r"(?<=\d),(?=\d{1,2}(?!\d))")
 _LEAD_IN: Final = re.compile(r"^\s*(?:(?:please|now|ok(?:ay)?|yeah|yes|alright|so|well|just|robot|um|uh)\s+)*"
                              r"(?:go\s+ahead|go\s+on|come\s+on|try|"
-                             r"be\s+(?:a\s+dear|so\s+kind)|do\s+me\s+a\s+favou?r)\s*$", re.IGNORECASE)
+                             r"be\s+(?:a\s+(?:dear|love|darling|star|sweetheart|good\s+robot)|so\s+kind)|do\s+me\s+a\s+favou?r)\s*$", re.IGNORECASE)
 _AND: Final = re.compile(r"\s+(?:and|&|plus|\+)\s+", re.IGNORECASE)
 #: Words that may stand between "and" and the verb of a new instruction.
 _LEAD_FILLER: Final = frozenset({"please", "also", "then", "now", "just", "immediately", "kindly",
@@ -52,9 +52,20 @@ _STEP_VERBS: Final = frozenset(
 _WEAK_STEP_VERBS: Final = frozenset({"get", "keep", "make", "do", "stay", "position", "point", "have"})
 
 
+#: Speech written with no punctuation ("move forward seven feet turn right"): an amount's unit ends an
+#: instruction, and a verb that starts one right after it starts the next.
+_UNIT_THEN_VERB: Final = re.compile(
+    r"\b(?:feet|foot|ft|inch(?:es)?|yards?|met(?:er|re)s?|centimet(?:er|re)s?|cm|degrees?|deg)\s+"
+    # (a verb said last closes its own instruction: "right 30 degrees rotate" is one turn)
+    r"(?=(?:rotate|pivot|face|move|go|drive|head|advance|proceed|reverse)\s+[a-z0-9]|(?:stop|halt|freeze)\b"
+    # "turn" / "spin" after a unit is a noun ("a 360 degree turn") unless a side follows it ("... turn right")
+    r"|(?:turn|spin)\s+(?:to\s+(?:the|your)\s+)?(?:left|right|around|round|back)\b)",
+    re.IGNORECASE)
+
+
 def split_steps(prompt: str) -> list[str]:
     """The instructions of ``prompt`` (already cleaned), in order, as the user wrote them."""
-    text = _DECIMAL_COMMA.sub(".", prompt)
+    text = _UNIT_THEN_VERB.sub(lambda m: m.group(0).rstrip() + ". ", _DECIMAL_COMMA.sub(".", prompt))
     pieces: list[str] = []
     for sentence in _PUNCTUATION_SPLIT.split(text):
         for i, part in enumerate(_CONNECTIVE_SPLIT.split(sentence)):

@@ -23,7 +23,7 @@ from langnav.language.offline.idioms import plain_idioms
 from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.photos import without_photo
-from langnav.language.offline.reading import ASK_CONFIDENCE, ASK_SIDE
+from langnav.language.offline.reading import ASK_AMOUNT, ASK_CONFIDENCE, ASK_SIDE
 from langnav.language.offline.restarts import (
     drop_insisted_amounts,
     drop_stopped,
@@ -148,8 +148,10 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
         if reading.amends_previous and steps and new_steps and _amendable(steps[-1], new_steps[0]):
             steps[-1] = _amend(steps[-1], new_steps.pop(0), clause)
         if (reading.amends_previous and steps and new_steps and not sequenced and not _REPEAT_RE.search(clause)
-                and same_way_again(steps[-1], new_steps[0])):
-            steps.pop()  # "seven feet, my bad, six feet": an amount alone said again or put right, the last counts
+                and same_way_again(steps[-1], new_steps[0]) and not _restates(steps[-1], new_steps[0], clause)):
+            # "go forward ten feet... ten metres": a different amount alone, with no word that corrects the first
+            # ("no", "sorry", "I mean") or adds to it: two readings of how far, so ask (never the sum)
+            questions.append(ASK_AMOUNT.format(amounts=f"'{steps[-1].text}', '{clause}'"))
         elif steps and new_steps and not sequenced and _restates(steps[-1], new_steps[0], clause):
             new_steps.pop(0)  # "forward two metres. forward two metres.": said again, done once
         elif steps and new_steps and not sequenced and _completes(steps[-1], new_steps[0], clause):
