@@ -205,3 +205,17 @@ def test_unscanned_wing_behind_a_door_is_kept_whole() -> None:
     assert u.interior
     # Corridor (4.225 x 1.2 m) and room (2.85 x 3 m), less the doorway cut 0.2 m into the corridor.
     assert u.area_m2 == pytest.approx(4.225 * 1.2 + 2.85 * 3.0 - 1.0 * 0.2, abs=0.05)
+
+
+def test_outside_frontier_is_its_openings_not_the_gaps_in_a_wall() -> None:
+    # A room with a door out east and a glass north wall (one cell thin) with a 10 cm gap: the
+    # outside area's frontier is at the door, none of it at the gap (x = 2 m, y = 3 m).
+    b = MapBuilder(6.0, 5.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 4.0, 3.0)
+    b.free(0.0, 2.925, 4.0, 3.0).unknown(-0.075, 3.01, 4.075, 3.2)
+    b.rect(-0.075, 2.99, 4.075, 3.01, OCCUPIED).free(2.0, 2.99, 2.1, 3.01)
+    b.door_v(4.075, 1.5, 0.9)
+    (u,) = find_unexplored(b.build(source="door_and_gap"), P).areas
+    assert not u.interior
+    assert len(u.frontier) > 0
+    assert np.all(u.frontier[:, 0] > 3.9)

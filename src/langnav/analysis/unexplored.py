@@ -174,9 +174,14 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     order = np.argsort(fr[:, 0], kind="stable")
     splits = np.searchsorted(fr[order, 0], np.arange(1, n_areas + 2))
 
+    need = math.ceil(params.unexplored_min_frontier_m / grid.resolution_m - 1e-9)
     areas: list[UnexploredArea] = []
     for k in range(1, n_areas + 1):
         sel = order[splits[k - 1]:splits[k]]
+        # Its openings only: the runs of frontier as long as unexplored_min_frontier_m, not the
+        # single cells seen through the gaps of a glass front or a wall's laser holes.
+        run, n_runs = label8_cells(fr[sel, 1], (grid.height, grid.width))
+        sel = sel[(np.bincount(run, minlength=n_runs + 1) >= need)[run]]
         frontier = np.stack([fx[sel], fy[sel]], axis=1) if len(sel) else np.zeros((0, 2))
         areas.append(UnexploredArea(
             id=f"unexplored_{k}",
@@ -204,12 +209,15 @@ def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayer
     need = math.ceil(params.unexplored_min_frontier_m / res - 1e-9)
     worth = np.zeros(n + 1, dtype=bool)
     # (``pairs`` hold only the frontier cells the robot comes up to from the main free space.)
-    # The outside world: enough of its frontier (all its pieces together) within reach.
+    # The outside world: enough of its frontier within reach.
     # Frontier cells that see the region across an edge (4-neighbours), not only through the
     # corner between two occupied cells of a diagonal outline, which no scan passes.
     pairs = pairs[_edge_adjacent(lab, pairs)]
-    out_cells = pairs[outside[pairs[:, 1]], 0]
-    if len(np.unique(out_cells)) >= need:
+    out_cells = np.unique(pairs[outside[pairs[:, 1]], 0])
+    # ... in one opening (a connected run), as for a region inside the map: not the cells seen
+    # through the gaps of a glass front.
+    out_run, n_out_runs = label8_cells(out_cells, (grid.height, grid.width))
+    if n_out_runs and int(np.bincount(out_run, minlength=n_out_runs + 1).max()) >= need:
         worth[outside] = True
     # A region inside the map: one opening (a connected run of its frontier) the robot can come
     # up to along at least unexplored_min_frontier_m (a door, a room's open side; not the gaps
