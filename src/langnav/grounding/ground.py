@@ -73,6 +73,7 @@ from langnav.language.intent import (
 from langnav.language.intent import Element as Kind
 from langnav.places.store import NamedPlace, place_key
 from langnav.plan.commands import (
+    MAX_MOVE_STEPS,
     MOVE_STEP_M,
     ROTATE_STEP_DEG,
     Command,
@@ -407,6 +408,13 @@ def _move(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> Grounded
     if dist <= 0:
         raise GroundingError("A move of 0 m does nothing; say how far, e.g. 'move forward 1 meter'.")
     n = steps_for_distance(dist)
+    if n > MAX_MOVE_STEPS:
+        # One Move goes at most 30 m (plan.commands): farther is a trip to a place, which the
+        # robot plans round obstacles, not a straight blind drive.
+        raise GroundingError(
+            f"Moving {d.value} {dist:g} m is farther than I drive straight in one go "
+            f"({MAX_MOVE_STEPS * MOVE_STEP_M:g} m at most); name a place to go to, or say a shorter "
+            "distance. Nothing was run.")
     real = n * MOVE_STEP_M
     word, offset = _MOVE_HEADING[d]
     a = pose.yaw_rad + offset
