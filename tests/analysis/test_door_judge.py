@@ -18,6 +18,7 @@ from langnav.analysis.door_judge import (
     floor_beyond,
     free_widths,
     is_door,
+    is_furniture,
     judge_doors,
     line_turn_deg,
 )
@@ -283,3 +284,68 @@ def test_a_corridor_running_into_a_hall_has_no_door_there() -> None:
     door = door_near(seg.doors, 1.45, 2.5)
     assert door.width_m == pytest.approx(0.9, abs=POS_TOL_M)
     assert set(door.connects) == {office.id, space_at(seg, grid, 0.7, 2.5).id}
+
+
+def cabinet_row() -> OccupancyGrid:
+    """A 10 m x 6 m open-plan floor with a row of three cabinets (1.5 m long, 0.6 m deep, seen
+    only from around: an outline with the unknown inside) standing free across it at y 3.0-3.6,
+    with 1 m gaps between them; an office east of the floor through a 0.9 m door."""
+    b = MapBuilder(15.0, 8.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 10.0, 6.0).room(10.1, 0.0, 13.0, 3.0).door_v(10.05, 1.5, 0.9)
+    for x0 in (1.0, 3.5, 6.0):
+        b.rect(x0, 3.0, x0 + 1.5, 3.6, OCCUPIED).unknown(x0 + 0.05, 3.05, x0 + 1.45, 3.55)
+    return b.build("cabinet row")
+
+
+def test_a_gap_between_cabinets_is_no_door_the_door_in_the_wall_is() -> None:
+    """The gap between two cabinets has wall-like jambs along its line (the cabinets' faces),
+    but each jamb is a body standing free, unscanned inside, as deep as a cabinet: furniture.
+    The office door's jambs are the building's walls."""
+    grid = cabinet_row()
+    free, occ, unknown = grid.cells == FREE, grid.cells == OCCUPIED, grid.cells == UNKNOWN
+    res = grid.resolution_m
+    r, c = grid.world_to_cell(3.0, 3.3)
+    gap = RawDoor(1, 2, (float(r), float(c)), (1.0, 0.0), 1.0)
+    r, c = grid.world_to_cell(10.05, 1.5)
+    office = RawDoor(1, 3, (float(r), float(c)), (0.0, 1.0), 0.9)
+    assert evidence(free, occ, gap.center_rc, gap.normal_rc, 1.0, res, DEFAULT_PARAMS, unknown).furniture_jamb
+    assert not evidence(free, occ, office.center_rc, office.normal_rc, 0.9, res, DEFAULT_PARAMS, unknown).furniture_jamb
+    doors, rest = judge_doors([gap, office], free, occ, res, DEFAULT_PARAMS, unknown=unknown)
+    assert doors == [office] and rest == [gap]
+    # A closet never entered (1.2 m deep) is walled the same way, but deeper than furniture.
+    r, c = grid.world_to_cell(1.0, 3.3)
+    assert is_furniture(free, unknown, (float(r), float(c)), res)
+    b = MapBuilder(8.0, 8.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 6.0, 6.0).rect(1.0, 3.0, 3.0, 4.2, OCCUPIED).unknown(1.05, 3.05, 2.95, 4.15)
+    closet = b.build("closet")
+    r, c = closet.world_to_cell(1.0, 3.5)
+    assert not is_furniture(closet.cells == FREE, closet.cells == UNKNOWN, (float(r), float(c)), res)
+    # The whole analysis: one floor, the office, and the office door only.
+    seg = segment_spaces(grid)
+    assert len(seg.doors) == 1
+    assert math.dist(seg.doors[0].center, (10.05, 1.5)) <= POS_TOL_M
+
+
+def wall_stub_and_pillar() -> OccupancyGrid:
+    """A 9 m x 6 m room; a wall stub runs 3 m south from its north wall at x = 4 and ends in
+    open floor at y = 3; a pillar 0.3 m square stands 0.75 m south of the stub's end."""
+    b = MapBuilder(12.0, 9.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 9.0, 6.0)
+    b.wall(4.0, 6.0, 4.0, 3.0)
+    b.box(3.85, 1.95, 4.15, 2.25)
+    return b.build("wall stub and pillar")
+
+
+def test_the_gap_between_a_wall_stubs_end_and_a_pillar_is_no_door() -> None:
+    """The stub's end is a jamb (its wall runs on along the gap's line), but the pillar's face
+    is no wall: it fills part of a wall's length along the line and stops, a post standing in
+    the floor. A door beside a corner keeps its jamb: there the wall turns across the line."""
+    grid = wall_stub_and_pillar()
+    free, occ, unknown = grid.cells == FREE, grid.cells == OCCUPIED, grid.cells == UNKNOWN
+    r, c = grid.world_to_cell(4.0, 2.6)
+    gap = RawDoor(1, 2, (float(r), float(c)), (0.0, 1.0), 0.7)
+    ev = evidence(free, occ, gap.center_rc, gap.normal_rc, 0.7, grid.resolution_m, DEFAULT_PARAMS, unknown)
+    assert max(ev.along) == pytest.approx(1.0) and min(ev.along) == 0.0
+    assert judge_doors([gap], free, occ, grid.resolution_m, DEFAULT_PARAMS, unknown=unknown)[0] == []
+    seg = segment_spaces(grid)
+    assert len(seg.rooms) == 1 and seg.doors == ()

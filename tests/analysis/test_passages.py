@@ -548,18 +548,18 @@ def test_a_door_found_at_the_end_of_a_thick_partition_is_that_door() -> None:
 
 
 
-def bench_rows(wall_m: float) -> OccupancyGrid:
+def bench_rows(wall_m: float, depth_m: float = 0.55) -> OccupancyGrid:
     """A 10 x 8.5 m waiting room (x 0..10, y 0..8.5) with a partition ``wall_m`` thick across it
-    at y 6.9 (a 0.9 m doorway at x 8) and three fixed bench rows 0.55 m deep (outline scanned,
-    inside unknown) from x 0.75 to 5.0 at y 1.2, 3.15 and 5.1: each row's end leaves a 0.75 m gap
-    to the west wall, 0.55 m long (the bench's depth), between 1.4 m aisles."""
+    at y 6.9 (a 0.9 m doorway at x 8) and three fixed bench rows ``depth_m`` deep (outline
+    scanned, inside unknown) from x 0.75 to 5.0 at y 1.2, 3.15 and 5.1: each row's end leaves a
+    0.75 m gap to the west wall, as long as the bench is deep, between 1.4 m aisles."""
     b = MapBuilder(12.0, 10.5, origin=(-1.0, -1.0))
     b.room(0.0, 0.0, 10.0, 8.5)
     b.wall(0.0, 6.9, 10.0, 6.9, thickness_m=wall_m)
     b.door_h(8.0, 6.9, 0.9, depth_m=wall_m + 0.1)
     for y0 in (1.2, 3.15, 5.1):
-        b.box(0.75, y0, 5.0, y0 + 0.55).unknown(0.8, y0 + 0.05, 4.95, y0 + 0.5)
-    return b.build(source=f"bench_rows_{wall_m}")
+        b.box(0.75, y0, 5.0, y0 + depth_m).unknown(0.8, y0 + 0.05, 4.95, y0 + depth_m - 0.05)
+    return b.build(source=f"bench_rows_{wall_m}_{depth_m}")
 
 
 def test_typical_wall_thickness_is_read_from_walls_scanned_on_both_sides() -> None:
@@ -586,3 +586,9 @@ def test_gaps_between_bench_ends_and_a_wall_are_passages_when_longer_than_two_wa
 def test_the_same_gaps_in_a_building_of_thick_walls_are_no_passages() -> None:
     # With 0.35 m walls a 0.55 m deep gap is as long as a doorway in one of them.
     assert passages_of(bench_rows(0.35)) == ()
+
+
+def test_a_gap_no_deeper_than_a_doorway_is_no_passage_however_thin_the_walls() -> None:
+    # 0.4 m deep bench ends: within the deepest doorway (door_max_depth_m), even where the
+    # building's partitions are 0.1 m.
+    assert passages_of(bench_rows(0.1, depth_m=0.4)) == ()

@@ -26,6 +26,7 @@ from langnav.analysis.precompute import (
     maximum3,
     median,
     nonzero2,
+    take2,
     truncated_sq_edt,
 )
 from langnav.analysis.unexplored import NEIGHBOURS_8, adjacent_pairs
@@ -216,3 +217,21 @@ def test_fill_holes_fills_a_ring_not_a_notch() -> None:
     ring[1:4, 5] = True  # a bar by the edge: the cell between is open to the edge above
     got = fill_holes(ring)
     assert got[2, 2] and not got[2, 4] and got.sum() == ring.sum() + 1
+
+
+@settings(max_examples=60, deadline=None)
+@given(a=arrays(np.float64, st.tuples(st.integers(1, 30), st.integers(1, 30)),
+                elements=st.floats(-1e6, 1e6, allow_nan=False)),
+       seed=st.integers(0, 2**31 - 1), transposed=st.booleans())
+def test_take2_matches_indexing_by_two_arrays(a: npt.NDArray[np.float64], seed: int, transposed: bool) -> None:
+    """take2 reads what ``a[rows, cols]`` reads, for index arrays of any shape and dtype, on a
+    contiguous array and on a strided view (where it falls back to the indexing itself)."""
+    m = a.T if transposed else a
+    rng = np.random.default_rng(seed)
+    shape = tuple(rng.integers(1, 6, size=int(rng.integers(1, 4))))
+    for dtype in (np.int32, np.int64, np.intp):
+        rows = rng.integers(0, m.shape[0], size=shape).astype(dtype)
+        cols = rng.integers(0, m.shape[1], size=shape).astype(dtype)
+        got = take2(m, rows, cols)
+        assert got.dtype == m.dtype and got.shape == rows.shape
+        assert np.array_equal(got, m[rows, cols])

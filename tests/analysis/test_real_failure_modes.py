@@ -217,3 +217,59 @@ def test_a_rotated_flat_with_lidar_noise_keeps_its_rooms_doors_and_hallway() -> 
 def test_the_whole_analysis_of_the_ray_fan_map_names_one_room() -> None:
     a = analyze(room_with_ray_fan())
     assert [r.kind for r in a.rooms] == [ElementKind.ROOM]
+
+
+def store_behind_a_cabinet() -> OccupancyGrid:
+    """A 12 x 6 m hall and a 12 x 4 m store north of it, parted by a wall whose one doorway
+    (1.0 m) is blocked by a 0.4 m cabinet standing in it: a 0.3 m slit either side."""
+    b = MapBuilder(14.0, 12.0)
+    b.room(1.0, 1.0, 13.0, 11.0)
+    b.wall(1.0, 7.0, 13.0, 7.0)
+    b.door_h(4.0, 7.0, 1.0)
+    b.box(3.8, 6.5, 4.2, 7.5)
+    return b.build("store behind a cabinet")
+
+
+def test_a_slit_beside_furniture_too_narrow_to_pass_does_not_join_two_rooms() -> None:
+    grid = store_behind_a_cabinet()
+    seg = segment_spaces(grid)
+    hall, store = space_at(seg, grid, 6.0, 4.0), space_at(seg, grid, 6.0, 9.0)
+    assert hall is not store
+    assert len(seg.rooms) == 2
+    assert seg.doors == ()
+    # The slits are openings to a person (narrow doors), never a way through for the robot.
+    assert sorted(round(d.center[0], 2) for d in seg.narrow_doors) == [3.65, 4.35]
+    assert all(set(d.connects) == {hall.id, store.id} for d in seg.narrow_doors)
+
+
+def ward_with_windowed_bays() -> OccupancyGrid:
+    """A 2.2 m corridor (y 5.0-7.2) with four 4.5 m bays south of it (y 1-5). Each bay's front
+    is a wall with a 1.8 m sliding door between two 0.45 m windows the laser saw through: short
+    piers of wall (0.4 m) stand between each window and the door."""
+    b = MapBuilder(21.0, 9.0)
+    b.room(1.0, 1.0, 19.0, 7.2)
+    for i in range(4):
+        x0 = 1.0 + 4.5 * i
+        if i:
+            b.wall(x0, 1.0, x0, 5.0)  # the side wall between two bays
+        b.wall(x0, 5.0, x0 + 4.5, 5.0)  # the front, then its openings
+        b.free(x0 + 0.45, 4.8, x0 + 0.9, 5.2)  # a window
+        b.free(x0 + 1.3, 4.8, x0 + 3.1, 5.2)  # the sliding door
+        b.free(x0 + 3.5, 4.8, x0 + 3.95, 5.2)  # a window
+    return b.build("ward with windowed bays")
+
+
+def test_short_piers_between_windows_and_a_door_are_wall_and_each_bay_is_a_room() -> None:
+    grid = ward_with_windowed_bays()
+    seg = segment_spaces(grid)
+    corridor = space_at(seg, grid, 9.0, 6.1)
+    assert corridor.kind == ElementKind.HALLWAY
+    bays = [space_at(seg, grid, x, 3.0) for x in (3.0, 7.5, 12.0, 16.5)]
+    assert len({b.id for b in bays} | {corridor.id}) == 5
+    assert all(b.kind == ElementKind.ROOM for b in bays)
+    assert len(seg.rooms) == 5
+    assert len(seg.doors) == 4
+    for x, bay in zip((3.2, 7.7, 12.2, 16.7), bays, strict=True):
+        d = door_near(seg.doors, x, 5.0)
+        assert set(d.connects) == {corridor.id, bay.id}
+        assert d.width_m == pytest.approx(1.8, abs=0.05)

@@ -137,3 +137,85 @@ def test_unknown_thing_the_robot_saw_all_round_is_no_unexplored_area() -> None:
     (u,) = find_unexplored(b.build(source="patch"), P).areas
     assert u.area_m2 == pytest.approx(64.0, abs=0.1)
     assert u.centroid == pytest.approx((10.0, 9.0), abs=0.03)
+
+
+def glass_front(door: bool) -> OccupancyGrid:
+    """A closed 6 x 4 m room whose east wall is a glass front: the laser went through it (5 cm
+    holes every 0.5 m) and mapped a 3 x 3 m patch of the courtyard beyond, the unknown outside
+    round it. With ``door``, a 1 m doorway in the glass front leads out."""
+    b = MapBuilder(12.0, 6.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 6.0, 4.0)
+    b.free(6.15, 0.5, 9.15, 3.5)
+    for y in np.arange(0.25, 4.0, 0.5):
+        b.free(5.85, float(y), 6.15, float(y) + 0.05)
+    if door:
+        b.door_v(6.0, 2.0, 1.0)
+    return b.build(source=f"glass_front_{door}")
+
+
+def test_courtyard_seen_through_glass_is_no_unexplored_area() -> None:
+    # The courtyard's floor is wide enough for the robot, but it cannot drive there from the
+    # room: nothing to send it to look at.
+    assert find_unexplored(glass_front(door=False), P).areas == ()
+    assert analyze(glass_front(door=False)).unexplored == ()
+
+
+def test_courtyard_reached_through_a_door_is_the_outside_area() -> None:
+    (u,) = find_unexplored(glass_front(door=True), P).areas
+    assert not u.interior
+    # Its frontier is the courtyard's edge, where the robot can drive up to the unknown (the
+    # patch's north, east and south edges: 3 + 3 + 3 m, bar the corners); none of it is in the room.
+    assert np.all(u.frontier[:, 0] > 6.1)
+    assert len(u.frontier) * 0.05 == pytest.approx(9.0, abs=0.4)
+
+
+def doubled_wall() -> OccupancyGrid:
+    """A 3 x 4 m room and, east of it, the 5 x 4 m room the robot mapped from; a loop-closure
+    error drew the wall between them twice, 0.45 m apart, with unknown between the copies. The
+    east room's north-west corner, 1.2 m square, was in a scan shadow, and its wall copy stops
+    there: the cavity and the shadow are one unknown region."""
+    b = MapBuilder(12.5, 6.0, origin=(-1.0, -1.0))
+    b.room(2.0, 0.0, 5.0, 4.0)
+    b.room(5.6, 0.0, 10.6, 4.0)
+    b.unknown(5.075, 0.0, 5.525, 4.0)
+    b.rect(5.0, -0.075, 5.6, 0.075, OCCUPIED).rect(5.0, 3.925, 5.6, 4.075, OCCUPIED)
+    b.unknown(5.525, 2.8, 6.8, 3.925)
+    return b.build(source="doubled_wall")
+
+
+def test_cavity_of_a_doubled_wall_is_cut_off_the_shadow_it_joins() -> None:
+    (u,) = find_unexplored(doubled_wall(), P).areas
+    assert u.interior
+    # The shadow (1.275 x 1.125 m) with at most the strip of cavity beside it (0.45 m more),
+    # not the 2.8 m of cavity below it (1.26 m2 more, centroid 1 m lower).
+    assert 1.275 * 1.125 <= u.area_m2 <= 1.725 * 1.125 + 0.01
+    assert u.centroid[1] > 3.2
+    assert np.all(u.frontier[:, 0] > 5.6)
+
+
+def test_unscanned_wing_behind_a_door_is_kept_whole() -> None:
+    # A 6 x 4 m room; through a 1 m door in its east wall, a 1.2 m wide, 4 m long corridor (never
+    # scanned) leading to a 3 x 3 m room: one area, all of it.
+    b = MapBuilder(15.0, 6.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 6.0, 4.0)
+    b.rect(6.0, 1.25, 10.3, 2.75, OCCUPIED).rect(10.15, 0.35, 13.3, 3.65, OCCUPIED)
+    b.unknown(6.075, 1.4, 10.3, 2.6).unknown(10.3, 0.5, 13.15, 3.5)
+    b.door_v(6.075, 2.0, 1.0)
+    (u,) = find_unexplored(b.build(source="wing"), P).areas
+    assert u.interior
+    # Corridor (4.225 x 1.2 m) and room (2.85 x 3 m), less the doorway cut 0.2 m into the corridor.
+    assert u.area_m2 == pytest.approx(4.225 * 1.2 + 2.85 * 3.0 - 1.0 * 0.2, abs=0.05)
+
+
+def test_outside_frontier_is_its_openings_not_the_gaps_in_a_wall() -> None:
+    # A room with a door out east and a glass north wall (one cell thin) with a 10 cm gap: the
+    # outside area's frontier is at the door, none of it at the gap (x = 2 m, y = 3 m).
+    b = MapBuilder(6.0, 5.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 4.0, 3.0)
+    b.free(0.0, 2.925, 4.0, 3.0).unknown(-0.075, 3.01, 4.075, 3.2)
+    b.rect(-0.075, 2.99, 4.075, 3.01, OCCUPIED).free(2.0, 2.99, 2.1, 3.01)
+    b.door_v(4.075, 1.5, 0.9)
+    (u,) = find_unexplored(b.build(source="door_and_gap"), P).areas
+    assert not u.interior
+    assert len(u.frontier) > 0
+    assert np.all(u.frontier[:, 0] > 3.9)

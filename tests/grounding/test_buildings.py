@@ -366,3 +366,95 @@ def test_between_two_doors_said_with_one_noun(name: str, turn: float, words: str
     a, frame = floor(name)
     r = plan(words, a, pose_in(frame, 2.0, 6.0, 0.0, turn))
     assert math.dist(last_goal(r), frame((5.0, 5.0))) <= 0.75
+
+
+# ------------------------------------------------------------------------------ across from an alcove
+def build_alcove() -> MapAnalysis:
+    """A hallway (y 5-7, x 1-17) with a lift lobby open to it on the north (x 7-11, y 7-10.5), rooms north
+    either side of the lobby and three rooms south, room 2 (x 6-12) straight across from the lobby."""
+    b = MapBuilder(18.0, 12.0)
+    b.room(1.0, 1.0, 17.0, 10.5)
+    b.wall(1.0, 5.0, 17.0, 5.0)
+    b.wall(1.0, 7.0, 7.0, 7.0)
+    b.wall(11.0, 7.0, 17.0, 7.0)
+    b.wall(7.0, 7.0, 7.0, 10.5)
+    b.wall(11.0, 7.0, 11.0, 10.5)
+    b.wall(6.0, 1.0, 6.0, 5.0)
+    b.wall(12.0, 1.0, 12.0, 5.0)
+    for x in (3.5, 9.0, 14.5):
+        b.door_h(x, 5.0, 0.9)
+    b.door_h(4.0, 7.0, 0.9)
+    b.door_h(14.0, 7.0, 0.9)
+    return analyze(b.build("alcove"), DEFAULT_PARAMS)
+
+
+@pytest.mark.parametrize(("prompt", "yaw"), [("turn around, then go into the room across the hall", 90.0),
+                                             ("go into the room across the hall", 270.0)])
+def test_across_the_hall_from_a_lobby_off_it(prompt: str, yaw: float) -> None:
+    # the lobby's cells near the robot run north-south as much as the hallway's run east-west: the
+    # hallway's way is read past the lobby, and across is the side faced (south), not a question
+    a = build_alcove()
+    assert sorted(r.kind.value for r in a.rooms) == ["hallway"] + ["room"] * 5
+    goal = last_goal(plan(prompt, a, (9.0, 9.5, yaw)))
+    assert a.room_at(*goal) is a.room_at(9.0, 3.0)
+
+
+# ------------------------------------------------------------------------------ rooms counted along a hallway
+def build_inner_room() -> MapAnalysis:
+    """A hallway (y 5-7, x 1-17) with three rooms north (x 1-6, 6-11, 11-17; y 7-10), each with a door
+    onto it, and an inner room (x 1-6, y 10-14) behind the first, reached only through it: from the
+    hallway's west end its nearest cell is nearer than the second room's."""
+    b = MapBuilder(18.0, 15.0)
+    b.room(1.0, 5.0, 17.0, 14.0)
+    b.wall(1.0, 7.0, 17.0, 7.0)
+    b.wall(6.0, 7.0, 6.0, 14.0)
+    b.wall(11.0, 7.0, 11.0, 14.0)
+    b.wall(1.0, 10.0, 6.0, 10.0)
+    b.unknown(6.1, 10.1, 17.0, 14.0)
+    b.wall(6.0, 10.0, 17.0, 10.0)
+    for x in (3.5, 9.5, 14.0):
+        b.door_h(x, 7.0, 0.9)
+    b.door_h(3.5, 10.0, 0.9)
+    return analyze(b.build("inner_room"), DEFAULT_PARAMS)
+
+
+@pytest.mark.parametrize(("words", "room_point"), [("second", (8.5, 8.5)), ("third", (14.0, 8.5))])
+def test_rooms_counted_from_a_hallway_are_the_rooms_along_it(words: str, room_point: Point) -> None:
+    a = build_inner_room()
+    inner = a.room_at(3.5, 12.0)
+    assert inner is not None and inner.kind == ElementKind.ROOM
+    goal = last_goal(plan(f"go into the {words} room on your left", a, (1.8, 6.0, 0.0)))
+    assert a.room_at(*goal) is a.room_at(*room_point)
+
+
+# ------------------------------------------------------------------------------ no short cut through a room
+def build_corner_room() -> MapAnalysis:
+    """An L corridor: leg A (y 1-3, x 1-15) then leg B (x 13-15, y 3-15); a room in the bend's inner corner
+    (x 8-13, y 3-8) has a door onto each leg, (10.5, 3) and (13, 5.5): the shortest walk up the corridor
+    cuts through it."""
+    b = MapBuilder(16.0, 16.0)
+    b.room(1.0, 1.0, 15.0, 15.0)
+    b.wall(1.0, 3.0, 13.0, 3.0)
+    b.wall(13.0, 3.0, 13.0, 15.0)
+    b.wall(8.0, 3.0, 8.0, 8.0)
+    b.wall(8.0, 8.0, 13.0, 8.0)
+    b.unknown(1.2, 3.2, 7.8, 14.8)
+    b.unknown(8.2, 8.2, 12.8, 14.8)
+    b.door_h(10.5, 3.0, 0.9)
+    b.door_v(13.0, 5.5, 0.9)
+    return analyze(b.build("corner_room"), DEFAULT_PARAMS)
+
+
+@pytest.mark.parametrize(("prompt", "box"), [
+    ("go to the end of the corridor", (11.5, 15.0, 1.0, 3.5)),       # at the bend
+    ("go halfway down the corridor", (6.0, 9.5, 1.0, 3.0)),          # half of leg A, not through the room
+])
+def test_down_the_corridor_walks_the_corridor(prompt: str, box: tuple[float, float, float, float]) -> None:
+    a = build_corner_room()
+    hall = a.room_at(4.0, 2.0)
+    assert hall is not None and hall.kind == ElementKind.HALLWAY and a.room_at(14.0, 10.0) is hall
+    r = plan(prompt, a, (2.0, 2.0, 0.0))
+    x, y = last_goal(r)
+    assert box[0] <= x <= box[1] and box[2] <= y <= box[3]
+    navs = [c for c in r.commands if isinstance(c, NavigateThroughPoses)]
+    assert all(a.room_at(p[0], p[1]) is hall for c in navs for p in c.poses)

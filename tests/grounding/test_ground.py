@@ -153,3 +153,21 @@ def test_clarification_intent_is_refused_with_its_words(two_rooms: MapAnalysis) 
 def test_pose_in_a_wall_is_refused(two_rooms: MapAnalysis) -> None:
     with pytest.raises(GroundingError, match="no free space around my position"):
         ground(Intent(steps=[step(movement="navigate", target={"kind": "door"})]), two_rooms, (0.2, 0.2, 0.0))
+
+
+def test_a_move_longer_than_one_command_goes_is_refused_clearly() -> None:
+    """'go forward a hundred feet' in a hall with 40 m of clear floor: one Move goes at most 30 m,
+    so the reply says so (it used to fail the command's own validation: 'planning failed')."""
+    from langnav.analysis.pipeline import analyze
+    from langnav.maps.draw import MapBuilder
+
+    b = MapBuilder(46.0, 8.0, 0.1, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 44.0, 6.0)
+    hall = analyze(b.build(source="long hall"))
+    with pytest.raises(GroundingError, match="farther than I drive straight in one go"):
+        ground(Intent(steps=[step(movement="move", direction="forward", distance_m=30.48)]), hall, (1.0, 3.0, 0.0))
+    # 29.9 m is within one command and clear: it runs.
+    cmds = ground(Intent(steps=[step(movement="move", direction="forward", distance_m=29.9)]), hall,
+                  (1.0, 3.0, 0.0)).commands
+    assert [to_bench(c)["command"] for c in cmds] == ["Move"]
+

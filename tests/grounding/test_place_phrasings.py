@@ -95,3 +95,59 @@ def test_towards_an_area_seen_through_an_opening_stops_in_front_of_its_middle() 
     assert y > 1.1  # in the room, not in the opening
     assert abs(x - 5.0) <= 0.5  # in front of its middle
     assert math.dist((x, y), (5.0, 1.0)) <= 1.0  # still "towards": within about 1 m of the edge
+
+
+# ------------------------------------------------------------------------------ landmarks the map cannot know
+@pytest.mark.parametrize(("prompt", "name"), [
+    ("go into the room next to the kitchen", "kitchen"),
+    ("Would you please go into the room across the hall from the bathroom?", "bathroom"),
+    ("go to the door next to the fridge", "fridge"),
+])
+def test_an_element_placed_by_a_place_the_map_cannot_know_is_asked_about(prompt: str, name: str) -> None:
+    # which room is "next to the kitchen" cannot be told from the grid: going to any room is a guess
+    intent = translate_offline(prompt)
+    assert not intent.steps and intent.clarification is not None and name in intent.clarification
+
+
+@pytest.mark.parametrize("prompt", ["go to the door next to the box", "go past the first door on your left",
+                                    "go to the room next to the one you are in", "go next to the door on your left"])
+def test_landmarks_the_map_shows_are_read(prompt: str) -> None:
+    intent = translate_offline(prompt)
+    assert intent.clarification is None and len(intent.steps) == 1
+
+
+def test_a_landmark_the_user_named_is_not_asked_about() -> None:
+    intent = translate_offline("go into the room next to the kitchen", known_names=("kitchen",))
+    assert intent.clarification is None or "don't know" not in intent.clarification
+
+
+def test_a_sentence_saying_where_a_compass_point_lies_is_no_instruction() -> None:
+    intent = translate_offline("Let us try something new. Face south. South is behind the whiteboard.")
+    assert intent.clarification is None
+    step, = intent.steps
+    assert step.movement == Movement.ROTATE and step.heading_deg == 270.0
+
+
+@pytest.mark.parametrize("prompt", ["go halfway between the first door on the left and the second one",
+                                    "wait in between the first two doors on your left"])
+def test_the_second_one_and_the_first_two_name_two_doors(prompt: str) -> None:
+    step, = translate_offline(prompt).steps
+    assert step.detail == Detail.BETWEEN and step.target is not None and step.second_target is not None
+    assert (step.target.ordinal, step.second_target.ordinal) == (1, 2)
+    assert step.target.side == step.second_target.side == Side.LEFT
+
+
+@pytest.mark.parametrize("prompt", ["go in the room across the hallway", "go into the room across the hallway from here",
+                                    "go in the room on the opposite side of the hallway"])
+def test_across_the_hallway_is_read_whole(prompt: str) -> None:
+    # "hallway" is not "hall" followed by an unknown place "way"
+    step, = translate_offline(prompt).steps
+    assert step.target is not None and (step.target.kind, step.target.relation) == (Element.ROOM, Relation.ACROSS)
+
+
+@pytest.mark.parametrize("prompt", ["go out and turn right", "step out, please"])
+def test_go_out_alone_is_out_of_this_room(prompt: str) -> None:
+    # no place called "out": the way out of the room the robot is in
+    out = translate_offline(prompt).steps[0]
+    assert out.detail == Detail.THROUGH and out.target is not None
+    assert (out.target.kind, out.target.in_current_room) == (Element.DOOR, True)

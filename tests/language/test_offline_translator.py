@@ -97,7 +97,8 @@ def test_control_characters_are_ignored() -> None:
 
 
 def test_too_many_steps_are_refused() -> None:
-    intent = translate_offline(", ".join(["turn left"] * 25))
+    # (a turn said again right after itself is one turn: alternate two instructions to make 26 steps)
+    intent = translate_offline(", ".join(["turn left", "move forward 1 m"] * 13))
     assert intent.steps == []
     assert intent.clarification is not None and "20" in intent.clarification
 

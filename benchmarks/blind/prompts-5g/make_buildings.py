@@ -17,6 +17,9 @@ from bld_lib import (RES, OCC, UNK, AT_DOOR, MIDDLE, BETWEEN, Building, rel, cir
 from bld_geom import door_reg, room_reg, through, corner_reg, side_corner, nearest_corner, band
 import bld_check
 
+#: More wordings of the same places (variants.jsonl), written after the first measurement (see README).
+VAR = {}
+
 
 # ------------------------------------------------------------------ helpers (from prompts-4's make_buildings.py)
 def nth(b, pose, doors, side, n, gap=0.5):
@@ -216,6 +219,29 @@ def office():
         ("J", OH, "go through the door in front of you, duh",
          [ntp(within2((6.0, 3.0, 7.4, 5.0), 5.9, 4.0), spaces=["S2"], kind="through:S12")]),
     ]
+    VAR["office"] = [
+        ("A", OA, "head into the second room on the right", [ntp(R("S2"), spaces=["S2"])]),
+        ("B", OA, "wait in between the first two doors on your left", [ntp(door_mid(b, "N1", "N2"), spaces=["C", "N1", "N2"])]),
+        ("C", OA, "go halfway between the first door on the left and the second one", [ntp(door_mid(b, "N1", "N2"), spaces=["C", "N1", "N2"])]),
+        ("D", OA, "Enter the third room on your left.", [ntp(R("N3"), spaces=["N3"])]),
+        ("E", OA, "go to the largest room on this floor", [ntp(R("S4"), spaces=["S4"])]),
+        ("F", OA, "find the smallest room and go in", [ntp(R("N2"), spaces=["N2"])]),
+        ("G", OA, "Go to the restroom.", "clarify"),
+        ("H", OA, "go to the conference room", "clarify"),
+        ("I", OB, "Go in room directly across the hall.", [ntp(R("N3"), spaces=["N3"])]),
+        ("J", OB, "cross the hall into the room opposite", [ntp(R("N3"), spaces=["N3"])]),
+        ("A", OF, "Would you go to the unexplored area at the far end of this corridor, dear?", [ntp(frontB, spaces=["C"], kind="frontier")]),
+        ("B", OF, "drive towards the unmapped bit at the end of the hall", [ntp(frontB, spaces=["C"], kind="frontier")]),
+        ("C", OD, "get next to the obstacle", [ntp(next_to(CAB), spaces=["N3"])]),
+        ("D", OD, "Go to the corner furthest from you.",
+         [ntp(far_corner(OD, n3_corners, lambda c: N3B if c[1] >= 20.0 else N3A), spaces=["N3"])]),
+        ("E", OE, "go to the room across from this one", [ntp(R("N3"), spaces=["N3"])]),
+        ("F", OE, "exit the room and turn left", [ntp(through_r(b, "E1", C_B), spaces=["C"], kind="through:E1"), rot_deg(90)]),
+        ("G", OE, "Go next to the cabinet.", "clarify"),
+        ("H", OG, "park between the 2 obstacles", [ntp(circ(*mid(DK1, DK2), BETWEEN), spaces=["S2"])]),
+        ("I", OH, "Go through door in front and stop in middle of next room.", [ntp(circ(*b.centroid("S2"), MIDDLE), spaces=["S2"])]),
+        ("J", OA, "go to the room beside the kitchen", "clarify"),
+    ]
     return b, C
 
 
@@ -295,6 +321,21 @@ def workshop():
          [ntp(through(b, "OF", "K"), spaces=["K"], kind="through:OF"), rot_deg(-90)]),
         ("B", WH, "room on the other side of the corridor", [ntp(R("OF"), spaces=["OF"])]),
     ]
+    VAR["workshop"] = [
+        ("A", WA, "go into the 2nd room on your right", [ntp(R("R2"), spaces=["R2"])]),
+        ("B", WA, "stop in between the first 2 doors on the right", [ntp(door_mid(b, "R1", "R2"), spaces=["K", "R2"])]),
+        ("C", WA, "head down the corridor to the unexplored area at the end", [ntp(frontK, spaces=["K"], kind="frontier")]),
+        ("D", WA, "Go into the big room on your left.", [ntp(R("H"), spaces=["H"])]),
+        ("E", WB, "go halfway between the two obstacles on your right", [ntp(circ(*mid(SH1, SH2), BETWEEN), spaces=["H"])]),
+        ("F", WB, "go next to the shelf", "clarify"),
+        ("G", WB, "Go to the toilet.", "clarify"),
+        ("H", WB, "go to the unexplored area closest to you", [ntp(st_front, spaces=["ST"], kind="frontier")]),
+        ("I", WD, "Go through door on right side.", [ntp(through(b, "LK", "LK"), spaces=["LK"], kind="through:LK")]),
+        ("J", WD, "go to the tiniest room", [ntp(R("WC"), spaces=["WC"])]),
+        ("A", WF, "Would you leave the room and turn right, dear?", [ntp(through(b, "OF", "K"), spaces=["K"], kind="through:OF"), rot_deg(-90)]),
+        ("B", WH, "room across the corridor", [ntp(R("OF"), spaces=["OF"])]),
+        ("C", WH, "go in the room on the opposite side of the hallway", [ntp(R("OF"), spaces=["OF"])]),
+    ]
     return b, C
 
 
@@ -370,6 +411,22 @@ def ward():
         ("C", VG, "go to the nurses station", "clarify"),
         ("D", VG, "Go into the room behind you on the left.", [ntp(R("A4"), spaces=["A4"])]),
     ]
+    VAR["ward"] = [
+        ("A", VA, "go to door number three on your left", [ntp(D("B3"), spaces=["Hw", "B3", "door:B3"])]),
+        ("B", VA, "stop between the 2nd and 3rd doors on the left", [ntp(door_mid(b, "B2", "B3"), spaces=["Hw", "B2", "B3"])]),
+        ("C", VA, "go down the hall towards the unexplored bit at the end of it", [ntp(frontH, spaces=["Hw"], kind="frontier")]),
+        ("D", VA, "Go to the largest room.", [ntp(R("B3"), spaces=["B3"])]),
+        ("E", VA, "go to the operating theatre", "clarify"),
+        ("F", VB, "hmm, go to the room on the other side of the corridor", [ntp(R("B3"), spaces=["B3"])]),
+        ("G", VB, "Turn around and stop between the two obstacles.", [rot("any", 17, 19), ntp(circ(*mid(BD1, BD2), BETWEEN), spaces=["A3"])]),
+        ("H", VC, "go to the room beside this one", [ntp(R("B3"), spaces=["B3"])]),
+        ("I", VE, "Go in left corner of room.", [ntp(side_corner(VE, b.spaces["A4"][0], "left"), spaces=["A4"])]),
+        ("J", VE, "go out the door and into the room across the hall, duh",
+         [ntp(R("B3"), via=[through(b, "A4", "Hw")], spaces=["B3"], via_spaces=["Hw"])]),
+        ("A", VG, "Would you go into the last room on your right, dear?", [ntp(R("B1"), spaces=["B1"])]),
+        ("B", VG, "room behind you on the left", [ntp(R("A4"), spaces=["A4"])]),
+        ("C", VF, "go through the narrow gap in front of you", [ntp(gap_e, spaces=["A2"])]),
+    ]
     return b, C
 
 
@@ -380,6 +437,22 @@ def main():
         for i, (spk, pose, prompt, exp) in enumerate(C, 1):
             out.append((b, tag, i, spk, pose, prompt, exp))
     bld_check.write(out)
+    write_variants({fn: b for fn, b in ((tag, row[0]) for row in out for tag in [row[0].name])})
+
+
+def write_variants(buildings):
+    """variants.jsonl: the same checks (bld_check.check) and the same id scheme (g5v-)."""
+    import json
+    rows = []
+    for name, cases in VAR.items():
+        b = buildings[name]
+        bld_check.check(b, cases)
+        tag = {"office": "ofc", "workshop": "wks", "ward": "wrd"}[name]
+        for i, (spk, pose, prompt, exp) in enumerate(cases, 1):
+            rows.append({"id": f"g5v-{tag}-{spk}{i:02d}", "map": f"maps/{b.name}.yaml", "pose": b.pose(*pose),
+                         "prompt": prompt, "expect": bld_check.world_expect(b, exp)})
+    (bld_check.HERE / "variants.jsonl").write_text("".join(json.dumps(c) + "\n" for c in rows))
+    print(len(rows), "variant cases")
 
 
 if __name__ == "__main__":

@@ -30,6 +30,11 @@ leaves in walls), or a wall the opening's wall abuts, crossing its line (a door 
 corner). The tip of a laser ray, a speck of clutter, the corner where a corridor's wall turns
 away into a hall, are not: a gap beside them is no door.
 
+*A door's jambs are walls, not furniture.* A jamb on a compact body standing free in the floor
+(all of it within a few metres, its inside never scanned: a cabinet, a desk block, a counter
+seen only from around it), deeper than a wall is thick and shallower than a room, is a piece of
+furniture: the gap beside it is a way past the furniture, not a door.
+
 A candidate between two spaces that is no door is still a way between them (an opening); one
 into unexplored territory is nothing a person would point at.
 
@@ -44,11 +49,12 @@ from typing import Final
 
 import numpy as np
 import numpy.typing as npt
+from scipy import ndimage as ndi
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import truncated_sq_edt
+from langnav.analysis.precompute import take2, truncated_sq_edt
 from langnav.analysis.seg_doors import SEEN_FLOOR_MIN_M, RawDoor
-from langnav.analysis.wall_lines import dominant_directions
+from langnav.analysis.wall_lines import WALL_MAX_THICKNESS_M, dominant_directions
 
 BoolArray = npt.NDArray[np.bool_]
 
@@ -100,6 +106,16 @@ JAMB_REACH_M: Final = 0.3
 #: ... or the jamb is a wall crossing the opening's line: occupied on at least this share of a
 #: wall's length on both sides of the line (a T or a corner the door stands beside).
 JAMB_ACROSS_MIN_SHARE: Final = 0.8
+#: A jamb's body is looked at within this distance (m) of it: a piece of furniture lies
+#: wholly inside it, a wall runs on beyond it (to other walls, or along the unknown outside).
+BODY_LOOK_M: Final = 3.0
+#: A body standing free is furniture when at least this share of it was never scanned (its
+#: inside: a scanned wall is occupied cells, a cabinet an outline around the unknown) ...
+BODY_MIN_UNKNOWN_SHARE: Final = 0.45
+#: ... and it is deeper than a wall is thick (m, WALL_MAX_THICKNESS of the wall lines) and at
+#: most this deep (m): cabinets, desks and counters are 0.4-0.8 m deep; a closet or a small
+#: room never entered, walled in the same way, is deeper.
+BODY_MAX_DEPTH_M: Final = 0.8
 #: The walls around a door, whose directions its line must follow: those within this distance
 #: (m) of it (the room or corridor it opens from; a wing at an angle has its own directions).
 LOCAL_WALLS_M: Final = 3.0
@@ -125,6 +141,9 @@ class DoorEvidence:
     #: space ``a``'s side and on the other, from a wall's thickness to MOUTH_LOOK_M (infinite
     #: where too little of that look is free to tell).
     beyond_width_m: tuple[float, float] = (math.inf, math.inf)
+    #: Whether either jamb is on a piece of furniture (see module doc; False where the unknown
+    #: cells were not given).
+    furniture_jamb: bool = False
 
 
 def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np.float64],
@@ -142,7 +161,7 @@ def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np
     np.minimum(r, h - 1, out=r)
     np.maximum(c, 0, out=c)
     np.minimum(c, w - 1, out=c)
-    got = np.asarray(mask[r, c], dtype=bool)
+    got = np.asarray(take2(mask, r, c), dtype=bool)
     return got | ~inside if outside else got & inside
 
 
@@ -247,13 +266,21 @@ def wall_share(occupied: BoolArray, start_rc: tuple[float, float], direction_rc:
 def wall_shares(occupied: BoolArray, start_rc: tuple[float, float], directions_rc: list[tuple[float, float]],
                 resolution_m: float, length_m: float, band_m: float) -> npt.NDArray[np.float64]:
     """:func:`wall_share` along each of ``directions_rc``, all at once."""
+    return np.asarray(wall_hits(occupied, start_rc, directions_rc, resolution_m, length_m, band_m).mean(axis=1),
+                      dtype=np.float64)
+
+
+def wall_hits(occupied: BoolArray, start_rc: tuple[float, float], directions_rc: list[tuple[float, float]],
+              resolution_m: float, length_m: float, band_m: float) -> BoolArray:
+    """Per direction of ``directions_rc`` and step along it from ``start_rc`` (up to
+    ``length_m``): whether an occupied cell lies within ``band_m`` either side of the line."""
     dr = np.array([d[0] for d in directions_rc])[:, None, None]
     dc = np.array([d[1] for d in directions_rc])[:, None, None]
     s = np.arange(_STEP_CELLS, length_m / resolution_m + 1e-9, _STEP_CELLS)[None, :, None]
     b = np.arange(-band_m / resolution_m, band_m / resolution_m + 1e-9, _STEP_CELLS)[None, None, :]
     rows = start_rc[0] + s * dr - b * dc
     cols = start_rc[1] + s * dc + b * dr
-    return np.asarray(_sample(occupied, rows, cols, outside=False).any(axis=2).mean(axis=1), dtype=np.float64)
+    return np.asarray(_sample(occupied, rows, cols, outside=False).any(axis=2), dtype=bool)
 
 
 def _turned(dr: float, dc: float, angle: float) -> tuple[float, float]:
@@ -269,8 +296,9 @@ _ALONG_ANGLES: Final = tuple(math.radians(a) for a in
 
 def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float],
              normal_rc: tuple[float, float], width_m: float, resolution_m: float,
-             params: AnalysisParams) -> DoorEvidence:
-    """The evidence of one candidate (``center_rc`` in cell-corner coordinates, unit normal)."""
+             params: AnalysisParams, unknown: BoolArray | None = None) -> DoorEvidence:
+    """The evidence of one candidate (``center_rc`` in cell-corner coordinates, unit normal;
+    ``unknown``: the unscanned cells, to tell furniture at a jamb)."""
     # A wall's length: the shortest wall stub that is a jamb; a scanned wall's cells scatter
     # about its line by a few cells (JAMB_BAND_M).
     wall_m = params.seg_wall_min_length_m
@@ -298,12 +326,44 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     for jamb, sign in (((r1, c1), -1.0), ((r2, c2), 1.0)):
         # The wall runs on along (nearly) the opening's line: jamb to jamb is a short baseline
         # across ragged wall ends, so the wall may leave it at a small angle.
-        shares = wall_shares(occupied, jamb, [*(_turned(sign * tr, sign * tc, a) for a in _ALONG_ANGLES),
-                                              (nr, nc), (-nr, -nc)], resolution_m, wall_m, band_m)
-        along.append(float(shares[:-2].max()))
+        hits = wall_hits(occupied, jamb, [*(_turned(sign * tr, sign * tc, a) for a in _ALONG_ANGLES),
+                                          (nr, nc), (-nr, -nc)], resolution_m, wall_m, band_m)
+        shares = hits.mean(axis=1)
+        # A wall runs on for a wall's length: one that stops short of its last third is a post,
+        # a pillar or a speck of clutter, whatever share of the look it fills.
+        runs_on = hits[:, -max(1, hits.shape[1] // 3):].any(axis=1)
+        # ... unless the wall turns there (a door beside a corner: the short return along the
+        # opening's line, the wall running on across it).
+        turns = shares[-2:].max() >= JAMB_ACROSS_MIN_SHARE
+        along.append(float(np.where(runs_on | turns, shares, 0.0)[:-2].max()))
         across.append(float(shares[-2:].min()))
+    furniture = unknown is not None and any(is_furniture(free, unknown, j, resolution_m) for j in jj)
     return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]),
-                        across=(across[0], across[1]), line_turn_deg=turn, beyond_width_m=beyond)
+                        across=(across[0], across[1]), line_turn_deg=turn, beyond_width_m=beyond,
+                        furniture_jamb=furniture)
+
+
+def is_furniture(free: BoolArray, unknown: BoolArray, cell_rc: tuple[float, float], resolution_m: float) -> bool:
+    """Whether the occupied cell at ``cell_rc`` is on a piece of furniture: the body of
+    not-free cells holding it lies within BODY_LOOK_M of it, at least BODY_MIN_UNKNOWN_SHARE of
+    it unscanned, and it is deeper than a wall and at most BODY_MAX_DEPTH_M deep (twice its
+    largest inner clearance)."""
+    rad = math.ceil(BODY_LOOK_M / resolution_m)
+    r, c = math.floor(cell_rc[0]), math.floor(cell_rc[1])
+    h, w = free.shape
+    body = np.ones((2 * rad + 1, 2 * rad + 1), dtype=bool)  # off the grid: not free
+    unk = np.zeros(body.shape, dtype=bool)
+    r0, r1, c0, c1 = max(r - rad, 0), min(r + rad + 1, h), max(c - rad, 0), min(c + rad + 1, w)
+    body[r0 - r + rad:r1 - r + rad, c0 - c + rad:c1 - c + rad] = ~free[r0:r1, c0:c1]
+    unk[r0 - r + rad:r1 - r + rad, c0 - c + rad:c1 - c + rad] = unknown[r0:r1, c0:c1]
+    pieces, _ = ndi.label(body, structure=np.ones((3, 3), dtype=bool))
+    mine = pieces == pieces[rad, rad]
+    if mine[0].any() or mine[-1].any() or mine[:, 0].any() or mine[:, -1].any():
+        return False  # it runs on beyond the look: a wall
+    if (unk & mine).sum() < BODY_MIN_UNKNOWN_SHARE * mine.sum():
+        return False
+    depth_m = 2.0 * float(ndi.distance_transform_edt(mine).max()) * resolution_m
+    return WALL_MAX_THICKNESS_M < depth_m <= BODY_MAX_DEPTH_M
 
 
 def typical_width(t_m: npt.NDArray[np.float64], width_m: npt.NDArray[np.float64], side: float,
@@ -366,6 +426,9 @@ def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wal
     # Along a wall: the opening's line follows the walls' direction.
     if ev.line_turn_deg > ALONG_MAX_TURN_DEG:
         return False
+    # Its jambs are walls, not furniture.
+    if ev.furniture_jamb:
+        return False
     # Both jambs are wall.
     return all(a >= JAMB_ALONG_MIN_SHARE or x >= JAMB_ACROSS_MIN_SHARE
                for a, x in zip(ev.along, ev.across, strict=True))
@@ -401,7 +464,7 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
         bound = math.ceil(SEEN_FLOOR_MIN_M / resolution_m) + 1
         far = np.sqrt(truncated_sq_edt(~unknown, bound).astype(np.float64)) * resolution_m >= SEEN_FLOOR_MIN_M
     for d in candidates:
-        ev = evidence(free, occupied, d.center_rc, d.normal_rc, d.width_m, resolution_m, params)
+        ev = evidence(free, occupied, d.center_rc, d.normal_rc, d.width_m, resolution_m, params, unknown)
         ok = is_door(ev, params, into_unknown=d.b == 0, in_wall_line=d.in_wall_line, width_m=d.width_m)
         if ok and far is not None:
             # A place on each side that is a space: its floor was seen, not only rays through
@@ -419,5 +482,5 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
     return doors, rest
 
 
-__all__ = ["SEEN_FLOOR_MIN_M", "DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "judge_doors",
+__all__ = ["SEEN_FLOOR_MIN_M", "DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "is_furniture", "judge_doors",
            "line_turn_deg", "opens_wider", "typical_width"]

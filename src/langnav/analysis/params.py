@@ -134,8 +134,9 @@ class AnalysisParams:
     #: connected run of frontier cells within a robot radius of where the robot fits): an opening
     #: it can look or drive through, as wide as the robot plus a margin (explore.py's smallest
     #: frontier worth a trip). Laser holes in a wall, and the gaps in the scanned outline of a
-    #: shelf or a cabinet whose inside is unknown, are narrower. (The outside world: this much
-    #: frontier within reach in all.)
+    #: shelf or a cabinet whose inside is unknown, are narrower. The outside world too, and an
+    #: area's reported frontier is its runs this long (the robot reaches them from the floor it
+    #: mapped, see analysis/unexplored.py).
     unexplored_min_frontier_m: float = 0.4
     #: ... and when it is wide enough for the robot to drive in and turn: it holds a disc this
     #: wide (m; two robot widths, the side of unexplored_worth_area_m2's square), counting the

@@ -6,11 +6,11 @@ specks do not block). Skeleton cells whose width is between the robot's diameter
 ``params.passage_max_width_m`` form candidate chains. A chain's *core* is where the width stays
 close to its typical width (the stretch over which the way stays tight, between two near-parallel
 sides, without the flaring mouths; one pinch point does not shorten it). A core is a passage when
-it is longer than a doorway is deep in this building (``WALL_LENGTHS`` of its typical wall
-thickness, :func:`typical_wall_thickness_m`, up to ``params.passage_min_length_m``), wide enough
-for the robot with a margin, has
-sides along most of its length (or a wall along one side and a single doorway in the other: a
-passage with a door off it), solid ones (walls, furniture, a shelf's unscanned inside: not
+it is longer than a doorway could be deep in this building (``params.door_max_depth_m`` and
+``WALL_LENGTHS`` of its typical wall thickness, :func:`typical_wall_thickness_m`; up to
+``params.passage_min_length_m``), wide enough for the robot with a margin, has sides along most
+of its length (or a wall along one side and a single doorway in the other: a passage with a door
+off it), solid ones (walls, furniture, a shelf's unscanned inside: not
 laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
 unexplored area), leads somewhere (both mouths open into free space wider than any passage: a
 dead-end slot does not), is not a door's own gap (a door across its middle; a door at one of its
@@ -19,7 +19,7 @@ deeper than any wall, is no door), and is
 
 * clearly longer than wide (``PASSAGE_MIN_ELONGATION``: an aisle, a checkout lane, a corridor),
   except a strip between a wall and a thing one can walk round (a pallet), which is one only when
-  as elongated as a corridor (an aisle along a shelf); or
+  as elongated as a corridor (an aisle along a shelf) or tight, as below; or
 * a short squeeze, longer than a wall is thick, between a wall and a thing deeper than any wall
   (a sofa, a bench row's end, a buffet counter: not a door leaf) or between two such things (a
   parked bed and a trolley in a corridor, a column and a planter): its sides are no wall with a
@@ -112,8 +112,8 @@ WAY_ROUND_M: Final = 4.0
 TIGHT_WIDTH_M: Final = 0.815
 #: A doorway is as long (along the way through) as its wall is thick, give or take scan noise on
 #: its jambs; a squeeze past things is no doorway when longer than this many wall thicknesses
-#: (plus a cell of that noise). Walls are judged on each map: thin partitions in one building,
-#: thick block walls in another.
+#: (plus a cell of that noise) and than the deepest doorway (``door_max_depth_m``). Walls are
+#: judged on each map: thin partitions in one building, thick block walls in another.
 WALL_LENGTHS: Final = 2.0
 #: The thickest wall: occupied runs thicker than this, scanned from both sides, are furniture or
 #: solid things, not walls (as ``door_max_depth_m`` is the deepest doorway).
@@ -213,11 +213,13 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     # Necessary conditions, vectorised, before the per-core work: a chain of n cells spans at
     # most n * sqrt(2) cells and at most its bounding box's diagonal.
     n_cells = np.bincount(core_id, minlength=m + 1)
-    # Longer than a doorway is deep: judged against this building's own walls (a doorway's way
-    # through is as long as its wall is thick), up to passage_min_length_m.
-    min_len_m = min(params.passage_min_length_m,
-                    WALL_LENGTHS * typical_wall_thickness_m(layers.occupied, layers.free, res) + res)
-    min_cells = min_len_m / res - 1.0
+    # A chain, its flaring mouths included (about a width more than where it has two sides), is
+    # at least passage_min_length_m long; where it has two sides, longer than a doorway could be
+    # deep: deeper than the deepest doorway (door_max_depth_m) and than this building's own walls
+    # (a doorway's way through is as long as its wall is thick), up to passage_min_length_m.
+    min_cells = params.passage_min_length_m / res - 1.0
+    min_len_m = min(params.passage_min_length_m, max(params.door_max_depth_m,
+                    WALL_LENGTHS * typical_wall_thickness_m(layers.occupied, layers.free, res) + res))
     long_enough = np.flatnonzero(n_cells * math.sqrt(2) >= min_cells)
     long_enough = long_enough[long_enough > 0]
     core_r, core_c = np.divmod(core_idx, sub.shape[1])
@@ -259,8 +261,9 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 axis = np.array([0.0, math.copysign(1.0, axis[1])])
             proj = (pts - mean) @ axis
             length_m = (float(proj.max() - proj.min()) + 1.0) * res
-            # Short ones too (a squeeze past furniture beside a wall is as deep as the furniture).
-            if length_m < min_len_m:
+            # Short ones too (a squeeze past furniture beside a wall is as deep as the furniture,
+            # its mouths flaring on either side).
+            if length_m < params.passage_min_length_m:
                 continue
             measured.append((rr, cc, across, pts, mean, axis, proj, length_m))
         side_sets = _side_distances_each(sub, [m[3] for m in measured],
@@ -407,12 +410,15 @@ def typical_wall_thickness_m(occupied: BoolArray, free: BoolArray, res: float) -
     if len(rr) == 0:
         return res
     best = np.full(len(rr), np.inf)
+    span = np.int64(h + w + 1)
     for dr, dc in ((0, 1), (1, 0), (1, 1), (1, -1)):
         # Each line of the direction (key) and the position along it; a run is a stretch of
-        # consecutive positions on one line.
+        # consecutive positions on one line. (np.nonzero lists the cells row by row: already in
+        # line order for rows.)
         key = rr if dr == 0 else cc if dc == 0 else rr - cc if dc == 1 else rr + cc
         pos = cc if dr == 0 else rr
-        order = np.lexsort((pos, key))
+        order = (np.arange(len(rr)) if dr == 0
+                 else np.argsort(key.astype(np.int64) * span + pos, kind="stable"))
         k, p = key[order], pos[order]
         brk = np.ones(len(order), dtype=bool)
         brk[1:] = (k[1:] != k[:-1]) | (p[1:] != p[:-1] + 1)

@@ -20,6 +20,7 @@ The stand-ins give *exactly* what the numpy / scipy call they replace gives (pro
 - :func:`edt_scaled`: ``ndi.distance_transform_edt(mask, sampling=step)`` for a 2-D mask and one
   step for both axes, the distances read from a table of the few (|drow|, |dcol|) offsets;
 - :func:`fill_holes`: ``ndi.binary_fill_holes`` of a 2-D mask, by one labelling of the rest;
+- :func:`take2`: ``a[rows, cols]`` (a gather by two index arrays), as one flat take;
 - :func:`approximate_polygon`: ``skimage.measure.approximate_polygon`` (Douglas-Peucker), all
   the segments of a level of its recursion at once.
 
@@ -418,5 +419,15 @@ def edt_scaled(mask: BoolArray, step: float) -> npt.NDArray[np.float64]:
     a = np.arange(int(dr.max()) + 1, dtype=np.float64) * s
     b = np.arange(int(dc.max()) + 1, dtype=np.float64) * s
     table = np.sqrt((a * a)[:, None] + (b * b)[None, :])
-    out: npt.NDArray[np.float64] = table[dr, dc]
-    return out
+    return take2(table, dr, dc)
+
+
+def take2(a: npt.NDArray[_S], rows: npt.NDArray[np.integer], cols: npt.NDArray[np.integer]) -> npt.NDArray[_S]:
+    """``a[rows, cols]`` for a 2-D array and index arrays of one shape, every index inside the
+    array: the same values, read by one flat ``np.take`` (numpy's indexing by two arrays walks a
+    general multi-index iterator, several times slower per element)."""
+    if not a.flags.c_contiguous:
+        return a[rows, cols]
+    flat = np.multiply(rows, a.shape[1], dtype=np.intp)
+    flat += cols
+    return np.take(a.reshape(-1), flat)

@@ -23,6 +23,8 @@ and merging steps of ROSE², RA-L 2022):
    both of its jambs (ROSE²'s rooms bounded by the building's wall lines, in local form).
 5. *Jambs*: the widest opening left between two spaces must be cut in a wall: both of its jambs
    belong to the wall network or to a wall stub running along the gap (:class:`JambJudge`).
+   A crack narrower than a door (a slit beside a cabinet, a pane of a glass front) is no way
+   through: failing the test, it does not join the spaces; their wider openings decide.
 6. A space whose opening is wide for its size (``seg_merge_gap_ratio``: a bay) and pieces
    smaller than ``room_min_area_m2`` join their neighbour; isolated fragments below that size
    are dropped. A single door's width cut in a wall across a part of a small room's side (a
@@ -42,6 +44,7 @@ from skimage.segmentation import watershed
 
 from langnav.analysis.params import AnalysisParams
 from langnav.analysis.precompute import Components, GridLayers, dilate8, edt_scaled, maximum3
+from langnav.analysis.wall_lines import dominant_directions
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN
 
 BoolArray = npt.NDArray[np.bool_]
@@ -61,6 +64,11 @@ SINGLE_DOOR_MAX_M: Final = 1.0
 #: A bay is open across at least this share of its width along the opening; a doorway into a
 #: small room (a bathroom, a store) takes a smaller part of the wall it is cut in.
 BAY_MIN_OPEN_SHARE: Final = 0.6
+#: A piece of a wall line is no thicker than a wall (m; the thickest interior wall).
+WALL_LINE_PIECE_MAX_THICKNESS_M: Final = 0.3
+#: Wall cells within this many cells across a piece's own line are in line with it (scanned
+#: walls wobble a cell, and a rotated wall's staircase another half).
+WALL_LINE_BAND_CELLS: Final = 1.5
 #: 3x3 neighbourhood: 8-connectivity for components of cells.
 EIGHT: Final = np.ones((3, 3), dtype=bool)
 
@@ -73,6 +81,9 @@ class Floor:
     free: BoolArray  # the free cells of the grid (after speck removal)
     exterior: BoolArray  # unknown cells that are not small holes (unexplored territory)
     clearance_m: FloatArray  # Euclidean distance of floor cells to the nearest non-floor cell
+    #: small pieces of non-floor that stand in a wall line (piers between windows, door frames):
+    #: walls, however short (see :func:`_on_wall_lines`)
+    wall_pieces: BoolArray | None = None
 
 
 def _small_components(mask: BoolArray, max_cells: float, *, exclude_border: bool = False,
@@ -114,11 +125,11 @@ def clean_floor(cells: npt.NDArray[np.int8], resolution_m: float, params: Analys
                               components=unk_comp)
     floor = free | holes
     exterior = unknown & ~holes
-    islands = _furniture(floor, resolution_m, params)
+    islands, pieces = _furniture(floor, resolution_m, params, occupied)
     floor = floor | islands
     exterior &= ~islands
     clearance = edt_scaled(floor, resolution_m)
-    return Floor(floor=floor, free=free, exterior=exterior, clearance_m=clearance)
+    return Floor(floor=floor, free=free, exterior=exterior, clearance_m=clearance, wall_pieces=pieces)
 
 
 def wall_stub_length(mask: BoolArray, resolution_m: float, params: AnalysisParams) -> float:
@@ -132,26 +143,29 @@ def wall_stub_length(mask: BoolArray, resolution_m: float, params: AnalysisParam
     return length if stub else 0.0
 
 
-def _furniture(floor: BoolArray, resolution_m: float, params: AnalysisParams) -> BoolArray:
+def _furniture(floor: BoolArray, resolution_m: float, params: AnalysisParams,
+               occupied: BoolArray | None = None) -> tuple[BoolArray, BoolArray]:
     """Free-standing clutter: small pieces of non-floor apart from the walls (tables with their
     chairs, cabinets, columns, unscanned wedges between laser rays), but not thin wall stubs.
 
     Pieces closer than ``seg_jamb_join_m`` are one piece. Rooms are segmented as if these were
-    floor (ROSE² "decluttering"): furniture must not split a room.
+    floor (ROSE² "decluttering"): furniture must not split a room. Returns the furniture and
+    the small pieces kept as walls because they stand in a wall line (``occupied`` given).
     """
     cell_area = resolution_m * resolution_m
     # Chessboard distance: a square neighbourhood is as good as a disc for grouping, and cheap.
     # Floor cells within half the join distance of two pieces bridge a gap up to the join distance.
     join_cells = int(params.seg_jamb_join_m / 2 / resolution_m + 1e-9)
     solid = ~floor
+    none = np.zeros_like(floor)
     if not solid.any():
-        return np.zeros_like(floor)
+        return none, none
     # The non-floor grown by join_cells (a square): the cells within that chessboard distance.
     grouped = dilate8(solid) if join_cells == 1 else \
         ndi.maximum_filter(solid, size=2 * join_cells + 1, mode="constant", cval=False)
     comp, n = ndi.label(grouped, structure=EIGHT)
     if n == 0:
-        return np.zeros_like(floor)
+        return none, none
     area = np.bincount(comp[solid], minlength=n + 1) * cell_area
     small = area <= params.seg_island_max_area_m2
     small[0] = False
@@ -167,7 +181,68 @@ def _furniture(floor: BoolArray, resolution_m: float, params: AnalysisParams) ->
             continue
         if wall_stub_length((comp[sl] == k) & solid[sl], resolution_m, params) > 0:
             small[k] = False
-    return small[comp] & solid
+    pieces = none
+    if occupied is not None and small.any():
+        in_line = _on_wall_lines(comp, small, objs, occupied & solid, resolution_m, params)
+        small &= ~in_line
+        pieces = in_line[comp] & solid
+    return small[comp] & solid, pieces
+
+
+def _on_wall_lines(comp: IntArray, small: BoolArray, objs: list[tuple[slice, slice] | None],
+                   wall: BoolArray, resolution_m: float, params: AnalysisParams) -> BoolArray:
+    """Which small pieces of ``comp`` (``small``) are short pieces of a wall line: as thin as a
+    wall, and in line with wall on both sides within a double door's width (the piers between
+    windows, a door frame beside a glass panel, a short wall between a door and a window). A
+    person sees them as the wall they stand in, not as furniture: the wall line runs on through
+    them, whatever the laser saw of the glass beside them. Pieces in line with others of their
+    kind count when the row reaches the wall network on one side (a row of piers)."""
+    res = resolution_m
+    dirs = dominant_directions(wall & ~small[comp])
+    found = np.zeros_like(small)
+    if not dirs:
+        return found
+    thin = WALL_LINE_PIECE_MAX_THICKNESS_M / res + 1.0
+    reach = params.door_wide_max_width_m / res
+    pad = math.ceil(reach) + 2
+    h, w = wall.shape
+    # Per piece: the pieces in line with it on either side ('network' or small ones).
+    sides: dict[int, tuple[set[int], set[int]]] = {}
+    for k in np.flatnonzero(small).tolist():
+        sl = objs[k - 1]
+        if sl is None:
+            continue
+        rr, cc = np.nonzero((comp[sl] == k) & wall[sl])
+        if rr.size == 0:
+            continue
+        rr, cc = rr + (sl[0].start - max(sl[0].start - pad, 0)), cc + (sl[1].start - max(sl[1].start - pad, 0))
+        win = (slice(max(sl[0].start - pad, 0), min(sl[0].stop + pad, h)),
+               slice(max(sl[1].start - pad, 0), min(sl[1].stop + pad, w)))
+        sub: IntArray | None = None
+        for theta in dirs:
+            ct, st = math.cos(theta), math.sin(theta)
+            u, v = cc * ct + rr * st, -cc * st + rr * ct
+            thick = float(v.max() - v.min())
+            if thick > thin or u.max() - u.min() + 1 < STUB_MIN_ELONGATION * (thick + 1):
+                continue  # not a thin piece along this direction (a compact one: a post, a box)
+            if sub is None:
+                sub = comp[win]
+                orr, occ = np.nonzero(wall[win] & (sub != k))
+            ou, ov = occ * ct + orr * st, -occ * st + orr * ct
+            on = np.abs(ov - (v.max() + v.min()) / 2) <= thick / 2 + WALL_LINE_BAND_CELLS
+            left = on & (ou < u.min()) & (ou >= u.min() - reach)
+            right = on & (ou > u.max()) & (ou <= u.max() + reach)
+            if left.any() and right.any():
+                sides[k] = (set(sub[orr[left], occ[left]].tolist()), set(sub[orr[right], occ[right]].tolist()))
+                break
+    changed = True
+    while changed:
+        changed = False
+        for k, (lk, rk) in sides.items():
+            if not found[k] and any(not small[j] or found[j] for j in lk | rk):
+                found[k] = True
+                changed = True
+    return found
 
 
 # -- basins and their adjacency ----------------------------------------------------------------
@@ -225,7 +300,7 @@ class JambJudge:
     """
 
     def __init__(self, floor: BoolArray, clearance_m: FloatArray, resolution_m: float,
-                 params: AnalysisParams) -> None:
+                 params: AnalysisParams, wall_pieces: BoolArray | None = None) -> None:
         self.res = resolution_m
         self.params = params
         self.obstacle = ~floor
@@ -239,6 +314,11 @@ class JambJudge:
         self.objs = ndi.find_objects(self.comp)
         self._cache: dict[int, float] = {}
         self._axes: dict[int, tuple[float, float]] = {}
+        # Pieces holding a piece of a wall line are walls, however short.
+        self.in_wall_line = np.zeros(int(self.comp.max()) + 1, dtype=bool)
+        if wall_pieces is not None and wall_pieces.any():
+            self.in_wall_line[self.comp[wall_pieces & self.obstacle]] = True
+            self.in_wall_line[0] = False
 
     def _stub(self, k: int) -> float:
         """The length of the small piece ``k`` if it is a wall stub, else 0."""
@@ -266,7 +346,7 @@ class JambJudge:
     def structural(self, jamb: tuple[int, int], tangent: tuple[float, float]) -> bool:
         """Is the non-floor at ``jamb`` a wall that a doorway along ``tangent`` can be cut in?"""
         k = int(self.comp[jamb])
-        if self.sizes[k] >= self.params.seg_wall_network_min_area_m2:
+        if self.sizes[k] >= self.params.seg_wall_network_min_area_m2 or self.in_wall_line[k]:
             return True
         length = self._stub(k)
         if length <= 0:
@@ -483,6 +563,11 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
     # A crossing whose jambs are not both walls is a gap around furniture: one space.
     # Two spaces are judged on their widest opening: a wall with several gaps (a dashed wall
     # in a drawing, a doorway beside a broken wall) keeps them apart if that one is a doorway.
+    # A crack too narrow to walk through (narrower than the narrowest door) is no way between
+    # two spaces whatever stands at its sides: beside furniture it is a slit behind a cabinet,
+    # in a glass front a pane the laser saw through; it neither joins them nor settles that
+    # they are apart (their wider openings are judged on their own).
+    crack_clear = (params.door_min_width_m - resolution_m) / 2
     if judge is not None:
         judged: set[tuple[int, int]] = set()
         for a, b, s, loc in sorted(kept, key=lambda e: -e[2]):
@@ -491,7 +576,7 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
                 continue
             if judge.is_doorway(loc // width, loc % width, s):
                 judged.add((min(ra, rb), max(ra, rb)))
-            else:
+            elif s >= crack_clear:
                 join(ra, rb)
     # Spaces joined through many door-wide openings are one space with a row of clutter.
     if params.seg_max_openings_between > 0:

@@ -1,5 +1,10 @@
 """Unexplored areas: the unknown regions a person would send the robot to look at, with their frontier.
 
+Where the robot can reach is judged from the floor it drove on (:func:`reachable_floor`): the
+largest connected region where its disc fits, not any spot it would fit in (the floor seen
+through a glass front is out of its reach). An area's frontier is the part of its edge the robot
+can come up to from there, so a goal computed for it is a drivable one.
+
 The unknown world outside the building (every unknown region touching the grid border) is one
 area, ``interior=False``, and counts only where an opening the robot can reach leads into it.
 An unknown region inside the map is an area when it is worth a trip: at least
@@ -9,6 +14,8 @@ all round (free floor on every side and narrower than ``params.unexplored_enclos
 a group of desks, a glass table), with at least ``params.unexplored_min_frontier_m`` of
 frontier the robot can come up to in one opening (a door, a room's open side: not the gaps in the
 scanned outline of a shelf, a cabinet or a pallet whose inside is unknown, nor laser holes).
+A region's thin parts as large as ``params.unexplored_worth_area_m2`` (the cavity between the two
+copies of a wall a loop-closure error drew twice) are cut off it first (:func:`_cut_thin_parts`).
 Unknown specks smaller than
 ``params.unexplored_min_area_m2`` are scanner noise (navigable for clearance purposes); unknown
 cells inside a wall (touching no free cell) and the other pockets are no areas.
@@ -32,6 +39,7 @@ from langnav.analysis.precompute import (
     border_labels,
     component_boxes,
     dilate8,
+    label8,
     label8_cells,
     nonzero2,
     truncated_sq_edt,
@@ -39,14 +47,10 @@ from langnav.analysis.precompute import (
 from langnav.maps.grid import OccupancyGrid
 
 __all__ = ["EIGHT", "NEIGHBOURS_8", "UnexploredResult", "adjacent_pairs", "border_labels",
-           "exterior_unknown_mask", "find_unexplored"]
+           "exterior_unknown_mask", "find_unexplored", "reachable_floor"]
 
 #: The eight neighbour offsets (d_row, d_col).
 NEIGHBOURS_8: Final = ((-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1))
-
-#: The outside world's frontier is tested this many cells at a time (consecutive cells: a band
-#: of rows, a small window) until enough of it is within the robot's reach.
-OUTSIDE_CHUNK_CELLS: Final = 2000
 
 BoolArray = npt.NDArray[np.bool_]
 IntArray = npt.NDArray[np.int32]
@@ -115,6 +119,7 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
         return UnexploredResult((), np.zeros(grid.cells.shape, dtype=np.int32), none, none)
     outside = layers.unknown_outside
     exterior = layers.exterior
+    lab, n, sizes, outside = _cut_thin_parts(grid, params, layers, lab, n, sizes, outside)
     min_cells = params.unexplored_min_area_m2 / grid.cell_area_m2
     speck_ids = ~outside & (sizes < min_cells)
     speck_ids[0] = False
@@ -123,7 +128,10 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     pairs = adjacent_pairs(layers.free, lab)
     touches = np.zeros(n + 1, dtype=bool)
     touches[pairs[:, 1]] = True
-    worth = _worth_a_trip(grid, params, layers, lab, n, sizes, pairs)
+    # Where the robot can come up to from the floor it drove on: an area's frontier is the part
+    # of its edge there, and only an area with enough of it is worth a trip.
+    pairs = pairs[reachable_floor(grid, params, layers, specks, pairs[:, 0])]
+    worth = _worth_a_trip(grid, params, layers, lab, n, sizes, outside, pairs)
 
     # Map component label -> area index (1-based); all outside components share one index.
     area_of = np.zeros(n + 1, dtype=np.int32)
@@ -166,9 +174,14 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     order = np.argsort(fr[:, 0], kind="stable")
     splits = np.searchsorted(fr[order, 0], np.arange(1, n_areas + 2))
 
+    need = math.ceil(params.unexplored_min_frontier_m / grid.resolution_m - 1e-9)
     areas: list[UnexploredArea] = []
     for k in range(1, n_areas + 1):
         sel = order[splits[k - 1]:splits[k]]
+        # Its openings only: the runs of frontier as long as unexplored_min_frontier_m, not the
+        # single cells seen through the gaps of a glass front or a wall's laser holes.
+        run, n_runs = label8_cells(fr[sel, 1], (grid.height, grid.width))
+        sel = sel[(np.bincount(run, minlength=n_runs + 1) >= need)[run]]
         frontier = np.stack([fx[sel], fy[sel]], axis=1) if len(sel) else np.zeros((0, 2))
         areas.append(UnexploredArea(
             id=f"unexplored_{k}",
@@ -181,12 +194,11 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
 
 
 def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, lab: IntArray, n: int,
-                  sizes: npt.NDArray[np.int64], pairs: npt.NDArray[np.int64]) -> BoolArray:
+                  sizes: npt.NDArray[np.int64], outside: BoolArray, pairs: npt.NDArray[np.int64]) -> BoolArray:
     """Per unknown component (index = label): would a person send the robot to look at it? For
     the outside world (all its components together): does the robot reach enough of its
     frontier? For a region inside the map: big enough, and seen through an opening the robot
     can reach rather than through gaps in a scanned outline (see the module docstring)."""
-    outside = layers.unknown_outside
     inside = ~outside
     inside[0] = False
     candidate = np.zeros(n + 1, dtype=bool)
@@ -196,32 +208,102 @@ def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayer
     res = grid.resolution_m
     need = math.ceil(params.unexplored_min_frontier_m / res - 1e-9)
     worth = np.zeros(n + 1, dtype=bool)
-    # The outside world: enough of its frontier (all its pieces together) within reach, tested
-    # in chunks of consecutive cells (a band of rows each, a small window) until enough.
+    # (``pairs`` hold only the frontier cells the robot comes up to from the main free space.)
+    # The outside world: enough of its frontier within reach.
     # Frontier cells that see the region across an edge (4-neighbours), not only through the
     # corner between two occupied cells of a diagonal outline, which no scan passes.
     pairs = pairs[_edge_adjacent(lab, pairs)]
-    out_cells = pairs[outside[pairs[:, 1]], 0]
-    found = 0
-    for k in range(0, len(out_cells), OUTSIDE_CHUNK_CELLS):
-        found += int(np.count_nonzero(_robot_reaches(grid, params, layers, out_cells[k:k + OUTSIDE_CHUNK_CELLS])))
-        if found >= need:
-            worth[outside] = True
-            break
+    out_cells = np.unique(pairs[outside[pairs[:, 1]], 0])
+    # ... in one opening (a connected run), as for a region inside the map: not the cells seen
+    # through the gaps of a glass front.
+    out_run, n_out_runs = label8_cells(out_cells, (grid.height, grid.width))
+    if n_out_runs and int(np.bincount(out_run, minlength=n_out_runs + 1).max()) >= need:
+        worth[outside] = True
     # A region inside the map: one opening (a connected run of its frontier) the robot can come
     # up to along at least unexplored_min_frontier_m (a door, a room's open side; not the gaps
     # in a shelf's scanned outline, nor laser holes).
     sel = candidate[pairs[:, 1]]
     if sel.any():
         cells, regions = pairs[sel, 0], pairs[sel, 1]
-        reach = _robot_reaches(grid, params, layers, cells)
         uniq, inverse = np.unique(cells, return_inverse=True)
         run, n_runs = label8_cells(uniq, (grid.height, grid.width))
-        per_run = np.bincount(run[inverse], weights=reach, minlength=n_runs + 1)
+        per_run = np.bincount(run[inverse], minlength=n_runs + 1)
         best = np.zeros(n + 1)
         np.maximum.at(best, regions, per_run[run[inverse]])
         worth |= candidate & (best >= need)
     return worth
+
+
+def _cut_thin_parts(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, lab: IntArray, n: int,
+                    sizes: npt.NDArray[np.int64], outside: BoolArray
+                    ) -> tuple[IntArray, int, npt.NDArray[np.int64], BoolArray]:
+    """The unknown regions inside the map without their thin parts: the labelling, count, sizes
+    and outside flags again, the cut cells unlabelled (0) and the pieces left apart.
+
+    A region's part with room for the robot to drive in and turn is what a disc
+    ``params.unexplored_min_width_m`` wide covers inside it (counting, as :func:`_wide_enough`
+    does, the free laser rays the robot does not fit in as part of it). A thin part beyond that
+    which is itself as large as ``params.unexplored_worth_area_m2`` is no place to look at: the
+    cavity between the two copies of a wall that a loop-closure error drew twice, a sliver
+    behind a row of furniture. It is cut off, so that it neither makes a scan shadow it joins
+    look large nor carries the shadow's frontier along the wall. Smaller thin bits (the corners
+    a disc does not reach, a doorway's reveal) stay with the region.
+    """
+    inside = np.flatnonzero(~outside & (sizes * grid.cell_area_m2 >= params.unexplored_worth_area_m2))
+    inside = inside[inside > 0]
+    if len(inside) == 0:
+        return lab, n, sizes, outside
+    res = grid.resolution_m
+    need = (params.unexplored_min_width_m / res + 1.0) / 2.0  # disc centre to outside, cells
+    cover2 = (need - 0.5) ** 2  # the disc's cells, centre to centre (its width over two)
+    reach = math.ceil(need) + 1
+    half = max(1, math.ceil(params.robot_radius_m / res))
+    pad = reach + 2 * half + 1
+    worth_cells = params.unexplored_worth_area_m2 / grid.cell_area_m2
+    rows, cols = nonzero2(np.isin(lab, inside))
+    boxes = component_boxes(lab[rows, cols], rows, cols, inside)
+    out: IntArray | None = None
+    n_new = n
+    for k in inside.tolist():
+        sr, sc = boxes[k]
+        r0, r1 = max(0, sr.start - pad), min(grid.height, sr.stop + pad)
+        c0, c1 = max(0, sc.start - pad), min(grid.width, sc.stop + pad)
+        own = lab[r0:r1, c0:c1] == k
+        free = layers.free[r0:r1, c0:c1]
+        fits = free
+        for axis in (0, 1):
+            fits = ndi.minimum_filter1d(fits, 2 * half + 1, axis=axis, mode="constant", cval=False)
+        for axis in (0, 1):
+            fits = ndi.maximum_filter1d(fits, 2 * half + 1, axis=axis, mode="constant", cval=False)
+        region = layers.unknown[r0:r1, c0:c1] | (free & ~fits)
+        centres = truncated_sq_edt(region, reach) >= need * need
+        covered = truncated_sq_edt(~centres, reach) <= cover2 + 1e-9
+        thin = own & ~covered
+        if not thin.any():
+            continue
+        parts = label8(thin)
+        big = parts.sizes >= worth_cells
+        big[0] = False
+        if not big.any():
+            continue
+        keep = own & ~big[parts.labels]
+        pieces = label8(keep)
+        if out is None:
+            out = lab.copy()
+        window = out[r0:r1, c0:c1]
+        window[own] = 0
+        if pieces.n:
+            # The first piece keeps the region's label, the others take new ones.
+            ids = np.concatenate([[0, k], np.arange(n_new + 1, n_new + pieces.n, dtype=np.int64)])
+            window[keep] = ids[pieces.labels[keep]]
+            n_new += pieces.n - 1
+    if out is None:
+        return lab, n, sizes, outside
+    new_sizes = np.bincount(out.ravel(), minlength=n_new + 1).astype(np.int64)
+    new_sizes[0] = 0
+    new_outside = np.zeros(n_new + 1, dtype=bool)
+    new_outside[:n + 1] = outside
+    return out, n_new, new_sizes, new_outside
 
 
 def _seen_all_round(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, lab: IntArray,
@@ -324,26 +406,92 @@ def _edge_adjacent(lab: IntArray, pairs: npt.NDArray[np.int64]) -> BoolArray:
     return out
 
 
-def _robot_reaches(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers,
-                   cells: npt.NDArray[np.int64]) -> BoolArray:
-    """Per free cell (flat index): can the robot come up to it, i.e. does it touch (8-neighbours)
-    a cell that the robot's footprint covers somewhere, the footprint a free square of a robot's
-    diameter (it holds the robot's disc: a slightly strict test)?"""
+def reachable_floor(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, specks: BoolArray,
+                    cells: npt.NDArray[np.int64]) -> BoolArray:
+    """Per cell (flat index): can the robot come up to it from the main free space, i.e. is it
+    a cell its body (a disc of ``params.robot_radius_m``) covers somewhere in the largest
+    connected region where its centre fits, or an 8-neighbour of one?
+
+    The robot's centre fits where every blocking cell (occupied, or unknown other than a noise
+    speck; the grid's edge too) is at least its radius away, as the planner that drives it to a
+    goal counts clearance. The map was built by the robot driving through it, so the floor it
+    drove on is one connected region, by far the largest: free cells it does not connect to
+    are the laser-ray fans seen through glass fronts and windows, the floor beyond a closed door
+    seen through its gaps, or a pocket too tight to enter. A place seen only from there is not
+    one a person would send the robot to look at: it cannot drive there, and a goal for it would
+    be a spot beside the glass.
+    """
     out = np.zeros(len(cells), dtype=bool)
-    if len(cells) == 0:
+    rows, cols = nonzero2(layers.free)
+    if len(rows) == 0 or len(cells) == 0:
         return out
-    half = max(1, math.ceil(params.robot_radius_m / grid.resolution_m))
-    near = half + 1
+    rects = _disc_rectangles(params.robot_radius_m / grid.resolution_m)
+    # Over the free cells' bounding box (a real map's unknown margin is most of it), with room
+    # for the body's reach and its neighbours beyond the free cells.
+    pad = max(max(hx, hy) for hx, hy in rects) + 2
+    r0, r1 = max(0, int(rows.min()) - pad), min(grid.height, int(rows.max()) + pad + 1)
+    c0, c1 = max(0, int(cols.min()) - pad), min(grid.width, int(cols.max()) + pad + 1)
+    blocking = layers.occupied[r0:r1, c0:c1] | (layers.unknown[r0:r1, c0:c1] & ~specks[r0:r1, c0:c1])
+    # The disc's centre fits where the disc (the union of its rectangles) holds no blocking
+    # cell: where no rectangle does; the grid's edge blocks too. The body covers the cells
+    # some rectangle round a centre of the main region reaches.
+    blocked = _rectangle_counts(blocking, rects, edge=1)
+    centre = ~blocked[0]
+    for more in blocked[1:]:
+        centre &= ~more
+    comps = label8(centre)
+    if comps.n == 0:
+        return out
+    # A cell is come up to when a centre of the main region lies within the disc round it or
+    # round one of its neighbours: looked up at those offsets, on the region padded so that
+    # none falls off it.
+    main = np.pad(comps.labels == 1 + int(np.argmax(comps.sizes[1:])), pad, constant_values=False)
     rr, cc = np.divmod(cells, grid.width)
-    # Over the window that the tests read (its edge blocks): where the robot's centre fits (the
-    # free cells eroded by the square), then the cells within ``near`` of those (the footprint
-    # and its neighbours), by separable minimum and maximum filters.
-    pad = near + half
-    r0, r1 = max(0, int(rr.min()) - pad), min(grid.height, int(rr.max()) + pad + 1)
-    c0, c1 = max(0, int(cc.min()) - pad), min(grid.width, int(cc.max()) + pad + 1)
-    m = layers.free[r0:r1, c0:c1]
-    for axis in (0, 1):
-        m = ndi.minimum_filter1d(m, 2 * half + 1, axis=axis, mode="constant", cval=False)
-    for axis in (0, 1):
-        m = ndi.maximum_filter1d(m, 2 * near + 1, axis=axis, mode="constant", cval=False)
-    return np.asarray(m[rr - r0, cc - c0], dtype=bool)
+    inside = (rr >= r0) & (rr < r1) & (cc >= c0) & (cc < c1)
+    flat = (rr[inside] - r0 + pad) * main.shape[1] + (cc[inside] - c0 + pad)
+    main_flat = main.ravel()
+    hit = np.zeros(len(flat), dtype=bool)
+    for dr, dc in _disc_and_neighbours(rects):
+        hit |= main_flat[flat + (dr * main.shape[1] + dc)]
+    out[inside] = hit
+    return out
+
+
+def _disc_and_neighbours(rects: list[tuple[int, int]]) -> list[tuple[int, int]]:
+    """The offsets (rows, columns) of the disc given by its rectangles, grown by one cell all
+    round (its cells and their 8-neighbours)."""
+    disc = {(dy, dx) for hx, hy in rects for dy in range(-hy, hy + 1) for dx in range(-hx, hx + 1)}
+    return sorted({(dy + a, dx + b) for dy, dx in disc for a in (-1, 0, 1) for b in (-1, 0, 1)})
+
+
+def _rectangle_counts(mask: BoolArray, rects: list[tuple[int, int]], edge: int) -> list[BoolArray]:
+    """Per centred rectangle (half-widths in columns, rows): does the rectangle round each cell
+    hold a cell of ``mask`` (cells beyond the array count as ``edge``)? From one summed-area
+    table, four lookups per rectangle."""
+    h, w = mask.shape
+    p = max(max(hx, hy) for hx, hy in rects)
+    table = np.zeros((h + 2 * p + 1, w + 2 * p + 1), dtype=np.int32)
+    padded = np.pad(mask, p, constant_values=bool(edge))
+    np.cumsum(padded, axis=0, dtype=np.int32, out=table[1:, 1:])
+    np.cumsum(table[1:, 1:], axis=1, out=table[1:, 1:])
+    out = []
+    total = np.empty((h, w), dtype=np.int32)
+    for hx, hy in rects:
+        top, bottom, left, right = p - hy, p + hy + 1, p - hx, p + hx + 1
+        np.subtract(table[bottom:bottom + h, right:right + w], table[top:top + h, right:right + w], out=total)
+        total -= table[bottom:bottom + h, left:left + w]
+        total += table[top:top + h, left:left + w]
+        out.append(total > 0)
+    return out
+
+
+def _disc_rectangles(radius_cells: float) -> list[tuple[int, int]]:
+    """A disc of this radius (cells, centre to centre) as the union of centred rectangles, each
+    given by its half-widths (columns, rows): the cells (dx, dy) with dx² + dy² ≤ radius², one
+    rectangle per half-height, widest first. Eroding or dilating by each (two separable passes)
+    and combining is eroding or dilating by the disc, at the cost of a few filters."""
+    r2 = radius_cells * radius_cells + 1e-9
+    top = math.floor(math.sqrt(r2))
+    rects = [(math.floor(math.sqrt(r2 - hy * hy)), hy) for hy in range(top + 1)]
+    # A rectangle inside the next taller one (as wide) adds nothing.
+    return [rc for k, rc in enumerate(rects) if k + 1 == len(rects) or rects[k + 1][0] < rc[0]]

@@ -41,6 +41,7 @@ import numpy as np
 import numpy.typing as npt
 
 from langnav.analysis.params import AnalysisParams
+from langnav.analysis.precompute import take2
 
 BoolArray = npt.NDArray[np.bool_]
 FloatArray = npt.NDArray[np.float64]
@@ -221,7 +222,7 @@ class _LineSampler(Generic[_Cell]):
         np.minimum(ri, h - 1, out=ri)
         np.maximum(ci, 0, out=ci)
         np.minimum(ci, w - 1, out=ci)
-        out = self.mask[ri, ci]
+        out = take2(self.mask, ri, ci)
         out *= inside
         return out
 

@@ -19,6 +19,8 @@ All arrays here are in image orientation (row 0 = top), as the benchmark files a
 
 from __future__ import annotations
 
+import itertools
+import math
 from dataclasses import dataclass
 from typing import Final
 
@@ -40,6 +42,9 @@ DOOR_MATCH_TOLERANCE_M: Final = 0.5
 #: A doorway's jambs are the pieces of wall within this many pixels of its blob (the painting
 #: stops a pixel or two short of the walls, or runs over them).
 DOORWAY_JAMB_PAD_PX: Final = 2
+#: Openings under one blob narrower than this (m) are cracks between two pieces of one wall, not
+#: doorways of their own (the narrowest drawn doors, office_e's, are 0.25 m).
+DOORWAY_MIN_CLEAR_M: Final = 0.25
 
 IntImage = npt.NDArray[np.int32]
 
@@ -114,33 +119,99 @@ def ipa_doorway_blobs(training_image: npt.NDArray[np.uint8]) -> list[npt.NDArray
     return blobs
 
 
-def doorway_clear_width_m(blob: npt.NDArray[np.int64], occupied: npt.NDArray[np.bool_],
-                          resolution_m: float, pad_px: int = DOORWAY_JAMB_PAD_PX) -> float | None:
-    """The clear width (m) of the labelled doorway ``blob`` ((row, col) pixels) in the map whose
-    occupied pixels are ``occupied``: the distance between its two jambs, less a pixel (between
-    pixel centres). The jambs are the two pieces of wall, within ``pad_px`` of the blob around it,
-    that belong to the largest structures (the walls the doorway is cut in, not furniture or a
-    stray pixel beside it). None when fewer than two pieces of wall touch the blob (an opening
-    with no jamb to measure from)."""
+@dataclass(frozen=True)
+class Doorway:
+    """One labelled doorway: its pixels ((row, col), image orientation) and its clear width (m)
+    from jamb to jamb in the map (None where it has no two jambs to measure from)."""
+
+    pixels: npt.NDArray[np.int64]
+    clear_width_m: float | None
+
+
+def _wall_pieces(blob: npt.NDArray[np.int64], occupied: npt.NDArray[np.bool_], whole: IntImage,
+                 whole_size: npt.NDArray[np.int64], pad_px: int) -> list[npt.NDArray[np.int64]]:
+    """The pieces of wall a doorway blob is cut in: the occupied pieces within ``pad_px`` of it
+    (in a window around it) that belong to the largest structures there (the building's walls;
+    not a table or a stray pixel beside the door), as (row, col) pixel arrays in image
+    coordinates, ordered along the blob's long axis."""
     r0, c0 = np.maximum(blob.min(axis=0) - pad_px - 1, 0)
     r1, c1 = blob.max(axis=0) + pad_px + 2
     win = occupied[r0:r1, c0:c1]
     near = np.zeros(win.shape, dtype=bool)
     near[blob[:, 0] - r0, blob[:, 1] - c0] = True
     near = ndi.binary_dilation(near, iterations=pad_px)
-    eight = np.ones((3, 3), dtype=bool)
-    pieces, _ = ndi.label(win, structure=eight)
+    pieces, _ = ndi.label(win, structure=np.ones((3, 3), dtype=bool))
     ids = [int(i) for i in np.unique(pieces[near & win]) if i]
-    if len(ids) < 2:
-        return None
-    whole, _ = ndi.label(occupied, structure=eight)
-    whole_size = np.bincount(whole.ravel())
     sub = whole[r0:r1, c0:c1]
     size = {i: (int(whole_size[sub[pieces == i][0]]), int((pieces == i).sum())) for i in ids}
-    a, b = sorted(ids, key=lambda i: size[i], reverse=True)[:2]
-    pa, pb = np.argwhere(pieces == a).astype(float), np.argwhere(pieces == b).astype(float)
-    gap_px = float(np.sqrt(((pa[:, None, :] - pb[None, :, :]) ** 2).sum(axis=2)).min())
-    return (gap_px - 1.0) * resolution_m
+    ranked = sorted(ids, key=lambda i: size[i], reverse=True)
+    # The two largest are the jambs; a further piece counts when its structure is as large as
+    # the smaller jamb's (a wall between two doors), not a smaller thing standing by.
+    keep = ranked[:2] + [i for i in ranked[2:] if size[i][0] >= size[ranked[1]][0]]
+    walls = [np.argwhere(pieces == i) + np.array([r0, c0]) for i in keep]
+    centred = blob.astype(float) - blob.mean(axis=0)
+    axis = np.linalg.eigh(centred.T @ centred)[1][:, -1] if len(blob) > 1 else np.array([0.0, 1.0])
+    return sorted(walls, key=lambda w: float(((w.astype(float) - blob.mean(axis=0)) @ axis).mean()))
+
+
+def _gap(a: npt.NDArray[np.int64], b: npt.NDArray[np.int64]) -> tuple[float, npt.NDArray[np.float64]]:
+    """The distance (pixels, between centres) of the nearest pixels of ``a`` and ``b``, and the
+    midpoint of that pair."""
+    d = np.sqrt(((a[:, None, :].astype(float) - b[None, :, :].astype(float)) ** 2).sum(axis=2))
+    i, j = np.unravel_index(int(np.argmin(d)), d.shape)
+    return float(d[i, j]), (a[i] + b[j]) / 2.0
+
+
+def _walled_between(occupied: npt.NDArray[np.bool_], a: npt.NDArray[np.float64], b: npt.NDArray[np.float64]) -> bool:
+    """Whether the straight line from pixel ``a`` to pixel ``b`` crosses an occupied pixel."""
+    n = max(2, math.ceil(2 * float(np.hypot(*(b - a)))) + 1)
+    t = np.linspace(0.0, 1.0, n)[:, None]
+    rc = np.rint(a + t * (b - a)).astype(np.int64)
+    return bool(occupied[rc[:, 0], rc[:, 1]].any())
+
+
+def ipa_doorways(blobs: list[npt.NDArray[np.int64]], occupied: npt.NDArray[np.bool_], resolution_m: float,
+                 min_width_m: float = DOORWAY_MIN_CLEAR_M, pad_px: int = DOORWAY_JAMB_PAD_PX) -> list[Doorway]:
+    """The labelled doorways of an IPA map, each with its clear width in the map (``occupied``:
+    the map's occupied pixels). A blob is painted over a doorway and past its jambs; where one
+    blob covers two or more openings side by side (a wall piece between them parting two rooms:
+    office_h paints one blob over each pair of office doors), each opening at least
+    ``min_width_m`` wide is a doorway of its own, holding the blob's pixels nearest to it."""
+    whole, _ = ndi.label(occupied, structure=np.ones((3, 3), dtype=bool))
+    whole_size = np.bincount(whole.ravel())
+    out: list[Doorway] = []
+    for blob in blobs:
+        walls = _wall_pieces(blob, occupied, whole, whole_size, pad_px)
+        if len(walls) < 2:
+            out.append(Doorway(blob, None))
+            continue
+        gaps = [_gap(a, b) for a, b in itertools.pairwise(walls)]
+        openings = [(g, mid) for g, mid in gaps if (g - 1.0) * resolution_m >= min_width_m]
+        # Openings side by side have wall between them (a wall piece parting two rooms); two
+        # crossings of one opening (its jambs broken into pieces) have floor between them.
+        if len(openings) >= 2 and not all(_walled_between(occupied, a, b)
+                                          for (_, a), (_, b) in itertools.pairwise(openings)):
+            openings = []
+        if len(openings) < 2:
+            # One doorway: between its two widest-apart jambs that leave an opening.
+            g = max(gaps, key=lambda x: x[0])[0]
+            out.append(Doorway(blob, (g - 1.0) * resolution_m))
+            continue
+        mids = np.array([mid for _, mid in openings])
+        nearest = np.argmin(((blob[:, None, :].astype(float) - mids[None, :, :]) ** 2).sum(axis=2), axis=1)
+        out += [Doorway(blob[nearest == k], (g - 1.0) * resolution_m) for k, (g, _) in enumerate(openings)]
+    return out
+
+
+def doorway_clear_width_m(blob: npt.NDArray[np.int64], occupied: npt.NDArray[np.bool_],
+                          resolution_m: float, pad_px: int = DOORWAY_JAMB_PAD_PX) -> float | None:
+    """The clear width (m) of the labelled doorway ``blob`` ((row, col) pixels) in the map whose
+    occupied pixels are ``occupied``: the distance between its jambs, less a pixel (between pixel
+    centres). The jambs are the pieces of wall within ``pad_px`` of the blob that belong to the
+    largest structures (the walls the doorway is cut in, not furniture or a stray pixel beside
+    it). None when fewer than two pieces of wall touch the blob (an opening with no jamb to
+    measure from)."""
+    return ipa_doorways([blob], occupied, resolution_m, min_width_m=math.inf, pad_px=pad_px)[0].clear_width_m
 
 
 def door_precision_recall(detected_rc: npt.ArrayLike, blobs: list[npt.NDArray[np.int64]],
@@ -172,13 +243,16 @@ def door_precision_recall(detected_rc: npt.ArrayLike, blobs: list[npt.NDArray[np
 
 __all__ = [
     "DOORWAY_JAMB_PAD_PX",
+    "DOORWAY_MIN_CLEAR_M",
     "DOOR_MATCH_TOLERANCE_M",
     "MIN_REGION_PX",
+    "Doorway",
     "PrecisionRecall",
     "colour_gt_rooms",
     "door_precision_recall",
     "doorway_clear_width_m",
     "ipa_doorway_blobs",
+    "ipa_doorways",
     "ipa_gt_rooms",
     "room_precision_recall",
 ]

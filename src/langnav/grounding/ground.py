@@ -73,6 +73,7 @@ from langnav.language.intent import (
 from langnav.language.intent import Element as Kind
 from langnav.places.store import NamedPlace, place_key
 from langnav.plan.commands import (
+    MAX_MOVE_STEPS,
     MOVE_STEP_M,
     ROTATE_STEP_DEG,
     Command,
@@ -407,6 +408,13 @@ def _move(step: Step, ctx: GroundingContext, pose: Pose, index: int) -> Grounded
     if dist <= 0:
         raise GroundingError("A move of 0 m does nothing; say how far, e.g. 'move forward 1 meter'.")
     n = steps_for_distance(dist)
+    if n > MAX_MOVE_STEPS:
+        # One Move goes at most 30 m (plan.commands): farther is a trip to a place, which the
+        # robot plans round obstacles, not a straight blind drive.
+        raise GroundingError(
+            f"Moving {d.value} {dist:g} m is farther than I drive straight in one go "
+            f"({MAX_MOVE_STEPS * MOVE_STEP_M:g} m at most); name a place to go to, or say a shorter "
+            "distance. Nothing was run.")
     real = n * MOVE_STEP_M
     word, offset = _MOVE_HEADING[d]
     a = pose.yaw_rad + offset
@@ -1225,7 +1233,13 @@ def _on_the_way(hall: Room, way: compose.Way, s_m: float, s_max: float, ctx: Gro
 def _way_down(hall: Room, direction: Point, ctx: GroundingContext, pose: Pose) -> compose.Way | None:
     """The way down the hallway setting off in ``direction``: the walk to the hallway's farthest cell
     with the way back shut, ending on the hallway's middle line."""
-    walk = walk_from(ctx.space, pose.xy, onward=direction, onward_m=hall.width_m + FOLLOW_CLOSE_MARGIN_M)
+    labels = ctx.analysis.labels
+    start = ctx.space.start_cell(*pose.xy)
+    # down the hallway is along it: a room with two doors onto it is no short cut (from outside the
+    # hallway the walk may start anywhere)
+    inside = start is not None and labels.shape == ctx.space.components.shape and labels[start] == hall.label
+    walk = walk_from(ctx.space, pose.xy, onward=direction, onward_m=hall.width_m + FOLLOW_CLOSE_MARGIN_M,
+                     within=(labels, hall.label) if inside else None)
     if walk is None:
         return None
     cells = np.asarray(hall.cells_xy, dtype=float).reshape(-1, 2)

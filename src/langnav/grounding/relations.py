@@ -67,15 +67,22 @@ HALL_AXIS_RADIUS_M: Final = 3.0
 #: Windows taken for the hallway's direction: the first finds the middle of the hallway near the
 #: point, the second is centred there (see ``hall_axis``).
 AXIS_PASSES: Final = 2
+#: A hallway's cells near a point spread at least this many times more (variance) along it than across
+#: it (a straight stretch 3 m either way of a hallway 2 m wide: 9; 2.5 m wide: 5.8); less, and the window
+#: holds an alcove, a lobby or a bend as much as the hallway: a wider window is tried (an L's two legs
+#: together spread about 3-4 times more along its diagonal: not enough, so a bend keeps the near window).
+AXIS_MIN_ELONGATION: Final = 5.0
+#: Times the window is doubled looking for the hallway's run past an alcove or a lobby.
+AXIS_WIDENINGS: Final = 2
 #: Fewer cells than this near the point (a stub of a hallway) say nothing of its direction: all of
 #: the hallway's cells are used.
 AXIS_MIN_CELLS: Final = 10
 #: A point this close to the hallway's centre line is on neither side of it.
 CENTRE_LINE_EPS_M: Final = 0.1
-#: A door on the far side of the hallway lies in its wall there: its centre within half the hallway's
-#: width and this much more of the hallway's local centre line (a wall's thickness and the door's
-#: placement in it, with room for noise). A door farther out opens onto another leg of the hallway
-#: (round the corner of an L or T), not onto this stretch, so its room is not "across" from here.
+#: A door on the far side of the hallway lies in its wall there: its centre within the hallway's width and
+#: this much more of the hallway's middle line as found near here (half a width for the wall itself, the
+#: rest for a middle line pulled aside by an alcove or a lobby, and noise). A door farther out opens onto
+#: another leg of the hallway (round the corner of an L or T), so its room is not "across" from here.
 DOOR_IN_WALL_MARGIN_M: Final = 1.0
 #: In the middle of a hallway, the robot faces one side when its heading is within ~70 deg of that
 #: side's normal (cos 70 deg); facing along the hallway names no side.
@@ -160,24 +167,35 @@ def _where_is(e: Element, pose: Pose) -> str:
     return "beside me"
 
 
-def hall_axis(hall: Room, around: Point) -> tuple[Point, Point]:
+def hall_axis(hall: Room, around: Point, *, past_alcoves: bool = False) -> tuple[Point, Point]:
     """(centre, unit direction) of the hallway near a point: the principal axis of its cells within
-    HALL_AXIS_RADIUS_M (all of them when too few are near)."""
+    HALL_AXIS_RADIUS_M (all of them when too few are near). ``past_alcoves``: when those cells spread
+    about as much both ways, wider windows are tried (see AXIS_MIN_ELONGATION)."""
     cells = np.asarray(hall.cells_xy, float).reshape(-1, 2)
     if len(cells) < 3:
         raise GroundingError(f"{label_of(hall)} has too little free space to tell its direction.")
-    c = np.asarray(around, float)
-    pts = cells
-    # Twice: a window round a point off the centre line (near a wall, at the hallway's end) holds
-    # more of one side of the hallway than of the other and tilts the axis; the second window is
-    # centred on the middle of the hallway found by the first.
-    for _ in range(AXIS_PASSES):
-        near = cells[np.hypot(cells[:, 0] - c[0], cells[:, 1] - c[1]) <= HALL_AXIS_RADIUS_M]
-        pts = near if len(near) >= AXIS_MIN_CELLS else cells
-        c = pts.mean(axis=0)
-    w, v = np.linalg.eigh(np.cov((pts - c).T))
-    axis = v[:, int(np.argmax(w))]
-    return (float(c[0]), float(c[1])), (float(axis[0]), float(axis[1]))
+    first: tuple[Point, Point] | None = None
+    for k in range(AXIS_WIDENINGS + 1 if past_alcoves else 1):
+        c = np.asarray(around, float)
+        pts = cells
+        # Twice: a window round a point off the centre line (near a wall, at the hallway's end) holds
+        # more of one side of the hallway than of the other and tilts the axis; the second window is
+        # centred on the middle of the hallway found by the first.
+        for _ in range(AXIS_PASSES):
+            near = cells[np.hypot(cells[:, 0] - c[0], cells[:, 1] - c[1]) <= HALL_AXIS_RADIUS_M * 2 ** k]
+            pts = near if len(near) >= AXIS_MIN_CELLS else cells
+            c = pts.mean(axis=0)
+        w, v = np.linalg.eigh(np.cov((pts - c).T))
+        axis = v[:, int(np.argmax(w))]
+        found = (float(c[0]), float(c[1])), (float(axis[0]), float(axis[1]))
+        first = first or found
+        # A window whose cells spread about as much both ways says nothing of which way the hallway runs:
+        # an alcove or a lobby off it (a wider window is the hallway itself, long and narrow: taken), or a
+        # bend or junction (a wider window holds both legs, no narrower: the nearest window is kept).
+        if len(pts) == len(cells) or w.min() * AXIS_MIN_ELONGATION <= w.max():
+            return found
+    assert first is not None
+    return first
 
 
 #: A door this close along the hallway to where the counting starts is the robot's own (its room's door,
@@ -282,7 +300,9 @@ def _across(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room:
     from_door = base is not None and base is not hall
     if base is None or base is hall:
         origin = pose.xy
-        centre, axis = hall_axis(hall, origin)
+        # which side is across depends only on which way the hallway runs here, also for a robot
+        # standing in an alcove or a lobby off it
+        centre, axis = hall_axis(hall, origin, past_alcoves=True)
         normal = (-axis[1], axis[0])
     else:
         doors = [d for d in doors_of(analysis) if {hall.id, base.id} <= set(d.connects)]
@@ -333,7 +353,7 @@ def _across(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room:
             continue
         if across(d.center) * own >= 0:
             continue  # a door on the robot's own side of the hallway
-        if abs(across(d.center)) > hall.width_m / 2 + DOOR_IN_WALL_MARGIN_M:
+        if abs(across(d.center)) > hall.width_m + DOOR_IN_WALL_MARGIN_M:
             continue  # a door off another leg of the hallway, round a corner
         # how far along the hallway the room is from here: 0 when its side on the hallway spans here
         cells = np.asarray(other.cells_xy, float).reshape(-1, 2)

@@ -525,6 +525,14 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
             pool = others
             if not pool:
                 raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]} other than the one I am in.")
+    if ref.kind == Kind.ROOM and ref.ordinal is not None and isinstance(here_space := space_of(analysis, pose.xy), Room) \
+            and here_space.kind == ElementKind.HALLWAY:
+        # "the second room on your left", said in a hallway, counts the rooms one passes along it: those
+        # that open onto it (as its doors are counted), not a room behind one of them (reached through it)
+        ways_out: list[Door | NarrowPassage] = [*analysis.doors, *analysis.narrow_passages]
+        opening = {i for o in ways_out if here_space.id in o.connects for i in o.connects}
+        if any(e.id in opening for e in pool):
+            pool = [e for e in pool if e.id in opening]
     if ref.side is not None:
         pool = [e for e in pool if matches_side(e, pose, ref.side)]
         if came_through and ref.side in (Side.LEFT, Side.RIGHT):

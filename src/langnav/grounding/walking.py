@@ -107,32 +107,37 @@ class Walk:
         return out
 
 
-_Key = tuple[tuple[int, int], tuple[float, float, float] | None]
+_Key = tuple[tuple[int, int], tuple[float, float, float] | None, int | None]
 _CACHE: weakref.WeakKeyDictionary[FreeSpace, dict[_Key, Walk]] = weakref.WeakKeyDictionary()
 
 
-def walk_from(space: FreeSpace, xy: Point, *, onward: Point | None = None, onward_m: float = 0.0) -> Walk | None:
+def walk_from(space: FreeSpace, xy: Point, *, onward: Point | None = None, onward_m: float = 0.0,
+              within: tuple[npt.NDArray[np.int32], int] | None = None) -> Walk | None:
     """The walks from the robot at ``xy``; None when it stands on no passable cell (nothing is
     reachable). With ``onward`` (a unit direction), the walks that set off that way: the passable
     cells within ``onward_m`` of the robot behind it (against ``onward``) are closed, so that the
     way back is shut (``onward_m`` a hallway's width: "down the corridor" is the way it faces).
-    Cached per free space, start cell and closure."""
+    With ``within`` (the analysis' label array and one label), the walks that stay in that space
+    ("down the corridor" walks the corridor, not a short cut through a room with two doors onto it).
+    Cached per free space, start cell, closure and space."""
     start = space.start_cell(*xy)
     if start is None:
         return None
-    key = (start, None if onward is None else (round(onward[0], 3), round(onward[1], 3), round(onward_m, 2)))
+    key = (start, None if onward is None else (round(onward[0], 3), round(onward[1], 3), round(onward_m, 2)),
+           None if within is None else within[1])  # a free space's labels are those of its one grid's analysis
     per_space = _CACHE.setdefault(space, {})
     hit = per_space.get(key)
     if hit is not None:
         return hit
-    walk = _walk(space, start, xy, onward, onward_m)
+    walk = _walk(space, start, xy, onward, onward_m, within)
     if len(per_space) >= WALK_CACHE_SIZE:
         per_space.clear()
     per_space[key] = walk
     return walk
 
 
-def _walk(space: FreeSpace, start: tuple[int, int], xy: Point, onward: Point | None, onward_m: float) -> Walk:
+def _walk(space: FreeSpace, start: tuple[int, int], xy: Point, onward: Point | None, onward_m: float,
+          within: tuple[npt.NDArray[np.int32], int] | None = None) -> Walk:
     k = lattice_stride(space.grid.resolution_m, space.robot_radius_m)
     comp = int(space.components[start])
     rs, cs = space.component_box(comp)
@@ -147,6 +152,9 @@ def _walk(space: FreeSpace, start: tuple[int, int], xy: Point, onward: Point | N
         dx, dy = xs - space.xs[start], ys - space.ys[start]
         behind = (dx * onward[0] + dy * onward[1] < -CLOSED_FROM_M) & (np.hypot(dx, dy) <= onward_m)
         lattice = lattice & ~behind
+    if within is not None:
+        labels, label = within
+        lattice = lattice & (labels[row0:rs.stop:k, col0:cs.stop:k] == label)
     costs = np.where(lattice, 1.0, np.inf)
     mcp = MCP_Geometric(costs, fully_connected=True)
     cum, _ = mcp.find_costs([s])

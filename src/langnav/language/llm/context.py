@@ -102,7 +102,36 @@ line" are punctuation. Chat spelling: "fwd", "bak", "lft", "rght", "trn", "mov",
 "lil", "str8", "rt", "lt". "2 foot 6" is 2 ft 6 in; "1 metre 6 inches" is 1.1524 m; "feets" are feet. "a teeny \
 bit", "a lil bit", "just a little bit" -> amount little (never the 90 degrees of a bare turn).
 - An amount alone after a move or turn goes the same way: "back up 2 m and then another 3 feet" -> two \
-moves backward; "turn left 45, then another 20 degrees" -> two left turns.
+moves backward; "turn left 45, then another 20 degrees" -> two left turns. Said to be more with no unit, it \
+is in the unit just used ("go forward two feet, then two more" -> two moves of 0.6096 m; "turn right ninety, \
+then another ninety" -> two right turns of 90); with no "more", "another", "again" or "then" it is the same \
+amount said again (done once) or, after a word that corrects ("no", "sorry", "I mean", "my bad"), put right: \
+the last counts ("go forward seven feet, my bad, six feet" -> 1.8288 m); a different amount with no such word \
+("move forward four metres, er, four feet") -> ask which one; never the sum. "X. Again: X" says X again (once). "and again", "do it again", "repeat \
+that" -> the move or turn before it once more. A bare move said again with its amount ("move forward ... \
+you're breaking up ... move forward two metres") is one move of that amount.
+- Radio talk: digits said one at a time are one number ("move ahead one five feet" -> 4.572 m; "rotate left \
+one three five" -> left 135; "two zero feet" -> 6.096 m; "niner" = 9); "base to robot", "robot, this is \
+base", "over", "roger", "copy", "you're breaking up", "do you copy?", "can you hear me?" mean nothing; \
+"negative (on that)" is no; "hold" alone is stop. Contrasts name what is not meant: "turn left, not right" \
+-> left; "not left but right" -> right; "three feet, not four" -> 0.9144 m. "I said ..." corrects like \
+"I mean ...". "... but don't turn" -> only the other instruction. "that would be great" is thanks; "I want \
+that you turn left" -> rotate left.
+- More measures: "a right angle" = 90 degrees; "5 ft 10 in", "5'10\"" -> 1.778 m; "one metre twenty" -> 1.2 m; \
+"one meter and half" -> 1.5 m; "retreat" / "withdraw" -> move backward; "make small turn to the left" -> \
+rotate left, amount little; "five-ish feet" -> 1.524 m; "2 metres or 6 feet" -> the smaller (1.8288 m); "go \
+forward and stop after two metres" -> move forward 2; "a quarter of the way round" -> 90 degrees; "do a twirl" \
+-> rotate 360; "180 then fwd 5 ft" -> turn around, then move forward 1.524 m.
+- More radio and speech: "come left ninety" / "come right forty" -> rotate; "come about" -> around; "report \
+position" -> pose query; "hold your position" -> stop (not a query); "turn left, turn left" (no again/then) -> \
+one turn; "turn left no right thirty" -> right 30; "move forward seven feet turn right" (no punctuation) -> \
+two steps; "carry on forward" -> move; "be a love and ...", "please do one thing, ..." mean nothing. A vague \
+count ("a few feet", "several metres") -> ask how far, never a guessed number. The same amount said again in \
+another unit ("two metres, that is, about six and a half feet") -> one move, the smaller. "forward five metres, \
+oops, I meant feet" -> 1.524 m; "oh sorry, eight inches" corrects like "sorry". "a distance of", "by an angle \
+of", "in a forward direction" only announce the amount or the way; "one more time" / "once more" = again; \
+"one more turn to the left, ninety degrees" -> rotate left 90; "where are ya", "where is you" -> pose query. A \
+number word left over ("advance one two feet") -> ask.
 - Polite frames and remarks change nothing: "is it okay if you ...", "would it be possible for you to ...", \
 "may I ask you to ...", "I'd be grateful if you could ...", "is that a thing you can do?", "sorry if that's a \
 weird number", "so that I can see ...", "I don't want to crash it" (a worry, not a request to crash).
@@ -217,6 +246,15 @@ EXAMPLES: Final[tuple[tuple[str, dict[str, Any]], ...]] = (
                 {"movement": "move", "direction": "forward", "distance_m": 0.9144}]}),
     ("move forward ten feet, scratch that, six feet",
      {"steps": [{"movement": "move", "direction": "forward", "distance_m": 1.8288}]}),
+    ("robot, move ahead one five feet, over",
+     {"steps": [{"movement": "move", "direction": "forward", "distance_m": 4.572}]}),
+    ("move forward. you're breaking up. move forward two metres",
+     {"steps": [{"movement": "move", "direction": "forward", "distance_m": 2}]}),
+    ("go forward seven feet, my bad, six feet",
+     {"steps": [{"movement": "move", "direction": "forward", "distance_m": 1.8288}]}),
+    ("turn right ninety, then another ninety",
+     {"steps": [{"movement": "rotate", "direction": "right", "angle_deg": 90},
+                {"movement": "rotate", "direction": "right", "angle_deg": 90}]}),
     ("um, swing left, then push forward two feet and six inches",
      {"steps": [{"movement": "rotate", "direction": "left", "amount": "default"},
                 {"movement": "move", "direction": "forward", "distance_m": 0.762}]}),

@@ -98,7 +98,7 @@ _HERE_RETURN_RE: Final = re.compile(r"\b(?:(?P<verb>come|get|head|go|drive|move)
 _SPACE_NOUN: Final = r"(?P<noun>room|office|hallway|corridor|space)"
 _ACROSS_RE: Final = re.compile(
     r"\b" + _SPACE_NOUN + r"\s+(?:(?:that|which)\s+is\s+|that\s*'s\s+)?(?:directly\s+|right\s+|just\s+|straight\s+)?"
-    r"(?:(?:across|opposite)\s+(?:from\s+(?:us|you|me|here)\s+)?(?:(?:on|in)\s+)?(?:the\s+)?(?:hall|hallway|corridor)"
+    r"(?:(?:across|opposite)\s+(?:from\s+(?:us|you|me|here)\s+)?(?:(?:on|in)\s+)?(?:the\s+)?(?:hallway|hall|corridor)\b"
     r"(?:\s+from\s+(?:here|us|you|me|this\s+(?:one|room)|the\s+one\s+(?:you|we)\s+are\s+in))?"
     r"|across\s+from\s+(?:here|us|you|me|this\s+(?:one|room)|the\s+one\s+(?:you|we)\s+are\s+in)"
     r"|opposite(?:\s+(?:this\s+(?:one|room)|us|here|the\s+one\s+(?:you|we)\s+are\s+in))?\s*$)")

@@ -17,16 +17,18 @@ from collections.abc import Callable
 from typing import Final
 
 from langnav.language.offline import lexicon as lx
+from langnav.language.offline.amounts import unit_word, with_unit
 from langnav.language.offline.clock import CLOCK_RE
 from langnav.language.offline.compass import COMPASS_RE
+from langnav.language.offline.idioms import named_turn_alone
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import find_quantities
 from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE, STOP_RE, rx
 
 #: Words that open a correction of the instruction before ("actually", "no wait", "i'm sorry").
 CORRECTION_START_RE: Final = re.compile(
-    r"^(?:(?:actually|no\s+wait|no(?!\s+(?:further|longer|more|need)\b)|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
-    r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|or\s+rather|rather|make\s+that|make\s+it|correction|"
+    r"^(?:(?:(?:oh|ah|uh|um)\s*,?\s+(?=sorry|no\b|i\s+mean)|actually|no\s+wait|no(?!\s+(?:further|longer|more|need)\b)|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
+    r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|my\s+(?:bad|mistake)|or\s+rather|rather|make\s+that|make\s+it|correction|"
     r"oops)\b[\s,]*)+", re.IGNORECASE)
 #: Words that take back what was said before ("never mind", "scratch that").
 CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|forget\s+(?:it|that|everything|all\s+(?:of\s+)?that)|"
@@ -120,7 +122,9 @@ def join_fragments(clauses: list[str], is_open: IsOpen) -> list[str]:
                 i += 1
                 continue
             nxt = clauses[i + 1] if i + 1 < len(clauses) else None
-            if nxt is not None and not is_fragment(nxt) and is_open(nxt) and not _whole_move(clause):
+            if nxt is not None and not is_fragment(nxt) and is_open(nxt) and not _whole_move(clause) \
+                    and named_turn_alone(normalize(clause)) == normalize(clause):
+                # ("one eighty, then go forward": a named turn said alone is that turn, never 180 metres)
                 out.append(f"{nxt} {clause}")
                 i += 2
                 continue
@@ -168,11 +172,16 @@ def apply_corrections(clauses: list[str]) -> list[str]:
         if start is not None:
             clause = clause[start.end():].strip()
             if not clause:
+                if out and _HOLD_RE.match(out[-1]):
+                    out.pop()  # "..., wait, no, forward two feet": the "wait" opened the correction, it is no stop
                 correct_next = bool(out)
                 continue
             correcting = True
         if correcting and out and _ONE_RE.match(clause):
             out.append(clause)  # "the doorway on the right, I mean the one after the second": it says more
+            continue
+        if correcting and out and _UNIT_ONLY_RE.match(normalize(clause)):
+            out[-1] = _unit_corrected(out[-1], normalize(clause))  # "five metres, oops, I meant feet"
             continue
         if correcting and out:
             out[-1] = _corrected(out[-1], clause) if is_fragment(clause) else _restated(out[-1], clause)
@@ -181,6 +190,23 @@ def apply_corrections(clauses: list[str]) -> list[str]:
     if take_back is not None:
         _take_back(out, take_back)  # "turn left thirty five degrees, never mind": nothing is left
     return out
+
+
+#: A correction that only names a unit ("I meant feet"): the amount said before, in that unit.
+_UNIT_ONLY_RE: Final = re.compile(r"^(?:in\s+)?(?P<unit>feet|foot|met(?:er|re)s?|inch(?:es)?|yards?|centimet(?:er|re)s?|"
+                                  r"degrees?)$")
+
+
+def _unit_corrected(previous: str, unit: str) -> str:
+    """'forward five metres' corrected by 'feet': the last amount's number with the unit put right (left as
+    said when its unit cannot be told apart from its number)."""
+    norm = normalize(previous)
+    said = [q for q in find_quantities(norm) if q.unit > 0]
+    if not said:
+        return f"{norm} {unit}"  # "turn left forty, I meant degrees": the unit the number lacked
+    q = said[-1]
+    words = norm[q.start:q.end].split()
+    return f"{norm[:q.start]}{' '.join(words[:-1])} {unit}{norm[q.end:]}" if len(words) > 1 else norm
 
 
 def _take_back(out: list[str], everything: bool) -> None:
@@ -203,7 +229,10 @@ def _corrected(previous: str, fragment: str) -> str:
         norm_prev = COMPASS_RE.sub(" ", norm_prev)
     quantities = find_quantities(norm_frag)
     if quantities:
-        for q in reversed(find_quantities(norm_prev)):
+        said = find_quantities(norm_prev)
+        # "go forward ten feet, actually make that eight": the number put right is in the unit said before
+        norm_frag = with_unit(norm_frag, unit_word(said[-1]) if said else None)
+        for q in reversed(said):
             norm_prev = norm_prev[:q.start] + " " + norm_prev[q.end:]
     return " ".join(f"{norm_prev} {norm_frag}".split())
 

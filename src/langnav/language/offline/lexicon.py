@@ -270,7 +270,7 @@ GO_VERBS: Final = (
     "squeeze", "wander", "journey", "cruise", "zip", "hop", "nudge", "budge", "position", "get over",
     "come over", "swing by", "pull up", "pull over", "pull", "arrive", "set off", "follow", "hug",
     "trace", "track", "skirt", "take", "stay", "keep", "edge", "shuffle", "ease", "stand", "go stand",
-    "go and stand", "go and", "sit", "wait",
+    "go and stand", "go and", "sit", "wait", "retreat", "withdraw",
 )
 
 ROTATE_VERBS: Final = ("turn", "rotate", "spin", "pivot", "swivel", "swing round", "swing around", "face", "look", "twist", "yaw",
@@ -296,15 +296,22 @@ STOP_PHRASES: Final = (
     "hang on a second", "hang on a sec", "hold on a second", "hold on a sec", "wait a second", "wait a sec",
     "wait a moment", "wait a minute", "just a second", "just a moment", "whoa there", "stop stop", "stay right there", "freeze right there",
     "halt right there", "quit moving", "okay stop", "ok stop", "stop right here", "hold up there",
+    # "hold" alone is the radio's stop ("hold, hold"; "turn around and hold")
+    "hold",
 )
 
 #: Questions and their answers.
 QUERY_POSE_PATTERNS: Final = (
     r"\bwhere\s+(?:exactly\s+|now\s+|on\s+earth\s+)?(?:are|r)\s+(?:you|u)\b(?!\s+(?:going|heading|headed|driving|off\s+to))", r"\bwhere\s+am\s+i\b", r"\bwhere\s+is\s+the\s+robot\b",
+    # ("hold your position", "keep your heading" ask to stay, not where the robot is)
+    r"(?<!\bhold\s)(?<!\bkeep\s)(?<!\bmaintain\s)"
     r"\b(?:your|the\s+robot'?s?|current|robot)\s+(?:current\s+|exact\s+|present\s+|last\s+)?"
     r"(?:position|location|pose|coordinates|whereabouts|heading|orientation|place)\b",
+    r"\b(?:report|send|give|tell)\s+(?:me\s+|us\s+)?(?:your\s+)?(?:current\s+|present\s+)?"
+    r"(?:position|location|pose|coordinates|whereabouts)\b",
     r"\bwhich\s+(?:way|direction)\s+are\s+you\s+(?:facing|pointing|heading|looking)\b",
-    r"\bwhere\s+(?:is\s+it|are\s+we)\b", r"\b(?:tell|show|say|know|report)\b.*\bwhere\s+you\s+are\b", r"\blocali[sz]e\s+yourself\b",
+    r"\bwhere\s+(?:is\s+it|are\s+we)\b", r"^\s*where\s+(?:you|u)\s+(?:are|r)\b",
+    r"\bwhere\s+(?:is|are|r)\s+(?:you|u|ya)\b(?!\s+(?:going|heading|headed|driving|off\s+to))", r"\b(?:tell|show|say|know|report)\b.*\bwhere\s+you\s+are\b", r"\blocali[sz]e\s+yourself\b",
     r"\bwhat\s+is\s+your\s+(?:position|location|pose)\b", r"\bwhere\s+abouts\b",
     r"\bwhat\s+room\s+are\s+you\s+in\b", r"\bwhere\s+have\s+you\s+got\s+to\b",
 )
@@ -318,7 +325,7 @@ QUERY_PATH_PATTERNS: Final = (
 )
 QUERY_MAP_PATTERNS: Final = (
     r"\b(?:show|give|send|display|get|fetch|let\s+me\s+see|can\s+i\s+see|see|view|open|bring\s+up|"
-    r"pull\s+up|print|draw|download|share|provide)\b(?:\s+\w+){0,4}?\s+(?:(?:mini|floor|site|overview)\s*-?\s*)?"
+    r"pull\s+up|print|draw|download|share|provide|transmit|upload|export|post)\b(?:\s+\w+){0,4}?\s+(?:(?:mini|floor|site|overview)\s*-?\s*)?"
     r"(?:map|occupancy\s+grid)\b",
     r"\bwhat\s+does\s+(?:the|your)\s+map\s+look\s+like\b", r"\b(?:the|your|current)\s+map\s*\?",
     r"^\s*(?:the\s+)?map\s*$", r"\bwhat\s+(?:have\s+you|did\s+you)\s+mapped\b",
@@ -397,6 +404,8 @@ LITTLE_PHRASES: Final = (
     "little bit", "a fraction", "a tiny amount", "ever so slightly", "a couple of centimeters",
     "a couple of centimetres", "a couple of degrees", "a smidgen", "gently", "a small bit",
     "just slightly", "very slightly", "only slightly",
+    # "make small turn to the left", "a slight turn right": a turn said to be small is a little turn
+    *(f"{pre}{size} turn" for pre in ("a ", "") for size in ("small", "slight", "tiny", "little", "short", "quick")),
     # "a teeny bit", "just a tiny touch", "a teeny tiny bit", "a lil bit": a small word before a small noun
     *(f"{pre}{size}{noun}" for pre in ("a ", "just a ", "only a ", "") for size in (
         "", "little ", "tiny ", "teeny ", "teeny tiny ", "teensy ", "teensy weensy ", "teeny weeny ", "wee ",
@@ -412,7 +421,11 @@ FILLER_PATTERNS: Final = (
     r"\b(?:i(?:\s+would|\s+will)?|we(?:\s+would)?)\s+(?:like|love|want|need|wish)\s+(?:you\s+)?(?:to\s+)?",
     r"\b(?:i|we)\s+(?:want|need)\s+(?:you\s+)?(?:to\s+)?", r"\bplease\b", r"\bpls\b", r"\bplz\b",
     r"\bkindly\b", r"\bthanks?(?:\s+you)?(?:\s+so\s+much|\s+a\s+lot)?\b", r"\bthank\s+you\b",
-    r"\bcheers\b", r"\b(?:hey|hi|hello|ok(?:ay)?|alright|all\s+right|right\s+then|so|well|now|um+|uh+|er+m?|hmm+)\b",
+    r"\bcheers\b", r"\bonly\b",
+    # "a distance of two metres", "by an angle of forty-five degrees": the words that announce the amount
+    r"\b(?:(?:for|by|over|through)\s+)?a\s+distance\s+of\b", r"\b(?:(?:by|through)\s+)?an\s+angle\s+of\b",
+    r"\bbe\s+(?:a\s+(?:dear|love|darling|star|sweetheart|good\s+robot)|so\s+kind)\s+(?:and|as\s+to)\b",
+    r"\bdo\s+me\s+a\s+favou?r(?:\s+and)?\b", r"\b(?:lol|lmao|rofl|haha+|hehe+|omg|btw|tbh)\b", r"\b(?:hey|hi|hello|ok(?:ay)?|alright|all\s+right|right\s+then|so|well|now|um+|uh+|er+m?|hmm+)\b",
     r"\b(?:dear\s+)?robot\b", r"\brobo\b", r"\bbuddy\b", r"\bmate\b", r"\bfirst\s+of\s+all\b",
     r"\bto\s+begin(?:\s+with)?\b", r"\bstart\s+by\b", r"\bbegin\s+by\b", r"\bjust\b", r"\balso\b",
     r"\bfor\s+me\b", r"\bif\s+you\s+(?:can|could|would|do\s+not\s+mind|please)\b", r"\bgo\s+ahead\s+and\b",
@@ -469,14 +482,14 @@ UNSAFE_PATTERNS: Final = (
     r"\b(?:into|through|against)\s+(?:the\s+|a\s+|that\s+|this\s+)?(?:\w+\s+)?walls?\b(?!\s+and)",
     r"\brun\s+over\b", r"\b(?:hurt|injure|kill|attack|chase|harm)\b", r"\bjailbreak\b", r"\bdeveloper\s+mode\b",
     r"\bdown\s+the\s+stairs\b", r"\boff\s+(?:the|a)\s+(?:edge|cliff|ledge|balcony)\b",
-    r"\bpretend\s+(?:you|to)\b", r"\byou\s+are\s+now\b", r"\bsystem\s+prompt\b", r"\bno\s+limits\b",
+    r"\bpretend\s+(?:you|to)\b", r"(?<!where\s)\byou\s+are\s+now\b", r"\bsystem\s+prompt\b", r"\bno\s+limits\b",
     r"\bspeed\s+limit\b", r"\bunsafe(?:ly)?\b", r"\breckless(?:ly)?\b", r"\bfloor\s+it\b",
     r"\binto\s+(?:the|a|that)\s+(?:obstacle|box|pillar|column|object)\b",
 )
 
 #: Verbs of things the robot cannot do (it only drives, turns, stops, explores and reports).
 OUT_OF_SCOPE_PATTERNS: Final = (
-    r"\bpick\s+(?:\w+\s+)?up\b", r"\bgrab\b", r"\bfetch\b", r"\bcarry\b", r"\bbring\s+(?:me|us)\s+(?!to\b|back\b)",
+    r"\bpick\s+(?:\w+\s+)?up\b", r"\bgrab\b", r"\bfetch\b", r"\bcarry\b(?!\s+on\b)", r"\bbring\s+(?:me|us)\s+(?!to\b|back\b)",
     r"\bbring\b(?!\s+(?:me|us)\b)", r"\bmake\s+(?:me|us)\b", r"\bcook\b", r"\bclean\b", r"\bvacuum\b",
     r"\bmop\b", r"\bsweep\b", r"\b(?:open|close)\s+(?:the|a|an|that|this|it|them|your|my|up)\b",
     r"(?<!\bthe\s)(?<!\ba\s)\bclose\s+(?:doors?|doorways?|gates?|windows?)\b",
@@ -484,7 +497,7 @@ OUT_OF_SCOPE_PATTERNS: Final = (
     r"\btell\s+(?:me|us)\s+a\s+(?:joke|story)\b", r"\bjoke\b", r"\bplay\b", r"\bcall\b", r"\bphone\b",
     r"\bwater\s+the\b", r"\bwash\b", r"\border\b", r"\bbuy\b", r"\bfeed\b", r"\bthrow\b", r"\bkick\b",
     r"\bdeliver\b", r"\bhand\s+(?:me|over)\b", r"\bgive\s+(?:me|us)\s+(?:a|the|some|my)\s+(?!map\b|path\b|route\b|position\b|location\b|pose\b)"
-    r"(?!(?:\w+\s+){0,3}(?:turn|spin|rotation|twirl|u\s+turn|pirouette)\b)",
+    r"(?!(?:\w+\s+){0,3}(?:turn|spin|rotation|twirl|u\s+turn|pirouette|one\s+eighty|three\s+sixty|180|360)\b)",
     r"\bturn\s+(?:on|off)\s+(?:the|a)\b", r"\bswitch\s+(?:on|off)\b", r"\bcharge\b", r"\brecharge\b",
     r"\bdock\b", r"\bphoto\b", r"\bpicture\b", r"\btake\s+a\s+(?:photo|picture|selfie)\b", r"\brecord\b",
     r"\bsay\b", r"\bspeak\b", r"\bwrite\b", r"\bread\b", r"\bsend\s+(?:an?\s+)?(?:email|message|text)\b",
@@ -498,6 +511,7 @@ OUT_OF_SCOPE_PATTERNS: Final = (
     r"\bcome\s+to\s+me\b", r"\bfind\s+(?:me|my|him|her|them|someone|somebody|the\s+person)\b",
     r"\bwhat\s+(?:is|are)\s+(?:you|your\s+name|the\s+meaning)\b(?!.*\b(?:position|location|pose|path|route|map|doing)\b)",
     r"\bwho\s+are\s+you\b", r"\bhow\s+are\s+you\b", r"\bcharging\s+station\b", r"\bdance\b",
+    r"\bhold\s+(?:the|a|an|that|this|my|our)\s+(?!position\b|place\b|spot\b|location\b|pose\b|heading\b)",
     r"\bwatch\b", r"\bguard\b", r"\bpatrol\b", r"\bsearch\s+for\b", r"\blook\s+for\b", r"\bhide\b",
 )
 
@@ -608,7 +622,9 @@ TYPOS: Final[dict[str, str]] = {
     "fwrd": "forward", "frwd": "forward", "fwds": "forwards", "yr": "your", "thx": "thanks",
     "acw": "anticlockwise", "aprox": "approximately", "abt": "about", "lil": "little", "litle": "little",
     "thn": "then", "nd": "and", "rly": "really",
-    "arnd": "around", "til": "till", "untill": "until", "b4": "before",
+    "arnd": "around", "til": "till", "untill": "until", "b4": "before", "shw": "show",
+    "niner": "nine", "wru": "where are you", "wya": "where are you", "nrth": "north", "noth": "north", "nort": "north",
+    "souht": "south", "suoth": "south", "wset": "west", "esat": "east",
 }
 
 #: Words that typo repair may aim at (edit distance 1, words of at least five letters).

@@ -12,6 +12,7 @@ from langnav.language.offline.numbers import Quantity, QuantityKind, find_quanti
 from langnav.language.offline.patterns import LITTLE_RE, MOVE_DIR_RE
 from langnav.language.offline.reading import (
     ASK_DISTANCE,
+    ASK_HOW_MANY,
     ASK_UNIT,
     DEFAULT_AMOUNT_FACTOR,
     ELLIPSIS_FACTOR,
@@ -28,7 +29,7 @@ from langnav.language.offline.verbs import Verb
 #: Sides only a turn has ("clockwise"): a fragment with one of them is a turn.
 _TURN_ONLY_SIDE_RE: Final = re.compile(r"\b(?:clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw)\b")
 _SIDEWAYS_RE: Final = re.compile(r"\bsideways\b")
-_BACKWARD_VERBS: Final = frozenset({"back up", "reverse", "back off", "go back", "head back"})
+_BACKWARD_VERBS: Final = frozenset({"back up", "reverse", "back off", "go back", "head back", "retreat", "withdraw"})
 
 
 def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
@@ -74,7 +75,9 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
         if q.kind == QuantityKind.LENGTH:
             counted.append(q)
             if q.approximate:
+                # "a few feet", "several metres": how far is not said; ask, never guess a count
                 c.doubt(VAGUE_NUMBER_FACTOR)
+                c.asks.append(ASK_HOW_MANY.format(said=c.s.text[q.start:q.end].strip()))
         elif q.kind == QuantityKind.BARE and not lengths:
             counted.append(q)
             c.doubt(UNITLESS_NUMBER_FACTOR)
@@ -94,6 +97,7 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
         if verb == Verb.NONE and distance is None:
             return []
         direction = Direction.FORWARD
+        c.guessed_direction = True
         if distance is None and amount == Amount.DEFAULT:
             c.doubt(GUESSED_DIRECTION_FACTOR)
     if amount == Amount.DEFAULT:

@@ -34,6 +34,30 @@ def unknown_destination(masked: str) -> str | None:
     return None
 
 
+#: A place named as the landmark of another one: "the room next to THE KITCHEN", "the room across the hall
+#: from THE BATHROOM", "the door by THE FRIDGE". The word after the determiner is the landmark's name.
+_LANDMARK_RE: Final = re.compile(
+    r"\b(?:next\s+to|beside|near|by|from|opposite|behind|past|beyond)\s+"
+    r"(?:the|my|our|your)\s+(?P<name>[a-z][\w']*(?:\s+[a-z][\w']*)?)")
+
+
+def unknown_landmark(masked: str, known_names: Sequence[str] = ()) -> str | None:
+    """The unknown word(s) naming the landmark of an element ("the room next to the kitchen") when the user
+    has not named such a place: the map cannot know it, so which element is meant cannot be told (asked,
+    not guessed)."""
+    known = {place_key(n) for n in known_names}
+    for m in _LANDMARK_RE.finditer(masked):
+        words = m.group("name").split()
+        if words[0] in KNOWN_WORDS:
+            continue
+        if len(words) > 1 and words[1] in KNOWN_WORDS:
+            words = words[:1]
+        if any(place_key(" ".join(words[:k])) in known for k in range(1, len(words) + 1)):
+            return None
+        return " ".join(words)
+    return None
+
+
 def named(c: Clause, name: str, known_names: Sequence[str]) -> Reading:
     """A place the map cannot know: a step to it if the user named it before, else a question."""
     clean = re.sub(r"^(?:the|a|an|my|our)\s+", "", name).strip()

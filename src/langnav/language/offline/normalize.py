@@ -44,7 +44,7 @@ _SYMBOLS: Final = (
 )
 _CONTRACTIONS: Final = (
     (re.compile(r"\b(you|we|they)'re\b"), r"\1 are"), (re.compile(r"\bi'm\b"), "i am"),
-    (re.compile(r"\b(you|we|they|i)'ve\b"), r"\1 have"), (re.compile(r"\b(i|you|we|they)'d\b"), r"\1 would"),
+    (re.compile(r"\b(you|we|they|i|where|what|who|how)'ve\b"), r"\1 have"), (re.compile(r"\b(i|you|we|they)'d\b"), r"\1 would"),
     (re.compile(r"\b(i|you|we|they|that|it|this)'ll\b"), r"\1 will"), (re.compile(r"\bcan't\b"), "cannot"),
     (re.compile(r"\bwon't\b"), "will not"), (re.compile(r"\b(\w+)n't\b"), r"\1 not"),
     (re.compile(r"\blet's\b"), "let us"),
@@ -67,9 +67,34 @@ _IDIOMS: Final = (
      "turn 360 degrees"),
     (re.compile(r"\b(?:do|make)\s+a\s+(?:full\s+|complete\s+)?circle\b"), "turn 360 degrees"),
     # "do a one eighty", "pull a three sixty": a half or full turn named by its degrees
-    (re.compile(r"\b(?:do|make|pull|perform)\s+(?:a|an)\s+(one\s+eighty|180|three\s+sixty|360)\b(?!\s*(?:degrees?|turn))"),
+    (re.compile(r"\b(?:do|make|pull|perform|execute|hit|give\s+(?:me|us))\s+(?:a|an)\s+(one\s+eighty|180|three\s+sixty|360)\b"
+                r"(?!\s*(?:degrees?|turn))"),
      r"turn \1 degrees"),
     (re.compile(r"\boutside\s+(?:of\s+)?(?=(?:the|this|that|your)\s+(?:room|hallway|corridor|hall)\b)"), "out of "),
+    # "keep turning right", "continue rotating": a turn (the amount follows, or is asked)
+    (re.compile(r"\b(?:keep(?:\s+on)?|continue|carry\s+on|go\s+on)\s+(?:turning|rotating|spinning|pivoting|to\s+turn|"
+                r"to\s+rotate)\b"), "turn"),
+    # "come left / right" is the helm's and the pilot's turn; "come about" is turning around
+    (re.compile(r"\bcome\s+(?=(?:hard\s+)?(?:left|right)\b)"), "turn "),
+    (re.compile(r"\bcome\s+about\b"), "turn around"),
+    # "make the turn around", "do a turn around": the turn around
+    (re.compile(r"\b(?:make|do)\s+(?:the\s+|a\s+)?turn\s+(?=(?:a)?round\b)"), "turn "),
+    # "do a twirl", "do a spin": one whole turn
+    (re.compile(r"\b(?:do|make|perform)\s+(?:a|one)\s+(?:little\s+)?(?:twirl|pirouette|spin)\b"), "turn 360 degrees"),
+    # "a quarter of the way round", "half of the way around": that part of a turn
+    (re.compile(r"\b(a\s+quarter|one\s+quarter|half|three\s+quarters)\s+of\s+the\s+way\s+(?:a)?round\b"), r"\1 turn"),
+    # "in a forward direction", "in the counterclockwise direction": that way
+    (re.compile(r"\bin\s+(?:a|the)\s+(forwards?|backwards?|clockwise|counter\s*clockwise|anti\s*clockwise)\s+direction\b"),
+     r"\1"),
+    # "turn left one more time", "once more": again (no amount)
+    (re.compile(r"\b(?:one\s+more\s+time|once\s+more|once\s+again)\b"), "again"),
+    # "one more turn to the left", "another turn": a turn (not one whole turn, not an amount)
+    (re.compile(r"\b(?:one\s+more|another|a\s+further)\s+turn\b(?!\s+(?:of|and))"), "turn"),
+    # "a right angle" is 90 degrees (the "right" of it is no side)
+    (re.compile(r"\b(?:by\s+)?(?:a|one)\s+right\s+angle\b"), "90 degrees"),
+    # "i want see behind", "i need go left": the "to" learners leave out after want / need / like
+    (re.compile(r"\b(want|wanna|need|would\s+like)\s+(?=(?:see|look|go|turn|move|know|check|have|take|get)\b)"),
+     r"\1 to "),
     # "clock wise", "counter clock wise": one word each
     (re.compile(r"\b(?:(counter|anti)\s*)?clock\s+wise\b"), r"\1clockwise"),
     # "so that you are facing north": the facing is the instruction ("so that" is no pronoun "that")
@@ -97,6 +122,20 @@ _IDIOMS: Final = (
     # named (an "it" or a missing "of ..." after "end" points back at the place of the same sentence)
     (re.compile(r"\b(hall|hallway|corridor)\b(.*?)\b(at|to|near|by)\s+the\s+(far\s+|other\s+)?end(?:\s+of\s+it\b|(?!\s+of\b))"),
      r"\1\2\3 the \4end of the \1"),
+    # "face south. south is behind the whiteboard": a sentence saying where a compass point lies is the
+    # speaker explaining, not an instruction (the compass of the map is what "face south" turns to)
+    (re.compile(r"^(?:and\s+|so\s+)?(?:north|south|east|west)(?:\s+is|\s+'s|'s)\s+(?:behind|in\s+front\s+of|over|"
+                r"where|towards?|by|beside|next\s+to|past|beyond|that\s+way|this\s+way|on\s+the\s+side)\b.*$"), ""),
+    # "between the first door on the left and the second one": "one" is the same noun, on the same side
+    (re.compile(r"\bbetween\s+the\s+(" + _ORDINAL + r")\s+(door|doorway|room|obstacle|corner|opening)\b(\s+on\s+(?:your|the|my)\s+"
+                r"(?:left|right)(?:\s+(?:hand\s+)?side)?)?\s+and\s+(?:the\s+)?(" + _ORDINAL + r")\s+one\b"),
+     r"between the \1 \2\3 and the \4 \2\3"),
+    # "between the first two doors on your left": the first and the second of them
+    (re.compile(r"\bbetween\s+the\s+first\s+(?:two|2)\s+(door|doorway|room|obstacle|corner|opening)s\b(\s+on\s+(?:your|the|my)\s+"
+                r"(?:left|right)(?:\s+(?:hand\s+)?side)?)?"), r"between the first \1\2 and the second \1\2"),
+    # "go out and turn right", "step out, please": out of the room the robot is in (no place called "out")
+    (re.compile(r"\b(go|get|step|head|walk|drive|move)\s+out\b(?=\s*(?:$|,|and\b|then\b|now\b|please\b))"),
+     r"\1 out of this room"),
     # "back out the door", "back out of the room": leave through it (which way the robot faces while it
     # leaves is Nav2's business, not a backward move of unsaid length)
     (re.compile(r"\bback\s+out\s+(?=(?:of|through|the|this|that|via)\b)"), "go out "),

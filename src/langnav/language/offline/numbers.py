@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import StrEnum
 from typing import Final
 
@@ -24,6 +24,13 @@ TENS: Final[dict[str, int]] = {
     "twenty": 20, "thirty": 30, "forty": 40, "fourty": 40, "fifty": 50, "sixty": 60, "seventy": 70,
     "eighty": 80, "ninety": 90,
 }
+#: Every number word said as one word ("seven", "fifteen", "ninety"), longest first: the one pattern
+#: that every stage looking for a number said in words uses (restarts, corrections, the splitter's
+#: "and", durations, turn counts, labels), so that each knows the same words as the number reading.
+NUMBER_WORDS: Final = "|".join(sorted((w for w in (*ONES, *TENS) if (ONES | TENS)[w] > 0), key=len, reverse=True))
+#: The same words as a tuple, with "hundred": the words a cut-off word ("fi-", "hun-") may start.
+NUMBER_WORD_LIST: Final = (*sorted((w for w in (*ONES, *TENS) if (ONES | TENS)[w] > 0), key=len, reverse=True),
+                           "hundred")
 #: "and a half", "one half", "a quarter of a": the fraction each word names.
 FRACTIONS: Final[dict[str, float]] = {"half": 0.5, "quarter": 0.25, "third": 1 / 3,
                                       "three quarters": 0.75, "three quarter": 0.75,
@@ -50,6 +57,8 @@ LENGTH_UNITS_M: Final[dict[str, float]] = {
 }
 #: A number said after feet without a unit is inches when it is below this ("5 foot 6").
 INCHES_PER_FOOT: Final = 12
+#: A number said after metres without a unit is centimetres when it is below this ("1 m 20").
+CENTIMETRES_PER_METRE: Final = 100
 
 #: Angle units in degrees.
 ANGLE_UNITS_DEG: Final[dict[str, float]] = {
@@ -75,7 +84,7 @@ _HUNDREDS: Final = (rf"(?:(?:a|one|two|three|four|five|six|seven|eight|nine)\s+)
 _DIGIT_WORD: Final = "zero|oh|one|two|three|four|five|six|seven|eight|nine"
 _WORD_NUM: Final = rf"(?:{_HUNDREDS}|{_WORD_INT})(?:\s+point(?:\s+(?:{_DIGIT_WORD}))+)?"
 _DIGIT_NUM: Final = r"(?:\d+\s+\d+\s*/\s*\d+|\d+\s*/\s*\d+|\d+(?:\.\d+)?|\.\d+)"
-_AND_FRACTION: Final = r"(?:\s+and\s+(?:a\s+|one\s+)?(?:half|quarter|third|three\s+quarters))"
+_AND_FRACTION: Final = r"(?:\s+and\s+(?:a\s+|one\s+)?(?:half|quarter|third|three\s+quarters?))"
 #: One number, in digits or words, with an optional "and a half".
 NUMBER: Final = rf"(?:{_DIGIT_NUM}|{_WORD_NUM}){_AND_FRACTION}?"
 _VAGUE: Final = phrase_regex(VAGUE_COUNTS)
@@ -117,8 +126,13 @@ class Quantity:
     unit: float = 0.0
     #: said as more than what came before ("two more metres", "another foot"): it adds to it
     adds: bool = False
+    #: said as another way of giving the amount before it ("2 metres or 6 feet"): one of the two
+    alternative: bool = False
 
 
+#: Between two amounts: the second is another way of saying the first ("2 metres or 6 feet").
+_OR_BEFORE: Final = re.compile(r"^\s*,?\s*(?:or|maybe|perhaps|possibly|or\s+(?:about|around|roughly|maybe|perhaps|like|so))"
+                               r"(?:\s+(?:about|around|roughly|like))?\s*,?\s*$")
 _ADDS_RE: Final = re.compile(r"\b(?:more|another|further|additional|extra)\b")
 
 #: Two amounts closer than this are the same amount (a millimetre, a hundredth of a degree).
@@ -132,7 +146,8 @@ def one_amount(quantities: list[Quantity]) -> float | None:
     centimetres", "a yard and a foot"): each part in a smaller unit than the one before adds to it.
     The same amount said again, in any unit ("a full spin, three sixty"; "two hundred centimetres,
     that's two metres") is that amount once: adding it would take the robot farther than asked.
-    An amount said to be more ("4 feet, then two more metres") adds to the one before.
+    An amount said to be more ("4 feet, then two more metres") adds to the one before; one said as
+    another way of giving it ("2 metres or 6 feet") is the smaller of the two.
     Anything else (two different amounts in the same unit, or a larger unit after a smaller one)
     is no reading of one amount: the caller asks which one was meant."""
     if not quantities:
@@ -140,12 +155,17 @@ def one_amount(quantities: list[Quantity]) -> float | None:
     total = quantities[0].value
     unit = quantities[0].unit
     for q in quantities[1:]:
+        if q.alternative:
+            total = min(total, q.value)  # "2 metres or 6 feet": never farther than either
+            unit = q.unit
+            continue
         if q.adds:
             total += q.value  # "go 4 feet, two more metres"
             continue
         if abs(q.value - total) <= SAME_AMOUNT_TOL or abs(q.value - quantities[0].value) <= SAME_AMOUNT_TOL:
             continue  # said again
-        if unit > 0 and 0 < q.unit < unit:
+        if unit > 0 and 0 < q.unit < unit and q.value < unit - SAME_AMOUNT_TOL:
+            # (a part of a compound is less than one of the unit before it: "two feet twelve inches" is none)
             total += q.value
             unit = q.unit
             continue
@@ -171,7 +191,7 @@ _E: Final = r"(?![\w.]*\w)"
 _UNIT_PATTERNS: Final[tuple[tuple[QuantityKind, re.Pattern[str]], ...]] = (
     # "a metre and a half", "a meter", "an inch", "another metre", "one more foot"
     *((kind, re.compile(rf"{_B}{_AMOUNT_LEAD}(?P<lead>a|an|one|another)\s+(?:(?:single|{_MORE})\s+)?(?P<unit>{unit})"
-                        rf"(?P<tail>\s+and\s+a\s+(?:half|quarter))?{_AMOUNT_TAIL}"))
+                        rf"(?P<tail>\s+and\s+(?:a\s+)?(?:half|quarter))?{_AMOUNT_TAIL}"))
       for kind, unit in ((QuantityKind.LENGTH, _LENGTH_UNIT), (QuantityKind.ANGLE, _ANGLE_UNIT))),
     # "half a meter", "a quarter of a metre", "three quarters of a meter"
     *((kind, re.compile(rf"{_B}{_AMOUNT_LEAD}(?P<frac>{_LEAD_FRACTION})\s*(?P<unit>{unit}){_AMOUNT_TAIL}"))
@@ -181,7 +201,7 @@ _UNIT_PATTERNS: Final[tuple[tuple[QuantityKind, re.Pattern[str]], ...]] = (
     *((kind, re.compile(rf"{_B}{_AMOUNT_LEAD}(?:(?P<low>{NUMBER})\s+(?:or|to)\s+|(?P<low_digits>\d+(?:\.\d+)?)\s*-\s*(?=\d))?"
                         rf"(?P<num>{NUMBER}|{_VAGUE})"
                         rf"(?:\s+{_MORE})?\s*-?\s*(?P<unit>{unit})"
-                        rf"(?P<tail>\s+and\s+a\s+(?:half|quarter))?{_AMOUNT_TAIL}"))
+                        rf"(?P<tail>\s+and\s+(?:a\s+)?(?:half|quarter))?{_AMOUNT_TAIL}"))
       for kind, unit in ((QuantityKind.LENGTH, _LENGTH_UNIT), (QuantityKind.ANGLE, _ANGLE_UNIT))),
 )
 #: "pi/2 radians", "pi radians", "half pi"
@@ -201,13 +221,16 @@ _NOT_UNITS: Final = (r"(?:seconds?|secs?|minutes?|mins?|hours?|times|steps?|perc
 _BARE_PATTERN: Final = re.compile(rf"{_B}{_AMOUNT_LEAD}(?P<num>{NUMBER})(?!\s*(?:st|nd|rd|th)\b)(?![\w])(?!\s*{_NOT_UNITS}\b)")
 #: "1 m 50", "2 metres 30": metres and centimetres.
 _METRES_CENTIMETRES: Final = re.compile(
-    r"(?<![\w.])(?P<m>\d+)\s*(?:m|meters?|metres?)\s+(?:and\s+)?(?P<cm>\d{1,2})"
-    rf"(?!\s*(?:cm|mm|m|degrees?|deg|inch(?:es|s)?|ins?|feets?|foot|ft|yards?|yds?|\.|\d|{_NOT_UNITS}\b))(?![\w.])")
+    rf"(?<![\w.])(?P<m>\d+|{_WORD_INT})\s*(?:m|meters?|metres?)\s+(?:and\s+)?(?P<cm>\d{{1,2}}|{_WORD_INT})"
+    rf"(?!\s*(?:cm|mm|m|centimet(?:er|re)s?|millimet(?:er|re)s?|degrees?|deg|inch(?:es|s)?|ins?|feets?|foot|ft|yards?|"
+    rf"yds?|\.|\d|{_NOT_UNITS}\b))(?![\w.])")
 
 
 #: "2 foot 6", "five feet three", "six foot and two": feet and then inches, the inch unit left unsaid.
 _FEET_INCHES: Final = re.compile(
-    rf"(?<![\w.])(?P<ft>\d+|{_WORD_INT})\s*(?:feet|foot|ft|')\s+(?:and\s+)?(?P<inch>\d{{1,2}}|{_WORD_INT})"
+    rf"(?<![\w.])(?P<ft>\d+|{_WORD_INT})\s*(?:feet|foot|ft|')\s*(?:and\s+)?(?P<inch>\d{{1,2}}|{_WORD_INT})"
+    # the inches' unit may be said too ("5 ft 10 in", "5'10\""); "in" followed by a place is no unit
+    r"(?:\s*(?:inch(?:es)?|inchs|\"|ins?(?!\s+(?:the|a|an|front|this|that|your|my|here|there)\b)))?"
     rf"(?!\s*(?:cm|mm|m|meters?|metres?|feet|foot|ft|inch(?:es|s)?|ins?|yards?|yds?|degrees?|deg|\.|\d|"
     rf"{_NOT_UNITS}\b))(?![\w.])")
 
@@ -222,12 +245,42 @@ _HUGE: Final = 1e15
 NEGATIVE_NUMBER: Final = re.compile(r"(?<![\w.])[-−–](?=\.?\d)")
 
 
+#: Digit words as radio operators say numbers, one digit at a time ("one five feet", "rotate left one
+#: three five", "two zero feet"); "niner" is the radio's nine, "oh" a zero after another digit.
+_DIGIT_VALUES: Final[dict[str, int]] = {**{w: v for w, v in ONES.items() if v <= 9}, "niner": 9}
+_DIGIT_RUN_WORD: Final = "|".join(sorted(_DIGIT_VALUES, key=len, reverse=True))
+DIGIT_RUN: Final = re.compile(
+    rf"(?<!point\s)(?<![\w.,-])(?P<run>(?:{_DIGIT_RUN_WORD})(?:\s+(?:{_DIGIT_RUN_WORD}|oh)){{1,3}})"
+    r"(?!\s+(?:point|hundred|thousand|and\s+(?:a\s+)?(?:half|quarter))\b)(?![\w-])", re.IGNORECASE)
+
+
+#: "five-ish feet", "90ish degrees": about that number.
+_ISH: Final = re.compile(rf"\b(?P<num>\d+(?:\.\d+)?|{NUMBER_WORDS})[\s-]?ish\b", re.IGNORECASE)
+
+
+def _digits(m: re.Match[str]) -> str:
+    """A run of digit words as the number it spells, when it can only be that number: its digits are
+    not one digit said again ("four four": a restart, read there), and two digits one apart ("two
+    three feet") may be a range ("two or three feet"), so those stay words (and the reading asks)."""
+    words = m.group("run").lower().split()
+    if words[0] in ("oh",) or len(set(words)) == 1:
+        return m.group(0)
+    if words[0] == words[1]:
+        words = words[1:]  # "one one five": a stutter on the first digit, then the number
+    values = [0 if w == "oh" else _DIGIT_VALUES[w] for w in words]
+    if len(values) < 2 or (len(values) == 2 and abs(values[1] - values[0]) == 1 and 0 not in values):
+        return m.group(0)
+    return str(int("".join(map(str, values))))
+
+
 def canonical_numbers(text: str) -> str:
     """Digits in one form before a prompt is split and read: scientific notation written out
-    ("1e3" -> "1000", "1e309" -> a huge number, "1e-400" -> "0") and thousands separators
-    dropped ("1,000,000" -> "1000000")."""
+    ("1e3" -> "1000", "1e309" -> a huge number, "1e-400" -> "0"), thousands separators
+    dropped ("1,000,000" -> "1000000") and numbers said digit by digit written as the number
+    ("one three five" -> "135")."""
     text = _THOUSANDS.sub(lambda m: m.group(0).replace(",", ""), text)
-    return _SCIENTIFIC.sub(_write_out, text)
+    text = _ISH.sub(r"about \g<num>", text)
+    return DIGIT_RUN.sub(_digits, _SCIENTIFIC.sub(_write_out, text))
 
 
 def _write_out(m: re.Match[str]) -> str:
@@ -251,7 +304,7 @@ def number_value(text: str) -> float:
     if t in VAGUE_COUNTS:
         return VAGUE_COUNTS[t][0]
     extra = 0.0
-    m = re.fullmatch(r"(?P<head>.+?)\s+and\s+(?:a\s+|one\s+)?(?P<frac>half|quarter|third|three quarters)", t)
+    m = re.fullmatch(r"(?P<head>.+?)\s+and\s+(?:a\s+|one\s+)?(?P<frac>half|quarter|third|three quarters?)", t)
     if m:
         t = m.group("head")
         extra = FRACTIONS[m.group("frac")]
@@ -344,8 +397,14 @@ def find_quantities(text: str) -> list[Quantity]:
                    for m in _TURN_PATTERN.finditer(text)]
     candidates += [Quantity(QuantityKind.ANGLE, _pi_degrees(m), m.start(), m.end())
                    for m in _PI_PATTERN.finditer(text)]
-    candidates += [Quantity(QuantityKind.LENGTH, int(m.group("m")) + int(m.group("cm")) / 100, m.start(), m.end())
-                   for m in _METRES_CENTIMETRES.finditer(text)]
+    for m in _METRES_CENTIMETRES.finditer(text):
+        try:
+            metres, centimetres = number_value(m.group("m")), number_value(m.group("cm"))
+        except ValueError:
+            continue
+        if centimetres < CENTIMETRES_PER_METRE:  # "one metre twenty" is 1.20 m
+            candidates.append(Quantity(QuantityKind.LENGTH, metres + centimetres / CENTIMETRES_PER_METRE,
+                                       m.start(), m.end()))
     for m in _FEET_INCHES.finditer(text):
         try:
             inches = number_value(m.group("inch"))
@@ -370,7 +429,9 @@ def find_quantities(text: str) -> list[Quantity]:
             except ValueError:
                 continue
             add(Quantity(QuantityKind.BARE, value, m.start(), m.end()))
-    return sorted(found, key=lambda q: q.start)
+    found.sort(key=lambda q: q.start)
+    return [replace(q, alternative=True) if i and _OR_BEFORE.search(text[found[i - 1].end:q.start]) else q
+            for i, q in enumerate(found)]
 
 
 def _unit_quantity(kind: QuantityKind, m: re.Match[str]) -> Quantity | None:

@@ -41,6 +41,7 @@ from typing import Final
 from langnav.language.intent import (
     Amount,
     Detail,
+    Direction,
     Element,
     ElementRef,
     Movement,
@@ -52,10 +53,10 @@ from langnav.language.offline.compass import compass_steps
 from langnav.language.offline.details import assign_details
 from langnav.language.offline.idioms import named_turn_alone
 from langnav.language.offline.moves import move_steps
-from langnav.language.offline.names import named, unknown_destination
+from langnav.language.offline.names import named, unknown_destination, unknown_landmark
 from langnav.language.offline.navigation import navigate_steps, stop_steps
 from langnav.language.offline.normalize import normalize
-from langnav.language.offline.numbers import find_quantities
+from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS, find_quantities
 from langnav.language.offline.patterns import (
     EXPLORE_RE,
     FILLER_RE,
@@ -138,6 +139,10 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
     phrases, name = find_phrases(c.s, previous_target)
     if name is not None:
         return named(c, name, known_names)
+    if phrases:
+        landmark = unknown_landmark(c.s.masked(), known_names)
+        if landmark is not None:
+            return named(c, landmark, known_names)  # "the room next to the kitchen": which room is a guess
     if start_place is not None:
         phrases.append(Phrase(ref=START_REF, start=start_place.start(), end=start_place.end(),
                                head_start=start_place.start(), detail=Detail.TO))
@@ -169,7 +174,7 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
         # a distance with no verb and no direction ("banana 2", "alert(1)", a lone "2 m") is no
         # instruction of its own: it may only complete the step before it ("move forward, 2 m")
         return Reading(unread=(text,), confidence=NOTHING_READ_CONFIDENCE, problem=Problem.UNREADABLE)
-    if steps and any(NUMBERISH_RE.search(w) for w in leftovers):
+    if steps and (any(NUMBERISH_RE.search(w) for w in leftovers) or _number_word_left([w for x in (*leftovers, *c.lost) for w in x.split()], norm)):
         # a number left unread ("the 25th door", "ninety billion degrees", "3.5.5 m") means the
         # step was read without it: never move on a misread number, ask instead
         return Reading(unread=(text,), confidence=NOTHING_READ_CONFIDENCE, problem=Problem.BAD_NUMBER)
@@ -179,9 +184,11 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
         return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.DURATION)
     unnumbered = [st for st in steps if st.movement in (Movement.MOVE, Movement.ROTATE)
                   and st.target is None] if not find_quantities(norm) else []
-    if (guessed or unnumbered) and (leftovers or c.lost):
-        # a default move or turn built around words not understood ("take the stairs ...") is a
-        # misreading: never motion, hand the clause on instead
+    way_unread = c.guessed_direction and any(_WAY_INSIDE_RE.search(w) for w in leftovers)
+    if ((guessed or unnumbered) and (leftovers or c.lost)) or way_unread:
+        # a default move or turn built around words not understood ("take the stairs ..."), or a move
+        # whose way was assumed while a word not understood has a way in it ("go backside one metre":
+        # it may be the way) is a misreading: never motion, hand the clause on instead
         return Reading(unread=(text,), confidence=NOTHING_READ_CONFIDENCE, problem=Problem.UNREADABLE)
     c.lost.extend(c.s.text[m.start():m.end()].strip() for m in durations)
     if not steps:
@@ -202,6 +209,17 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
                    through_previous=c.through_previous, open=_is_open(steps, norm), asks=tuple(c.asks))
 
 
+def _number_word_left(leftovers: list[str], norm: str) -> bool:
+    """A number word left unread ("rover, advance one two feet": the "one"): the amount was not read in
+    full. ("one" is also a pronoun, "the one on the left": only right before another number is it one.)"""
+    return any(w in NUMBER_WORD_SET and w != "one" for w in leftovers) or (
+        "one" in leftovers and _ONE_BEFORE_NUMBER_RE.search(norm) is not None)
+
+
+_ONE_BEFORE_NUMBER_RE: Final = re.compile(rf"\bone\s+(?:\d|(?:{NUMBER_WORDS})\b)")
+NUMBER_WORD_SET: Final = frozenset(NUMBER_WORD_LIST)
+#: A word not read that has a way inside it ("backside", "leftways", "rearward"): it may say the way.
+_WAY_INSIDE_RE: Final = re.compile(r"back|side|left|right|front|rear|revers|ward|round")
 #: Words that give the side of a move or a turn.
 _SIDE_WORD_RE: Final = re.compile(r"\b(?:left|right|forwards?|ahead|straight|back|backwards?|reverse|around|round|"
                                   r"clockwise|counter\s*clockwise|anti\s*clockwise|sideways)\b")
@@ -220,7 +238,10 @@ def _is_open(steps: list[Step], norm: str) -> bool:
             or last.heading_deg is not None:
         return False
     sides = _TURN_SIDE_RE if last.movement == Movement.ROTATE else _SIDE_WORD_RE
-    return last.amount in (Amount.DEFAULT, Amount.LITTLE) or sides.search(norm) is None
+    if last.amount in (Amount.DEFAULT, Amount.LITTLE):
+        return True
+    # a turn around ("180") has its side: either way is the same turn
+    return sides.search(norm) is None and last.direction != Direction.AROUND
 
 
 def _compass_reading(c: Clause, steps: list[Step], open_: bool) -> Reading:

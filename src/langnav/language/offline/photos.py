@@ -22,13 +22,16 @@ PHOTO_RE: Final = re.compile(
     r"\s+what\s+(?:you\s+(?:can\s+)?(?:see|are\s+seeing)|is\s+there|"
     r"is\s+(?:in\s+front|around)(?:\s+of\s+you)?|is(?=\s+(?:behind|to|on|at)\b))"
     r"|what\s+(?:do|can)\s+you\s+see|what\s+are\s+you\s+seeing"
-    r"|(?:take|have)\s+a\s+look(?:\s+around)?(?=\s*$)"
+    # "i want to see behind you", "i'd like to look to the left" (learners: "i want see behind")
+    r"|(?:i|we)(?:\s+want|\s+would\s+like|'?d\s+like|\s+need|\s+wanna)\s+(?:to\s+)?(?:see|look)"
+    r"(?=\s+(?:behind|around|to\s+(?:the|your)|on\s+(?:the|your)|at\s+(?:the|your))\b)"
+    r"|(?:take|have)\s+a\s+look(?:\s+around)?(?=\s*$|\s+(?:to|on)\s+(?:your|the)\s+(?:left|right)\b)"
     r"|(?:turn|switch)\s+on\s+(?:the\s+|your\s+)?(?:video\s+)?camera|(?:start|begin)\s+(?:recording|filming)"
     r"|record\s+(?:a\s+)?video"
     r"|" + _PHOTO_NOUN + r"\s+(?:please|now)?\s*$)\b")
 #: What a photo request may say about where to point: the part the robot can do.
 _SIDE_RE: Final = re.compile(r"\b(?:to|on|at|of)\s+(?:your|the)\s+(?P<side>left|right)\b")
-_BEHIND_RE: Final = re.compile(r"\bbehind\s+(?:you|the\s+robot|yourself)\b")
+_BEHIND_RE: Final = re.compile(r"\bbehind(?:\s+(?:you|the\s+robot|yourself)\b|\s*$)")
 #: Words around a photo request that only belong to it ("please", "from your location", "in the room").
 _PHOTO_LEFTOVER: Final = re.compile(
     r"\b(?:please|now|again|also|too|as\s+well|of\s+(?:it|that|this|what\s+is\s+there|the\s+area|the\s+room)|"

@@ -39,6 +39,7 @@ ASK_SIDE: Final = "Which way should I turn, left or right?"
 ASK_DISTANCE: Final = "How far should I move {direction}?"
 ASK_UNIT: Final = "In what unit is '{number}': metres, feet or something else?"
 ASK_AMOUNT: Final = "I heard more than one amount ({amounts}): which one did you mean?"
+ASK_HOW_MANY: Final = "How far exactly is '{said}'?"
 
 
 class Problem(StrEnum):

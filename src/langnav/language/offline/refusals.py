@@ -8,6 +8,7 @@ from typing import Final
 
 from langnav.language.offline import lexicon as lx
 from langnav.language.offline.normalize import normalize
+from langnav.language.offline.numbers import NUMBER_WORDS
 from langnav.language.offline.patterns import STOP_RE, any_of
 
 UNSAFE_RE: Final = any_of(lx.UNSAFE_PATTERNS)
@@ -16,8 +17,8 @@ OUT_OF_SCOPE_RE: Final = any_of(lx.OUT_OF_SCOPE_PATTERNS)
 OTHER_FLOOR_RE: Final = any_of(lx.OTHER_FLOOR_PATTERNS)
 #: A time instead of a distance or an angle ("for 5 seconds", "for a while").
 DURATION_RE: Final = re.compile(
-    r"\b(?:for\s+)?(?:(?:about|around|roughly|approximately|like|another)\s+)?(?:two|three|four|five|six|seven|"
-    r"eight|nine|ten|fifteen|twenty|thirty|a\s+few|a\s+couple\s+of|a\s+couple|few|several)\s+(?:more\s+)?"
+    rf"\b(?:for\s+)?(?:(?:about|around|roughly|approximately|like|another)\s+)?(?:{NUMBER_WORDS}|"
+    r"a\s+few|a\s+couple\s+of|a\s+couple|few|several)\s+(?:more\s+)?"
     r"(?:seconds|secs|minutes|mins|hours|hrs|moments)\b"
     r"|\b\d+(?:\.\d+)?\s*(?:seconds?|secs?|minutes?|mins?|hours?|hrs?|s)\b(?!\s*(?:steps?|times?))"
     r"|\bfor\s+(?:about\s+|around\s+)?(?:a|an|one|half\s+a|another)\s+(?:second|sec|minute|min|moment|hour|"

@@ -89,8 +89,14 @@ def _restated(first: str, second: str, read: ClauseReader) -> str | None:
         return f"{second} {said}"  # "fifteen degrees turn, turn to your left"
     if a_sideless and a_bare and ASK_SIDE not in b_reading.asks:
         return second  # "face up, face north", "turn, um, turn right": a false start
-    if a_bare and not b_bare and a.direction == b.direction and a.direction in (Direction.LEFT, Direction.RIGHT):
+    if a_bare and not b_bare and a.direction == b.direction and a.direction in (Direction.LEFT, Direction.RIGHT) \
+            and ASK_SIDE not in b_reading.asks:
         return second  # "turn left, turn left two hundred seventy degrees"
+    if a_bare and not b_bare and not a_sideless and ASK_SIDE in b_reading.asks \
+            and a.direction in (Direction.LEFT, Direction.RIGHT):
+        amounts = normalize(second)
+        said = " ".join(amounts[q.start:q.end] for q in find_quantities(amounts))
+        return f"{first} {said}"  # "turn to your left, a quarter turn": the amount of the turn just asked for
     if a_bare and b_bare and a.direction == b.direction == Direction.AROUND:
         return first  # "turn all the way around, so that you face the other direction"
     if a_bare and not b_bare and a.direction == Direction.AROUND and _TURN_SIDE_RE.search(normalize(second)) is None:

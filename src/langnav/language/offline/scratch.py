@@ -55,6 +55,7 @@ class Clause:
     explore_verb: bool = False  # "explore the unknown area on your left" (a trip towards it)
     through_previous: bool = False  # "stop after you pass through it": the previous step goes through
     asks: list[str] = field(default_factory=list)  # what the reading would have to guess: ask instead
+    guessed_direction: bool = False  # a move said with no way: forward is assumed ("go 2 m")
 
     def doubt(self, factor: float) -> None:
         self.factors.append(factor)

@@ -12,6 +12,7 @@ import re
 from typing import Final
 
 from langnav.language.offline.lexicon import TYPOS
+from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS
 from langnav.language.offline.vocabulary import VOCABULARY
 
 #: Hesitation sounds: no meaning in any position.
@@ -38,8 +39,7 @@ _CUT_OFF: Final = re.compile(r"(?<![\w-])[a-z]+-(?=[\s,.;!?]|$)", re.IGNORECASE)
 _NOISE: Final = re.compile(r"^[bcdfghjklmnpqrstvwxz]{2,4}$")
 #: Unit letters that are sounds when no number comes before them ("mm move forward", "uh m uh").
 _UNIT_SOUNDS: Final = frozenset({"m", "mm"})
-_NUMBER_WORD: Final = re.compile(r"^(?:[\d.,/]*\d[\d.,/]*|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|"
-                                 r"\w+teen|twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety|hundred|half|a|an)$")
+_NUMBER_WORD: Final = re.compile(rf"^(?:[\d.,/]*\d[\d.,/]*|{NUMBER_WORDS}|hundred|half|a|an)$")
 #: "can you move, can you turn left": a request started again; the words before the restart go.
 _RESTART: Final = re.compile(r"\b(?:can|could|will|would)\s+you\s+(?:(?!(?:and|then)\b)[^\s,.;]+\s+){1,3}?"
                              r"(?=(?:can|could|will|would)\s+you\b)",
@@ -48,13 +48,13 @@ _RESTART: Final = re.compile(r"\b(?:can|could|will|would)\s+you\s+(?:(?!(?:and|t
 #: read as a clause of its own ("turn ninety degrees right actually left").
 CORRECTION_MARKERS: Final = (
     r"actually(?:\s+no)?(?:\s+i\s+meant|\s+i\s+mean)?", r"no,?\s+wait", r"no\s+no", r"wait,?\s+no", r"oh\s+wait",
-    r"i\s+meant\s+to\s+say", r"i\s+mean\s+to\s+say", r"make\s+it(?=\s+(?:\d|a\b|an\b|one|two|three|four|five|six|"
-    r"seven|eight|nine|ten|half|just|only|twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety))",
-    r"(?:i'?m|i\s+am|im)\s+sorry", r"sorry", r"i\s+meant", r"i\s+mean", r"or\s+rather", r"make\s+that",
+    r"i\s+meant\s+to\s+say", r"i\s+mean\s+to\s+say", rf"make\s+it(?=\s+(?:\d|a\b|an\b|half|just|only|(?:{NUMBER_WORDS})\b))",
+    r"(?:i'?m|i\s+am|im)\s+sorry", r"sorry", r"i\s+meant", r"i\s+mean", r"i\s+said", r"my\s+(?:bad|mistake)", r"or\s+rather", r"make\s+that",
     r"scratch\s+that", r"never\s*mind", r"correction", r"oops",
     # "turn eighty degrees right no eighty five": "no" right before a number corrects the amount
-    r"no(?=\s+(?:\d|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|fifteen|twenty|thirty|forty|fifty|"
-    r"sixty|seventy|eighty|ninety|a\s+hundred|half)\b)",
+    rf"no(?=\s+(?:\d|a\s+hundred|half|{NUMBER_WORDS})\b)",
+    # "turn left no right thirty degrees": "no" right before another side corrects the side
+    r"(?:(?<=\bleft\s)|(?<=\bright\s))no(?=\s+(?:(?:to\s+(?:the|your)\s+)?(?:left|right)|clockwise|counter\s*clockwise)\b)",
 )
 _MARKER_INSIDE: Final = re.compile(r"(?P<before>\S+)\s+(?=(?:" + "|".join(CORRECTION_MARKERS) + r")\b)",
                                    re.IGNORECASE)
@@ -108,12 +108,24 @@ REQUEST_FRAMES: Final = re.compile(
 REMARKS: Final = re.compile(
     r"(?:^|(?<=[,.;!?])|\b(?=(?:is|would|will)\s+(?:that|this)\b))\s*(?:(?:is|would|will)\s+(?:that|this|it)\s+(?:be\s+)?"
     r"(?:ok(?:ay)?|alright|possible|fine|doable|a\s+(?:thing|problem)|something|too\s+much)\b[^,.;!?]*"
-    r"|sorry\s+if\b[^,.;!?]*|(?:sorry|apologies)\s+(?:about|for)\s+(?:that|this)\b|my\s+(?:bad|mistake)\b"
+    r"|sorry\s+if\b[^,.;!?]*|(?:sorry|apologies)\s+(?:about|for)\s+(?:that|this)\b"
     r"|(?:i|we)\s+(?:do\s+not|don't|dont)\s+want\s+(?:you\s+|it\s+)?to\s+(?:crash|hit|bump|collide|smash|run\s+into)\b"
     r"[^,.;!?]*"
     r"|(?:and\s+)?(?:be\s+)?careful\s+not\s+to\s+(?:crash|hit|bump|collide|smash|run\s+into|touch)\b[^,.;!?]*)"
-    r"|\bso\s+(?:that\s+)?(?:i|we)\s+(?:can|could|may|might|will)\b[^,.;!?]*",
+    r"|\bso\s+(?:that\s+)?(?:i|we)\s+(?:can|could|may|might|will)\b[^,.;!?]*"
+    # "please do one thing, ...": announces the request that follows
+    r"|(?:^|(?<=[,.;!?]))\s*(?:please\s+)?do\s+one\s+thing\b[^,.;!?]*"
+    # thanks said ahead: "..., that would be great", "that'd be awesome"
+    r"|\b(?:that|it|this)(?:'d|\s+would|\s+will)\s+be\s+(?:(?:really|very|so|just|super)\s+)?(?:great|nice|good|perfect|"
+    r"awesome|helpful|wonderful|lovely|fantastic|brilliant|appreciated|ideal|amazing|cool)\b[^,.;!?]*"
+    # checks of the radio link: they ask nothing about the motion ("you're breaking up", "do you copy?")
+    r"|\b(?:(?:you'?re|you\s+are|ur)\s+breaking\s+up|you\s+(?:cut|broke)\s+(?:out|up)|"
+    r"(?:can|could|did|do)\s+(?:you|u)\s+(?:hear|read)\s+me|(?:can|could|did|do)\s+(?:you|u)\s+(?:copy|read)|"
+    r"how\s+(?:do\s+you\s+)?(?:copy|read)|are\s+(?:you|u)\s+(?:there|still\s+there|listening|receiving))\b[^,.;!?]*",
     re.IGNORECASE)
+#: "that" opening a clause said to someone ("I want that you turn", "I think that we should go"): a
+#: conjunction, no place; the clause reads the same without it.
+THAT_CLAUSE: Final = re.compile(r"\bthat\s+(?=(?:you|u|we|i)\s)", re.IGNORECASE)
 #: Words after which a comma is no clause break: the phrase goes on after the pause ("go to the, uh,
 #: the first door", "the nearest, um, corner").
 _OPEN_WORDS: Final = frozenset({
@@ -135,18 +147,42 @@ HOLDING_THE_FLOOR: Final = re.compile(r"^\s*(?:(?:oh|um|uh|okay|ok|so)\s*,?\s+)*
 #: again, and are no such marker.)
 RESTATEMENT_MARKERS: Final = re.compile(
     r"[,.;]?\s*\b(?:i\s+say\s+again|say\s+again|i\s+repeat|let\s+me\s+repeat(?:\s+that)?|(?:like|as)\s+i\s+said|"
-    r"in\s+other\s+words|that\s+is\s+to\s+say|once\s+again\s+i\s+say)\b\s*[,.;:]?", re.IGNORECASE)
+    r"in\s+other\s+words|that\s+is\s+to\s+say|once\s+again\s+i\s+say)\b\s*[,.;:]?"
+    # "... Again: move forward 2 m" / "again, turn left": "again" opening what is said once more (said after
+    # it, "turn left again", or alone, "... again.", it asks for the motion once more)
+    r"|(?:^|(?<=[.;!?]))\s*(?:(?:and|so|ok(?:ay)?)\s+)?(?:once\s+)?again\s*[:,;-]\s*(?=[a-z])", re.IGNORECASE)
 #: Radio procedure words, said alone between commas (people who drive robots often talk as on a radio):
 #: "negative" is no (a correction or a refusal, never the "negative" = clockwise of a turn), "affirmative",
 #: "roger", "copy (that)", "wilco" acknowledge, "over" / "over and out" end the message.
-RADIO_NO: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*negative\s*(?=[,.;!?]|$)", re.IGNORECASE)
-RADIO_NOISE: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*(?:affirmative|roger(?:\s+that)?|copy(?:\s+that)?|wilco|"
+RADIO_NO: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*negative(?:\s+on\s+that)?(?:\s+(?:robot|rover|bot|base))?\s*(?=[,.;!?]|$)",
+                            re.IGNORECASE)
+#: A radio call opening a message names who is called and who calls ("base to robot, ...", "robot, this is
+#: base, ..."): no instruction.
+_STATION: Final = r"(?:robot|rover|bot|unit|base|command|control|operator|team|hq|headquarters|scout)"
+RADIO_CALL: Final = re.compile(rf"^\s*(?:{_STATION}\s+to\s+{_STATION}|{_STATION},?\s+this\s+is\s+{_STATION})\s*(?=[,.;!?]|$)",
+                               re.IGNORECASE)
+RADIO_NOISE: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*(?:affirmative|roger(?:\s+that)?|copy(?:\s+that)?|wilco|that\s+is|i\.?e|"
                                 r"over(?:\s+and\s+out)?|out)\s*(?=[,.;!?]|$)", re.IGNORECASE)
 #: A number started and said again whole ("four, four and a half metres", "twenty, twenty feet"): the
 #: first try is no amount of its own.
 NUMBER_RESTART: Final = re.compile(
-    r"\b(?P<num>\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|fifteen|twenty|"
-    r"thirty|forty|fifty|sixty|seventy|eighty|ninety|a\s+hundred|one\s+hundred)\s*,?\s+(?=(?P=num)\b(?![/.]\d))", re.IGNORECASE)
+    rf"\b(?P<num>\d+(?:\.\d+)?|a\s+hundred|one\s+hundred|{NUMBER_WORDS})\s*,?\s+(?=(?P=num)\b(?![/.]\d))", re.IGNORECASE)
+#: Words that name one of several alternatives a speaker may set against each other: sides, ways, compass
+#: points, units and numbers.
+_ALTERNATIVE: Final = (rf"(?:(?:to\s+(?:the|your)\s+)?(?:left|right|forwards?|backwards?|back|clockwise|counter\s*clockwise|"
+                       rf"anti\s*clockwise|north|south|east|west|north\s*east|north\s*west|south\s*east|south\s*west|"
+                       rf"feet|foot|inch(?:es)?|yards?|met(?:er|re)s?|centimet(?:er|re)s?|degrees?|\d+(?:\.\d+)?|"
+                       rf"{NUMBER_WORDS}))")
+#: A contrast that names what is not meant ("turn left, not right"; "three feet not four"; "not left but
+#: right"): the alternative said with "not" is no instruction, only the other one is (and the clause is
+#: no negation of the whole instruction).
+CONTRAST_AFTER: Final = re.compile(rf"\b(?P<said>{_ALTERNATIVE})\s*,?\s+(?:and\s+|but\s+)?not\s+{_ALTERNATIVE}\b"
+                                   r"(?!\s+(?:but|rather)\b)", re.IGNORECASE)
+CONTRAST_BEFORE: Final = re.compile(rf"\bnot\s+{_ALTERNATIVE}\s*,?\s+(?:but|rather)\s+(?=\S)", re.IGNORECASE)
+#: "go forward and stop after two metres": the amount is how far the move goes (a stop after a place,
+#: "stop after the door", is read where places are).
+STOP_AFTER_AMOUNT: Final = re.compile(rf"\s*,?\s+(?:and\s+)?stop\s+after\s+(?=(?:\d|a\b|an\b|half\b|(?:{NUMBER_WORDS})\b))",
+                                      re.IGNORECASE)
 #: "twenty feet even", "two metres flat", "ninety degrees exactly": the amount, exactly (no word of its own).
 _UNIT_THEN_EXACT: Final = re.compile(
     r"\b(?P<unit>feet|foot|ft|inch(?:es)?|yards?|met(?:er|re)s?|centimet(?:er|re)s?|cm|degrees?)\s+"
@@ -154,8 +190,8 @@ _UNIT_THEN_EXACT: Final = re.compile(
 #: Numbers that count the instructions of a list ("Step one, turn left. Step two, go forward"; "1) turn
 #: left 2) go forward"; "number three: stop"): they order the list, they are no amount.
 ENUMERATION: Final = re.compile(
-    r"(?:^|(?<=[.;!?,:\n]))\s*(?:(?:step|number|no|item|part|instruction|command|point)\s+(?:one|two|three|four|five|"
-    r"six|seven|eight|nine|ten|\d{1,2})\b|\(?\d{1,2}\s*[).](?!\d))\s*[,:.)-]?(?=\s)",
+    rf"(?:^|(?<=[.;!?,:\n]))\s*(?:(?:step|number|no|item|part|instruction|command|point)\s+(?:{NUMBER_WORDS}|"
+    r"\d{1,2})\b|\(?\d{1,2}\s*[).](?!\d))\s*[,:.)-]?(?=\s)",
     re.IGNORECASE)
 #: "1) turn left 2) go forward": a number closed by a bracket marks a list item wherever it stands.
 LIST_ITEM: Final = re.compile(r"(?:^|(?<=\s))\(?\d{1,2}\)(?=\s)")
@@ -171,10 +207,12 @@ def plain_speech(prompt: str) -> str:
     text = LIST_ITEM.sub(". ", ENUMERATION.sub(" ", text))
     text = HOLDING_THE_FLOOR.sub("", TAG_QUESTION.sub(".", text))
     text = RESTATEMENT_MARKERS.sub(", ", text)
-    text = RADIO_NOISE.sub(" ", RADIO_NO.sub(" no", text))
+    text = CONTRAST_AFTER.sub(r"\g<said>", CONTRAST_BEFORE.sub("", text))
+    text = STOP_AFTER_AMOUNT.sub(" ", text)
+    text = RADIO_NOISE.sub(" ", RADIO_NO.sub(" no", RADIO_CALL.sub(" ", text)))
     text = _UNIT_THEN_EXACT.sub(r"\g<unit>", NUMBER_RESTART.sub("", text))
     text = REQUEST_FRAMES.sub(" ", text)
-    text = REMARKS.sub(" ", text)
+    text = THAT_CLAUSE.sub("", REMARKS.sub(" ", text))
     text = _ABANDONED.sub(_drop_abandoned, text)
     kept_cuts = {m.start() for m in _unfinished(text)}  # kept: the reading must ask about them
     text = _CUT_OFF.sub(lambda m: m.group(0) if m.start() in kept_cuts else " ", text)
@@ -204,7 +242,7 @@ def plain_speech(prompt: str) -> str:
             kept[i] = kept[i].rstrip(",")  # "the, uh, the first door": one phrase
     kept = [t for i, t in enumerate(kept) if not (i + 1 < len(kept) and t.lower() in _OPEN_WORDS
                                                   and t.lower() == kept[i + 1].lower().strip(",.;:!?"))]
-    text = " ".join(kept)
+    text = NUMBER_RESTART.sub("", " ".join(kept))  # "three, uh, three feet": the restart seen once "uh" is gone
     return _MARKER_INSIDE.sub(_break_before_marker, text)
 
 
@@ -230,9 +268,7 @@ _RESTART_WORDS: Final = re.compile(r"\b(?:move|go|turn|rotate|drive|back|face|he
 
 
 #: Number words a cut-off word may be the start of ("fi-" of five, fifteen or fifty).
-_NUMBER_WORDS: Final = ("one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
-                        "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen", "twenty",
-                        "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety", "hundred")
+_NUMBER_WORDS: Final = NUMBER_WORD_LIST
 #: A cut-off word of this many letters may be the start of many words ("t-", "f-"): only after a
 #: number is it surely one.
 MIN_NUMBER_PREFIX: Final = 2

@@ -11,6 +11,7 @@ import re
 from typing import Final
 
 from langnav.language.offline.lexicon import GO_VERBS, ROTATE_VERBS, STOP_PHRASES, TYPOS
+from langnav.language.offline.numbers import NUMBER_WORDS
 
 #: Sentence punctuation, commas and line breaks, except inside a number ("1.5", "1,5").
 _PUNCTUATION_SPLIT: Final = re.compile(r"(?:[.!?;:,]+(?!\d)|(?<!\d)[.!?;:,]+|\n+|\s+-{1,2}\s+|\s+–\s+|\s+—\s+)")
@@ -19,14 +20,16 @@ _CONNECTIVE_SPLIT: Final = re.compile(
     r"\b(?:and\s+)?(?:then|after\s+that|after\s+this|afterwards|afterward|after\s+which|finally|lastly|"
     r"subsequently|and\s+next|and\s+also|as\s+well\s+as|followed\s+by|once\s+done|when\s+done|"
     r"once\s+finished|when\s+finished|once\s+you\s+are\s+done|and\s+when\s+you\s+are\s+done|"
-    r"and\s+once\s+there|and\s+when\s+there|and\s+from\s+there)\b",
+    r"and\s+once\s+there|and\s+when\s+there|and\s+from\s+there"
+    # "move forward two metres but don't turn": what not to do is an instruction of its own
+    r"|but(?=\s+(?:do\s+not|don'?t|never)\b))\b",
     re.IGNORECASE)
 #: A piece that opens with "the one" / "that one": after a connective it is a step of its own.
 _ONE_RE: Final = re.compile(r"^\s*(?:the|that)\s+one\b", re.IGNORECASE)
 _DECIMAL_COMMA: Final = re.compile(r"(?<=\d),(?=\d{1,2}(?!\d))")
 _LEAD_IN: Final = re.compile(r"^\s*(?:(?:please|now|ok(?:ay)?|yeah|yes|alright|so|well|just|robot|um|uh)\s+)*"
                              r"(?:go\s+ahead|go\s+on|come\s+on|try|"
-                             r"be\s+(?:a\s+dear|so\s+kind)|do\s+me\s+a\s+favou?r)\s*$", re.IGNORECASE)
+                             r"be\s+(?:a\s+(?:dear|love|darling|star|sweetheart|good\s+robot)|so\s+kind)|do\s+me\s+a\s+favou?r)\s*$", re.IGNORECASE)
 _AND: Final = re.compile(r"\s+(?:and|&|plus|\+)\s+", re.IGNORECASE)
 #: Words that may stand between "and" and the verb of a new instruction.
 _LEAD_FILLER: Final = frozenset({"please", "also", "then", "now", "just", "immediately", "kindly",
@@ -49,9 +52,20 @@ _STEP_VERBS: Final = frozenset(
 _WEAK_STEP_VERBS: Final = frozenset({"get", "keep", "make", "do", "stay", "position", "point", "have"})
 
 
+#: Speech written with no punctuation ("move forward seven feet turn right"): an amount's unit ends an
+#: instruction, and a verb that starts one right after it starts the next.
+_UNIT_THEN_VERB: Final = re.compile(
+    r"\b(?:feet|foot|ft|inch(?:es)?|yards?|met(?:er|re)s?|centimet(?:er|re)s?|cm|degrees?|deg)\s+"
+    # (a verb said last closes its own instruction: "right 30 degrees rotate" is one turn)
+    r"(?=(?:rotate|pivot|face|move|go|drive|head|advance|proceed|reverse)\s+[a-z0-9]|(?:stop|halt|freeze)\b"
+    # "turn" / "spin" after a unit is a noun ("a 360 degree turn") unless a side follows it ("... turn right")
+    r"|(?:turn|spin)\s+(?:to\s+(?:the|your)\s+)?(?:left|right|around|round|back)\b)",
+    re.IGNORECASE)
+
+
 def split_steps(prompt: str) -> list[str]:
     """The instructions of ``prompt`` (already cleaned), in order, as the user wrote them."""
-    text = _DECIMAL_COMMA.sub(".", prompt)
+    text = _UNIT_THEN_VERB.sub(lambda m: m.group(0).rstrip() + ". ", _DECIMAL_COMMA.sub(".", prompt))
     pieces: list[str] = []
     for sentence in _PUNCTUATION_SPLIT.split(text):
         for i, part in enumerate(_CONNECTIVE_SPLIT.split(sentence)):
@@ -62,7 +76,11 @@ def split_steps(prompt: str) -> list[str]:
 
 
 def _trim(piece: str) -> str:
-    return piece.strip(" \t\"'()[]{}*")
+    trimmed = piece.strip(" \t\"'()[]{}*")
+    rest = piece.rstrip(" \t()[]{}*")
+    if trimmed and rest.endswith(("'", '"')) and rest[-2:-1].isdigit() and rest.count(rest[-1]) == 1:
+        return trimmed + rest[-1]  # "go forward 4'", "5'10\"": the foot and inch marks, not quotes
+    return trimmed
 
 
 def _split_on_and(part: str) -> list[str]:
@@ -83,12 +101,9 @@ def _split_on_and(part: str) -> list[str]:
 
 #: "one hundred and fifty", "a foot and a half", "one and a half": the "and" is inside a number.
 _HUNDRED_AND: Final = re.compile(r"\b(?:hundred|thousand)\s*$", re.IGNORECASE)
-_NUMBER_WORD_START: Final = re.compile(
-    r"^(?:one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|thirteen|fourteen|fifteen|sixteen|"
-    r"seventeen|eighteen|nineteen|twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety)\b", re.IGNORECASE)
+_NUMBER_WORD_START: Final = re.compile(rf"^(?:{NUMBER_WORDS})\b", re.IGNORECASE)
 _AMOUNT_END: Final = re.compile(
-    r"(?:\d|\b(?:one|two|three|four|five|six|seven|eight|nine|ten|a|an|foot|feet|inch(?:es)?|yards?|"
-    r"met(?:er|re)s?|degrees?))\s*$", re.IGNORECASE)
+    rf"(?:\d|\b(?:{NUMBER_WORDS}|a|an|foot|feet|inch(?:es)?|yards?|met(?:er|re)s?|degrees?))\s*$", re.IGNORECASE)
 _FRACTION_START: Final = re.compile(r"^(?:(?:a|one)\s+)?(?:half|quarter|third)\b", re.IGNORECASE)
 
 
@@ -118,13 +133,20 @@ def _starts_instruction(rest: str) -> bool:
 
 
 _AMOUNT_START: Final = re.compile(
-    r"^\s*(?:\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twenty|thirty|forty|fifty|"
-    r"sixty|seventy|eighty|ninety|a|an|half)\b[\w\s.-]{0,20}?\b(?:m|cm|mm|meters?|metres?|centimet(?:er|re)s?|"
+    rf"^\s*(?:\d+(?:\.\d+)?|{NUMBER_WORDS}|a|an|half)\b[\w\s.-]{{0,20}}?\b(?:m|cm|mm|meters?|metres?|centimet(?:er|re)s?|"
     r"feet|foot|ft|inch(?:es)?|degrees?|deg)\b\s+(?:to\s+the\s+)?(?:forwards?|backwards?|back|left|right|"
     r"clockwise|counter\s*clockwise|anti\s*clockwise)\b",
     re.IGNORECASE)
 
 
+#: "... and forward 1 m", "... and again two feet": a second move given by its way (or as more of the
+#: same) and its amount, with no verb.
+_WAY_THEN_AMOUNT: Final = re.compile(
+    rf"^\s*(?:(?:forwards?|backwards?|back|straight(?:\s+ahead)?|ahead|again|another|once\s+more|a\s+further)\s+)+"
+    rf"(?:\d|(?:{NUMBER_WORDS}|a|an|half)\b)", re.IGNORECASE)
+
+
 def _starts_with_amount(rest: str) -> bool:
-    """'... and 2 metres left': a second move given by its amount and direction only."""
-    return _AMOUNT_START.match(rest) is not None
+    """'... and 2 metres left', '... and forward 1 m': a second move given by its amount and direction only."""
+    plain = " ".join(TYPOS.get(w, w) for w in rest.lower().split())  # "... and fwd 1m"
+    return _AMOUNT_START.match(rest) is not None or _WAY_THEN_AMOUNT.match(plain) is not None

@@ -8,12 +8,14 @@ from collections.abc import Sequence
 from typing import Final
 
 from langnav.language.intent import Amount, Detail, Direction, ElementRef, Intent, Movement, Step
+from langnav.language.offline.amounts import said_again, same_way_again, with_unit_said_before
 from langnav.language.offline.ask import ask_message, spatial
 from langnav.language.offline.composition import read_composed
 from langnav.language.offline.corrections import (
     CANCEL_RE,
     apply_corrections,
     is_bare_verb,
+    is_fragment,
     is_hedge,
     join_fragments,
 )
@@ -21,7 +23,7 @@ from langnav.language.offline.idioms import plain_idioms
 from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.photos import without_photo
-from langnav.language.offline.reading import ASK_CONFIDENCE, ASK_SIDE
+from langnav.language.offline.reading import ASK_AMOUNT, ASK_CONFIDENCE, ASK_SIDE
 from langnav.language.offline.restarts import (
     drop_insisted_amounts,
     drop_stopped,
@@ -102,8 +104,15 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     previous_target: ElementRef | None = None
     asked: tuple[Problem, str, Reading] | None = None  # "which is the largest room?" before "drive into it"
     questions: list[str] = []   # what the reading would have to guess
+    last_asks: tuple[str, ...] = ()  # what the clause before asked, when its one step is the last step
     blocking: list[str] = []    # words left unread that could change where or how far
     for clause in clauses:
+        clause = with_unit_said_before(clause, previous, is_fragment(clause))
+        again = said_again(clause, previous)
+        if again is not None:
+            steps.append(again)  # "turn left ninety, and again": the same turn once more
+            previous = again
+            continue
         reading = read_composed(clause, previous, known_names, previous_target)
         if reading.problem == Problem.QUESTION and reading.referent is not None:
             asked = (reading.problem, clause, reading)
@@ -138,13 +147,25 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
                                                      "text": f"{steps[-1].text}, {clause}"[:500]})
         if reading.amends_previous and steps and new_steps and _amendable(steps[-1], new_steps[0]):
             steps[-1] = _amend(steps[-1], new_steps.pop(0), clause)
-        if steps and new_steps and not sequenced and _restates(steps[-1], new_steps[0], clause):
-            new_steps.pop(0)  # "forward two metres. forward two metres.": said again, done once
+        if (reading.amends_previous and steps and new_steps and not sequenced and not _REPEAT_RE.search(clause)
+                and same_way_again(steps[-1], new_steps[0]) and not _restates(steps[-1], new_steps[0], clause)):
+            # "go forward ten feet... ten metres": a different amount alone, with no word that corrects the first
+            # ("no", "sorry", "I mean") or adds to it: two readings of how far, so ask (never the sum)
+            questions.append(ASK_AMOUNT.format(amounts=f"'{steps[-1].text}', '{clause}'"))
+        elif steps and new_steps and not sequenced and _restates(steps[-1], new_steps[0], clause):
+            steps[-1] = _smaller(steps[-1], new_steps.pop(0))  # "forward two metres. forward two metres.": done once
         elif steps and new_steps and not sequenced and _completes(steps[-1], new_steps[0], clause):
             steps.pop()  # "turn left ... turn left fifty degrees": the same turn said again with its amount
+            for question in last_asks:
+                # "move forward ... you're breaking up ... move forward two metres": the bare move's
+                # question ("how far?") is answered by the move said again with its amount
+                if question in questions and question not in reading.asks:
+                    questions.remove(question)
         while steps and new_steps and _asked_again(steps[-1], new_steps[0]):
             new_steps.pop(0)  # "hold it, hold it"; "where are you? can you tell me where you are?"
         steps.extend(new_steps)
+        if new_steps:
+            last_asks = reading.asks if len(new_steps) == 1 else ()
         if steps:
             previous = steps[-1]
             targets = [s.target for s in steps if s.target is not None]
@@ -271,6 +292,10 @@ _REPEAT_RE: Final = re.compile(r"\b(?:again|another|more|further|twice|second\s+
 _SEQUENCE_RE: Final = re.compile(r"\b(?:then|after\s+that|afterwards|next|followed\s+by)\b", re.IGNORECASE)
 #: Two amounts closer than this are the same amount said again (less than one 3 cm / 10 degree step).
 _SAME_AMOUNT_TOL: Final = 1e-6
+#: Two amounts within this fraction of each other are one amount said again in another unit or rounded
+#: ("two metres, that is, about six and a half feet": 1.98 m; "ten feet, about three metres"): unit
+#: conversions people say in their head are this close; done once, the smaller.
+_SAME_AMOUNT_REL: Final = 0.05
 
 
 def _same_motion_said_again(previous: Step, step: Step, clause: str) -> bool:
@@ -294,7 +319,16 @@ def _restates(previous: Step, step: Step, clause: str) -> bool:
         a, b = previous.distance_m, step.distance_m
     else:
         a, b = previous.angle_deg, step.angle_deg
-    return a is not None and b is not None and abs(a - b) <= _SAME_AMOUNT_TOL
+        if a is None and b is None and previous.amount == step.amount == Amount.DEFAULT:
+            return True  # "robot, turn left, turn left, over": one turn said twice
+    return a is not None and b is not None and abs(a - b) <= max(_SAME_AMOUNT_TOL, _SAME_AMOUNT_REL * max(a, b))
+
+
+def _smaller(previous: Step, step: Step) -> Step:
+    """Of one motion said twice, the one that goes less far (never farther than either said)."""
+    if step.movement == Movement.MOVE:
+        return step if (step.distance_m or 0.0) < (previous.distance_m or 0.0) else previous
+    return step if (step.angle_deg or 0.0) < (previous.angle_deg or 0.0) else previous
 
 
 def _completes(previous: Step, step: Step, clause: str) -> bool:

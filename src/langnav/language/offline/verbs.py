@@ -12,7 +12,7 @@ from langnav.language.offline.patterns import GO_VERB_RE, ROTATE_VERB_RE, STOP_R
 from langnav.language.offline.scratch import Clause
 
 _TURN_A_SIDE_RE: Final = re.compile(r"\b(?:take|make|hang|do|go)\s+a\s+(?P<dir>left|right)\b(?:\s+turn\b)?")
-_TURN_NOUN_RE: Final = re.compile(r"\b(?:turn|rotation|spin|u\s+turn|180|about\s+face|circle|revolution|pirouette)\b")
+_TURN_NOUN_RE: Final = re.compile(r"\b(?:turn|rotation|spin|u\s+turn|180|360|about\s+face|circle|revolution|pirouette|twirl)\b")
 
 
 class Verb(StrEnum):
