@@ -269,13 +269,7 @@ def _cut_thin_parts(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
         r0, r1 = max(0, sr.start - pad), min(grid.height, sr.stop + pad)
         c0, c1 = max(0, sc.start - pad), min(grid.width, sc.stop + pad)
         own = lab[r0:r1, c0:c1] == k
-        free = layers.free[r0:r1, c0:c1]
-        fits = free
-        for axis in (0, 1):
-            fits = ndi.minimum_filter1d(fits, 2 * half + 1, axis=axis, mode="constant", cval=False)
-        for axis in (0, 1):
-            fits = ndi.maximum_filter1d(fits, 2 * half + 1, axis=axis, mode="constant", cval=False)
-        region = layers.unknown[r0:r1, c0:c1] | (free & ~fits)
+        region = _unknown_or_too_tight(layers, r0, r1, c0, c1, half)
         centres = truncated_sq_edt(region, reach) >= need * need
         covered = truncated_sq_edt(~centres, reach) <= cover2 + 1e-9
         thin = own & ~covered
@@ -382,13 +376,7 @@ def _wide_enough(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers
         if square.any() or int(truncated_sq_edt(own, reach)[own].max()) >= need * need:
             out[k] = True
             continue
-        free = layers.free[r0:r1, c0:c1]
-        fits = free
-        for axis in (0, 1):
-            fits = ndi.minimum_filter1d(fits, 2 * half + 1, axis=axis, mode="constant", cval=False)
-        for axis in (0, 1):
-            fits = ndi.maximum_filter1d(fits, 2 * half + 1, axis=axis, mode="constant", cval=False)
-        region = layers.unknown[r0:r1, c0:c1] | (free & ~fits)
+        region = _unknown_or_too_tight(layers, r0, r1, c0, c1, half)
         out[k] = int(truncated_sq_edt(region, reach)[own].max()) >= need * need
     return out
 
@@ -404,6 +392,18 @@ def _edge_adjacent(lab: IntArray, pairs: npt.NDArray[np.int64]) -> BoolArray:
         ok = (r2 >= 0) & (r2 < h) & (c2 >= 0) & (c2 < w)
         out[ok] |= flat[r2[ok] * w + c2[ok]] == pairs[ok, 1]
     return out
+
+
+def _unknown_or_too_tight(layers: GridLayers, r0: int, r1: int, c0: int, c1: int, half: int) -> BoolArray:
+    """In the window rows r0:r1, cols c0:c1: the unknown cells and the free cells no square of
+    side 2 * half + 1 cells that is all free covers (floor too tight for the robot to stand on)."""
+    free = layers.free[r0:r1, c0:c1]
+    fits = free
+    for axis in (0, 1):
+        fits = ndi.minimum_filter1d(fits, 2 * half + 1, axis=axis, mode="constant", cval=False)
+    for axis in (0, 1):
+        fits = ndi.maximum_filter1d(fits, 2 * half + 1, axis=axis, mode="constant", cval=False)
+    return np.asarray(layers.unknown[r0:r1, c0:c1] | (free & ~fits))
 
 
 def reachable_floor(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, specks: BoolArray,
