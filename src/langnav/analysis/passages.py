@@ -315,10 +315,10 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             if not corridor_like:
                 # (A short one needs the wall on past both of its mouths: it is a squeeze along a
                 # wall, not round the end of one.)
-                past = _past_mouths(sub, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res, WALL_RUN_M / res)
+                half_len = (hi - lo + 1.0) / 2.0
+                past = _past_mouths(sub, centre_g, axis, half_len, width_m / res, WALL_RUN_M / res)
                 thing = _beside_a_wall(past, both_mouths=not elongated)
                 if not elongated:
-                    normal = np.array([-axis[1], axis[0]])
                     depth = params.door_max_depth_m / res
                     sides_deep = [_deep(sub, pts[bounded], normal * (2 * j - 1), sides[bounded, j], depth)
                                   for j in (0, 1)]
@@ -330,7 +330,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                     # does, along WALL_RUNS_ON_SHARE of seg_wall_line_side_m: a wall's corner is
                     # no thing.)
                     squeeze = (sides_deep[thing] if thing is not None else all(sides_deep) and bool(
-                        _past_mouths(sub, centre_g, axis, (hi - lo + 1.0) / 2.0, width_m / res,
+                        _past_mouths(sub, centre_g, axis, half_len, width_m / res,
                                      params.seg_wall_line_side_m / res, SIDE_TOL_M / res).max()
                         < WALL_RUNS_ON_SHARE))
                     if not squeeze:
@@ -349,7 +349,6 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 door_at = any(math.dist(d.center, (float(cw[0]), float(cw[1])))
                               <= length_m / 2 + params.door_max_depth_m for d in doors)
                 round_reach = WAY_ROUND_M / res if thing is None and not door_at else math.inf
-                half_len = (hi - lo + 1.0) / 2.0
                 if (thing is not None or squeeze) and (door_at or width_m > TIGHT_WIDTH_M) and _way_round(
                         fits, fits, centre_g, axis, half_len, width_m / res, round_reach):
                     continue

@@ -174,7 +174,7 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     order = np.argsort(fr[:, 0], kind="stable")
     splits = np.searchsorted(fr[order, 0], np.arange(1, n_areas + 2))
 
-    need = math.ceil(params.unexplored_min_frontier_m / grid.resolution_m - 1e-9)
+    need = _min_frontier_cells(grid, params)
     areas: list[UnexploredArea] = []
     for k in range(1, n_areas + 1):
         sel = order[splits[k - 1]:splits[k]]
@@ -193,6 +193,11 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     return UnexploredResult(tuple(areas), area_labels, exterior, specks)
 
 
+def _min_frontier_cells(grid: OccupancyGrid, params: AnalysisParams) -> int:
+    """How many frontier cells in one run make an opening (``params.unexplored_min_frontier_m``)."""
+    return math.ceil(params.unexplored_min_frontier_m / grid.resolution_m - 1e-9)
+
+
 def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, lab: IntArray, n: int,
                   sizes: npt.NDArray[np.int64], outside: BoolArray, pairs: npt.NDArray[np.int64]) -> BoolArray:
     """Per unknown component (index = label): would a person send the robot to look at it? For
@@ -205,8 +210,7 @@ def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayer
     candidate[inside] = sizes[inside] * grid.cell_area_m2 >= params.unexplored_worth_area_m2
     candidate &= _wide_enough(grid, params, layers, lab, candidate)
     candidate &= ~_seen_all_round(grid, params, layers, lab, candidate)
-    res = grid.resolution_m
-    need = math.ceil(params.unexplored_min_frontier_m / res - 1e-9)
+    need = _min_frontier_cells(grid, params)
     worth = np.zeros(n + 1, dtype=bool)
     # (``pairs`` hold only the frontier cells the robot comes up to from the main free space.)
     # The outside world: enough of its frontier within reach.
