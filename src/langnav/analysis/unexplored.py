@@ -211,7 +211,7 @@ def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayer
     candidate = np.zeros(n + 1, dtype=bool)
     candidate[inside] = sizes[inside] * grid.cell_area_m2 >= params.unexplored_worth_area_m2
     candidate &= _wide_enough(grid, params, layers, lab, candidate)
-    candidate &= ~_seen_all_round(grid, params, layers, lab, candidate)
+    candidate &= ~_seen_all_round(grid, params, layers, lab, sizes, candidate)
     worth = np.zeros(n + 1, dtype=bool)
     # (``pairs`` hold only the frontier cells the robot comes up to from the main free space.)
     # The outside world: enough of its frontier within reach.
@@ -303,13 +303,18 @@ def _cut_thin_parts(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
 
 
 def _seen_all_round(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, lab: IntArray,
-                    candidate: BoolArray) -> BoolArray:
-    """Per unknown component (index = label; only ``candidate`` ones tested): did the robot's scans
-    go all round it? It touches no wall (every occupied piece beside it is no bigger than a piece
-    of furniture, ``params.seg_island_max_area_m2``: scanned legs and edges), so free floor
-    surrounds it, and it is narrower than ``params.unexplored_enclosed_max_width_m``, so a lidar
-    on that floor would have seen into it had nothing stood in the way: it is a thing (a group of
-    desks, a glass table, a plant), and sending the robot there shows nothing more."""
+                    sizes: npt.NDArray[np.int64], candidate: BoolArray) -> BoolArray:
+    """Per unknown component (index = label, ``sizes`` its cells; only ``candidate`` ones tested):
+    did the robot's scans go all round it? It touches no wall (every occupied piece beside it is
+    no bigger than a piece of furniture, ``params.seg_island_max_area_m2``: scanned legs and
+    edges), so free floor surrounds it, and it is narrower than
+    ``params.unexplored_enclosed_max_width_m``, so a lidar on that floor would have seen into it
+    had nothing stood in the way: it is a thing (a group of desks, a glass table, a plant), and
+    sending the robot there shows nothing more. A thing shows where it stands by the scan hits
+    on its outline (legs, edges, faces); only one piece of furniture's size (up to
+    ``params.seg_island_max_area_m2``: a glass table the laser passes through) may show none. A
+    larger pocket with no hit at all on its edge shows nothing standing there: floor the map
+    holds no scan of, worth a look."""
     out = np.zeros(len(candidate), dtype=bool)
     if not candidate.any():
         return out
@@ -319,9 +324,12 @@ def _seen_all_round(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     # touches a wall.
     pairs = adjacent_pairs(candidate[lab], occ.labels)
     walled = np.zeros(len(candidate), dtype=bool)
+    hit = np.zeros(len(candidate), dtype=bool)
     if len(pairs):
         walled[lab.ravel()[pairs[occ.sizes[pairs[:, 1]] > island, 0]]] = True
-    ids = np.flatnonzero(candidate & ~walled)
+        hit[lab.ravel()[pairs[:, 0]]] = True
+    unseen = ~hit & (sizes > island)
+    ids = np.flatnonzero(candidate & ~walled & ~unseen)
     if len(ids) == 0:
         return out
     rows, cols = nonzero2(np.isin(lab, ids))
