@@ -222,7 +222,7 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     # standing in a row is no wall).
     # The building's wall directions, found once for the wall gaps and the doors in outer walls.
     walls = occupied & ~fl.floor
-    directions = dominant_directions(walls)
+    directions = fl.wall_directions.of(walls) if fl.wall_directions is not None else dominant_directions(walls)
     closed = closure_mask(wall_gaps(walls, fl.floor, res, params, directions), fl.floor)
     split_floor, split_clear = fl.floor, fl.clearance_m
     if closed.any():
