@@ -95,3 +95,17 @@ def test_a_gap_inside_a_passage_is_that_passage(two_rooms: MapAnalysis) -> None:
     both = dataclasses.replace(a, narrow_passages=(passage,))
     assert [e.id for e in elements_of_kind(both, Kind.NARROW_PASSAGE)] == ["passage_1"]
     assert [e.id for e in elements_of_kind(a, Kind.NARROW_PASSAGE)] == ["door_2"]
+
+
+def test_a_rooms_only_way_in_is_its_door_however_narrow(two_rooms: MapAnalysis) -> None:
+    # room B entered only through the 0.68 m opening (door_1 walled up): a booth behind a 0.7 m door
+    only = dataclasses.replace(with_gap(two_rooms), doors=(with_gap(two_rooms).doors[1],))
+    assert only.doors[0].width_m < NARROW_GAP_MAX_M
+    assert [d.id for d in doors_of(only)] == ["door_2"]
+    pose = Pose.from_deg(*A_NORTH)
+    assert select(ref(kind="door", side="right", ordinal=1), only, pose).id == "door_2"
+    # still narrow: "the narrow gap" finds it too, and it does not make room B a part of room A
+    assert select(ref(kind="narrow_passage"), only, pose).id == "door_2"
+    assert [r.id for r in gap_joined(only, only.rooms[0])] == ["room_a"]
+    # with a second way into room B the narrow opening is a gap again, not one of the doors
+    assert [d.id for d in doors_of(with_gap(two_rooms))] == ["door_1"]

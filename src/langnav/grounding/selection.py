@@ -238,7 +238,7 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
     narrower than any door does not end a room: a corridor narrowed by a cart goes on past it, and a
     room parted by a row of shelves with a gap in it is one room, whose doors are the doors of both
     parts."""
-    gaps = [d for d in analysis.doors if is_gap(d)]
+    gaps = [d for d in analysis.doors if is_gap(d, analysis)]
     by_id = {r.id: r for r in analysis.rooms}
     group = [space]
     seen = {space.id}
@@ -403,25 +403,37 @@ def matches_side(e: Element, pose: Pose, side: Side) -> bool:
     return is_behind(pose, p)
 
 
-def is_gap(d: Door) -> bool:
-    """An opening narrower than any door (``NARROW_GAP_MAX_M``): a narrow gap, not a door."""
-    return d.width_m < NARROW_GAP_MAX_M
+def is_gap(d: Door, analysis: MapAnalysis) -> bool:
+    """An opening narrower than any door (``NARROW_GAP_MAX_M``): a narrow gap, not a door; unless
+    it is the only way into a room (``only_way_in``), which makes it that room's door."""
+    return d.width_m < NARROW_GAP_MAX_M and not only_way_in(d, analysis)
+
+
+def only_way_in(d: Door, analysis: MapAnalysis) -> bool:
+    """A room that has no other opening is entered through this one: whatever its width, it is the
+    room's door (a dressing room, a booth or a WC behind a 0.7 m door, narrower than today's codes
+    ask but common in older and back-of-house buildings). A gap between shelves or in a partition
+    parts a space that is entered some other way too."""
+    rooms = {r.id for r in analysis.rooms}
+    openings: list[Door | NarrowPassage] = [*analysis.doors, *analysis.narrow_passages]
+    return any(space in rooms and sum(space in o.connects for o in openings) == 1 for space in d.connects)
 
 
 def doors_of(analysis: MapAnalysis) -> list[Door]:
     """The doors a person counts: the analysis's doors without the narrow gaps."""
-    return [d for d in analysis.doors if not is_gap(d)]
+    return [d for d in analysis.doors if not is_gap(d, analysis)]
 
 
 def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
     """The elements the noun of ``kind`` names: "doors" are the doors without the gaps narrower than
-    any door, which are "narrow passages" (gaps) with the analysis's passages."""
+    any door, which are "narrow passages" (gaps) with the analysis's passages. A room's only way in
+    narrower than that is both: its door, and a narrow gap one squeezes through."""
     if kind == Kind.DOOR:
         return list(doors_of(analysis))
     if kind == Kind.NARROW_PASSAGE:
         passages = list(analysis.narrow_passages)
         # a gap inside a passage the analysis found is that passage's pinch, not a second one
-        gaps = [d for d in analysis.doors if is_gap(d) and not any(
+        gaps = [d for d in analysis.doors if d.width_m < NARROW_GAP_MAX_M and not any(
             math.dist(d.center, closest_on_segment(d.center, p.ends[0], p.ends[1])) <= p.width_m for p in passages)]
         return [*passages, *gaps]
     if kind == Kind.ROOM:
