@@ -620,3 +620,35 @@ def test_an_aisle_that_bends_at_its_end_into_a_door_leads_somewhere() -> None:
 def test_the_same_aisle_closed_at_its_end_leads_nowhere() -> None:
     # Control: the island runs on to the east wall and no door: a dead end.
     assert passages_of(laundry(island_x1=8.0, door=False)) == ()
+
+
+def conveyor_line(crack_m: float | None) -> OccupancyGrid:
+    """A 17 x 9 m hall crossed by a conveyor line (0.8 m deep, unknown inside its scanned
+    outline) with a 0.95 m walk-through gap at x 7.6-8.55. With ``crack_m``, the east conveyor's
+    end face was drawn twice: a one-cell line at x 8.45-8.5, then a free crack ``crack_m`` wide
+    before the conveyor's inside (a pose error between two passes)."""
+    b = MapBuilder(19.0, 11.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 17.0, 9.0)
+    b.box(1.5, 4.0, 7.6, 4.8).unknown(1.55, 4.05, 7.55, 4.75)
+    b.box(8.5, 4.0, 15.5, 4.8).unknown(8.55, 4.05, 15.45, 4.75)
+    if crack_m is not None:
+        b.free(8.5, 4.0, 8.5 + crack_m, 4.8)
+        b.rect(8.45, 4.0, 8.5, 4.8, OCCUPIED)
+    return b.build(source=f"conveyor_{crack_m}")
+
+
+@pytest.mark.parametrize("crack_m", [None, 0.1])
+def test_a_gap_in_a_conveyor_line_is_a_passage_its_doubled_end_face_too(crack_m: float | None) -> None:
+    # A crack no wider than scan noise (OUTLINE_CRACK_M) between the two copies of the end face
+    # is no way into the conveyor: it is as deep as before, and the gap between the ends is a
+    # squeeze between two things.
+    (p,) = passages_of(conveyor_line(crack_m))
+    assert p.center == pytest.approx((8.03, 4.4), abs=0.05)
+    assert p.width_m == pytest.approx(0.9 if crack_m is None else 0.85, abs=0.051)
+    assert p.length_m == pytest.approx(0.8, abs=0.1)
+
+
+def test_a_thin_panel_before_the_conveyor_end_is_no_thing_to_squeeze_past() -> None:
+    # Control: 0.3 m of floor behind the line: a thin panel standing before the conveyor, no
+    # deeper than a wall; the gap beside it is no squeeze between two things.
+    assert passages_of(conveyor_line(0.3)) == ()
