@@ -505,3 +505,33 @@ def test_the_straight_run_of_an_l_way_ends_at_its_bend() -> None:
     assert straight.straight_leg((1.0, 0.0), 2.4) is straight
     wiggle = Way.through([(0.0, 0.0), (5.0, 0.4), (10.0, 0.0)], 0.01)
     assert wiggle.straight_leg((1.0, 0.0), 2.4) is wiggle
+
+
+# ------------------------------------------------------------------------------ session 6 readings
+def test_going_past_a_door_in_a_hallway_passes_it_by(hall: MapAnalysis) -> None:
+    # south doors at x 3.0, 7.5, 12.5: driving east, the second door on the right is at x 7.5
+    door = door_at(hall, 7.5, 5.0)
+    r = plan("go past the second door on your right", hall, (1.6, 6.0, 0.0))
+    assert len(r.commands) == 1
+    x, y = last_goal(r)
+    assert HALL_Y[0] < y < HALL_Y[1]  # still in the hallway: passed by, not entered
+    assert door.center[0] + 0.45 < x <= door.center[0] + 0.45 + 1.0 + SLACK_M
+
+
+def test_door_number_three_on_your_left_counts_the_doors_on_the_left(hall: MapAnalysis) -> None:
+    # north doors at x 3.2, 7.5, 12.0: the third on the left driving east is at x 12.0, whatever its label
+    third = door_at(hall, 12.0, 7.0)
+    r = plan("go to door number three on your left", hall, (1.6, 6.0, 0.0))
+    x, y = last_goal(r)
+    assert math.dist((x, y), third.center) <= 0.75
+    # typed as the map shows a label ("door 3"), it names that door
+    labelled = next(d for d in hall.doors if d.id == "door_3")
+    assert math.dist(last_goal(plan("go to door 3", hall, (1.6, 6.0, 0.0))), labelled.center) <= 0.75
+
+
+def test_the_next_room_after_a_door_is_the_room_it_leads_into(hall: MapAnalysis) -> None:
+    # in the hallway facing the south door at x 7.5: through it, the next room is the one behind it
+    behind = room_at(hall, 7.5, 3.0)
+    r = plan("go through the door in front and stop in the middle of the next room", hall, (7.5, 6.0, -90.0))
+    x, y = last_goal(r)
+    assert math.dist((x, y), behind.centroid) <= 0.75

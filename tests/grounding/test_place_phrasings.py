@@ -151,3 +151,42 @@ def test_go_out_alone_is_out_of_this_room(prompt: str) -> None:
     out = translate_offline(prompt).steps[0]
     assert out.detail == Detail.THROUGH and out.target is not None
     assert (out.target.kind, out.target.in_current_room) == (Element.DOOR, True)
+
+
+@pytest.mark.parametrize(("prompt", "sup"), [
+    ("Go to the room which is the smallest.", Superlative.SMALLEST),
+    ("go to whichever room is smallest", Superlative.SMALLEST),
+    ("head for the room that is the biggest one", Superlative.BIGGEST),
+    ("go to the door which is closest", Superlative.NEAREST),
+])
+def test_a_superlative_in_a_relative_clause_picks_the_element(prompt: str, sup: Superlative) -> None:
+    step, = translate_offline(prompt).steps
+    assert step.target is not None and step.target.superlative == sup
+
+
+def test_an_unread_superlative_asks() -> None:
+    from langnav.language.offline.ask import spatial
+
+    assert spatial("smallest") == ["smallest"] and spatial("the biggest one") == ["biggest"]
+    assert spatial("a little") == []  # "little" is a size word only as a superlative's stem, not an amount's
+
+
+@pytest.mark.parametrize("prompt", [
+    "leave the room through the door",
+    "Drive out of this room through the door",
+    "exit this room through the doorway",
+])
+def test_leaving_a_room_through_the_door_is_one_step_through_its_door(prompt: str) -> None:
+    step, = translate_offline(prompt).steps
+    assert step.detail == Detail.THROUGH and step.target is not None
+    assert (step.target.kind, step.target.in_current_room) == (Element.DOOR, True)
+
+
+@pytest.mark.parametrize("prompt", [
+    "through the door on your right, then come back through it",
+    "go through the first door on your left and then come back out through it",
+])
+def test_coming_back_through_a_door_is_through_it_again(prompt: str) -> None:
+    first, back = translate_offline(prompt).steps
+    assert first.detail == back.detail == Detail.THROUGH
+    assert back.target is not None and back.target.kind == Element.DOOR

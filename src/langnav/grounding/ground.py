@@ -69,6 +69,7 @@ from langnav.language.intent import (
     Place,
     Query,
     Step,
+    Superlative,
 )
 from langnav.language.intent import Element as Kind
 from langnav.places.store import NamedPlace, place_key
@@ -247,7 +248,8 @@ def ground(intent: Intent, analysis: MapAnalysis, pose: Pose | Sequence[float], 
     steps: list[GroundedStep] = []
     cur = start
     for i, step in enumerate(intent.steps):
-        gs = ground_step(_same_element_as_before(step, steps[-1] if steps else None), ctx, cur, i)
+        prev = steps[-1] if steps else None
+        gs = ground_step(_room_entered(_same_element_as_before(step, prev), prev, analysis), ctx, cur, i)
         steps.append(gs)
         ctx.advance(gs)
         cur = gs.end_pose
@@ -284,7 +286,9 @@ class GroundingContext:
 
 
 #: Words that point back at the element of the step before ("the middle of it", "go in there").
-_BACK_REF_RE: Final = re.compile(r"\b(?:it|there|that one|this one|that room|this room|them)\b", re.IGNORECASE)
+_BACK_REF_RE: Final = re.compile(r"\b(?:it|there|that|that one|this one|that room|this room|them)\b", re.IGNORECASE)
+#: "The next room" (``_room_entered``).
+_NEXT_RE: Final = re.compile(r"\bnext\b", re.IGNORECASE)
 #: The id prefixes that the label words of each kind name (``select_by_label``).
 _LABEL_PREFIXES: Final = {Kind.ROOM: ("room", "hallway"), Kind.HALLWAY: ("room", "hallway"), Kind.DOOR: ("door",),
                           Kind.OBSTACLE: ("obstacle",), Kind.CORNER: ("corner",)}
@@ -304,6 +308,31 @@ def _same_element_as_before(step: Step, prev: GroundedStep | None) -> Step:
     if not number.isdigit() or prefix not in _LABEL_PREFIXES.get(ref.kind, ()):
         return step
     return step.model_copy(update={"target": ElementRef(kind=ref.kind, label=int(number))})
+
+
+def _room_entered(step: Step, prev: GroundedStep | None, analysis: MapAnalysis) -> Step:
+    """"Go through the door in front and stop in the middle of the next room": right after a step
+    through a door, "the next room" is the room that door leads into, where the robot now stands (a
+    person who has just stepped through a doorway calls the room in front of them the next one).
+    Read as "the nearest room other than the one I am in" it would be a third room."""
+    ref = step.target
+    if prev is None or ref is None or ref.kind != Kind.ROOM or ref.superlative != Superlative.NEAREST \
+            or ref.side is not None or ref.ordinal is not None or ref.label is not None or ref.relation is not None \
+            or ref.near is not None or not _NEXT_RE.search(step.text):
+        return step
+    before = prev.step.target
+    if prev.step.detail != Detail.THROUGH or before is None or before.kind not in (Kind.DOOR, Kind.NARROW_PASSAGE) \
+            or len(prev.element_ids) != 1 or not prev.moves:
+        return step
+    ways: list[Door | NarrowPassage] = [*analysis.doors, *analysis.narrow_passages]
+    door = next((d for d in ways if d.id == prev.element_ids[0]), None)
+    room = space_of(analysis, prev.end_pose.xy)
+    if door is None or room is None or room.id not in door.connects:
+        return step
+    number = room.id.rpartition("_")[2]
+    if not number.isdigit():
+        return step
+    return step.model_copy(update={"target": ElementRef(kind=Kind.ROOM, label=int(number))})
 
 
 def advance_way(route: list[Point], moved_from: list[Pose], gs: GroundedStep) -> None:

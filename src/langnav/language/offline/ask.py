@@ -25,6 +25,8 @@ SPATIAL_WORDS: Final = frozenset(
                            # amounts said relative to another one ("two more", "the same distance", "twice")
                            "more", "less", "same", "distance", "amount", "longer", "shorter", "twice", "double",
                            "triple"}
+    # a superlative picks which place ("the smallest room"): one left unread may pick another
+    | {w for w in lx.SUPERLATIVES if w.endswith("est") and " " not in w}
 ) - lx.STOPWORDS - {"a", "an", "the", "of", "to", "in", "on", "at", "up", "one", "way", "port", "positive",
                     "negative", "wall", "turn", "u", "face", "about", "other", "opposite", "direction", "came",
                     "we", "you", "your", "side", "hand", "closer", "nearer"} | {"wall", "walls", "door", "doors"}
