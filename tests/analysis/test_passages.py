@@ -592,3 +592,31 @@ def test_a_gap_no_deeper_than_a_doorway_is_no_passage_however_thin_the_walls() -
     # 0.4 m deep bench ends: within the deepest doorway (door_max_depth_m), even where the
     # building's partitions are 0.1 m.
     assert passages_of(bench_rows(0.1, depth_m=0.4)) == ()
+
+
+def laundry(island_x1: float = 7.3, door: bool = True) -> OccupancyGrid:
+    """An 8 x 6 m laundry (x 0-8) beside a 4 x 6 m drying room (x 8-12), a 0.85 m door between
+    them at the north-east corner (y 5.0-5.85). A 6.3 m folding island (x 1.0 to ``island_x1``,
+    y 4.4-5.25) leaves a 0.75 m aisle along the north wall, which bends at its east end: round
+    the island's end (0.7 m from the east wall) into the laundry, and on through the door."""
+    b = MapBuilder(15.0, 9.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 8.0, 6.0)
+    b.room(8.0, 0.0, 12.0, 6.0)
+    if door:
+        b.free(7.9, 5.0, 8.1, 5.85)
+    b.box(1.0, 4.4, island_x1, 5.25)
+    return b.build(source=f"laundry_{island_x1}_{door}")
+
+
+def test_an_aisle_that_bends_at_its_end_into_a_door_leads_somewhere() -> None:
+    # The aisle's straight axis ends in its side at the bend; the way leaves through the last
+    # cell of its middle line, into the drying room and round the island.
+    (p,) = passages_of(laundry())
+    assert p.center == pytest.approx((4.19, 5.52), abs=0.1)
+    assert p.width_m == pytest.approx(0.775, abs=0.051)
+    assert p.length_m == pytest.approx(6.28, abs=0.2)
+
+
+def test_the_same_aisle_closed_at_its_end_leads_nowhere() -> None:
+    # Control: the island runs on to the east wall and no door: a dead end.
+    assert passages_of(laundry(island_x1=8.0, door=False)) == ()

@@ -172,3 +172,43 @@ def test_a_narrow_room_with_an_en_suite_is_a_room_not_a_hallway() -> None:
     assert bathroom.kind == ElementKind.ROOM
     assert set(door_near(seg.doors, 2.95, 2.5).connects) == {guest.id, bathroom.id}
     assert guest.id in door_near(seg.doors, 2.0, 7.95).connects
+
+
+
+def store_round_a_shelf_block() -> OccupancyGrid:
+    """A 6 m x 5 m dispensary (a store room, a kennel room) whose 2.2 m x 3.2 m shelf block
+    stands against its back wall, leaving a walk 1.8-1.9 m wide round it, entered from a 2 m
+    corridor through a 0.9 m door; and, for contrast, a 2 m corridor looping round a 6 m x
+    10 m core (a lift and stair block) with four offices off it."""
+    b = MapBuilder(30.0, 16.0)
+    b.room(1.0, 1.0, 7.0, 6.0)
+    b.box(2.9, 1.0, 5.1, 4.2)  # the shelf block, against the back wall
+    b.room(1.0, 6.0, 12.0, 8.0).door_h(4.0, 6.0, 0.9)
+    b.room(14.0, 1.0, 24.0, 15.0)  # the loop's outer walls
+    b.box(16.0, 3.0, 22.0, 13.0)  # the core
+    b.room(24.0, 1.0, 28.0, 5.0).door_v(24.0, 2.0, 0.9)
+    b.room(24.0, 5.0, 28.0, 9.0).door_v(24.0, 7.0, 0.9)
+    b.room(24.0, 9.0, 28.0, 13.0).door_v(24.0, 11.0, 0.9)
+    b.room(12.0, 9.0, 14.0, 13.0).door_v(14.0, 11.0, 0.9)
+    b.door_v(12.0, 7.0, 0.9).door_v(14.0, 7.0, 0.9)  # the corridor into the loop
+    return b.build("store round a shelf block")
+
+
+def test_a_room_round_a_shelf_block_is_a_room_a_loop_round_a_core_a_hallway() -> None:
+    """Walking round the block, the store's floor is 1.9 m wide and 12 m long: by its area for
+    its width a dead-end corridor. But it reaches no farther than a room (its far corners under
+    8 m apart, four times its width) and is entered through one door. The corridor round the
+    core reaches as far as it is long."""
+    grid = store_round_a_shelf_block()
+    seg = segment_spaces(grid)
+    store = space_at(seg, grid, 2.0, 2.5)
+    assert space_at(seg, grid, 6.0, 2.5) is store
+    assert space_at(seg, grid, 4.0, 5.0) is store
+    assert store.kind == ElementKind.ROOM
+    loop = space_at(seg, grid, 15.0, 8.0)
+    assert space_at(seg, grid, 23.0, 8.0) is loop
+    assert space_at(seg, grid, 19.0, 14.0) is loop
+    assert loop.kind == ElementKind.HALLWAY
+    corridor = space_at(seg, grid, 9.0, 7.0)
+    assert len({store.id, loop.id, corridor.id}) == 3
+    assert set(door_near(seg.doors, 4.0, 6.0).connects) == {store.id, corridor.id}

@@ -16,7 +16,7 @@ from langnav.analysis.elements import ElementKind
 from langnav.analysis.params import DEFAULT_PARAMS
 from langnav.analysis.seg_doors import SEEN_FLOOR_MIN_M
 from langnav.analysis.segmentation import UNKNOWN_ID, segment_spaces
-from langnav.analysis.wall_lines import dominant_directions, outer_gaps
+from langnav.analysis.wall_lines import WallDirections, dominant_directions, outer_gaps
 from langnav.maps.draw import MapBuilder
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
@@ -144,6 +144,21 @@ def test_the_wall_directions_of_a_rotated_building_are_found(angle_deg: float) -
     off = (dirs[0] - angle_deg + 45.0) % 90.0 - 45.0  # the same direction modulo 90 degrees
     assert abs(off) <= 0.2
     assert dirs[1] - dirs[0] == pytest.approx(90.0)
+
+
+def test_wall_directions_kept_with_their_walls_are_reused_only_for_those_walls() -> None:
+    """The directions kept with a wall mask are given back for an equal mask (another array),
+    and found anew for any other mask."""
+    wall = np.zeros((60, 80), dtype=bool)
+    wall[10, 5:75] = True
+    wall[10:50, 40] = True
+    kept = WallDirections(wall, [0.25, 0.25 + math.pi / 2])  # not what the walls say: marks reuse
+    assert kept.of(wall.copy()) == [0.25, 0.25 + math.pi / 2]
+    other = wall.copy()
+    other[30, 60] = True
+    assert kept.of(other) == dominant_directions(other)
+    assert kept.of(other) != [0.25, 0.25 + math.pi / 2]
+    assert kept.of(np.zeros((80, 60), dtype=bool)) == []
 
 
 def narrow_hallway_with_rooms() -> OccupancyGrid:

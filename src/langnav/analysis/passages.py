@@ -294,9 +294,16 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             if np.count_nonzero(solid) < MIN_BOUNDED_FRACTION * np.count_nonzero(bounded):
                 continue
             ends_g = [mean + lo * axis, mean + hi * axis]
-            # It leads somewhere: both mouths open into free space wider than any passage.
-            if not all(_opens_into_space(sub, e, sign * axis, res, params)
-                       for sign, e in zip((-1.0, 1.0), ends_g, strict=True)):
+            # It leads somewhere: both mouths open into free space wider than any passage. A way
+            # as elongated as a corridor leaves through the last cell of its middle line at each
+            # end (where an aisle bends at its end, the end of its straight axis falls in its
+            # side); a short gap's axis across a bend is no way's axis.
+            corridor_like = length_m >= params.hallway_min_elongation * width_m
+            two = pts[bounded]
+            lasts = ([two[int(np.argmin(proj[bounded]))], two[int(np.argmax(proj[bounded]))]] if corridor_like
+                     else [None, None])
+            if not all(_opens_into_space(sub, e, sign * axis, res, params, last)
+                       for sign, e, last in zip((-1.0, 1.0), ends_g, lasts, strict=True)):
                 continue
             centre_g = mean + 0.5 * (lo + hi) * axis
             # Short (less than PASSAGE_MIN_ELONGATION times longer than wide), it is a gap: in a
@@ -309,7 +316,6 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             # Between a wall and a thing one can walk round (a pallet, a cabinet), a strip is a
             # way of its own only when it is as elongated as a corridor (an aisle along a shelf).
             elongated = length_m >= PASSAGE_MIN_ELONGATION * width_m
-            corridor_like = length_m >= params.hallway_min_elongation * width_m
             squeeze = False
             thing: int | None = None
             if not corridor_like:
@@ -748,12 +754,14 @@ def _solid_sides(open_: BoolArray, occupied: BoolArray, outside: BoolArray, pts:
 
 
 def _opens_into_space(open_: BoolArray, end_g: npt.NDArray[np.float64], direction: npt.NDArray[np.float64],
-                      res: float, params: AnalysisParams) -> bool:
+                      res: float, params: AnalysisParams, last_g: npt.NDArray[np.float64] | None = None) -> bool:
     """Does the free space beyond a mouth (``end_g``, x, y in grid cells; ``direction`` outwards
     along the axis) open into a free area: within ``MOUTH_OPEN_SEARCH_M`` of the mouth, reached
     through free cells ahead of it, a cell whose clearance exceeds half the widest passage
     (somewhere wider than any narrow passage: a room, a hall, a corridor)? A dead-end slot's
-    far end, a sliver outside a wall and a laser ray's tip do not."""
+    far end, a sliver outside a wall and a laser ray's tip do not. Where the mouth's own cell is
+    no free cell, the way is followed from ``last_g``, the passage's last middle-line cell there
+    (a bent passage's straight axis ends in its side)."""
     h, w = open_.shape
     reach = MOUTH_OPEN_SEARCH_M / res
     need = params.passage_max_width_m / 2.0 / res
@@ -770,6 +778,10 @@ def _opens_into_space(open_: BoolArray, end_g: npt.NDArray[np.float64], directio
     ahead = win & (dx * direction[0] + dy * direction[1] >= -0.5) & (dx * dx + dy * dy <= reach * reach)
     lab, _n = ndi.label(ahead)
     start = lab[min(max(math.floor(y), r0), r1 - 1) - r0, min(max(math.floor(x), c0), c1 - 1) - c0]
+    if start == 0 and last_g is not None:
+        lr, lc = math.floor(float(last_g[1])), math.floor(float(last_g[0]))
+        if r0 <= lr < r1 and c0 <= lc < c1:
+            start = lab[lr - r0, lc - c0]
     if start == 0:
         return False
     clear = ndi.distance_transform_edt(np.pad(win, 1))[1:-1, 1:-1]

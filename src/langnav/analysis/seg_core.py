@@ -44,7 +44,7 @@ from skimage.segmentation import watershed
 
 from langnav.analysis.params import AnalysisParams
 from langnav.analysis.precompute import Components, GridLayers, dilate8, edt_scaled, maximum3
-from langnav.analysis.wall_lines import dominant_directions
+from langnav.analysis.wall_lines import WallDirections, dominant_directions
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN
 
 BoolArray = npt.NDArray[np.bool_]
@@ -84,6 +84,9 @@ class Floor:
     #: small pieces of non-floor that stand in a wall line (piers between windows, door frames):
     #: walls, however short (see :func:`_on_wall_lines`)
     wall_pieces: BoolArray | None = None
+    #: the wall directions found while telling wall pieces from furniture, with the walls they
+    #: were found on (the segmentation's own walls, unless some pieces were kept as walls)
+    wall_directions: WallDirections | None = None
 
 
 def _small_components(mask: BoolArray, max_cells: float, *, exclude_border: bool = False,
@@ -125,11 +128,12 @@ def clean_floor(cells: npt.NDArray[np.int8], resolution_m: float, params: Analys
                               components=unk_comp)
     floor = free | holes
     exterior = unknown & ~holes
-    islands, pieces = _furniture(floor, resolution_m, params, occupied)
+    islands, pieces, directions = _furniture(floor, resolution_m, params, occupied)
     floor = floor | islands
     exterior &= ~islands
     clearance = edt_scaled(floor, resolution_m)
-    return Floor(floor=floor, free=free, exterior=exterior, clearance_m=clearance, wall_pieces=pieces)
+    return Floor(floor=floor, free=free, exterior=exterior, clearance_m=clearance, wall_pieces=pieces,
+                 wall_directions=directions)
 
 
 def wall_stub_length(mask: BoolArray, resolution_m: float, params: AnalysisParams) -> float:
@@ -144,13 +148,14 @@ def wall_stub_length(mask: BoolArray, resolution_m: float, params: AnalysisParam
 
 
 def _furniture(floor: BoolArray, resolution_m: float, params: AnalysisParams,
-               occupied: BoolArray | None = None) -> tuple[BoolArray, BoolArray]:
+               occupied: BoolArray | None = None) -> tuple[BoolArray, BoolArray, WallDirections | None]:
     """Free-standing clutter: small pieces of non-floor apart from the walls (tables with their
     chairs, cabinets, columns, unscanned wedges between laser rays), but not thin wall stubs.
 
     Pieces closer than ``seg_jamb_join_m`` are one piece. Rooms are segmented as if these were
     floor (ROSE² "decluttering"): furniture must not split a room. Returns the furniture and
-    the small pieces kept as walls because they stand in a wall line (``occupied`` given).
+    the small pieces kept as walls because they stand in a wall line (``occupied`` given), and
+    the wall directions found to tell them (None when there were none to tell).
     """
     cell_area = resolution_m * resolution_m
     # Chessboard distance: a square neighbourhood is as good as a disc for grouping, and cheap.
@@ -159,13 +164,13 @@ def _furniture(floor: BoolArray, resolution_m: float, params: AnalysisParams,
     solid = ~floor
     none = np.zeros_like(floor)
     if not solid.any():
-        return none, none
+        return none, none, None
     # The non-floor grown by join_cells (a square): the cells within that chessboard distance.
     grouped = dilate8(solid) if join_cells == 1 else \
         ndi.maximum_filter(solid, size=2 * join_cells + 1, mode="constant", cval=False)
     comp, n = ndi.label(grouped, structure=EIGHT)
     if n == 0:
-        return none, none
+        return none, none, None
     area = np.bincount(comp[solid], minlength=n + 1) * cell_area
     small = area <= params.seg_island_max_area_m2
     small[0] = False
@@ -182,26 +187,30 @@ def _furniture(floor: BoolArray, resolution_m: float, params: AnalysisParams,
         if wall_stub_length((comp[sl] == k) & solid[sl], resolution_m, params) > 0:
             small[k] = False
     pieces = none
+    directions = None
     if occupied is not None and small.any():
-        in_line = _on_wall_lines(comp, small, objs, occupied & solid, resolution_m, params)
+        in_line, directions = _on_wall_lines(comp, small, objs, occupied & solid, resolution_m, params)
         small &= ~in_line
         pieces = in_line[comp] & solid
-    return small[comp] & solid, pieces
+    return small[comp] & solid, pieces, directions
 
 
 def _on_wall_lines(comp: IntArray, small: BoolArray, objs: list[tuple[slice, slice] | None],
-                   wall: BoolArray, resolution_m: float, params: AnalysisParams) -> BoolArray:
+                   wall: BoolArray, resolution_m: float, params: AnalysisParams
+                   ) -> tuple[BoolArray, WallDirections]:
     """Which small pieces of ``comp`` (``small``) are short pieces of a wall line: as thin as a
     wall, and in line with wall on both sides within a double door's width (the piers between
     windows, a door frame beside a glass panel, a short wall between a door and a window). A
     person sees them as the wall they stand in, not as furniture: the wall line runs on through
     them, whatever the laser saw of the glass beside them. Pieces in line with others of their
-    kind count when the row reaches the wall network on one side (a row of piers)."""
+    kind count when the row reaches the wall network on one side (a row of piers). Also returns
+    the wall directions it used, with the walls they were found on (the wall network)."""
     res = resolution_m
-    dirs = dominant_directions(wall & ~small[comp])
+    network = wall & ~small[comp]
+    dirs = dominant_directions(network)
     found = np.zeros_like(small)
     if not dirs:
-        return found
+        return found, WallDirections(network, dirs)
     thin = WALL_LINE_PIECE_MAX_THICKNESS_M / res + 1.0
     reach = params.door_wide_max_width_m / res
     pad = math.ceil(reach) + 2
@@ -242,7 +251,7 @@ def _on_wall_lines(comp: IntArray, small: BoolArray, objs: list[tuple[slice, sli
             if not found[k] and any(not small[j] or found[j] for j in lk | rk):
                 found[k] = True
                 changed = True
-    return found
+    return found, WallDirections(network, dirs)
 
 
 # -- basins and their adjacency ----------------------------------------------------------------

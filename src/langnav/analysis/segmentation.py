@@ -222,7 +222,7 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     # standing in a row is no wall).
     # The building's wall directions, found once for the wall gaps and the doors in outer walls.
     walls = occupied & ~fl.floor
-    directions = dominant_directions(walls)
+    directions = fl.wall_directions.of(walls) if fl.wall_directions is not None else dominant_directions(walls)
     closed = closure_mask(wall_gaps(walls, fl.floor, res, params, directions), fl.floor)
     split_floor, split_clear = fl.floor, fl.clearance_m
     if closed.any():
@@ -553,7 +553,7 @@ def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: 
                    whole_width: Callable[[], float], res: float, params: AnalysisParams,
                    whole_wide_share: Callable[[], float] = lambda: 0.0,
                    whole_typical: Callable[[], float] = lambda: 0.0,
-                   ways_on: int | None = None) -> tuple[ElementKind, float, float]:
+                   ways_on: int | None = None, extent_m: float = math.inf) -> tuple[ElementKind, float, float]:
     """Hallway or room, with (length, width).
 
     A hallway is walked through (not a dead end entered through one doorway, unless it is
@@ -565,7 +565,12 @@ def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: 
     typical width and has little floor wider than a corridor; or, with many doorways off it
     (``HALLWAY_MIN_DOORWAYS``), longer than wide for that typical width. Either way its typical
     width wall to wall (``whole_typical()``, furniture as floor) is a corridor's too. Its width
-    is the one it was judged on; length = area / width.
+    is the one it was judged on; length = area / width. Judged on its widest point, it is long
+    for that width on that length, but no more than its extent (``extent_m``, how far apart its
+    two farthest points are): a room that goes round an island (a laundry's washer row, a
+    dispensary's shelf block) has much floor for its width, yet reaches no farther than a room;
+    a corridor reaches as far as it is long. (Judged on its typical width, a corridor's alcoves
+    and side pockets are floor it has beside its length: there, area / width.)
     ``whole_width()``: the widest inscribed circle of the whole space, its furniture and
     unscanned patches included; ``whole_wide_share()``: the share of the whole space farther
     than half a hallway's width from its edge (an open-plan floor's desk clusters narrow its
@@ -573,21 +578,25 @@ def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: 
     """
     # Clearance is measured between cell centres: an opening of n cells has 2 x peak = (n + 1) cells.
     peak_width = max(2.0 * peak_m - res, res)
+
+    def length(w: float) -> float:
+        return min(area_m2 / w, extent_m)
+
     leads_on = openings if ways_on is None else ways_on
     if openings >= 1 and leads_on <= 1 \
-            and area_m2 / peak_width < params.hallway_dead_end_min_elongation * peak_width:
+            and length(peak_width) < params.hallway_dead_end_min_elongation * peak_width:
         # Entered through one doorway and leading nowhere else (but into a smaller dead end
         # of its own: an en-suite, a closet): a room (a dead-end corridor with its doors
         # closed is longer than rooms are).
         return ElementKind.ROOM, area_m2 / peak_width, peak_width
-    def narrow(w: float) -> bool:
-        return w <= params.hallway_max_width_m and area_m2 / w >= params.hallway_min_elongation * w
+    def narrow(w: float, long: float) -> bool:
+        return w <= params.hallway_max_width_m and long >= params.hallway_min_elongation * w
 
-    if narrow(peak_width):
+    if narrow(peak_width, area_m2 / peak_width):
         # Part of the space may be unscanned or cluttered (shelves, furniture): its width as a
         # person sees it is that of the whole space.
         peak_width = max(peak_width, whole_width())
-        if narrow(peak_width):
+        if narrow(peak_width, length(peak_width)):
             return ElementKind.HALLWAY, area_m2 / peak_width, peak_width
     typical = max(min(typical_m, peak_width), res)
     # Judged on its typical width, a space must also be walked through (two openings or more):
@@ -788,6 +797,7 @@ def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
         cc = cc + sl[1].start
         xs, ys = grid.cell_to_world(rr, cc)
         area = float(sub.sum()) * res * res
+        polygon = _outline(grid, sub, sl)
         kind, length, width = _kind_and_size(area, float(peaks[k]), float(typical[k]), float(wide_share[k]),
                                              int(openings[k]) if k < openings.size else 0,
                                              functools.partial(_whole_width, sub, res,
@@ -798,14 +808,24 @@ def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
                                              functools.partial(_whole_typical_width, sub, res,
                                                                params.hallway_max_width_m / 2,
                                                                params.seg_enclosed_unknown_max_area_m2),
-                                             ways_on=int(ways_on[k]) if ways_on is not None and k < ways_on.size else None)
+                                             ways_on=int(ways_on[k]) if ways_on is not None and k < ways_on.size else None,
+                                             extent_m=_extent(polygon))
         prefix = "hallway" if kind == ElementKind.HALLWAY else "room"
         rooms.append(Room(
             id=f"{prefix}_{k}", label=k, kind=kind, area_m2=area,
             free_area_m2=float(free_sub.sum()) * res * res,
             centroid=(float(xs.mean()), float(ys.mean())), length_m=length, width_m=width,
-            cells_xy=np.column_stack([xs, ys]), polygon=_outline(grid, sub, sl)))
+            cells_xy=np.column_stack([xs, ys]), polygon=polygon))
     return rooms
+
+
+def _extent(polygon: npt.NDArray[np.float64]) -> float:
+    """How far apart (m) the two farthest points of a space's outline are; infinite with no
+    outline (nothing to judge its reach by)."""
+    if len(polygon) < 2:
+        return math.inf
+    d = polygon[:, None, :] - polygon[None, :, :]
+    return float(np.sqrt((d * d).sum(axis=-1).max()))
 
 
 def _outline(grid: OccupancyGrid, sub: npt.NDArray[np.bool_], sl: tuple[slice, slice]) -> npt.NDArray[np.float64]:

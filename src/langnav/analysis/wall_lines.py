@@ -199,6 +199,21 @@ def dominant_directions(wall: BoolArray) -> list[float]:
     return out
 
 
+@dataclass(frozen=True)
+class WallDirections:
+    """The wall directions (:func:`dominant_directions`) of one wall mask, kept with the mask so
+    that a later step with the same walls reuses them instead of scoring every direction again."""
+
+    wall: BoolArray
+    directions: list[float]
+
+    def of(self, wall: BoolArray) -> list[float]:
+        """The directions of ``wall``: these when it is this very mask, else found anew."""
+        if self.wall.shape == wall.shape and np.array_equal(self.wall, wall):
+            return list(self.directions)
+        return dominant_directions(wall)
+
+
 class _LineSampler(Generic[_Cell]):
     """Reads a mask (or a code per cell) at (u, v): u along the direction (cos_t, sin_t) in the
     (col, row) plane, v across it; off the grid reads False (0)."""
@@ -616,4 +631,5 @@ def closure_mask(gaps: list[WallGap], floor: BoolArray) -> BoolArray:
     return out & floor
 
 
-__all__ = ["OuterGap", "WallGap", "closure_mask", "dominant_directions", "outer_gaps", "wall_gaps"]
+__all__ = ["OuterGap", "WallDirections", "WallGap", "closure_mask", "dominant_directions", "outer_gaps",
+           "wall_gaps"]
