@@ -14,9 +14,11 @@ the real analysis (no ../shared), read by the offline translator end to end.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
@@ -26,7 +28,7 @@ from langnav.analysis.params import DEFAULT_PARAMS
 from langnav.analysis.pipeline import analyze
 from langnav.grounding import GroundingError, ground
 from langnav.grounding.geometry import Pose
-from langnav.grounding.selection import label_of
+from langnav.grounding.selection import label_of, select
 from langnav.language.intent import (
     Detail,
     Element,
@@ -535,3 +537,44 @@ def test_the_next_room_after_a_door_is_the_room_it_leads_into(hall: MapAnalysis)
     r = plan("go through the door in front and stop in the middle of the next room", hall, (7.5, 6.0, -90.0))
     x, y = last_goal(r)
     assert math.dist((x, y), behind.centroid) <= 0.75
+
+
+def test_the_door_at_the_end_of_a_corridor_with_plain_end_walls_asks(hall: MapAnalysis) -> None:
+    # the hallway's doors are all along its sides: the last of them is no door "at the end"
+    r = plan("go through the door at the end of the corridor", hall, (1.6, 6.0, 0.0))
+    assert r.commands == () and r.clarification is not None and "end of hallway" in r.clarification
+
+
+def test_the_door_at_the_end_of_a_corridor_is_the_one_in_its_end_wall() -> None:
+    b = MapBuilder(20.0, 12.0)
+    b.room(1.0, 1.0, 15.0, 11.0)
+    b.wall(1.0, 5.0, 15.0, 5.0)
+    b.wall(1.0, 7.0, 15.0, 7.0)
+    b.room(15.0, 3.0, 19.0, 9.0)
+    for x in (5.0, 10.0):
+        b.wall(x, 1.0, x, 5.0)
+        b.wall(x, 7.0, x, 11.0)
+    for x in (3.0, 7.5, 12.5):
+        b.door_h(x, 5.0, 0.9)
+        b.door_h(x, 7.0, 0.9)
+    b.door_v(15.0, 6.0, 0.9)  # the end wall's door, into a room beyond the corridor's east end
+    a = analyze(b.build("hall with an end door"), DEFAULT_PARAMS)
+    end = door_at(a, 15.0, 6.0)
+    x, y = last_goal(plan("go to the door at the end of the corridor", a, (1.6, 6.0, 0.0)))
+    assert math.dist((x, y), end.center) <= 0.75
+
+
+def test_a_room_parted_by_a_narrow_gap_is_as_big_as_both_parts(two_rooms: MapAnalysis) -> None:
+    # two_rooms: A 30 m2 and B 29.1 m2; with their second opening narrowed to a gap between shelves
+    # and both opening onto a third room C of 40 m2, A and B are one room of 59 m2: C is the smallest
+    d1, d2 = two_rooms.doors
+    room_a, room_b = two_rooms.rooms[:2]
+    room_c = dataclasses.replace(room_b, id="room_c", label=3, area_m2=40.0, free_area_m2=40.0,
+                                 cells_xy=room_b.cells_xy + np.array([0.0, 20.0]))
+    gap = dataclasses.replace(d2, width_m=0.68)
+    a_to_c = dataclasses.replace(d1, connects=("room_a", "room_c"))
+    b_to_c = dataclasses.replace(d1, id="door_3", center=(8.0, 6.9), connects=("room_b", "room_c"))
+    a = dataclasses.replace(two_rooms, rooms=(room_a, room_b, room_c), doors=(a_to_c, gap, b_to_c))
+    pose = Pose.from_deg(3.0, 3.0, 90.0)
+    assert select(ElementRef(kind="room", superlative="smallest"), a, pose).id == "room_c"
+    assert select(ElementRef(kind="room", superlative="biggest"), a, pose).id == "room_a"  # the part nearest
