@@ -190,3 +190,23 @@ def test_coming_back_through_a_door_is_through_it_again(prompt: str) -> None:
     first, back = translate_offline(prompt).steps
     assert first.detail == back.detail == Detail.THROUGH
     assert back.target is not None and back.target.kind == Element.DOOR
+
+
+def test_towards_a_straight_edge_of_the_unknown_steps_back_square_to_it() -> None:
+    import numpy as np
+
+    from langnav.grounding.ground import _square_to_the_edge
+
+    # an opening's edge along a line at 23 deg (a rotated map's staircase of cells), the robot off to its side
+    t = np.linspace(0.0, 1.5, 31)
+    line = np.stack([9.0 + t * np.cos(0.4), 4.3 + t * np.sin(0.4)], axis=1)
+    line = np.round(line / 0.05) * 0.05
+    towards_robot = (-0.995, -0.1)  # nearly along the edge: the robot came at it from the side
+    nx, ny = _square_to_the_edge(line, towards_robot)
+    assert abs(nx * np.cos(0.4) + ny * np.sin(0.4)) < 0.05  # square to the edge ...
+    assert nx * towards_robot[0] + ny * towards_robot[1] > 0  # ... on the robot's side
+    # a corner of an unscanned block (two faces) is no straight edge: towards the robot
+    corner = np.array([[x, 8.0] for x in np.arange(8.0, 9.5, 0.05)] + [[8.0, y] for y in np.arange(6.5, 8.0, 0.05)])
+    assert _square_to_the_edge(corner, towards_robot) == towards_robot
+    # in line with a straight edge: towards the robot too
+    assert _square_to_the_edge(line, (float(np.cos(0.4)), float(np.sin(0.4)))) == (float(np.cos(0.4)), float(np.sin(0.4)))

@@ -120,6 +120,12 @@ FRONTIER_GOAL_MAX_M: Final = 0.9
 FRONTIER_PIECE_M: Final = 1.5
 #: A person going towards the unknown stops about this short of its edge, on the side they came from.
 FRONTIER_STANDOFF_M: Final = 0.5
+#: A piece of edge whose cells all lie within this of one line is a straight edge (an opening, a
+#: hallway's end), which a person stops square in front of: three map cells, for the staircase of a
+#: line drawn at an angle and a cell of scan noise on either side; a corner's two faces are not.
+FRONTIER_STRAIGHT_TOL_M: Final = 0.15
+#: ... unless they come at it nearly in its line (within ~78 deg of along it, cos 0.2): then towards them.
+FRONTIER_IN_LINE_MAX_COS: Final = 0.2
 #: frontier cells tried (nearest first) before giving up on an area.
 FRONTIER_TRIES: Final = 400
 #: "middle of the room", "between A and B": README 0.75 m.
@@ -898,12 +904,31 @@ def _facing_the_frontier(f: FloatArray, ctx: GroundingContext, pose: Pose, comp:
     p = (float(edge[0]), float(edge[1]))
     if math.dist(p, pose.xy) <= FRONTIER_STANDOFF_M:
         return None
-    back = unit((pose.x_m - p[0], pose.y_m - p[1]))
+    back = _square_to_the_edge(piece, unit((pose.x_m - p[0], pose.y_m - p[1])))
     short = (p[0] + back[0] * FRONTIER_STANDOFF_M, p[1] + back[1] * FRONTIER_STANDOFF_M)
     g = ctx.space.safe_point_near(p, comp, FRONTIER_GOAL_MAX_M, prefer=short)
     if g is None or not ctx.space.segment_clear(p, g, 0.0)[0]:
         return None
     return g
+
+
+def _square_to_the_edge(piece: FloatArray, back: Point) -> Point:
+    """The way a person steps back from a straight piece of an unexplored area's edge (an opening, a
+    hallway's end): square to it, on the side they came from, so they stop in front of it and not
+    beside it along the edge when they came at it from the side. A piece that is no straight line (a
+    corner of an unscanned block) or that the robot is in line with keeps ``back`` (towards the robot)."""
+    if len(piece) < 3:
+        return back
+    rel = piece - piece.mean(axis=0)
+    w, v = np.linalg.eigh(np.cov(rel.T))
+    along = v[:, int(np.argmax(w))]
+    normal = (-float(along[1]), float(along[0]))
+    if float(np.abs(rel @ np.asarray(normal)).max()) > FRONTIER_STRAIGHT_TOL_M:
+        return back
+    dot = normal[0] * back[0] + normal[1] * back[1]
+    if abs(dot) < FRONTIER_IN_LINE_MAX_COS:
+        return back
+    return (normal[0], normal[1]) if dot > 0 else (-normal[0], -normal[1])
 
 
 def _room_cells_mask(ctx: GroundingContext, room: Room) -> BoolArray:
