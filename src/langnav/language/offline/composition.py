@@ -359,10 +359,15 @@ def attach(steps: tuple[Step, ...], marks: Marks) -> tuple[tuple[Step, ...], lis
 
 
 # ------------------------------------------------------------------------------ named places
+#: Words that open or carry a clause of their own: a name is a noun phrase, so words after "is" that hold
+#: one ("this room is lovely but I want you to leave it") are a remark about the place, not its name.
+_CLAUSE_WORDS_RE: Final = re.compile(r"\b(?:i|you|we|they|but|because|so|if|when|want|need|should|could|would)\b")
+
+
 def _place_name(raw: str) -> str | None:
     name = re.sub(r"^(?:as|to|by|with)\s+", "", raw.strip())
     name = re.sub(r"\s+(?:please|now|from\s+now\s+on|for\s+me)$", "", name).strip(" .!?\"'")
-    if not name or len(name) > 80:
+    if not name or len(name) > 80 or _CLAUSE_WORDS_RE.search(name):
         return None
     return name
 
