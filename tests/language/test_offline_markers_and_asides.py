@@ -302,3 +302,25 @@ def test_a_remark_about_the_room_before_but_is_no_name_for_it() -> None:
     assert [(s.movement, s.detail.value if s.detail else None) for s in steps] == [(Movement.NAVIGATE, "through")]
     assert [(s.movement, s.place_name) for s in translate_offline("this room is the lab").steps] == [
         (Movement.NAME_PLACE, "the lab")]
+
+
+@pytest.mark.parametrize(("prompt", "sides"), [
+    ("go to the door behind you on the left", ("behind", "left")),
+    ("Go to the door ahead on your left.", ("ahead", "left")),
+    ("go to the door on your left behind you", ("left", "behind")),
+    ("go to the door behind you", ("behind", None)),
+])
+def test_a_second_side_of_a_place_narrows_it(prompt: str, sides: tuple[str, str | None]) -> None:
+    steps = translate_offline(prompt).steps
+    assert [(s.target.side.value if s.target and s.target.side else None,
+             s.target.also_side.value if s.target and s.target.also_side else None) for s in steps] == [sides]
+
+
+@pytest.mark.parametrize("prompt", ["go to the door on your left on the right", "go to the corner behind you on the left"])
+def test_sides_that_cannot_both_hold_ask(prompt: str) -> None:
+    assert _asks(prompt)
+
+
+def test_a_politeness_tail_is_no_second_trip() -> None:
+    steps = translate_offline("could you go to the last door on your right, if that's okay").steps
+    assert [s.movement for s in steps] == [Movement.NAVIGATE]

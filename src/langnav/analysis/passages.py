@@ -94,6 +94,9 @@ WALL_RUNS_ON_SHARE: Final = 0.7
 PARALLEL_SPREAD_M: Final = 0.15
 #: ... sampled this far past each mouth (m): a wall, not the corner of a jamb.
 WALL_RUN_M: Final = 0.6
+#: A free crack along a thing's depth up to this wide (m; two cells of a common 0.05 m map) is
+#: scan noise: the sliver between the two copies of its outline a pose error drew twice.
+OUTLINE_CRACK_M: Final = 0.1
 #: ... and the thing is deeper than a wall is thick (door_max_depth_m): blocked along this share
 #: of that depth past its face (its outline may have a scan dropout).
 DEEP_SHARE: Final = 0.8
@@ -326,7 +329,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 thing = _beside_a_wall(past, both_mouths=not elongated)
                 if not elongated:
                     depth = params.door_max_depth_m / res
-                    sides_deep = [_deep(sub, pts[bounded], normal * (2 * j - 1), sides[bounded, j], depth)
+                    sides_deep = [_deep(sub, pts[bounded], normal * (2 * j - 1), sides[bounded, j], depth, res)
                                   for j in (0, 1)]
                     # A squeeze past a thing deeper than a wall beside a wall that runs on, or
                     # between two such things (a parked bed and a trolley in a corridor, a
@@ -485,7 +488,7 @@ def _beside_a_wall(past: npt.NDArray[np.float64], both_mouths: bool = True) -> i
 
 
 def _deep(open_: BoolArray, pts: npt.NDArray[np.float64], outward: npt.NDArray[np.float64],
-          side: npt.NDArray[np.float64], depth: float) -> bool:
+          side: npt.NDArray[np.float64], depth: float, res: float) -> bool:
     """Is the thing on one side of a squeeze (its points ``pts``, the side ``side`` cells away
     along the unit ``outward``) deeper than ``depth`` cells: blocked along ``DEEP_SHARE`` of the
     samples that far past where it starts (a scan dropout in its outline is no way into it),
@@ -497,6 +500,11 @@ def _deep(open_: BoolArray, pts: npt.NDArray[np.float64], outward: npt.NDArray[n
     inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
     blocked = ~inside
     blocked[inside] = ~open_[r[inside], c[inside]]
+    # A crack no wider than scan noise inside the thing (the sliver between the two copies of its
+    # outline that a pose error drew twice) is no way into it: closed across.
+    k = math.ceil(OUTLINE_CRACK_M / res / 0.5)
+    if k > 0 and blocked.shape[1] > k + 1:
+        blocked |= ndi.binary_closing(blocked, structure=np.ones((1, k + 1), dtype=bool))
     return bool((blocked.mean(axis=1) >= DEEP_SHARE).mean() >= MIN_BOUNDED_FRACTION)
 
 

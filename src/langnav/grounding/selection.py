@@ -192,6 +192,8 @@ def describe_ref(ref: ElementRef) -> str:
         words.append(noun)
         if ref.side is not None:
             words.append(SIDE_WORDS[ref.side])
+        if ref.also_side is not None:
+            words.append(SIDE_WORDS[ref.also_side])
     if ref.near is not None and ref.near.kind in (Kind.ROOM, Kind.HALLWAY):
         words.append(f"of {describe_ref(landmark_ref(ref.near))}")
     elif ref.within is not None:
@@ -553,6 +555,8 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         pool = [e for e in pool if matches_side(e, pose, ref.side)]
         if came_through and ref.side in (Side.LEFT, Side.RIGHT):
             pool = [e for e in pool if e.id not in came_through]
+    if ref.also_side is not None:
+        pool = [e for e in pool if matches_side(e, pose, ref.also_side)]  # "behind you on the left": both hold
     if ref.kind == Kind.OBSTACLE and words:
         pool = shape_filter(pool, words)
     by_landmark: dict[int, float] | None = None

@@ -186,6 +186,8 @@ corner" -> offset before, offset_m 1.
 "a third of the way to the door" -> fraction 0.333.
 - Facing: "turn to face the door" -> movement rotate with a target and no direction; "face north" -> \
 movement rotate, heading_deg 90 (east 0, north 90, west 180, south 270).
+- Two sides: "the door behind you on the left" -> side behind, also_side left (both hold); "the room ahead \
+on your right" -> side ahead, also_side right.
 - Returning: "come back here", "back to where you started" -> target kind none, place start; "back to \
 where you were" -> place previous; "the door you just passed" -> target kind door, passed true.
 - Spaces: "the room across the hall" -> kind room, relation across; "the room next to this one" -> kind \

@@ -106,7 +106,10 @@ REQUEST_FRAMES: Final = re.compile(
     r"|\b(?:could|can|would|will)\s+(?:you|u)\s+(?:possibly|perhaps|maybe|please|kindly)\b"
     r"|\bif\s+(?:you|u)\s+(?:do\s+not|don't|dont)\s+mind\b"
     r"|\bif\s+(?:you|u)(?:'d|\s+would|\s+could)\s+be\s+so\s+(?:kind|good)(?:\s+as\s+to)?\b"
-    r"|\bif\s+(?:it'?s|it\s+is)\s+not\s+too\s+much\s+(?:bother|trouble)\b",
+    r"|\bif\s+(?:it'?s|it\s+is)\s+not\s+too\s+much\s+(?:bother|trouble)\b"
+    # "..., if that's okay": asking leave for the request said (the "that" is the request, no place)
+    r"|\bif\s+(?:that'?s|that\s+is|it'?s|it\s+is|this\s+is)\s+(?:ok(?:ay)?|alright|all\s+right|fine|cool|possible|"
+    r"good|alright\s+with\s+you)(?:\s+with\s+you)?\b",
     re.IGNORECASE)
 #: Remarks around a request that ask or say nothing about the motion: "is that a thing you can do?",
 #: "sorry if that's a weird number", "so that I can see the door", "I don't want to crash it": each is
