@@ -349,3 +349,13 @@ def test_a_turn_to_look_behind_is_a_turn_around(prompt: str) -> None:
 def test_looking_at_a_place_faces_it_without_going_there(prompt: str, kind: str) -> None:
     steps = translate_offline(prompt).steps
     assert [(s.movement, s.target.kind.value if s.target else None) for s in steps] == [(Movement.ROTATE, kind)]
+
+
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("right so go forward three metres", [("move", "forward", 3.0, None)]),
+    ("shift left a metre without turning around", [("move", "left", 1.0, None)]),
+    ("go forward one point five, er, one point five metres", [("move", "forward", 1.5, None)]),
+])
+def test_markers_headings_and_restarts_without_the_commas(prompt: str, expected: Plan) -> None:
+    intent = translate_offline(prompt)
+    assert _plan(prompt) == expected and intent.clarification is None

@@ -146,9 +146,11 @@ NOT_TOO_FAR: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*(?:but\s+|just\s+)?not\s+
 #: robot holds its heading while it does it. A move never turns the robot (a sideways move slides), so the
 #: words ask for nothing more; they are no turn and no move "forward".
 KEEPING_HEADING: Final = re.compile(
-    r"(?<=[,.;])\s*(?:and\s+|but\s+|while\s+|just\s+)?(?:"
+    r"(?:(?<=[,.;])|(?<=\s))\s*(?:and\s+|but\s+|while\s+|just\s+)?"
     r"without\s+(?:turning|rotating|spinning|changing\s+(?:your\s+)?(?:heading|direction|orientation))(?:\s+(?:a)?round)?"
-    r"|(?:keep|keeping|stay|staying|remain|remaining|still)\s+(?:facing|pointed|pointing|looking)\s+(?:forwards?|ahead|"
+    r"\s*(?=[,.;!?]|$)"
+    r"|(?<=[,.;])\s*(?:and\s+|but\s+|while\s+|just\s+)?(?:"
+    r"(?:keep|keeping|stay|staying|remain|remaining|still)\s+(?:facing|pointed|pointing|looking)\s+(?:forwards?|ahead|"
     r"straight(?:\s+ahead)?|the\s+same\s+way|this\s+way|the\s+way\s+you\s+are)"
     r"|(?:do\s+not|don'?t|no)\s+(?:turn|turning|rotate|rotating)(?:\s+(?:a)?round)?)"
     r"\s*(?=[,.;!?]|$)", re.IGNORECASE)
@@ -227,7 +229,7 @@ RADIO_NOISE: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*(?:affirmative|roger(?:\s
 #: (The restart may follow a pause or a trailing "and a": "eleven ... eleven feet", "seven and a ... seven and a
 #: half feet".)
 NUMBER_RESTART: Final = re.compile(
-    rf"\b(?P<num>\d+(?:\.\d+)?|a\s+hundred|one\s+hundred|{NUMBER_WORDS})(?:\s+and(?:\s+a)?(?=\s*(?:,|\.\.|…)))?"
+    rf"\b(?P<num>\d+(?:\.\d+)?|a\s+hundred|one\s+hundred|(?:{NUMBER_WORDS})(?:\s+point(?:\s+(?:{NUMBER_WORDS}|zero|oh))+)?)(?:\s+and(?:\s+a)?(?=\s*(?:,|\.\.|…)))?"
     r"(?:\s*(?:,|\.{2,}|…))*\s+(?=(?P=num)\b(?![/.]\d))", re.IGNORECASE)
 #: Words that name one of several alternatives a speaker may set against each other: sides, ways, compass
 #: points, units and numbers.
@@ -273,7 +275,7 @@ _MARKER_WORD: Final = (r"(?:right|ok(?:ay)?|alright|all\s+right|well|so|now|good
 #: followed by another ("right then, ...", "right so, ...", "okay now, ...").
 _OPENING_MARKERS: Final = re.compile(
     rf"^\s*(?:{_MARKER_WORD}(?:\s*(?:[,;:!-]+|\.+)\s*|\s+(?=(?:{_MARKER_WORD}|then)\b)|\s+(?=(?:then|so)\s*[,;:!-])))*"
-    rf"(?:{_MARKER_WORD}|then)(?:\s*(?:[,;:!-]+|\.+))", re.IGNORECASE)
+    rf"(?:(?:{_MARKER_WORD}|then)(?:\s*(?:[,;:!-]+|\.+))|(?<=\s)(?:so|now)\s+(?=\S))", re.IGNORECASE)
 #: What "right" completes when it is a direction: an amount, a unit, a way, or a sequence going on from
 #: it ("right, ninety degrees", "right, a little", "right, then forward two feet", "right. forward").
 _COMPLETES_A_SIDE: Final = re.compile(
