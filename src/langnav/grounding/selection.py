@@ -637,13 +637,16 @@ def _at_the_end(e: Element, hall: Room, pose: Pose) -> bool:
 def _rooms_by_size(pool: list[Element], analysis: MapAnalysis, pose: Pose, *, biggest: bool) -> list[Element]:
     """Rooms from biggest (or smallest) on, a room parted by a gap narrower than any door counted
     whole (``gap_joined``: a lab split by two benches with a 0.7 m gap between them is one lab, as
-    big as both parts). Each room once, by the part of it nearest the robot (the part one enters)."""
+    big as both parts). Each room once, by the part of it nearest the robot (the part one enters).
+    Parts that are mostly hallway (a corridor's end past a cart that narrows it) are no room."""
     area: dict[str, float] = {}
     part: dict[str, Element] = {}
     for e in pool:
         if not isinstance(e, Room):
             continue
-        group = [r for r in gap_joined(analysis, e) if r.kind == ElementKind.ROOM]
+        group = gap_joined(analysis, e)
+        if max(group, key=lambda r: r.area_m2).kind == ElementKind.HALLWAY:
+            continue
         key = min(r.id for r in group)
         area[key] = sum(floor_area_m2(r, analysis) for r in group)
         if key not in part or distance_to(e, pose.xy) < distance_to(part[key], pose.xy):
