@@ -573,6 +573,12 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
 
     if ref.kind == Kind.DOOR and count == 1 and _plain(ref):
         _one_door_or_ask(pool, [space] if space is not None else here_group, analysis, pose)
+    if ref.kind == Kind.OBSTACLE and count == 1 and _plain(ref) and space is None and here_group:
+        # "the obstacle" said in a room with one obstacle is that one (the one thing of that kind both
+        # can see), even when another room's obstacle through a door is nearer
+        own = [e for e in pool if any(_in_space(e, s, analysis) for s in here_group)]
+        if len(own) == 1:
+            pool = own
 
     if ref.ordinal is not None and ref.kind in (Kind.DOOR, Kind.NARROW_PASSAGE) and here is not None \
             and space is None and any(local_first(e) == 0 for e in elements_of_kind(analysis, ref.kind)):
