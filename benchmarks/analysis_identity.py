@@ -39,6 +39,8 @@ YAML_DIRS = (
     SHARED / "maps" / "ros",
     ROOT / "benchmarks" / "blind" / "maps" / "maps",
     ROOT / "benchmarks" / "blind" / "maps-3" / "maps",
+    ROOT / "benchmarks" / "blind" / "maps-4" / "maps",
+    ROOT / "benchmarks" / "blind" / "maps-5" / "maps",
     ROOT.parent / "blind5-maps-dev",
 )
 BENCH_MAPS = ("env1", "env2")

@@ -592,3 +592,92 @@ def test_a_gap_no_deeper_than_a_doorway_is_no_passage_however_thin_the_walls() -
     # 0.4 m deep bench ends: within the deepest doorway (door_max_depth_m), even where the
     # building's partitions are 0.1 m.
     assert passages_of(bench_rows(0.1, depth_m=0.4)) == ()
+
+
+def laundry(island_x1: float = 7.3, door: bool = True, resolution_m: float = 0.05) -> OccupancyGrid:
+    """An 8 x 6 m laundry (x 0-8) beside a 4 x 6 m drying room (x 8-12), a 0.85 m door between
+    them at the north-east corner (y 5.0-5.85). A 6.3 m folding island (x 1.0 to ``island_x1``,
+    y 4.4-5.25) leaves a 0.75 m aisle along the north wall, which bends at its east end: round
+    the island's end (0.7 m from the east wall) into the laundry, and on through the door."""
+    b = MapBuilder(15.0, 9.0, resolution_m=resolution_m, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 8.0, 6.0)
+    b.room(8.0, 0.0, 12.0, 6.0)
+    if door:
+        b.free(7.9, 5.0, 8.1, 5.85)
+    b.box(1.0, 4.4, island_x1, 5.25)
+    return b.build(source=f"laundry_{island_x1}_{door}")
+
+
+def test_an_aisle_that_bends_at_its_end_into_a_door_leads_somewhere() -> None:
+    # The aisle's straight axis ends in its side at the bend; the way leaves through the last
+    # cell of its middle line, into the drying room and round the island.
+    (p,) = passages_of(laundry())
+    assert p.center == pytest.approx((4.19, 5.52), abs=0.1)
+    assert p.width_m == pytest.approx(0.775, abs=0.051)
+    assert p.length_m == pytest.approx(6.28, abs=0.2)
+
+
+def test_the_same_aisle_closed_at_its_end_leads_nowhere() -> None:
+    # Control: the island runs on to the east wall and no door: a dead end.
+    assert passages_of(laundry(island_x1=8.0, door=False)) == ()
+
+
+def conveyor_line(crack_m: float | None) -> OccupancyGrid:
+    """A 17 x 9 m hall crossed by a conveyor line (0.8 m deep, unknown inside its scanned
+    outline) with a 0.95 m walk-through gap at x 7.6-8.55. With ``crack_m``, the east conveyor's
+    end face was drawn twice: a one-cell line at x 8.45-8.5, then a free crack ``crack_m`` wide
+    before the conveyor's inside (a pose error between two passes)."""
+    b = MapBuilder(19.0, 11.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 17.0, 9.0)
+    b.box(1.5, 4.0, 7.6, 4.8).unknown(1.55, 4.05, 7.55, 4.75)
+    b.box(8.5, 4.0, 15.5, 4.8).unknown(8.55, 4.05, 15.45, 4.75)
+    if crack_m is not None:
+        b.free(8.5, 4.0, 8.5 + crack_m, 4.8)
+        b.rect(8.45, 4.0, 8.5, 4.8, OCCUPIED)
+    return b.build(source=f"conveyor_{crack_m}")
+
+
+@pytest.mark.parametrize("crack_m", [None, 0.1])
+def test_a_gap_in_a_conveyor_line_is_a_passage_its_doubled_end_face_too(crack_m: float | None) -> None:
+    # A crack no wider than scan noise (OUTLINE_CRACK_M) between the two copies of the end face
+    # is no way into the conveyor: it is as deep as before, and the gap between the ends is a
+    # squeeze between two things.
+    (p,) = passages_of(conveyor_line(crack_m))
+    assert p.center == pytest.approx((8.03, 4.4), abs=0.05)
+    assert p.width_m == pytest.approx(0.9 if crack_m is None else 0.85, abs=0.051)
+    assert p.length_m == pytest.approx(0.8, abs=0.1)
+
+
+def test_a_thin_panel_before_the_conveyor_end_is_no_thing_to_squeeze_past() -> None:
+    # Control: 0.3 m of floor behind the line: a thin panel standing before the conveyor, no
+    # deeper than a wall; the gap beside it is no squeeze between two things.
+    assert passages_of(conveyor_line(0.3)) == ()
+
+
+def slot_and_conveyor(resolution_m: float) -> OccupancyGrid:
+    """A 17 x 9 m hall: two 0.4 x 2 m cabinets 0.7 m apart (a slot open at both ends, x 2.4-3.1),
+    and a conveyor line (0.8 m deep, its outline 0.1 m, unknown inside) with a 0.9 m gap at
+    x 7.6-8.5; every edge on a 0.1 m grid, so that the same building is drawn at any resolution."""
+    b = MapBuilder(19.0, 11.0, resolution_m=resolution_m, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 17.0, 9.0)
+    b.box(2.0, 1.5, 2.4, 3.5)
+    b.box(3.1, 1.5, 3.5, 3.5)
+    b.box(1.5, 5.0, 7.6, 5.8).unknown(1.6, 5.1, 7.5, 5.7)
+    b.box(8.5, 5.0, 15.5, 5.8).unknown(8.6, 5.1, 15.4, 5.7)
+    return b.build(source=f"slot_and_conveyor_{resolution_m}")
+
+
+@pytest.mark.parametrize("resolution_m", [0.025, 0.1])
+@pytest.mark.parametrize("building", ["laundry", "slot_and_conveyor"])
+def test_passages_do_not_depend_on_the_maps_resolution(building: str, resolution_m: float) -> None:
+    # The rules are in metres: the same building drawn at 0.025 m or 0.1 m has the passages it
+    # has at 0.05 m, each where it was (within a cell) and as wide (within a cell).
+    draw = {"laundry": lambda res: laundry(resolution_m=res), "slot_and_conveyor": slot_and_conveyor}[building]
+    at_005 = sorted(passages_of(draw(0.05)), key=lambda p: p.center)
+    found = sorted(passages_of(draw(resolution_m)), key=lambda p: p.center)
+    assert len(at_005) == {"laundry": 1, "slot_and_conveyor": 2}[building]
+    assert len(found) == len(at_005)
+    for p, q in zip(found, at_005, strict=True):
+        assert p.center == pytest.approx(q.center, abs=max(resolution_m, 0.05) + 0.01)
+        assert p.width_m == pytest.approx(q.width_m, abs=max(resolution_m, 0.05) + 0.01)
+        assert p.length_m == pytest.approx(q.length_m, abs=2 * max(resolution_m, 0.05) + 0.01)

@@ -139,6 +139,33 @@ def test_unknown_thing_the_robot_saw_all_round_is_no_unexplored_area() -> None:
     assert u.centroid == pytest.approx((10.0, 9.0), abs=0.03)
 
 
+def hall_with_pocket(legs: bool) -> OccupancyGrid:
+    """A 10 x 8 m hall with a 1.6 x 1.4 m unknown pocket in its middle, free floor all round it;
+    with ``legs``, the scan hit the four corners of whatever stands there."""
+    b = MapBuilder(12.0, 10.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 10.0, 8.0)
+    b.unknown(4.0, 3.0, 5.6, 4.4)
+    if legs:
+        for x, y in ((3.95, 2.95), (5.55, 2.95), (3.95, 4.35), (5.55, 4.35)):
+            b.rect(x, y, x + 0.1, y + 0.1, OCCUPIED)
+    return b.build(source=f"pocket_{legs}")
+
+
+def test_a_pocket_larger_than_furniture_with_no_scan_hit_is_unexplored() -> None:
+    # Nothing was seen standing there (not one hit on its edge), and it is larger than one piece
+    # of furniture (seg_island_max_area_m2): unscanned floor, worth a look.
+    (u,) = find_unexplored(hall_with_pocket(legs=False), P).areas
+    assert u.interior
+    assert u.area_m2 == pytest.approx(2.24, abs=0.05)
+    assert u.centroid == pytest.approx((4.8, 3.7), abs=0.03)
+    assert len(u.frontier) > 0
+
+
+def test_the_same_pocket_with_its_legs_scanned_is_a_thing() -> None:
+    # The scan hit its corners: a table or a desk group stands there, seen all round.
+    assert find_unexplored(hall_with_pocket(legs=True), P).areas == ()
+
+
 def glass_front(door: bool) -> OccupancyGrid:
     """A closed 6 x 4 m room whose east wall is a glass front: the laser went through it (5 cm
     holes every 0.5 m) and mapped a 3 x 3 m patch of the courtyard beyond, the unknown outside

@@ -10,13 +10,20 @@ import math
 import numpy as np
 import pytest
 from analysis_maps import POS_TOL_M, door_near, space_at
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy import ndimage as ndi
 
 from langnav.analysis.elements import ElementKind
 from langnav.analysis.params import DEFAULT_PARAMS
 from langnav.analysis.seg_doors import SEEN_FLOOR_MIN_M
 from langnav.analysis.segmentation import UNKNOWN_ID, segment_spaces
-from langnav.analysis.wall_lines import WallDirections, dominant_directions, outer_gaps
+from langnav.analysis.wall_lines import (
+    WallDirections,
+    _line_scores,
+    dominant_directions,
+    outer_gaps,
+)
 from langnav.maps.draw import MapBuilder
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
@@ -159,6 +166,24 @@ def test_wall_directions_kept_with_their_walls_are_reused_only_for_those_walls()
     assert kept.of(other) == dominant_directions(other)
     assert kept.of(other) != [0.25, 0.25 + math.pi / 2]
     assert kept.of(np.zeros((80, 60), dtype=bool)) == []
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.tuples(st.integers(0, 300), st.integers(0, 300)), min_size=2, max_size=60, unique=True),
+       st.lists(st.floats(-1.0, 91.0), min_size=1, max_size=25))
+def test_line_scores_count_the_cells_on_each_line(cells: list[tuple[int, int]], degs: list[float]) -> None:
+    """Each direction's score is the sum of squared counts of cells per line (the line number
+    rounded half to even, as np.rint does), over the number of cells: computed directly here."""
+    rows = np.array([r for r, _ in cells], dtype=np.float64)
+    neg_cols = -np.array([c for _, c in cells], dtype=np.float64)
+    got = _line_scores(rows, neg_cols, np.array(degs))
+    for d, score in zip(degs, got.tolist(), strict=True):
+        t = math.radians(d)
+        total = 0
+        for c, s in ((math.cos(t), math.sin(t)), (-math.sin(t), math.cos(t))):
+            _, counts = np.unique(np.rint(s * neg_cols + c * rows), return_counts=True)
+            total += int((counts * counts).sum())
+        assert score == total / rows.size
 
 
 def narrow_hallway_with_rooms() -> OccupancyGrid:

@@ -90,3 +90,12 @@ def test_descriptions() -> None:
     assert describe_ref(ref(kind="room", in_current_room=True)) == "this room"
     assert describe_ref(ref(kind="wall", side="left", within="hallway")) == "the left wall of the hallway"
     assert Side.LEFT.value == "left" and Superlative.BIGGEST.value == "biggest" and Element.DOOR.value == "door"
+
+
+def test_two_sides_narrow_to_a_quarter(two_rooms: MapAnalysis) -> None:
+    """"The door behind you on the left" (session 6, parser): both sides hold; "behind you" alone is the nearer."""
+    in_b = Pose.from_deg(8.0, 3.0, 0.0)  # in room B facing east: both doors behind, door_1 right, door_2 left
+    assert select(ref(kind="door", side="behind"), two_rooms, in_b).id == "door_1"
+    assert select(ref(kind="door", side="behind", also_side="left"), two_rooms, in_b).id == "door_2"
+    assert select(ref(kind="door", side="behind", also_side="right"), two_rooms, in_b).id == "door_1"
+    assert describe_ref(ref(kind="door", side="behind", also_side="left")) == "the door behind you on your left"

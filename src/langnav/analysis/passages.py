@@ -94,6 +94,9 @@ WALL_RUNS_ON_SHARE: Final = 0.7
 PARALLEL_SPREAD_M: Final = 0.15
 #: ... sampled this far past each mouth (m): a wall, not the corner of a jamb.
 WALL_RUN_M: Final = 0.6
+#: A free crack along a thing's depth up to this wide (m; two cells of a common 0.05 m map) is
+#: scan noise: the sliver between the two copies of its outline a pose error drew twice.
+OUTLINE_CRACK_M: Final = 0.1
 #: ... and the thing is deeper than a wall is thick (door_max_depth_m): blocked along this share
 #: of that depth past its face (its outline may have a scan dropout).
 DEEP_SHARE: Final = 0.8
@@ -294,9 +297,16 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             if np.count_nonzero(solid) < MIN_BOUNDED_FRACTION * np.count_nonzero(bounded):
                 continue
             ends_g = [mean + lo * axis, mean + hi * axis]
-            # It leads somewhere: both mouths open into free space wider than any passage.
-            if not all(_opens_into_space(sub, e, sign * axis, res, params)
-                       for sign, e in zip((-1.0, 1.0), ends_g, strict=True)):
+            # It leads somewhere: both mouths open into free space wider than any passage. A way
+            # as elongated as a corridor leaves through the last cell of its middle line at each
+            # end (where an aisle bends at its end, the end of its straight axis falls in its
+            # side); a short gap's axis across a bend is no way's axis.
+            corridor_like = length_m >= params.hallway_min_elongation * width_m
+            two = pts[bounded]
+            lasts = ([two[int(np.argmin(proj[bounded]))], two[int(np.argmax(proj[bounded]))]] if corridor_like
+                     else [None, None])
+            if not all(_opens_into_space(sub, e, sign * axis, res, params, last)
+                       for sign, e, last in zip((-1.0, 1.0), ends_g, lasts, strict=True)):
                 continue
             centre_g = mean + 0.5 * (lo + hi) * axis
             # Short (less than PASSAGE_MIN_ELONGATION times longer than wide), it is a gap: in a
@@ -309,7 +319,6 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             # Between a wall and a thing one can walk round (a pallet, a cabinet), a strip is a
             # way of its own only when it is as elongated as a corridor (an aisle along a shelf).
             elongated = length_m >= PASSAGE_MIN_ELONGATION * width_m
-            corridor_like = length_m >= params.hallway_min_elongation * width_m
             squeeze = False
             thing: int | None = None
             if not corridor_like:
@@ -320,7 +329,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 thing = _beside_a_wall(past, both_mouths=not elongated)
                 if not elongated:
                     depth = params.door_max_depth_m / res
-                    sides_deep = [_deep(sub, pts[bounded], normal * (2 * j - 1), sides[bounded, j], depth)
+                    sides_deep = [_deep(sub, pts[bounded], normal * (2 * j - 1), sides[bounded, j], depth, res)
                                   for j in (0, 1)]
                     # A squeeze past a thing deeper than a wall beside a wall that runs on, or
                     # between two such things (a parked bed and a trolley in a corridor, a
@@ -479,7 +488,7 @@ def _beside_a_wall(past: npt.NDArray[np.float64], both_mouths: bool = True) -> i
 
 
 def _deep(open_: BoolArray, pts: npt.NDArray[np.float64], outward: npt.NDArray[np.float64],
-          side: npt.NDArray[np.float64], depth: float) -> bool:
+          side: npt.NDArray[np.float64], depth: float, res: float) -> bool:
     """Is the thing on one side of a squeeze (its points ``pts``, the side ``side`` cells away
     along the unit ``outward``) deeper than ``depth`` cells: blocked along ``DEEP_SHARE`` of the
     samples that far past where it starts (a scan dropout in its outline is no way into it),
@@ -491,6 +500,11 @@ def _deep(open_: BoolArray, pts: npt.NDArray[np.float64], outward: npt.NDArray[n
     inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
     blocked = ~inside
     blocked[inside] = ~open_[r[inside], c[inside]]
+    # A crack no wider than scan noise inside the thing (the sliver between the two copies of its
+    # outline that a pose error drew twice) is no way into it: closed across.
+    k = math.ceil(OUTLINE_CRACK_M / res / 0.5)
+    if k > 0 and blocked.shape[1] > k + 1:
+        blocked |= ndi.binary_closing(blocked, structure=np.ones((1, k + 1), dtype=bool))
     return bool((blocked.mean(axis=1) >= DEEP_SHARE).mean() >= MIN_BOUNDED_FRACTION)
 
 
@@ -748,12 +762,14 @@ def _solid_sides(open_: BoolArray, occupied: BoolArray, outside: BoolArray, pts:
 
 
 def _opens_into_space(open_: BoolArray, end_g: npt.NDArray[np.float64], direction: npt.NDArray[np.float64],
-                      res: float, params: AnalysisParams) -> bool:
+                      res: float, params: AnalysisParams, last_g: npt.NDArray[np.float64] | None = None) -> bool:
     """Does the free space beyond a mouth (``end_g``, x, y in grid cells; ``direction`` outwards
     along the axis) open into a free area: within ``MOUTH_OPEN_SEARCH_M`` of the mouth, reached
     through free cells ahead of it, a cell whose clearance exceeds half the widest passage
     (somewhere wider than any narrow passage: a room, a hall, a corridor)? A dead-end slot's
-    far end, a sliver outside a wall and a laser ray's tip do not."""
+    far end, a sliver outside a wall and a laser ray's tip do not. Where the mouth's own cell is
+    no free cell, the way is followed from ``last_g``, the passage's last middle-line cell there
+    (a bent passage's straight axis ends in its side)."""
     h, w = open_.shape
     reach = MOUTH_OPEN_SEARCH_M / res
     need = params.passage_max_width_m / 2.0 / res
@@ -770,6 +786,10 @@ def _opens_into_space(open_: BoolArray, end_g: npt.NDArray[np.float64], directio
     ahead = win & (dx * direction[0] + dy * direction[1] >= -0.5) & (dx * dx + dy * dy <= reach * reach)
     lab, _n = ndi.label(ahead)
     start = lab[min(max(math.floor(y), r0), r1 - 1) - r0, min(max(math.floor(x), c0), c1 - 1) - c0]
+    if start == 0 and last_g is not None:
+        lr, lc = math.floor(float(last_g[1])), math.floor(float(last_g[0]))
+        if r0 <= lr < r1 and c0 <= lc < c1:
+            start = lab[lr - r0, lc - c0]
     if start == 0:
         return False
     clear = ndi.distance_transform_edt(np.pad(win, 1))[1:-1, 1:-1]

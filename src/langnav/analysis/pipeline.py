@@ -21,6 +21,7 @@ import numpy as np
 import numpy.typing as npt
 from scipy import ndimage as ndi
 
+from langnav.analysis.allocator import keep_freed_arrays
 from langnav.analysis.corners import find_corners
 from langnav.analysis.elements import Door, MapAnalysis, UnexploredArea
 from langnav.analysis.obstacles import find_obstacles
@@ -45,6 +46,8 @@ DEFAULT_CACHE_SIZE: Final = 8
 
 def analyze(grid: OccupancyGrid, params: AnalysisParams = DEFAULT_PARAMS) -> MapAnalysis:
     """Find every element of ``grid`` (see :mod:`langnav.analysis.elements`)."""
+    # Freed grid-sized arrays stay in the process for the next ones (glibc; see the module).
+    keep_freed_arrays()
     # Masks and components the segmentation and every detector need, computed once.
     layers = GridLayers(grid)
     seg = segment_spaces(grid, params, layers)

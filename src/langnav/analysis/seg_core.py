@@ -260,8 +260,16 @@ def basins(clearance_m: FloatArray, floor: BoolArray, min_peak_m: float) -> IntA
     """Watershed of -clearance from its local maxima (plateaus are one marker each)."""
     peaks = (clearance_m >= maximum3(clearance_m)) & floor & (clearance_m >= min_peak_m)
     markers, _ = ndi.label(peaks, structure=EIGHT)
-    lab = watershed(-clearance_m, markers, mask=floor)
-    return np.asarray(lab, dtype=np.int32)
+    out = np.zeros(floor.shape, dtype=np.int32)
+    rows, cols = np.flatnonzero(floor.any(axis=1)), np.flatnonzero(floor.any(axis=0))
+    if rows.size == 0:
+        return out
+    # Flooded in the floor's bounding box only: the same flood (nothing outside the mask is
+    # flooded; inside, the markers are met in the same raster order and every cell's neighbours
+    # in the same order), on fewer cells where a margin of wall and unknown surrounds the floor.
+    box = (slice(int(rows[0]), int(rows[-1]) + 1), slice(int(cols[0]), int(cols[-1]) + 1))
+    out[box] = watershed(-clearance_m[box], markers[box], mask=floor[box])
+    return out
 
 
 def adjacent_pairs(labels: IntArray, value: FloatArray) -> tuple[

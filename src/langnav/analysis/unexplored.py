@@ -174,14 +174,12 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     order = np.argsort(fr[:, 0], kind="stable")
     splits = np.searchsorted(fr[order, 0], np.arange(1, n_areas + 2))
 
-    need = _min_frontier_cells(grid, params)
     areas: list[UnexploredArea] = []
     for k in range(1, n_areas + 1):
         sel = order[splits[k - 1]:splits[k]]
         # Its openings only: the runs of frontier as long as unexplored_min_frontier_m, not the
         # single cells seen through the gaps of a glass front or a wall's laser holes.
-        run, n_runs = label8_cells(fr[sel, 1], (grid.height, grid.width))
-        sel = sel[(np.bincount(run, minlength=n_runs + 1) >= need)[run]]
+        sel = sel[_in_openings(grid, params, fr[sel, 1])]
         frontier = np.stack([fx[sel], fy[sel]], axis=1) if len(sel) else np.zeros((0, 2))
         areas.append(UnexploredArea(
             id=f"unexplored_{k}",
@@ -193,9 +191,13 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     return UnexploredResult(tuple(areas), area_labels, exterior, specks)
 
 
-def _min_frontier_cells(grid: OccupancyGrid, params: AnalysisParams) -> int:
-    """How many frontier cells in one run make an opening (``params.unexplored_min_frontier_m``)."""
-    return math.ceil(params.unexplored_min_frontier_m / grid.resolution_m - 1e-9)
+def _in_openings(grid: OccupancyGrid, params: AnalysisParams, cells: npt.NDArray[np.int64]) -> BoolArray:
+    """Per frontier cell (sorted unique flat indices): is it in an opening, a run of frontier (an
+    8-connected piece of ``cells``) at least ``params.unexplored_min_frontier_m`` long, rather than
+    a cell seen through the gaps of a glass front, a wall's laser holes or a shelf's outline?"""
+    need = math.ceil(params.unexplored_min_frontier_m / grid.resolution_m - 1e-9)
+    run, n_runs = label8_cells(cells, (grid.height, grid.width))
+    return np.asarray((np.bincount(run, minlength=n_runs + 1) >= need)[run], dtype=bool)
 
 
 def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, lab: IntArray, n: int,
@@ -209,8 +211,7 @@ def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayer
     candidate = np.zeros(n + 1, dtype=bool)
     candidate[inside] = sizes[inside] * grid.cell_area_m2 >= params.unexplored_worth_area_m2
     candidate &= _wide_enough(grid, params, layers, lab, candidate)
-    candidate &= ~_seen_all_round(grid, params, layers, lab, candidate)
-    need = _min_frontier_cells(grid, params)
+    candidate &= ~_seen_all_round(grid, params, layers, lab, sizes, candidate)
     worth = np.zeros(n + 1, dtype=bool)
     # (``pairs`` hold only the frontier cells the robot comes up to from the main free space.)
     # The outside world: enough of its frontier within reach.
@@ -220,8 +221,7 @@ def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayer
     out_cells = np.unique(pairs[outside[pairs[:, 1]], 0])
     # ... in one opening (a connected run), as for a region inside the map: not the cells seen
     # through the gaps of a glass front.
-    out_run, n_out_runs = label8_cells(out_cells, (grid.height, grid.width))
-    if n_out_runs and int(np.bincount(out_run, minlength=n_out_runs + 1).max()) >= need:
+    if _in_openings(grid, params, out_cells).any():
         worth[outside] = True
     # A region inside the map: one opening (a connected run of its frontier) the robot can come
     # up to along at least unexplored_min_frontier_m (a door, a room's open side; not the gaps
@@ -230,11 +230,9 @@ def _worth_a_trip(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayer
     if sel.any():
         cells, regions = pairs[sel, 0], pairs[sel, 1]
         uniq, inverse = np.unique(cells, return_inverse=True)
-        run, n_runs = label8_cells(uniq, (grid.height, grid.width))
-        per_run = np.bincount(run[inverse], minlength=n_runs + 1)
-        best = np.zeros(n + 1)
-        np.maximum.at(best, regions, per_run[run[inverse]])
-        worth |= candidate & (best >= need)
+        opening = np.zeros(n + 1, dtype=bool)
+        opening[regions[_in_openings(grid, params, uniq)[inverse]]] = True
+        worth |= candidate & opening
     return worth
 
 
@@ -305,13 +303,18 @@ def _cut_thin_parts(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
 
 
 def _seen_all_round(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers, lab: IntArray,
-                    candidate: BoolArray) -> BoolArray:
-    """Per unknown component (index = label; only ``candidate`` ones tested): did the robot's scans
-    go all round it? It touches no wall (every occupied piece beside it is no bigger than a piece
-    of furniture, ``params.seg_island_max_area_m2``: scanned legs and edges), so free floor
-    surrounds it, and it is narrower than ``params.unexplored_enclosed_max_width_m``, so a lidar
-    on that floor would have seen into it had nothing stood in the way: it is a thing (a group of
-    desks, a glass table, a plant), and sending the robot there shows nothing more."""
+                    sizes: npt.NDArray[np.int64], candidate: BoolArray) -> BoolArray:
+    """Per unknown component (index = label, ``sizes`` its cells; only ``candidate`` ones tested):
+    did the robot's scans go all round it? It touches no wall (every occupied piece beside it is
+    no bigger than a piece of furniture, ``params.seg_island_max_area_m2``: scanned legs and
+    edges), so free floor surrounds it, and it is narrower than
+    ``params.unexplored_enclosed_max_width_m``, so a lidar on that floor would have seen into it
+    had nothing stood in the way: it is a thing (a group of desks, a glass table, a plant), and
+    sending the robot there shows nothing more. A thing shows where it stands by the scan hits
+    on its outline (legs, edges, faces); only one piece of furniture's size (up to
+    ``params.seg_island_max_area_m2``: a glass table the laser passes through) may show none. A
+    larger pocket with no hit at all on its edge shows nothing standing there: floor the map
+    holds no scan of, worth a look."""
     out = np.zeros(len(candidate), dtype=bool)
     if not candidate.any():
         return out
@@ -321,9 +324,12 @@ def _seen_all_round(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     # touches a wall.
     pairs = adjacent_pairs(candidate[lab], occ.labels)
     walled = np.zeros(len(candidate), dtype=bool)
+    hit = np.zeros(len(candidate), dtype=bool)
     if len(pairs):
         walled[lab.ravel()[pairs[occ.sizes[pairs[:, 1]] > island, 0]]] = True
-    ids = np.flatnonzero(candidate & ~walled)
+        hit[lab.ravel()[pairs[:, 0]]] = True
+    unseen = ~hit & (sizes > island)
+    ids = np.flatnonzero(candidate & ~walled & ~unseen)
     if len(ids) == 0:
         return out
     rows, cols = nonzero2(np.isin(lab, ids))

@@ -154,10 +154,11 @@ def _line_scores(rows: FloatArray, neg_cols: FloatArray, degs: FloatArray) -> Fl
     instead of rounding, converting to integers and shifting."""
     n = rows.size
     block = min(max(1, SCORE_BLOCK_ELEMENTS // n), len(degs))
-    # Every line number lies within +-reach (|cos|, |sin| <= 1; rows and columns are >= 0):
-    # shifted by reach, each direction of a block counts into its own span of bins. Both even,
-    # so that every shift is even (see _ROUNDER).
-    reach = math.ceil(float(rows.max()) - float(neg_cols.min())) + 1
+    # Every line number lies within +-reach (|-col * sin + row * cos| <= hypot(row, col), and
+    # rows and columns are >= 0; a cell more for the rounding): shifted by reach, each direction
+    # of a block counts into its own span of bins. Both even, so that every shift is even (see
+    # _ROUNDER).
+    reach = math.ceil(math.hypot(float(rows.max()), float(neg_cols.min()))) + 2
     reach += reach % 2
     span = 2 * reach + 2
     out = np.empty(len(degs))

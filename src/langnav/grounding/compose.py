@@ -500,7 +500,7 @@ def resolve_passed(ref: ElementRef, trail: list[Point], analysis: MapAnalysis) -
     """'the door you just passed' as a reference by label (the element it turned out to be)."""
     e = passed_element(ref, trail, elements_of_kind(analysis, ref.kind))
     number = int(e.id.rsplit("_", 1)[1])
-    return ref.model_copy(update={"passed": False, "label": number, "side": None, "ordinal": None,
+    return ref.model_copy(update={"passed": False, "label": number, "side": None, "also_side": None, "ordinal": None,
                                   "superlative": None})
 
 

@@ -140,6 +140,9 @@ class ElementRef(_Model):
         default=None, description="first = 1, second = 2 ... counted by distance from the robot")
     superlative: Superlative | None = None
     side: Side | None = Field(default=None, description="relative to the robot: left, right, ahead, behind")
+    also_side: Side | None = Field(
+        default=None, description="a second side that narrows the first to a quarter: 'the door behind you on "
+        "the left' -> side behind, also_side left; 'the room ahead on your right' -> side ahead, also_side right")
     in_current_room: bool = Field(default=False, description="'this room', 'the room you are in'")
     within: Element | None = Field(
         default=None, description="the space that contains it: 'the corner of the hallway' -> hallway")

@@ -159,6 +159,18 @@ degrees" after "turn left" gives the amount. Two different amounts for one motio
 degrees") -> ask. A number cut off and not said again ("turn left forty fi-") -> ask, never 40.
 - "Step one, ...", "1) ... 2) ..." number a list (no amounts); "..., right?" / "..., okay?" is a tag \
 question, not a side; "wait, ..." opening a request only holds the floor.
+- Discourse markers and asides: "right", "okay", "so", "well" opening an utterance before a pause or a new \
+instruction mean nothing ("right then, could you go forward two metres" -> only the move; "right, stop there" \
+-> stop); "right, ninety degrees" is a side. Reasons ("because ..."), comparisons ("like you're peeking round \
+a corner"), comments ("this is important", "bear with me"), "give or take", "more or less", "or so I'm told", \
+"what" before an amount ("go forward, what, nine feet") mean nothing; "what I'd like (you to do) ... is for \
+you to X" asks for X; "distance eight metres" is 8 m; "keep facing forward" / "without turning" after a \
+sideways move add nothing; "where you at", "where do you stand?" -> pose query; "not too far" -> amount little; \
+"spin (yourself) right around", "spin all the way around" -> rotate 360 ("turn all the way around" -> around); \
+"come back ten feet" after turning around -> move forward; "the room which is the smallest" -> smallest room.
+- Contradictions ask: both sides in one turn ("rotate clockwise to the left") -> no steps, ask which way. A \
+place named by a thing in it ("the room with the sofa") or by two sides ("the door behind you on the left") \
+-> ask.
 - Ask, don't guess: when the side of a turn ("rotate 45 degrees"), the unit of a distance ("move forward 3") \
 or any word about where or how far is unclear, give no steps; in clarification say what you understood and \
 ask about the rest."""
@@ -174,6 +186,8 @@ corner" -> offset before, offset_m 1.
 "a third of the way to the door" -> fraction 0.333.
 - Facing: "turn to face the door" -> movement rotate with a target and no direction; "face north" -> \
 movement rotate, heading_deg 90 (east 0, north 90, west 180, south 270).
+- Two sides: "the door behind you on the left" -> side behind, also_side left (both hold); "the room ahead \
+on your right" -> side ahead, also_side right.
 - Returning: "come back here", "back to where you started" -> target kind none, place start; "back to \
 where you were" -> place previous; "the door you just passed" -> target kind door, passed true.
 - Spaces: "the room across the hall" -> kind room, relation across; "the room next to this one" -> kind \

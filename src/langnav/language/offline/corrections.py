@@ -59,9 +59,13 @@ def is_fragment(clause: str) -> bool:
     norm = normalize(clause)
     if not norm or CORRECTION_START_RE.match(norm) or CANCEL_RE.search(norm):
         return False
-    if GO_VERB_RE.search(norm) or ROTATE_VERB_RE.search(norm) or STOP_RE.search(norm) or _HEAD_RE.search(norm):
+    quantities = find_quantities(norm)
+    words = norm
+    for q in quantities:  # the words of an amount are no verb ("one point two metres": no "point" to face)
+        words = words[:q.start] + " " * (q.end - q.start) + words[q.end:]
+    if GO_VERB_RE.search(words) or ROTATE_VERB_RE.search(words) or STOP_RE.search(words) or _HEAD_RE.search(words):
         return False
-    return bool(find_quantities(norm) or SIDE_RE.search(norm) or COMPASS_RE.search(norm) or CLOCK_RE.search(norm)
+    return bool(quantities or SIDE_RE.search(norm) or COMPASS_RE.search(norm) or CLOCK_RE.search(norm)
                 or LITTLE_RE.search(norm))
 
 

@@ -20,6 +20,12 @@ with its reason; none names a case. The text is lower-case and single-spaced (``
   asked of the robot is the motion (moves and turns are told apart by the unit, as everywhere).
 * **Stopping idioms with a dummy subject or object.** "Hold it (right there)", "that will do": the
   "it" and "that" point at nothing; the phrase means stop.
+* **"Right round".** "Spin yourself right around", "turn right round": "right" before "around" means
+  "all the way" (as in "right through"), not a side, unless a place follows ("right round the corner").
+* **Amounts by name.** "Proceed south, distance eight metres", "angle forty five": the word that names
+  the amount before it is no instruction of its own.
+* **Praise of a turn.** "A proper left turn", "a nice clean one eighty": the adjective says how well the
+  turn is done, not which way or how far.
 * **Learner grammar.** The article dropped ("make turn on left"): "make / do / take turn" is a turn.
 """
 
@@ -93,6 +99,18 @@ _IDIOMS: Final[tuple[tuple[re.Pattern[str], Replacement], ...]] = (
                 r"cm|centimet(?:er|re)s?|degrees?|deg)\b)"), "move "),
     # "push forward", "press on two feet", "mosey ahead": a verb of going with no object
     (re.compile(rf"\b(?:{'|'.join(INFORMAL_GO_VERBS)})(?:\s+(?:on|onwards?|along))?\s+(?={_WAY})"), "move "),
+    # "spin yourself right around", "turn right round": "right" before "around" is the intensifier "all the
+    # way" (as in "right through", "right back"), not a side; a place after it ("right round the corner")
+    # keeps the side
+    (re.compile(r"\b(?P<v>turn|spin|rotate|swing|swivel|pivot|twirl|whirl|wheel|come)(?P<obj>\s+(?:yourself|itself|her|it))?"
+                r"\s+right\s+(?:a)?round\b(?!\s+(?:the|a|an|this|that|it|to|towards?)\b)"), r"\g<v> all the way around"),
+    # "proceed south, distance eight metres", "turn left, angle forty five": the name of the amount said
+    # before it (formal radio and report phrasing) is no word of its own
+    (re.compile(rf"\b(?:(?:for|at|by)\s+)?(?:a\s+|the\s+)?(?:distance|range|angle|amount)(?:\s+of)?\s*:?\s+"
+                rf"(?=(?:about\s+|around\s+|roughly\s+|approximately\s+)?(?:{NUMBER})\b)"), ""),
+    # "a proper left turn", "a nice clean one eighty": words that praise a turn say nothing of its side or size
+    (re.compile(r"\b(?:(?:proper|real|nice|clean|normal|regular|standard|decent|good|neat|tidy)\s+)+"
+                r"(?=(?:left|right|u)\s*turn\b|(?:one\s+eighty|three\s+sixty|180|360)\b)"), ""),
     # learner grammar: "make turn", "do turn" (no article) is a turn
     (re.compile(r"\b(?:make|do|take|perform|give)\s+(?:a\s+)?turn(?=\s+(?:on|in|to|at|towards?)?\s*(?:the\s+)?"
                 r"(?:left|right)\b)"), "turn"),

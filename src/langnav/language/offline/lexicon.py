@@ -264,7 +264,8 @@ GO_VERBS: Final = (
     "reach", "proceed", "travel", "walk", "roll", "come", "return", "advance", "make your way",
     "take me", "bring me", "get me", "lead me", "take us", "bring us", "guide me", "take yourself",
     "enter", "exit", "leave", "cross", "pass", "approach", "visit", "find", "park", "position yourself",
-    "get yourself", "continue", "keep going", "carry on", "step", "slide", "shift", "creep", "inch",
+    "get yourself", "continue", "keep going", "carry on", "step", "slide", "shift", "creep", "inch", "sidestep",
+    "side step",
     "scoot", "back up", "reverse", "back off", "go back", "head back", "strafe", "run", "ride",
     "navigate yourself", "steer", "relocate", "put yourself", "place yourself", "be", "traverse",
     "squeeze", "wander", "journey", "cruise", "zip", "hop", "nudge", "budge", "position", "get over",
@@ -307,13 +308,18 @@ QUERY_POSE_PATTERNS: Final = (
     r"(?<!\bhold\s)(?<!\bkeep\s)(?<!\bmaintain\s)"
     r"\b(?:your|the\s+robot'?s?|current|robot)\s+(?:current\s+|exact\s+|present\s+|last\s+)?"
     r"(?:position|location|pose|coordinates|whereabouts|heading|orientation|place)\b",
-    r"\b(?:report|send|give|tell)\s+(?:me\s+|us\s+)?(?:your\s+)?(?:current\s+|present\s+)?"
-    r"(?:position|location|pose|coordinates|whereabouts)\b",
+    r"\b(?:report|send|give|tell)\s+(?:me\s+|us\s+)?(?:your\s+|the\s+)?(?:current\s+|present\s+)?"
+    r"(?:position|location|pose|coordinates|whereabouts)\b(?!\s+of\b)",
     r"\bwhich\s+(?:way|direction)\s+are\s+you\s+(?:facing|pointing|heading|looking)\b",
     r"\bwhere\s+(?:is\s+it|are\s+we)\b", r"^\s*where\s+(?:you|u)\s+(?:are|r)\b",
     r"\bwhere\s+(?:is|are|r)\s+(?:you|u|ya)\b(?!\s+(?:going|heading|headed|driving|off\s+to))", r"\b(?:tell|show|say|know|report)\b.*\bwhere\s+you\s+are\b", r"\blocali[sz]e\s+yourself\b",
     r"\bwhat\s+is\s+your\s+(?:position|location|pose)\b", r"\bwhere\s+abouts\b",
     r"\bwhat\s+room\s+are\s+you\s+in\b", r"\bwhere\s+have\s+you\s+got\s+to\b",
+    # "where you at?" (the copula dropped, as many English dialects do); "where do you stand now?" (where
+    # one stands is where one is, as learners and formal speakers ask it)
+    r"^\s*where\s+(?:you|u|ya|y'all)\s+at\b",
+    r"\bwhere\s+(?:do|does)\s+(?:you|u|the\s+robot|it)\s+(?:stand|find\s+(?:yourself|itself)|sit|stay)\b"
+    r"(?!\s+(?:on|with)\b)",
 )
 QUERY_PATH_PATTERNS: Final = (
     # ("which way is north?" asks where a direction is, not the robot's path)
@@ -584,7 +590,7 @@ TYPOS: Final[dict[str, str]] = {
     "dorr": "door", "odor": "door", "drs": "doors", "wal": "wall", "wll": "wall", "trun": "turn",
     "tunr": "turn", "tuen": "turn", "trn": "turn", "rotat": "rotate", "roate": "rotate",
     "rotae": "rotate", "nagivate": "navigate", "navgate": "navigate", "naviagte": "navigate",
-    "navigte": "navigate", "goto": "go to", "gotta": "go to", "hallwya": "hallway",
+    "navigte": "navigate", "goto": "go to", "gotta": "go to", "oughta": "should", "shoulda": "should", "hallwya": "hallway",
     "halway": "hallway", "hallwy": "hallway", "corridoor": "corridor", "coridor": "corridor",
     "corrdor": "corridor", "corrider": "corridor", "cornr": "corner", "conrer": "corner",
     "corener": "corner", "obstcle": "obstacle", "obsticle": "obstacle", "obstacel": "obstacle",

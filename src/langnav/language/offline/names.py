@@ -36,9 +36,12 @@ def unknown_destination(masked: str) -> str | None:
 
 #: A place named as the landmark of another one: "the room next to THE KITCHEN", "the room across the hall
 #: from THE BATHROOM", "the door by THE FRIDGE". The word after the determiner is the landmark's name.
+#: A place may also be named by a thing it holds: "the room WITH THE SOFA", "the room that has a piano in it",
+#: "the room where the printer is": the grid shows no furniture by name, so which room is meant is a guess.
 _LANDMARK_RE: Final = re.compile(
-    r"\b(?:next\s+to|beside|near|by|from|opposite|behind|past|beyond)\s+"
-    r"(?:the|my|our|your)\s+(?P<name>[a-z][\w']*(?:\s+[a-z][\w']*)?)")
+    r"\b(?:(?:next\s+to|beside|near|by|from|opposite|behind|past|beyond)\s+(?:the|my|our|your)"
+    r"|(?:with|containing|(?:that|which)\s+(?:has|have|holds|contains)|where)\s+(?:the|my|our|your|a|an|some))\s+"
+    r"(?P<name>[a-z][\w']*(?:\s+[a-z][\w']*)?)")
 
 
 def unknown_landmark(masked: str, known_names: Sequence[str] = ()) -> str | None:

@@ -66,6 +66,8 @@ _IDIOMS: Final = (
     (re.compile(r"\b(?:go|turn|spin|drive|move|roll|rotate)\s+(?:(?:a)?round\s+)?in\s+a\s+(?:full\s+|complete\s+)?circle\b"),
      "turn 360 degrees"),
     (re.compile(r"\b(?:do|make)\s+a\s+(?:full\s+|complete\s+)?circle\b"), "turn 360 degrees"),
+    # "all the circle", "the whole circle" (learners' words for a full circle): one full turn
+    (re.compile(r"\b(?:all\s+the|the\s+whole|the\s+full|the\s+entire|the\s+complete)\s+circle\b"), "a full circle"),
     # "do a one eighty", "pull a three sixty": a half or full turn named by its degrees
     (re.compile(r"\b(?:do|make|pull|perform|execute|hit|give\s+(?:me|us))\s+(?:a|an)\s+(one\s+eighty|180|three\s+sixty|360)\b"
                 r"(?!\s*(?:degrees?|turn))"),
@@ -114,6 +116,11 @@ _IDIOMS: Final = (
     # other side of the hall" alone is still the far side of the hallway)
     (re.compile(r"\b(room|office|space)\s+(?:(?:that|which)\s+is\s+)?(?:on|at)\s+the\s+(?:other|opposite|far)\s+side"
                 r"\s+of\s+the\s+(hall|hallway|corridor)\b"), r"\1 across the \2"),
+    # "the room which is the smallest", "whichever room is biggest", "the door that is nearest": a
+    # superlative said in a relative clause picks the same element as one said before the noun
+    (re.compile(r"\b(?:the|whichever|whatever|which\s+ever)\s+(" + "|".join(sorted({n for n in ELEMENT_NOUNS if " " not in n}))
+                + r")\s+(?:(?:which|that)\s+)?is\s+(?:the\s+)?(" + "|".join(sorted(
+                    {w for w in SUPERLATIVES if w.endswith("est") and " " not in w})) + r")(?:\s+one)?\b"), r"the \2 \1"),
     # "between the first and second doors on your left": both ordinals share the noun and its side
     (re.compile(r"\bbetween\s+the\s+(" + _ORDINAL + r")\s+and\s+(?:the\s+)?(" + _ORDINAL + r")\s+"
                 r"(door|doorway|room|obstacle|corner|opening)s?\b(\s+on\s+(?:your|the|my)\s+(?:left|right)"
@@ -136,9 +143,20 @@ _IDIOMS: Final = (
     # "go out and turn right", "step out, please": out of the room the robot is in (no place called "out")
     (re.compile(r"\b(go|get|step|head|walk|drive|move)\s+out\b(?=\s*(?:$|,|and\b|then\b|now\b|please\b))"),
      r"\1 out of this room"),
+    # "go through the door, then come back through it": through it once more, the way the robot came (the
+    # far side of a door is read from where the robot then stands); "back" is no move backward here
+    (re.compile(r"\b(come|go|head|get|walk|drive)\s+back\s+(?=(?:out\s+|in\s+)?(?:through|via)\b)"), r"\1 "),
     # "back out the door", "back out of the room": leave through it (which way the robot faces while it
     # leaves is Nav2's business, not a backward move of unsaid length)
     (re.compile(r"\bback\s+out\s+(?=(?:of|through|the|this|that|via)\b)"), "go out "),
+    # "through the door, then come back through it": going back through a door is going through it,
+    # from the side the robot is on now (which is where it came from)
+    (re.compile(r"\b(?:come|go|head|get|walk|drive|move)\s+back\s+(?:out\s+|in\s+)?(?=(?:through|thru|via)\b)"), "go "),
+    # "back out six feet": with an amount and no place, reversing that far ("back up six feet")
+    (re.compile(r"\bback\s+out\s+(?=(?:about\s+|around\s+|roughly\s+|another\s+)?(?:\d|a\s+(?:bit|little|foot|metre|meter|"
+                r"yard)\b|half\b|one\b|two\b|three\b|four\b|five\b|six\b|seven\b|eight\b|nine\b|ten\b))"), "back up "),
+    # "go out from this room": out of it
+    (re.compile(r"\bout\s+from\s+(?=(?:this|the|that|here)\b)"), "out of "),
     # "at end of the corridor": the article dropped in chat and speech
     (re.compile(r"\b(at|to|near|by|till|until)\s+(?:the\s+)?(far\s+|other\s+)?end\s+of\b"), r"\1 the \2end of"),
     # "more to the right", "further left": the same side, the amount is said elsewhere (or asked)
@@ -172,6 +190,14 @@ _POSSESSIVE: Final = re.compile(
     r"(?P<where>\s+(?:on|to)\s+(?:the|your)\s+(?:left|right)(?:\s+(?:hand\s+)?side)?(?![\w'-]))?")
 
 
+#: "the room which is the smallest", "the door that's nearest": a relative clause that only says which one
+#: of the kind is meant is that superlative before the noun ("the smallest room").
+_RELATIVE_SUPERLATIVE: Final = re.compile(
+    rf"\b(?:the|whichever|whatever)\s+(?P<noun>{_alternation(set(ELEMENT_NOUNS))})\s+(?:(?:which|that|what)\s+)?(?:is|are|'s)\s+(?:the\s+)?"
+    rf"(?P<sup>{_alternation({w for w in SUPERLATIVES if w.endswith(('est', 'last'))})})(?:\s+(?:one|of\s+them|of\s+all))?"
+    r"(?![\w'-])")
+
+
 def _unpossess(m: re.Match[str]) -> str:
     det = (m.group("det") or "the ").strip()
     return f"the {m.group('owned')}{m.group('where') or ''} of {det} {m.group('owner')}"
@@ -193,7 +219,7 @@ def normalize(clause: str) -> str:
     text = plain_idioms(text)
     if "'" in text:
         text = _POSSESSIVE.sub(_unpossess, text)
-    return text
+    return _RELATIVE_SUPERLATIVE.sub(r"the \g<sup> \g<noun>", text)
 
 
 def _repair(word: str) -> str:
@@ -205,7 +231,7 @@ def _repair(word: str) -> str:
         found = _closest_target(word)
         if found is not None:
             return found
-    return _typing_slip(word) or _skeleton_word(word) or word
+    return _typing_slip(word) or skeleton_word(word) or word
 
 
 _VOWELS_RE: Final = re.compile(r"[aeiou]")
@@ -221,7 +247,7 @@ def _skeleton(word: str) -> str:
 
 
 @lru_cache(maxsize=4096)
-def _skeleton_word(word: str) -> str | None:
+def skeleton_word(word: str) -> str | None:
     """Chat spelling by dropped vowels ("trn", "bckwrds", "rght", "bak", "mov"): the one vocabulary word,
     longer and with the same first letter, whose consonants are the typed ones in order. A typed word
     that keeps two vowels is a word of its own ("bike" is not "back"), and two candidates are no answer."""

@@ -82,7 +82,10 @@ _WORD_INT: Final = (rf"(?:{_SPOKEN_HUNDREDS}|(?:{_TENS_WORDS})(?:[\s-]+(?:{_ONE_
 _HUNDREDS: Final = (rf"(?:(?:a|one|two|three|four|five|six|seven|eight|nine)\s+)?hundred"
                     rf"(?:\s+(?:and\s+)?{_WORD_INT})?")
 _DIGIT_WORD: Final = "zero|oh|one|two|three|four|five|six|seven|eight|nine"
-_WORD_NUM: Final = rf"(?:{_HUNDREDS}|{_WORD_INT})(?:\s+point(?:\s+(?:{_DIGIT_WORD}))+)?"
+#: "point seven five" (the "nought" / "zero" before the point left unsaid, as people say a decimal below one)
+#: is 0.75, never 75 or 5: the words after "point" are the decimals whether or not a whole part was said.
+_WORD_NUM: Final = (rf"(?:(?:{_HUNDREDS}|{_WORD_INT})(?:\s+point(?:\s+(?:{_DIGIT_WORD}))+)?"
+                    rf"|(?<![\w-])point(?:\s+(?:{_DIGIT_WORD}))+)")
 _DIGIT_NUM: Final = r"(?:\d+\s+\d+\s*/\s*\d+|\d+\s*/\s*\d+|\d+(?:\.\d+)?|\.\d+)"
 _AND_FRACTION: Final = r"(?:\s+and\s+(?:a\s+|one\s+)?(?:half|quarter|third|three\s+quarters?))"
 #: One number, in digits or words, with an optional "and a half".
@@ -321,6 +324,8 @@ def _plain_number(t: str) -> float:
     if re.fullmatch(r"\d+(?:\.\d+)?|\.\d+", t):
         return float(t)
     whole, _, decimals = t.partition(" point ")
+    if whole.startswith("point "):  # "point five": no whole part said
+        whole, decimals = "zero", whole[len("point "):]
     value = float(_word_integer(whole))
     if decimals:
         digits = "".join(str(ONES.get(w, 0)) for w in decimals.split())

@@ -228,6 +228,10 @@ def _merge_heads(first: Phrase, second: Phrase) -> Phrase:
                    pair=first.pair or second.pair, weak=first.weak and second.weak)
 
 
+_FRONT_BACK: Final = frozenset({Side.AHEAD, Side.BEHIND})
+_LEFT_RIGHT: Final = frozenset({Side.LEFT, Side.RIGHT})
+
+
 def _read_post_modifiers(text: str, phrase: Phrase) -> None:
     """'on your left', 'in front of you', 'closest to you', 'you are in', 'number 2'."""
     ref = phrase.ref
@@ -236,6 +240,18 @@ def _read_post_modifiers(text: str, phrase: Phrase) -> None:
         m = _SIDE_POST_RE.match(rest)
         if m and ref.side is None:
             ref = ref.model_copy(update={"side": lx.lookup(lx.SIDE_PHRASES, m.group("side"))})
+            phrase.end += m.end()
+            continue
+        second = lx.lookup(lx.SIDE_PHRASES, m.group("side")) if m else None
+        if m and isinstance(second, Side) and second != ref.side and ref.also_side is None:
+            if ({ref.side, second} & _FRONT_BACK and {ref.side, second} & _LEFT_RIGHT
+                    and ref.kind not in (Element.CORNER, Element.WALL)):  # "the left corner" names which corner
+                # "the door behind you on the left": both sides hold, a quarter around the robot
+                ref = ref.model_copy(update={"also_side": second})
+            else:
+                # "the door on your left on the right": one side against the other; kept as words not read,
+                # so that the reading asks rather than drop one of them
+                phrase.lost.append(m.group(0).strip(" ,"))
             phrase.end += m.end()
             continue
         m = _POST_SUPERLATIVE_RE.match(rest)

@@ -36,6 +36,8 @@ DEFAULT_TURN_DEG: Final = 90.0
 
 #: Questions asked instead of guessing.
 ASK_SIDE: Final = "Which way should I turn, left or right?"
+ASK_BOTH_SIDES: Final = ("I heard both left and right in one turn (clockwise is right, counter-clockwise is left): "
+                         "which way should I turn?")
 ASK_DISTANCE: Final = "How far should I move {direction}?"
 ASK_UNIT: Final = "In what unit is '{number}': metres, feet or something else?"
 ASK_AMOUNT: Final = "I heard more than one amount ({amounts}): which one did you mean?"

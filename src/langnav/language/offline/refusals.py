@@ -26,7 +26,10 @@ DURATION_RE: Final = re.compile(
 #: A question the robot cannot answer (the answerable ones were read as queries before).
 QUESTION_RE: Final = re.compile(r"^(?:(?:hey|ok|okay|so|robot)\s+)*(?:how|what|why|when|which|who|whose|is|are|"
                                  r"where\s+(?:is|are)\s+(?:the|a|an|any|your)\b|"
-                                 r"was|were|does|did|do\s+(?:you|i|we)|can\s+i|could\s+i)\b")
+                                 r"was|were|does|did|do\s+(?:you|i|we)|can\s+i|could\s+i|"
+                                 # "tell me the position of the door": a question about a place, no trip to it
+                                 r"(?:(?:please|can\s+you|could\s+you)\s+)?(?:tell|give|send)\s+(?:me|us)\s+(?:the\s+)?"
+                                 r"(?:position|location|coordinates|distance|size|width|length)\s+(?:of|to)\b)\b")
 NEGATION_RE: Final = re.compile(lx.NEGATIONS)
 #: Words left unread that show a number was not read in full: digits, and magnitudes the
 #: number words do not cover.

@@ -68,7 +68,13 @@ def _only_move(reading: Reading) -> Step | None:
     return step if step.movement == Movement.MOVE and step.target is None else None
 
 
+#: Words that ask for a motion once more ("turn around, and then turn around again"): no restatement.
+_ONCE_MORE_RE: Final = re.compile(r"\b(?:again|another|once\s+more|one\s+more\s+time|twice|repeat)\b", re.IGNORECASE)
+
+
 def _restated(first: str, second: str, read: ClauseReader) -> str | None:
+    if _ONCE_MORE_RE.search(second):
+        return None  # "turn around, and then, uh, turn around again": two turns, the second asked for again
     a_reading, b_reading = read(first), read(second)
     a_move, b_move = _only_move(a_reading), _only_move(b_reading)
     if a_move is not None and b_move is not None and a_move.direction == b_move.direction \

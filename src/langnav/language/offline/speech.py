@@ -18,19 +18,23 @@ from langnav.language.offline.vocabulary import VOCABULARY
 #: Hesitation sounds: no meaning in any position.
 HESITATIONS: Final = frozenset({
     "uh", "uhh", "uhhh", "uhhhh", "um", "umm", "ummm", "uhm", "uhmm", "hmm", "hmmm", "hm", "er", "erm", "err",
-    "ah", "ahh", "eh", "mmm", "mhm", "huh", "ehm",
+    "ah", "ahh", "eh", "mmm", "mhm", "huh", "ehm", "ooh", "oooh", "ohh", "aah", "phew", "hmph",
 })
 #: Hedges a speaker puts before an amount or a direction ("uh maybe forty five degrees"): they soften
 #: the words, they never change the amount or the side.
 #: Affirmations ("you're right", "that's correct") are no side; "at least" / "at most" and "until I
 #: tell you to stop" leave the amount said as it is; "what about / how about" before a verb is a request.
 _HEDGES: Final = re.compile(
-    r"\b(?:maybe|perhaps|i\s+guess|i\s+think|kind\s+of|sort\s+of|let\s+us\s+see|let's\s+see|lets\s+see|"
+    r"\b(?:maybe|perhaps|i\s+guess|i\s+think|(?:i\s+)?reckon(?:\s+that)?|kind\s+of|sort\s+of|let\s+us\s+see|let's\s+see|lets\s+see|"
     r"(?:you'?re|you\s+are|that'?s|that\s+is|thats)\s+(?:right|correct)|at\s+(?:least|most)|"
     r"(?:go\s+ahead|go\s+on|come\s+on)\s+and|"
     r"(?:until|till)\s+i\s+(?:tell\s+you(?:\s+(?:to\s+stop|otherwise))?|say\s+(?:so|stop|otherwise))|"
     r"(?:what|how)\s+about(?=\s+(?:you\s+)?(?:move|go|turn|rotate|head|drive|face|pivot|back|proceed)\b)|"
-    r"let'?s\s+say|let\s+us\s+say|shall\s+we\s+say|i'?d\s+say|oh(?=\s*,)|let\s+me\s+think)\b",
+    r"let'?s\s+say|let\s+us\s+say|shall\s+we\s+say|i'?d\s+say|oh(?=\s*,)|let\s+me\s+think|"
+    # hedges on an amount said after it: "eighty centimetres, give or take", "more or less half a metre",
+    # "three feet or thereabouts": the amount is said; how sure the speaker is of it changes nothing
+    r"give\s+or\s+take(?:\s+a\s+(?:bit|little|touch|tad))?|more\s+or\s+less|or\s+there\s*abouts|"
+    r"(?:or\s+)?so\s+i(?:'?m|\s+am)\s+told|or\s+so\s+i\s+(?:think|hear|believe|reckon))\b",
     re.IGNORECASE)
 #: A word cut off in the middle: letters and a dash before a space or the end ("nin-", "c-").
 _CUT_OFF: Final = re.compile(r"(?<![\w-])[a-z]+-(?=[\s,.;!?]|$)", re.IGNORECASE)
@@ -100,7 +104,12 @@ REQUEST_FRAMES: Final = re.compile(
     r"|\bdo\s+you\s+think\s+(?:you|u)\s+(?:could|can)\b"
     r"|\bwould\s+(?:you|u)\s+(?:be\s+so\s+kind\s+as|be\s+able)\s+to\b"
     r"|\b(?:could|can|would|will)\s+(?:you|u)\s+(?:possibly|perhaps|maybe|please|kindly)\b"
-    r"|\bif\s+(?:you|u)\s+(?:do\s+not|don't|dont)\s+mind\b",
+    r"|\bif\s+(?:you|u)\s+(?:do\s+not|don't|dont)\s+mind\b"
+    r"|\bif\s+(?:you|u)(?:'d|\s+would|\s+could)\s+be\s+so\s+(?:kind|good)(?:\s+as\s+to)?\b"
+    r"|\bif\s+(?:it'?s|it\s+is)\s+not\s+too\s+much\s+(?:bother|trouble)\b"
+    # "..., if that's okay": asking leave for the request said (the "that" is the request, no place)
+    r"|\bif\s+(?:that'?s|that\s+is|it'?s|it\s+is|this\s+is)\s+(?:ok(?:ay)?|alright|all\s+right|fine|cool|possible|"
+    r"good|alright\s+with\s+you)(?:\s+with\s+you)?\b",
     re.IGNORECASE)
 #: Remarks around a request that ask or say nothing about the motion: "is that a thing you can do?",
 #: "sorry if that's a weird number", "so that I can see the door", "I don't want to crash it": each is
@@ -122,6 +131,56 @@ REMARKS: Final = re.compile(
     r"|\b(?:(?:you'?re|you\s+are|ur)\s+breaking\s+up|you\s+(?:cut|broke)\s+(?:out|up)|"
     r"(?:can|could|did|do)\s+(?:you|u)\s+(?:hear|read)\s+me|(?:can|could|did|do)\s+(?:you|u)\s+(?:copy|read)|"
     r"how\s+(?:do\s+you\s+)?(?:copy|read)|are\s+(?:you|u)\s+(?:there|still\s+there|listening|receiving))\b[^,.;!?]*",
+    re.IGNORECASE)
+#: "go forward, what, nine and a half feet": "what" said alone before an amount is the speaker estimating it
+#: aloud (as "say" or "oh" are), no question.
+ESTIMATING_WHAT: Final = re.compile(
+    rf"(?<=[,.;])\s*what\s*[,?]+\s*(?=(?:about\s+|around\s+|roughly\s+|maybe\s+|a\s+|an\s+|half\s+)?(?:\d|(?:{NUMBER_WORDS})\b|"
+    r"a\s+(?:foot|metre|meter|yard|half|quarter|couple)\b))", re.IGNORECASE)
+#: "turn right, not too far": an amount said by what it must not exceed, alone between marks, is a small
+#: one ("a little", README: 10-40 degrees or 0.15-0.5 m): the speaker rules out a big motion, so the
+#: default (a quarter turn, a metre) would be more than asked.
+NOT_TOO_FAR: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*(?:but\s+|just\s+)?not\s+(?:too|very|that|so)\s+(?:far|much)"
+                                r"\s*(?=[,.;!?]|$)", re.IGNORECASE)
+#: "sidestep right two feet, keep facing forward", "..., without turning": said after an instruction, how the
+#: robot holds its heading while it does it. A move never turns the robot (a sideways move slides), so the
+#: words ask for nothing more; they are no turn and no move "forward".
+KEEPING_HEADING: Final = re.compile(
+    r"(?<=[,.;])\s*(?:and\s+|but\s+|while\s+|just\s+)?(?:"
+    r"without\s+(?:turning|rotating|spinning|changing\s+(?:your\s+)?(?:heading|direction|orientation))(?:\s+(?:a)?round)?"
+    r"|(?:keep|keeping|stay|staying|remain|remaining|still)\s+(?:facing|pointed|pointing|looking)\s+(?:forwards?|ahead|"
+    r"straight(?:\s+ahead)?|the\s+same\s+way|this\s+way|the\s+way\s+you\s+are)"
+    r"|(?:do\s+not|don'?t|no)\s+(?:turn|turning|rotate|rotating)(?:\s+(?:a)?round)?)"
+    r"\s*(?=[,.;!?]|$)", re.IGNORECASE)
+#: Asides around a request that give no instruction, each taken out with its own words up to the next
+#: mark: a reason ("because I think you're close to that wall": why, not where), a comparison of manner
+#: ("like you're peeking round a corner", "as if ..."), a comment on the request or the day ("this is
+#: important", "this is the bit I was telling Jim about", "bear with me", "it's been a long day"), an
+#: explanation of a place ("that's where the exit is"). None names where or how far the robot goes.
+ASIDES: Final = re.compile(
+    r"(?:^|(?<=[,.;!?])|(?<=\s))\s*(?:"
+    r"(?:and\s+|just\s+)?(?:because|'?cause|cos|coz)\b[^,.;!?]*"
+    r"|(?:just\s+)?(?:like|as\s+if|as\s+though)\s+(?:you'?re|you\s+are|you\s+were|you'?d|you\s+would)\b[^,.;!?]*"
+    r")"
+    r"|(?:^|(?<=[,.;!?]))\s*(?:and\s+|but\s+)?(?:"
+    r"(?:this|that|it)(?:'s|\s+is)\s+(?:(?:really|very|quite|super|so)\s+)?(?:important|crucial|critical|key|urgent)"
+    r"|(?:this|that|it)(?:'s|\s+is)\s+the\s+(?:bit|part|thing)\s+(?:i|we)\s[^,.;!?]*"
+    r"|bear\s+with\s+me|it(?:'s|\s+has)\s+been\s+a\s+long\s+(?:day|night|week|shift)\b[^,.;!?]*"
+    r"|(?:that|this|it)(?:'s|\s+is)\s+where\s[^,.;!?]*"
+    r")\s*(?=[,.;!?]|$)",
+    re.IGNORECASE)
+#: A concession before a request: "this room is lovely but I want you to leave it": what the place is like,
+#: said before "but", is a remark; the request follows "but" (and is no name for the place).
+CONCESSION: Final = re.compile(
+    r"(?:^|(?<=[,.;!?]))\s*(?:and\s+)?(?:this|that|it|the)\s+(?:(?:room|place|hallway|corridor|hall|spot|area|one)\s+)?"
+    r"(?:is|'s|was|looks|seems)\s+[^,.;!?]*?\bbut\s+", re.IGNORECASE)
+#: A pseudo-cleft: "what I'd (really) like (you to do now) ... is (for you) to face south" asks for what
+#: follows "is"; what stands between the two halves is said in passing ("and bear with me", "if you
+#: don't mind"), so the whole frame goes and the request stays.
+PSEUDO_CLEFT: Final = re.compile(
+    r"\bwhat\s+(?:i|we)(?:'d|\s+would|'ll|\s+will)?\s+(?:really\s+|now\s+)?(?:like|want|need|love|prefer)"
+    r"(?:\s+(?:you|u)\s+to\s+do)?(?:\s+(?:now|next|here|then))?\b[^.;!?]*?\b(?:is|would\s+be)\s+"
+    r"(?:(?:for\s+(?:you|u)\s+)?to|that\s+(?:you|u))\s+",
     re.IGNORECASE)
 #: "that" opening a clause said to someone ("I want that you turn", "I think that we should go"): a
 #: conjunction, no place; the clause reads the same without it.
@@ -165,8 +224,11 @@ RADIO_NOISE: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*(?:affirmative|roger(?:\s
                                 r"over(?:\s+and\s+out)?|out)\s*(?=[,.;!?]|$)", re.IGNORECASE)
 #: A number started and said again whole ("four, four and a half metres", "twenty, twenty feet"): the
 #: first try is no amount of its own.
+#: (The restart may follow a pause or a trailing "and a": "eleven ... eleven feet", "seven and a ... seven and a
+#: half feet".)
 NUMBER_RESTART: Final = re.compile(
-    rf"\b(?P<num>\d+(?:\.\d+)?|a\s+hundred|one\s+hundred|{NUMBER_WORDS})\s*,?\s+(?=(?P=num)\b(?![/.]\d))", re.IGNORECASE)
+    rf"\b(?P<num>\d+(?:\.\d+)?|a\s+hundred|one\s+hundred|{NUMBER_WORDS})(?:\s+and(?:\s+a)?(?=\s*(?:,|\.\.|…)))?"
+    r"(?:\s*(?:,|\.{2,}|…))*\s+(?=(?P=num)\b(?![/.]\d))", re.IGNORECASE)
 #: Words that name one of several alternatives a speaker may set against each other: sides, ways, compass
 #: points, units and numbers.
 _ALTERNATIVE: Final = (rf"(?:(?:to\s+(?:the|your)\s+)?(?:left|right|forwards?|backwards?|back|clockwise|counter\s*clockwise|"
@@ -189,19 +251,61 @@ _UNIT_THEN_EXACT: Final = re.compile(
     r"(?:even|flat|exactly|precisely|on\s+the\s+(?:nose|dot))\b", re.IGNORECASE)
 #: Numbers that count the instructions of a list ("Step one, turn left. Step two, go forward"; "1) turn
 #: left 2) go forward"; "number three: stop"): they order the list, they are no amount.
+#: (A number followed by a unit or by more number words is an amount, not a list item: "step two feet to the
+#: left" is a step of two feet, "point five metres" is half a metre.)
 ENUMERATION: Final = re.compile(
     rf"(?:^|(?<=[.;!?,:\n]))\s*(?:(?:step|number|no|item|part|instruction|command|point)\s+(?:{NUMBER_WORDS}|"
-    r"\d{1,2})\b|\(?\d{1,2}\s*[).](?!\d))\s*[,:.)-]?(?=\s)",
+    r"\d{1,2})\b(?!\s+(?:(?:and\s+)?(?:a\s+)?(?:half|quarter)|point|" + "|".join(NUMBER_WORD_LIST) + r")\b)"
+    r"(?!\s*(?:more\s+|further\s+|extra\s+)?(?:feet|foot|ft|inch(?:es)?|in|yards?|yd|met(?:er|re)s?|m|cm|mm|"
+    r"centimet(?:er|re)s?|millimet(?:er|re)s?|degrees?|deg)\b)"
+    r"|\(?\d{1,2}\s*[).](?!\d))\s*[,:.)-]?(?=\s)",
     re.IGNORECASE)
 #: "1) turn left 2) go forward": a number closed by a bracket marks a list item wherever it stands.
 LIST_ITEM: Final = re.compile(r"(?:^|(?<=\s))\(?\d{1,2}\)(?=\s)")
+
+
+#: Words English speakers open an utterance with to take the floor or mark a new stage of the talk
+#: ("right, stop there"; "right then, could you go forward"; "okay, so, ..."; "well now, ..."): discourse
+#: markers, which mean nothing about the motion. "Then" and "so" join them only right after another.
+_MARKER_WORD: Final = (r"(?:right|ok(?:ay)?|alright|all\s+right|well|so|now|good|great|fine|lovely|cheers|yes|yeah|oh|um|uh|"
+                       r"anyway|anyhow|after\s+all\s+that|(?:with\s+)?(?:all\s+)?that\s+said|having\s+said\s+that)")
+#: A run of discourse markers opening the utterance: each said with a pause after it (a mark), or
+#: followed by another ("right then, ...", "right so, ...", "okay now, ...").
+_OPENING_MARKERS: Final = re.compile(
+    rf"^\s*(?:{_MARKER_WORD}(?:\s*(?:[,;:!-]+|\.+)\s*|\s+(?=(?:{_MARKER_WORD}|then)\b)|\s+(?=(?:then|so)\s*[,;:!-])))*"
+    rf"(?:{_MARKER_WORD}|then)(?:\s*(?:[,;:!-]+|\.+))", re.IGNORECASE)
+#: What "right" completes when it is a direction: an amount, a unit, a way, or a sequence going on from
+#: it ("right, ninety degrees", "right, a little", "right, then forward two feet", "right. forward").
+_COMPLETES_A_SIDE: Final = re.compile(
+    rf"^\s*(?:$|(?:about|around|roughly|approximately|maybe|like|just|only|some|by|another|and|then|after|to\s+(?:the|your)|"
+    r"a\s+(?:little|bit|tad|touch|quarter|half|few|couple|hundred)|half|quarter|full|degrees?|deg|feet|foot|met(?:er|re)s?|"
+    r"forwards?|backwards?|back|ahead|straight|left|right|around|round|clockwise|counter\s*clockwise|anti\s*clockwise|"
+    rf"(?:north|south|east|west)\w*|hand|side|turn\b(?=\s*(?:$|[,.;!?])))\b|\d|(?:{NUMBER_WORDS})\b)", re.IGNORECASE)
+_RIGHT: Final = re.compile(r"\bright\b", re.IGNORECASE)
+
+
+def without_discourse_markers(text: str) -> str:
+    """``text`` without the discourse markers that open it, when one of them is "right" and what follows is
+    an instruction of its own ("right then, could you go forward two metres"; "right, stop there"; "right, so,
+    what I'd like is ..."): that "right" says the speaker is moving on (as "okay" does), not which way to turn.
+    "Right" followed by what a side completes is a direction ("right, ninety degrees"; "right then forward two
+    feet"). A turn with no side of its own after the marker ("right, turn ninety degrees") is left without one:
+    the reading asks which way instead of guessing from a word that was most likely no direction.
+    Only a run holding "right" is touched: the other markers are no direction and are read as fillers anyway."""
+    m = _OPENING_MARKERS.match(text)
+    if m is None or _RIGHT.search(m.group(0)) is None:
+        return text
+    rest = text[m.end():]
+    if _COMPLETES_A_SIDE.match(rest):
+        return text
+    return rest.lstrip()
 
 
 def plain_speech(prompt: str) -> str:
     """``prompt`` with hesitations, hedges, cut-off words, stutters and noise tokens removed, a comma
     before each self-correction marker, the words speech recognition mistook put right, and polite
     frames and side remarks taken out."""
-    text = prompt
+    text = without_discourse_markers(prompt)
     for pattern, repl in HOMOPHONES:
         text = pattern.sub(repl, text)
     text = LIST_ITEM.sub(". ", ENUMERATION.sub(" ", text))
@@ -211,8 +315,9 @@ def plain_speech(prompt: str) -> str:
     text = STOP_AFTER_AMOUNT.sub(" ", text)
     text = RADIO_NOISE.sub(" ", RADIO_NO.sub(" no", RADIO_CALL.sub(" ", text)))
     text = _UNIT_THEN_EXACT.sub(r"\g<unit>", NUMBER_RESTART.sub("", text))
-    text = REQUEST_FRAMES.sub(" ", text)
-    text = THAT_CLAUSE.sub("", REMARKS.sub(" ", text))
+    text = REQUEST_FRAMES.sub(" ", PSEUDO_CLEFT.sub(" ", text))
+    text = THAT_CLAUSE.sub("", REMARKS.sub(" ", ASIDES.sub(" ", CONCESSION.sub(" ", text))))
+    text = NOT_TOO_FAR.sub(" a little", KEEPING_HEADING.sub(" ", ESTIMATING_WHAT.sub(" ", text)))
     text = _ABANDONED.sub(_drop_abandoned, text)
     kept_cuts = {m.start() for m in _unfinished(text)}  # kept: the reading must ask about them
     text = _CUT_OFF.sub(lambda m: m.group(0) if m.start() in kept_cuts else " ", text)
@@ -225,7 +330,8 @@ def plain_speech(prompt: str) -> str:
         punct = token[len(token.rstrip(",.;:!?")):]
         after_number = bool(kept) and _NUMBER_WORD.match(kept[-1].lower()) is not None
         # chat spellings ("fwd", "rt") are words, not noise
-        if bare in HESITATIONS or (_NOISE.match(bare) and bare not in VOCABULARY and bare not in TYPOS) \
+        if bare in HESITATIONS or (_NOISE.match(bare) and bare not in VOCABULARY and bare not in TYPOS
+                                   and not _typed_direction(bare)) \
                 or (bare in _UNIT_SOUNDS and not after_number):
             _carry(kept, punct)
             continue
@@ -322,6 +428,19 @@ def _break_before_marker(m: re.Match[str]) -> str:
 
 #: Words that may be said twice on purpose ("turn left, left": no; "very very slowly": harmless).
 _REPEATABLE: Final = frozenset({"very", "no", "right"})  # "turn right right now": a side, then "right now"
+
+
+#: Directions people type by their consonants ("face sth", "nrth", "trn lft"): such a run is a word, not a sound.
+_DIRECTION_WORDS: Final = frozenset({"north", "south", "east", "west", "left", "right", "forward", "back"})
+
+
+def _typed_direction(token: str) -> bool:
+    """A consonant run that is a direction typed without its vowels ("sth" is south, "lft" left)."""
+    from langnav.language.offline.normalize import (
+        skeleton_word,  # normalize reads the vocabulary this module feeds
+    )
+
+    return skeleton_word(token) in _DIRECTION_WORDS
 
 
 def _carry(kept: list[str], punct: str) -> None:

@@ -20,6 +20,7 @@ from langnav.language.offline.corrections import (
     join_fragments,
 )
 from langnav.language.offline.idioms import plain_idioms
+from langnav.language.offline.lexicon import ELEMENT_NOUNS
 from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.photos import without_photo
@@ -137,7 +138,7 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
         questions.extend(reading.asks)
         if reading.steps or reading.problem in UNREAD_PROBLEMS:
             blocking.extend(u for u in reading.unread if u and spatial(u))
-        new_steps = list(reading.steps)
+        new_steps = [_come_back_way(steps[-1] if steps else None, s) for s in reading.steps]
         if steps and _refines(clause, steps[-1], new_steps):
             # "go to the door on your left, the one after the first": the same place, said more exactly
             steps[-1] = steps[-1].model_copy(update={"target": _merged(steps[-1].target, new_steps.pop(0).target),
@@ -154,6 +155,12 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
             questions.append(ASK_AMOUNT.format(amounts=f"'{steps[-1].text}', '{clause}'"))
         elif steps and new_steps and not sequenced and _restates(steps[-1], new_steps[0], clause):
             steps[-1] = _smaller(steps[-1], new_steps.pop(0))  # "forward two metres. forward two metres.": done once
+        elif steps and new_steps and not sequenced and _confirms(steps[-1], new_steps[0], clause):
+            new_steps.pop(0)  # "turn to your left, about ninety degrees, just a proper left turn": said once
+            if not new_steps:
+                for question in reading.asks:  # "how far?" of the bare one is answered by the amount said first
+                    if question in questions:
+                        questions.remove(question)
         elif steps and new_steps and not sequenced and _completes(steps[-1], new_steps[0], clause):
             steps.pop()  # "turn left ... turn left fifty degrees": the same turn said again with its amount
             for question in last_asks:
@@ -344,6 +351,40 @@ def _completes(previous: Step, step: Step, clause: str) -> bool:
     return previous.angle_deg is None and step.angle_deg is not None
 
 
+def _confirms(previous: Step, step: Step, clause: str) -> bool:
+    """The same move or turn said first with its amount and right after again with none ("turn to your
+    left, about ninety degrees, just a proper left turn"; "go forward two metres, forward"), with no word
+    asking for it once more and no word sequencing the prompt: the speaker confirms the instruction, so
+    it is done once, with the amount said (the bare one would add a default amount nobody asked for)."""
+    if previous.heading_deg is not None or not _same_motion_said_again(previous, step, clause):
+        return False
+    if step.amount != Amount.DEFAULT:
+        return False
+    if step.movement == Movement.MOVE:
+        return previous.distance_m is not None and step.distance_m is None
+    return previous.angle_deg is not None and step.angle_deg is None
+
+
+#: "come back" said of a move: towards where the robot came from (not "go back", which is the way behind it).
+_COME_BACK_RE: Final = re.compile(r"\bcome\s+back\b", re.IGNORECASE)
+
+
+def _come_back_way(previous: Step | None, step: Step) -> Step:
+    """"Go forward ten feet, turn around, come back ten feet": "come back" is towards where the robot came
+    from; once it has turned around, that lies ahead, so the move is forward (a move backward would take it
+    ten more feet away)."""
+    if (previous is None or step.movement != Movement.MOVE or step.direction != Direction.BACKWARD
+            or not _COME_BACK_RE.search(step.text)):
+        return step
+    turned_around = previous.movement == Movement.ROTATE and previous.heading_deg is None and (
+        previous.direction == Direction.AROUND or (previous.angle_deg is not None and abs(previous.angle_deg - 180.0) < 1e-6))
+    return step.model_copy(update={"direction": Direction.FORWARD}) if turned_around else step
+
+
+#: Words that point back at the place just named ("go in there", "go into it").
+_POINTS_BACK_RE: Final = re.compile(r"\b(?:there|it|inside)\b", re.IGNORECASE)
+_ELEMENT_NOUN_RE: Final = re.compile(r"\b(?:" + "|".join(sorted(map(re.escape, ELEMENT_NOUNS), key=len, reverse=True))
+                                     + r")\b", re.IGNORECASE)
 #: Steps that move nothing: said twice in a row, they are one request.
 _NO_MOTION: Final = frozenset({Movement.STOP, Movement.QUERY})
 
@@ -355,6 +396,13 @@ def _asked_again(previous: Step, step: Step) -> bool:
     question asks something new: where the robot is now.)"""
     if step.heading_deg is not None and step.target is None and previous.target is None:
         return step.heading_deg == previous.heading_deg  # "face north, I repeat, face north": facing it once
+    if (step.movement == previous.movement == Movement.NAVIGATE and step.target is not None
+            and step.target == previous.target and step.detail in (None, Detail.TO)
+            and previous.detail in (None, Detail.TO) and _POINTS_BACK_RE.search(step.text)
+            and not _ELEMENT_NOUN_RE.search(step.text)):
+        # "find the biggest room and go in there": one trip to it (the second names no place of its own and
+        # arrives where the robot already is; "the next door, then the next door" names two)
+        return True
     return (step.movement in _NO_MOTION and step.movement == previous.movement and step.query == previous.query
             and step.target == previous.target)
 

@@ -14,6 +14,7 @@ from langnav.language.offline.patterns import LITTLE_RE, ROTATE_DIR_RE
 from langnav.language.offline.phrases import Phrase
 from langnav.language.offline.reading import (
     ASK_AMOUNT,
+    ASK_BOTH_SIDES,
     ASK_SIDE,
     ASK_UNIT,
     DEFAULT_TURN_DEG,
@@ -66,6 +67,10 @@ def rotate_steps(c: Clause, targets: list[Phrase], vm: re.Match[str] | None) -> 
 
 #: "turn round to the left": only a bare "round / around" gives way to a side named with it.
 _SPIN_ROUND_RE: Final = re.compile(r"(?<!way\s)\b(?:a)?round\b(?!\s+(?:twice|two|2|three|\d))")
+#: Verbs that name a revolution (a spin, a twirl): "all the way around" completes it, a whole turn ("turn all
+#: the way around" faces the other way: a half turn).
+_REVOLVE_VERB_RE: Final = re.compile(r"\b(?:spin|spinning|twirl|pirouette|whirl)\b")
+_ALL_THE_WAY_RE: Final = re.compile(r"\ball\s+the\s+way\s+(?:a)?round\b")
 _REPEAT_RE: Final = re.compile(r"\b(?:(?P<word>once|twice|thrice)|(?P<n>\d+|one|two|three|four|five)\s+times)\b")
 _REPEAT_WORDS: Final = {"once": 1, "twice": 2, "thrice": 3, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5}
 
@@ -136,6 +141,11 @@ def _single_rotation(c: Clause, vm: re.Match[str] | None) -> Step:
                 sides.append(d)
             if direction is None:
                 direction = d
+    named = set(sides) | ({direction} if direction in (Direction.LEFT, Direction.RIGHT) else set())
+    if len(named) > 1:
+        # "rotate clockwise to the left": both sides in one turn with no word correcting one of them (a
+        # correction is split off before a clause is read): either may be the slip, so ask
+        c.asks.append(ASK_BOTH_SIDES)
     if direction == Direction.AROUND and sides and _SPIN_ROUND_RE.search(c.s.text):
         direction = sides[0]  # "spin round to your left": a turn to that side, not a U-turn
     if direction == Direction.AROUND and angle is not None and abs(angle - 180.0) > 1e-6 and angle % 360 != 0:
@@ -144,7 +154,10 @@ def _single_rotation(c: Clause, vm: re.Match[str] | None) -> Step:
         direction = sides[0] if sides else None
     amount: Amount | None = None
     if direction == Direction.AROUND:
-        if angle is None or abs(angle - 180.0) < 1e-6:
+        verb = vm.group(0) if vm is not None else ""
+        if angle is None and _REVOLVE_VERB_RE.search(verb) and _ALL_THE_WAY_RE.search(c.s.text):
+            angle, direction = 360.0, Direction.LEFT  # "spin all the way around": a spin is a whole turn
+        elif angle is None or abs(angle - 180.0) < 1e-6:
             angle = 180.0
         else:
             direction = Direction.LEFT  # "spin around 360 degrees"
