@@ -79,6 +79,15 @@ _IDIOMS: Final = (
     # "come left / right" is the helm's and the pilot's turn; "come about" is turning around
     (re.compile(r"\bcome\s+(?=(?:hard\s+)?(?:left|right)\b)"), "turn "),
     (re.compile(r"\bcome\s+about\b"), "turn around"),
+    # "look at the door", "turn to look towards the corner": face it (looking is facing: the robot turns, it does
+    # not go there); a map is looked at, not faced
+    (re.compile(r"\b(?:turn\s+(?:(?:a)?round\s+)?(?:and\s+|to\s+)?)?look\s+(?:at|towards?)\s+(?!(?:the\s+|your\s+|my\s+)?map\b)"),
+     "face "),
+    # "give yourself a turn to the left" (learner phrasing): a turn
+    (re.compile(r"\bgive\s+(?:yourself|itself|it|her)\s+(?:a|the|one)\s+turn\b"), "turn"),
+    # "turn to look behind (you)", "turn so you can see behind you": a turn whose purpose names its end, behind
+    (re.compile(r"\bturn(?:\s+(?:yourself|itself))?\s+(?:(?:so\s+as\s+|in\s+order\s+)?to|so\s+(?:that\s+)?(?:you|u|it)\s+"
+                r"(?:can|could|will))\s+(?:look|see|face)\s+(?:behind(?:\s+(?:you|yourself|itself))?|back)\b"), "turn around"),
     # "make the turn around", "do a turn around": the turn around
     (re.compile(r"\b(?:make|do)\s+(?:the\s+|a\s+)?turn\s+(?=(?:a)?round\b)"), "turn "),
     # "do a twirl", "do a spin": one whole turn
