@@ -99,9 +99,12 @@ class PlanResult:
         return self.clarification is None
 
     def to_bench(self, case_id: str) -> dict[str, Any]:
-        """The bench's output line for this result."""
-        return {"id": case_id, "commands": [to_bench(c) for c in self.commands],
-                "clarification": self.clarification}
+        """The bench's output line for this result. A result that runs nothing says why: its refusal,
+        else what its steps said ("I am in room 6 already", "I did not understand: 'sofa'")."""
+        said = self.clarification
+        if said is None and not self.commands:
+            said = " ".join(self.messages) or "Nothing was run."
+        return {"id": case_id, "commands": [to_bench(c) for c in self.commands], "clarification": said}
 
     def to_json(self) -> dict[str, Any]:
         return {
@@ -215,6 +218,10 @@ class Planner:
             messages.append(intent.clarification)
         if intent.unread:
             messages.append("I did not understand: " + "; ".join(f"'{u}'" for u in intent.unread))
+        if not checked.commands and not messages:
+            # a prompt that runs nothing always says why: silence would leave the user waiting for a
+            # motion that never comes
+            messages.append(nothing_runs_reason(grounded))
         items = self._items(grounded, checked.commands)
         if any(s.moves for s in grounded.steps):
             self.history.planned(start, [p for it in items for p in _route_of(it.commands)])
@@ -277,6 +284,14 @@ def unread_question(intent: Intent, grounded: GroundedPlan, unread: list[str]) -
     runs on a partial reading. The words are the offline parser's ask message, one for both."""
     notes = "; then ".join(s.note for s in grounded.steps if s.note)
     return ask_message(intent.steps, unread, (), plan=notes)
+
+
+def nothing_runs_reason(grounded: GroundedPlan) -> str:
+    """Why a plan with no command and no message of its steps runs nothing: what was understood."""
+    notes = "; then ".join(s.note for s in grounded.steps if s.note)
+    said = f"I understood: {notes}, which needs no motion from where I am." if notes else \
+        "I found nothing to do in that."
+    return f"{said} Nothing was run: tell me where to go if you meant somewhere else."
 
 
 def bench_line(case_id: str, result: PlanResult) -> dict[str, Any]:

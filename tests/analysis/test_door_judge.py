@@ -12,6 +12,7 @@ from scipy import ndimage as ndi
 
 from langnav.analysis.door_judge import (
     BEYOND_MIN_FLOOR_SHARE,
+    JAMB_ALONG_MIN_SHARE,
     SEEN_FLOOR_MIN_M,
     constriction_depth,
     evidence,
@@ -25,6 +26,7 @@ from langnav.analysis.door_judge import (
 from langnav.analysis.params import DEFAULT_PARAMS
 from langnav.analysis.seg_doors import RawDoor
 from langnav.analysis.segmentation import UNKNOWN_ID, Segmentation, segment_spaces
+from langnav.analysis.wall_lines import GAP_MIN_FLOOR_SHARE
 from langnav.maps.draw import MapBuilder
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
@@ -349,3 +351,76 @@ def test_the_gap_between_a_wall_stubs_end_and_a_pillar_is_no_door() -> None:
     assert judge_doors([gap], free, occ, grid.resolution_m, DEFAULT_PARAMS, unknown=unknown)[0] == []
     seg = segment_spaces(grid)
     assert len(seg.rooms) == 1 and seg.doors == ()
+
+
+def partition_short_of_a_wall(return_m: float) -> OccupancyGrid:
+    """An 8 m x 4 m floor parted by a partition along x = 4 from its north wall down to y = 1.1;
+    the south wall has a return of ``return_m`` along x = 4 (0: none), so the way between the two
+    halves is a 0.9 m gap from the partition's end to that return (or to the bare south wall's
+    face, 1.05 m)."""
+    b = MapBuilder(10.0, 6.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 8.0, 4.0)
+    b.wall(4.0, 4.0, 4.0, 1.1)
+    if return_m > 0:
+        b.wall(4.0, 0.0, 4.0, 0.05 + return_m)
+    return b.build("partition short of a wall")
+
+
+def test_a_gap_beside_a_corner_is_a_door_with_a_return_and_a_way_round_without() -> None:
+    """With a 0.15 m return of wall beside it at the south wall (a door frame's jamb), the gap is
+    a door; where the partition simply stops short of the bare south wall, the gap is the way
+    round its end (an opening between the halves), not a door."""
+    for return_m, door in ((0.15, True), (0.0, False)):
+        grid = partition_short_of_a_wall(return_m)
+        seg = segment_spaces(grid)
+        west, east = space_at(seg, grid, 2.0, 2.5), space_at(seg, grid, 6.0, 2.5)
+        assert west.id != east.id
+        y = (1.1 + 0.05 + return_m) / 2
+        if door:
+            assert len(seg.doors) == 1
+            d = door_near(seg.doors, 4.0, y)
+            assert set(d.connects) == {west.id, east.id}
+            assert d.width_m == pytest.approx(1.1 - 0.05 - return_m, abs=POS_TOL_M)
+        else:
+            assert seg.doors == ()
+            # (The boundary the flood draws there is slanted: its centre lies off the line.)
+            assert set(door_near(seg.openings, 4.0, y, tol=0.4).connects) == {west.id, east.id}
+        # The evidence says why: the jamb at the south wall runs on along the door's line only
+        # with the return.
+        r, c = grid.world_to_cell(4.0, y)
+        ev = evidence(grid.cells == FREE, grid.cells == OCCUPIED, (float(r), float(c)), (0.0, 1.0),
+                      1.1 - 0.05 - return_m, grid.resolution_m, DEFAULT_PARAMS)
+        assert (min(ev.along) >= JAMB_ALONG_MIN_SHARE) is door
+
+
+def room_with_an_unscanned_gap(scanned: bool) -> OccupancyGrid:
+    """A 6 m x 4 m room whose north wall has a 0.8 m gap at x = 3, the outside unscanned; the gap
+    itself was scanned (free: the lidar saw through it, and 1 m of floor beyond it) or not
+    (unknown: a notch the scan never reached, between two walls' ends)."""
+    b = MapBuilder(8.0, 7.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 6.0, 4.0).door_h(3.0, 4.0, 0.8, depth_m=0.2)
+    if scanned:
+        b.free(2.65, 4.0, 3.35, 5.0)
+    else:
+        b.unknown(2.6, 3.9, 3.4, 4.1)
+    return b.build("room with an unscanned gap")
+
+
+def test_a_door_onto_the_unexplored_was_seen_through() -> None:
+    """The gap the lidar saw through is a door from the room onto the unexplored; the same gap
+    left unscanned (unknown from jamb to jamb) is no opening the robot saw, and no door."""
+    for scanned in (True, False):
+        grid = room_with_an_unscanned_gap(scanned)
+        seg = segment_spaces(grid)
+        assert len(seg.rooms) == 1
+        if scanned:
+            assert len(seg.doors) == 1
+            d = door_near(seg.doors, 3.0, 4.0)
+            assert d.connects == (seg.rooms[0].id, UNKNOWN_ID)
+            assert d.width_m == pytest.approx(0.8, abs=POS_TOL_M)
+        else:
+            assert seg.doors == ()
+        r, c = grid.world_to_cell(3.0, 4.0)
+        ev = evidence(grid.cells == FREE, grid.cells == OCCUPIED, (float(r), float(c)), (1.0, 0.0), 0.8,
+                      grid.resolution_m, DEFAULT_PARAMS, unknown=grid.cells == UNKNOWN)
+        assert (ev.scanned_share >= GAP_MIN_FLOOR_SHARE) is scanned

@@ -14,9 +14,11 @@ the real analysis (no ../shared), read by the offline translator end to end.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
@@ -26,7 +28,7 @@ from langnav.analysis.params import DEFAULT_PARAMS
 from langnav.analysis.pipeline import analyze
 from langnav.grounding import GroundingError, ground
 from langnav.grounding.geometry import Pose
-from langnav.grounding.selection import label_of
+from langnav.grounding.selection import label_of, select
 from langnav.language.intent import (
     Detail,
     Element,
@@ -505,3 +507,74 @@ def test_the_straight_run_of_an_l_way_ends_at_its_bend() -> None:
     assert straight.straight_leg((1.0, 0.0), 2.4) is straight
     wiggle = Way.through([(0.0, 0.0), (5.0, 0.4), (10.0, 0.0)], 0.01)
     assert wiggle.straight_leg((1.0, 0.0), 2.4) is wiggle
+
+
+# ------------------------------------------------------------------------------ session 6 readings
+def test_going_past_a_door_in_a_hallway_passes_it_by(hall: MapAnalysis) -> None:
+    # south doors at x 3.0, 7.5, 12.5: driving east, the second door on the right is at x 7.5
+    door = door_at(hall, 7.5, 5.0)
+    r = plan("go past the second door on your right", hall, (1.6, 6.0, 0.0))
+    assert len(r.commands) == 1
+    x, y = last_goal(r)
+    assert HALL_Y[0] < y < HALL_Y[1]  # still in the hallway: passed by, not entered
+    assert door.center[0] + 0.45 < x <= door.center[0] + 0.45 + 1.0 + SLACK_M
+
+
+def test_door_number_three_on_your_left_counts_the_doors_on_the_left(hall: MapAnalysis) -> None:
+    # north doors at x 3.2, 7.5, 12.0: the third on the left driving east is at x 12.0, whatever its label
+    third = door_at(hall, 12.0, 7.0)
+    r = plan("go to door number three on your left", hall, (1.6, 6.0, 0.0))
+    x, y = last_goal(r)
+    assert math.dist((x, y), third.center) <= 0.75
+    # typed as the map shows a label ("door 3"), it names that door
+    labelled = next(d for d in hall.doors if d.id == "door_3")
+    assert math.dist(last_goal(plan("go to door 3", hall, (1.6, 6.0, 0.0))), labelled.center) <= 0.75
+
+
+def test_the_next_room_after_a_door_is_the_room_it_leads_into(hall: MapAnalysis) -> None:
+    # in the hallway facing the south door at x 7.5: through it, the next room is the one behind it
+    behind = room_at(hall, 7.5, 3.0)
+    r = plan("go through the door in front and stop in the middle of the next room", hall, (7.5, 6.0, -90.0))
+    x, y = last_goal(r)
+    assert math.dist((x, y), behind.centroid) <= 0.75
+
+
+def test_the_door_at_the_end_of_a_corridor_with_plain_end_walls_asks(hall: MapAnalysis) -> None:
+    # the hallway's doors are all along its sides: the last of them is no door "at the end"
+    r = plan("go through the door at the end of the corridor", hall, (1.6, 6.0, 0.0))
+    assert r.commands == () and r.clarification is not None and "end of hallway" in r.clarification
+
+
+def test_the_door_at_the_end_of_a_corridor_is_the_one_in_its_end_wall() -> None:
+    b = MapBuilder(20.0, 12.0)
+    b.room(1.0, 1.0, 15.0, 11.0)
+    b.wall(1.0, 5.0, 15.0, 5.0)
+    b.wall(1.0, 7.0, 15.0, 7.0)
+    b.room(15.0, 3.0, 19.0, 9.0)
+    for x in (5.0, 10.0):
+        b.wall(x, 1.0, x, 5.0)
+        b.wall(x, 7.0, x, 11.0)
+    for x in (3.0, 7.5, 12.5):
+        b.door_h(x, 5.0, 0.9)
+        b.door_h(x, 7.0, 0.9)
+    b.door_v(15.0, 6.0, 0.9)  # the end wall's door, into a room beyond the corridor's east end
+    a = analyze(b.build("hall with an end door"), DEFAULT_PARAMS)
+    end = door_at(a, 15.0, 6.0)
+    x, y = last_goal(plan("go to the door at the end of the corridor", a, (1.6, 6.0, 0.0)))
+    assert math.dist((x, y), end.center) <= 0.75
+
+
+def test_a_room_parted_by_a_narrow_gap_is_as_big_as_both_parts(two_rooms: MapAnalysis) -> None:
+    # two_rooms: A 30 m2 and B 29.1 m2; with their second opening narrowed to a gap between shelves
+    # and both opening onto a third room C of 40 m2, A and B are one room of 59 m2: C is the smallest
+    d1, d2 = two_rooms.doors
+    room_a, room_b = two_rooms.rooms[:2]
+    room_c = dataclasses.replace(room_b, id="room_c", label=3, area_m2=40.0, free_area_m2=40.0,
+                                 cells_xy=room_b.cells_xy + np.array([0.0, 20.0]))
+    gap = dataclasses.replace(d2, width_m=0.68)
+    a_to_c = dataclasses.replace(d1, connects=("room_a", "room_c"))
+    b_to_c = dataclasses.replace(d1, id="door_3", center=(8.0, 6.9), connects=("room_b", "room_c"))
+    a = dataclasses.replace(two_rooms, rooms=(room_a, room_b, room_c), doors=(a_to_c, gap, b_to_c))
+    pose = Pose.from_deg(3.0, 3.0, 90.0)
+    assert select(ElementRef(kind="room", superlative="smallest"), a, pose).id == "room_c"
+    assert select(ElementRef(kind="room", superlative="biggest"), a, pose).id == "room_a"  # the part nearest

@@ -109,3 +109,13 @@ def test_a_rooms_only_way_in_is_its_door_however_narrow(two_rooms: MapAnalysis) 
     assert [r.id for r in gap_joined(only, only.rooms[0])] == ["room_a"]
     # with a second way into room B the narrow opening is a gap again, not one of the doors
     assert [d.id for d in doors_of(with_gap(two_rooms))] == ["door_1"]
+
+
+def test_that_points_back_at_the_door_the_step_before_went_to(two_rooms: MapAnalysis) -> None:
+    # "go to the last door on your right, if that's okay": a reader that gives "that" the words of the
+    # door before must not pick the last door on the right again from that door (it would be another)
+    last = {"kind": "door", "side": "right", "superlative": "farthest"}
+    plan = ground(Intent(steps=[
+        Step.model_validate({"movement": "navigate", "target": last, "text": "go to the last door on your right"}),
+        Step.model_validate({"movement": "navigate", "target": last, "text": "if that's okay"})]), two_rooms, A_NORTH)
+    assert [s.element_ids for s in plan.steps] == [("door_2",), ("door_2",)]

@@ -151,3 +151,62 @@ def test_go_out_alone_is_out_of_this_room(prompt: str) -> None:
     out = translate_offline(prompt).steps[0]
     assert out.detail == Detail.THROUGH and out.target is not None
     assert (out.target.kind, out.target.in_current_room) == (Element.DOOR, True)
+
+
+@pytest.mark.parametrize(("prompt", "sup"), [
+    ("Go to the room which is the smallest.", Superlative.SMALLEST),
+    ("go to whichever room is smallest", Superlative.SMALLEST),
+    ("head for the room that is the biggest one", Superlative.BIGGEST),
+    ("go to the door which is closest", Superlative.NEAREST),
+])
+def test_a_superlative_in_a_relative_clause_picks_the_element(prompt: str, sup: Superlative) -> None:
+    step, = translate_offline(prompt).steps
+    assert step.target is not None and step.target.superlative == sup
+
+
+def test_an_unread_superlative_asks() -> None:
+    from langnav.language.offline.ask import spatial
+
+    assert spatial("smallest") == ["smallest"] and spatial("the biggest one") == ["biggest"]
+    assert spatial("a little") == []  # "little" is a size word only as a superlative's stem, not an amount's
+
+
+@pytest.mark.parametrize("prompt", [
+    "leave the room through the door",
+    "Drive out of this room through the door",
+    "exit this room through the doorway",
+])
+def test_leaving_a_room_through_the_door_is_one_step_through_its_door(prompt: str) -> None:
+    step, = translate_offline(prompt).steps
+    assert step.detail == Detail.THROUGH and step.target is not None
+    assert (step.target.kind, step.target.in_current_room) == (Element.DOOR, True)
+
+
+@pytest.mark.parametrize("prompt", [
+    "through the door on your right, then come back through it",
+    "go through the first door on your left and then come back out through it",
+])
+def test_coming_back_through_a_door_is_through_it_again(prompt: str) -> None:
+    first, back = translate_offline(prompt).steps
+    assert first.detail == back.detail == Detail.THROUGH
+    assert back.target is not None and back.target.kind == Element.DOOR
+
+
+def test_towards_a_straight_edge_of_the_unknown_steps_back_square_to_it() -> None:
+    import numpy as np
+
+    from langnav.grounding.ground import _square_to_the_edge
+
+    # an opening's edge along a line at 23 deg (a rotated map's staircase of cells), the robot off to its side
+    t = np.linspace(0.0, 1.5, 31)
+    line = np.stack([9.0 + t * np.cos(0.4), 4.3 + t * np.sin(0.4)], axis=1)
+    line = np.round(line / 0.05) * 0.05
+    towards_robot = (-0.995, -0.1)  # nearly along the edge: the robot came at it from the side
+    nx, ny = _square_to_the_edge(line, towards_robot)
+    assert abs(nx * np.cos(0.4) + ny * np.sin(0.4)) < 0.05  # square to the edge ...
+    assert nx * towards_robot[0] + ny * towards_robot[1] > 0  # ... on the robot's side
+    # a corner of an unscanned block (two faces) is no straight edge: towards the robot
+    corner = np.array([[x, 8.0] for x in np.arange(8.0, 9.5, 0.05)] + [[8.0, y] for y in np.arange(6.5, 8.0, 0.05)])
+    assert _square_to_the_edge(corner, towards_robot) == towards_robot
+    # in line with a straight edge: towards the robot too
+    assert _square_to_the_edge(line, (float(np.cos(0.4)), float(np.sin(0.4)))) == (float(np.cos(0.4)), float(np.sin(0.4)))

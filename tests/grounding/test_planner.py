@@ -175,3 +175,15 @@ def test_a_bug_is_refused_not_raised(world: MapAnalysis, caplog: pytest.LogCaptu
     r = Planner(Broken()).plan("anything", world, AT_A)
     assert r.commands == () and "internal error (ZeroDivisionError: a bug)" in (r.clarification or "")
     assert "planning 'anything' failed" in caplog.text
+
+
+def test_a_prompt_that_runs_nothing_always_says_why(world: MapAnalysis) -> None:
+    # "go to the room" standing in room A: nothing to drive, and the reply says so (never silence)
+    here = {"here": Intent(translator="fixed", steps=[
+        Step.model_validate({"movement": "navigate", "target": {"kind": "room", "in_current_room": True}})],
+        unread=["sofa"])}
+    r = Planner(Fixed(here)).plan("here", world, AT_A)
+    assert r.commands == ()
+    said = r.to_bench("x")["clarification"]
+    assert said is not None and "already" in said and "'sofa'" in said
+    assert said == " ".join(r.messages)

@@ -324,3 +324,28 @@ def test_sides_that_cannot_both_hold_ask(prompt: str) -> None:
 def test_a_politeness_tail_is_no_second_trip() -> None:
     steps = translate_offline("could you go to the last door on your right, if that's okay").steps
     assert [s.movement for s in steps] == [Movement.NAVIGATE]
+
+
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("left turn forty five, that's four five degrees left", [("rotate", "left", None, 45.0)]),
+    ("go forward twenty three feet, two three feet", [("move", "forward", round(23 * FT, 4), None)]),
+])
+def test_digits_one_apart_restating_a_number_said_whole_are_that_number(prompt: str, expected: Plan) -> None:
+    assert _plan(prompt) == expected
+
+
+def test_digits_one_apart_said_alone_may_be_a_range_and_ask() -> None:
+    assert _asks("turn left four five degrees") and _asks("go forward two three feet")
+
+
+@pytest.mark.parametrize("prompt", ["turn to look behind you", "Give yourself the turn to look behind.",
+                                    "turn so you can see behind you"])
+def test_a_turn_to_look_behind_is_a_turn_around(prompt: str) -> None:
+    assert _plan(prompt) == [("rotate", "around", None, 180.0)]
+
+
+@pytest.mark.parametrize(("prompt", "kind"), [("look at the door", "door"), ("turn to look at the door", "door"),
+                                              ("turn around and look at the corner", "corner")])
+def test_looking_at_a_place_faces_it_without_going_there(prompt: str, kind: str) -> None:
+    steps = translate_offline(prompt).steps
+    assert [(s.movement, s.target.kind.value if s.target else None) for s in steps] == [(Movement.ROTATE, kind)]

@@ -26,14 +26,24 @@ wall's end into the next room), is in no wall.
 
 *A door's jambs are wall.* Each end of the opening is the end of a wall that carries on along
 the opening's line (scanned, occupied cells for a wall's length, allowing for the holes a scan
-leaves in walls), or a wall the opening's wall abuts, crossing its line (a door beside a room's
-corner). The tip of a laser ray, a speck of clutter, the corner where a corridor's wall turns
-away into a hall, are not: a gap beside them is no door.
+leaves in walls), or, beside a room's corner, the return of wall a door frame needs between it
+and the wall across (the return and the crossing wall's own thickness fill the look along the
+line). The tip of a laser ray, a speck of clutter, the corner where a corridor's wall turns
+away into a hall, are not: a gap beside them is no door. Nor is the face of a wall crossing
+the opening's line with no return along it: a gap that runs right up to a crossing wall is
+the way round the end of a partition, a bench row, a shelf or a parking bay's wall, not a door
+(builders leave a return beside a door frame at a corner, so that the frame has a wall to
+stand in and the door leaf can open past the corner).
 
 *A door's jambs are walls, not furniture.* A jamb on a compact body standing free in the floor
 (all of it within a few metres, its inside never scanned: a cabinet, a desk block, a counter
 seen only from around it), deeper than a wall is thick and shallower than a room, is a piece of
 furniture: the gap beside it is a way past the furniture, not a door.
+
+*A doorway was scanned.* The robot saw through an opening: across it, from jamb to jamb, the
+cells are scanned (free floor, or a post or a door leaf standing in it; a few unscanned specks
+aside). A notch of unknown between two walls' ends (the shadow a wall's corner casts, a wedge
+the scan never reached) is no opening, however door-wide the saddle the flood finds there.
 
 A candidate between two spaces that is no door is still a way between them (an opening); one
 into unexplored territory is nothing a person would point at.
@@ -54,7 +64,11 @@ from scipy import ndimage as ndi
 from langnav.analysis.params import AnalysisParams
 from langnav.analysis.precompute import take2, truncated_sq_edt
 from langnav.analysis.seg_doors import SEEN_FLOOR_MIN_M, RawDoor
-from langnav.analysis.wall_lines import WALL_MAX_THICKNESS_M, dominant_directions
+from langnav.analysis.wall_lines import (
+    GAP_MIN_FLOOR_SHARE,
+    WALL_MAX_THICKNESS_M,
+    dominant_directions,
+)
 
 BoolArray = npt.NDArray[np.bool_]
 
@@ -103,8 +117,9 @@ BEYOND_MIN_FLOOR_SHARE: Final = 0.3
 #: A jamb lies at most this far (m) beyond the end of the opening as measured (the opening's
 #: width is its clearance at one crossing; a ragged jamb stands back from it).
 JAMB_REACH_M: Final = 0.3
-#: ... or the jamb is a wall crossing the opening's line: occupied on at least this share of a
-#: wall's length on both sides of the line (a T or a corner the door stands beside).
+#: A jamb's wall turns across the opening's line (a corner beside the door, whose return along
+#: the line is shorter than a wall's length) when it is occupied on at least this share of a
+#: wall's length along the normal.
 JAMB_ACROSS_MIN_SHARE: Final = 0.8
 #: A jamb's body is looked at within this distance (m) of it: a piece of furniture lies
 #: wholly inside it, a wall runs on beyond it (to other walls, or along the unknown outside).
@@ -119,6 +134,9 @@ BODY_MAX_DEPTH_M: Final = 0.8
 #: The walls around a door, whose directions its line must follow: those within this distance
 #: (m) of it (the room or corridor it opens from; a wing at an angle has its own directions).
 LOCAL_WALLS_M: Final = 3.0
+#: The floor across an opening is read over this share of its width about its centre (its ends
+#: are the ragged jambs).
+OPENING_MIDDLE_SHARE: Final = 0.6
 
 
 @dataclass(frozen=True)
@@ -144,6 +162,9 @@ class DoorEvidence:
     #: Whether either jamb is on a piece of furniture (see module doc; False where the unknown
     #: cells were not given).
     furniture_jamb: bool = False
+    #: The share of the opening's middle (OPENING_MIDDLE_SHARE of its width, across the normal
+    #: through its centre) that was scanned (free or occupied, not unknown).
+    scanned_share: float = 1.0
 
 
 def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np.float64],
@@ -310,10 +331,11 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     back = constriction_depth(t, w, width_m, back_only=True)
     beyond = (typical_width(t_all, w_all, -1.0, params.door_max_depth_m),
               typical_width(t_all, w_all, 1.0, params.door_max_depth_m))
+    scanned = scanned_across(free, occupied, center_rc, normal_rc, width_m, resolution_m, unknown)
     jj = jamb_cells(occupied, center_rc, width_m, resolution_m)
     if jj is None:
         return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(0.0, 0.0), across=(0.0, 0.0),
-                            beyond_width_m=beyond)
+                            beyond_width_m=beyond, scanned_share=scanned)
     (r1, c1), (r2, c2) = jj
     # The opening's line runs from jamb to jamb (the candidate's own normal is the mean step
     # across a ragged boundary, often slanted).
@@ -340,7 +362,24 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     furniture = unknown is not None and any(is_furniture(free, unknown, j, resolution_m) for j in jj)
     return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]),
                         across=(across[0], across[1]), line_turn_deg=turn, beyond_width_m=beyond,
-                        furniture_jamb=furniture)
+                        furniture_jamb=furniture, scanned_share=scanned)
+
+
+def scanned_across(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float],
+                   normal_rc: tuple[float, float], width_m: float, resolution_m: float,
+                   unknown: BoolArray | None = None) -> float:
+    """The share of scanned samples (not ``unknown``; without it, ``free`` or ``occupied``)
+    along the tangent through ``center_rc`` over the middle OPENING_MIDDLE_SHARE of an opening
+    ``width_m`` wide."""
+    half = OPENING_MIDDLE_SHARE * width_m / 2 / resolution_m
+    s = np.arange(-half, half + 1e-9, _STEP_CELLS)
+    nr, nc = normal_rc
+    rows, cols = center_rc[0] - s * nc, center_rc[1] + s * nr
+    if unknown is not None:
+        got = ~_sample(unknown, rows, cols, outside=True)
+    else:
+        got = _sample(free, rows, cols, outside=False) | _sample(occupied, rows, cols, outside=False)
+    return float(got.mean()) if got.size else 0.0
 
 
 def is_furniture(free: BoolArray, unknown: BoolArray, cell_rc: tuple[float, float], resolution_m: float) -> bool:
@@ -426,12 +465,15 @@ def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wal
     # Along a wall: the opening's line follows the walls' direction.
     if ev.line_turn_deg > ALONG_MAX_TURN_DEG:
         return False
+    # It was scanned: the robot saw through it.
+    if ev.scanned_share < GAP_MIN_FLOOR_SHARE:
+        return False
     # Its jambs are walls, not furniture.
     if ev.furniture_jamb:
         return False
-    # Both jambs are wall.
-    return all(a >= JAMB_ALONG_MIN_SHARE or x >= JAMB_ACROSS_MIN_SHARE
-               for a, x in zip(ev.along, ev.across, strict=True))
+    # Both jambs are wall running on along the opening's line (a return beside a corner counts,
+    # the bare face of a wall across the line does not: see the module doc).
+    return all(a >= JAMB_ALONG_MIN_SHARE for a in ev.along)
 
 
 def floor_beyond(free: BoolArray, far_from_unknown: BoolArray, center_rc: tuple[float, float],
@@ -482,5 +524,18 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
     return doors, rest
 
 
-__all__ = ["SEEN_FLOOR_MIN_M", "DoorEvidence", "constriction_depth", "evidence", "floor_beyond", "free_widths", "is_door", "is_furniture", "judge_doors",
-           "line_turn_deg", "opens_wider", "typical_width"]
+__all__ = [
+    "SEEN_FLOOR_MIN_M",
+    "DoorEvidence",
+    "constriction_depth",
+    "evidence",
+    "floor_beyond",
+    "free_widths",
+    "is_door",
+    "is_furniture",
+    "judge_doors",
+    "line_turn_deg",
+    "opens_wider",
+    "scanned_across",
+    "typical_width",
+]

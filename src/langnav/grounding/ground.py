@@ -69,6 +69,7 @@ from langnav.language.intent import (
     Place,
     Query,
     Step,
+    Superlative,
 )
 from langnav.language.intent import Element as Kind
 from langnav.places.store import NamedPlace, place_key
@@ -119,6 +120,12 @@ FRONTIER_GOAL_MAX_M: Final = 0.9
 FRONTIER_PIECE_M: Final = 1.5
 #: A person going towards the unknown stops about this short of its edge, on the side they came from.
 FRONTIER_STANDOFF_M: Final = 0.5
+#: A piece of edge whose cells all lie within this of one line is a straight edge (an opening, a
+#: hallway's end), which a person stops square in front of: three map cells, for the staircase of a
+#: line drawn at an angle and a cell of scan noise on either side; a corner's two faces are not.
+FRONTIER_STRAIGHT_TOL_M: Final = 0.15
+#: ... unless they come at it nearly in its line (within ~78 deg of along it, cos 0.2): then towards them.
+FRONTIER_IN_LINE_MAX_COS: Final = 0.2
 #: frontier cells tried (nearest first) before giving up on an area.
 FRONTIER_TRIES: Final = 400
 #: "middle of the room", "between A and B": README 0.75 m.
@@ -247,7 +254,8 @@ def ground(intent: Intent, analysis: MapAnalysis, pose: Pose | Sequence[float], 
     steps: list[GroundedStep] = []
     cur = start
     for i, step in enumerate(intent.steps):
-        gs = ground_step(_same_element_as_before(step, steps[-1] if steps else None), ctx, cur, i)
+        prev = steps[-1] if steps else None
+        gs = ground_step(_room_entered(_same_element_as_before(step, prev), prev, analysis), ctx, cur, i)
         steps.append(gs)
         ctx.advance(gs)
         cur = gs.end_pose
@@ -284,7 +292,9 @@ class GroundingContext:
 
 
 #: Words that point back at the element of the step before ("the middle of it", "go in there").
-_BACK_REF_RE: Final = re.compile(r"\b(?:it|there|that one|this one|that room|this room|them)\b", re.IGNORECASE)
+_BACK_REF_RE: Final = re.compile(r"\b(?:it|there|that|that one|this one|that room|this room|them)\b", re.IGNORECASE)
+#: "The next room" (``_room_entered``).
+_NEXT_RE: Final = re.compile(r"\bnext\b", re.IGNORECASE)
 #: The id prefixes that the label words of each kind name (``select_by_label``).
 _LABEL_PREFIXES: Final = {Kind.ROOM: ("room", "hallway"), Kind.HALLWAY: ("room", "hallway"), Kind.DOOR: ("door",),
                           Kind.OBSTACLE: ("obstacle",), Kind.CORNER: ("corner",)}
@@ -304,6 +314,31 @@ def _same_element_as_before(step: Step, prev: GroundedStep | None) -> Step:
     if not number.isdigit() or prefix not in _LABEL_PREFIXES.get(ref.kind, ()):
         return step
     return step.model_copy(update={"target": ElementRef(kind=ref.kind, label=int(number))})
+
+
+def _room_entered(step: Step, prev: GroundedStep | None, analysis: MapAnalysis) -> Step:
+    """"Go through the door in front and stop in the middle of the next room": right after a step
+    through a door, "the next room" is the room that door leads into, where the robot now stands (a
+    person who has just stepped through a doorway calls the room in front of them the next one).
+    Read as "the nearest room other than the one I am in" it would be a third room."""
+    ref = step.target
+    if prev is None or ref is None or ref.kind != Kind.ROOM or ref.superlative != Superlative.NEAREST \
+            or ref.side is not None or ref.ordinal is not None or ref.label is not None or ref.relation is not None \
+            or ref.near is not None or not _NEXT_RE.search(step.text):
+        return step
+    before = prev.step.target
+    if prev.step.detail != Detail.THROUGH or before is None or before.kind not in (Kind.DOOR, Kind.NARROW_PASSAGE) \
+            or len(prev.element_ids) != 1 or not prev.moves:
+        return step
+    ways: list[Door | NarrowPassage] = [*analysis.doors, *analysis.narrow_passages]
+    door = next((d for d in ways if d.id == prev.element_ids[0]), None)
+    room = space_of(analysis, prev.end_pose.xy)
+    if door is None or room is None or room.id not in door.connects:
+        return step
+    number = room.id.rpartition("_")[2]
+    if not number.isdigit():
+        return step
+    return step.model_copy(update={"target": ElementRef(kind=Kind.ROOM, label=int(number))})
 
 
 def advance_way(route: list[Point], moved_from: list[Pose], gs: GroundedStep) -> None:
@@ -869,12 +904,31 @@ def _facing_the_frontier(f: FloatArray, ctx: GroundingContext, pose: Pose, comp:
     p = (float(edge[0]), float(edge[1]))
     if math.dist(p, pose.xy) <= FRONTIER_STANDOFF_M:
         return None
-    back = unit((pose.x_m - p[0], pose.y_m - p[1]))
+    back = _square_to_the_edge(piece, unit((pose.x_m - p[0], pose.y_m - p[1])))
     short = (p[0] + back[0] * FRONTIER_STANDOFF_M, p[1] + back[1] * FRONTIER_STANDOFF_M)
     g = ctx.space.safe_point_near(p, comp, FRONTIER_GOAL_MAX_M, prefer=short)
     if g is None or not ctx.space.segment_clear(p, g, 0.0)[0]:
         return None
     return g
+
+
+def _square_to_the_edge(piece: FloatArray, back: Point) -> Point:
+    """The way a person steps back from a straight piece of an unexplored area's edge (an opening, a
+    hallway's end): square to it, on the side they came from, so they stop in front of it and not
+    beside it along the edge when they came at it from the side. A piece that is no straight line (a
+    corner of an unscanned block) or that the robot is in line with keeps ``back`` (towards the robot)."""
+    if len(piece) < 3:
+        return back
+    rel = piece - piece.mean(axis=0)
+    w, v = np.linalg.eigh(np.cov(rel.T))
+    along = v[:, int(np.argmax(w))]
+    normal = (-float(along[1]), float(along[0]))
+    if float(np.abs(rel @ np.asarray(normal)).max()) > FRONTIER_STRAIGHT_TOL_M:
+        return back
+    dot = normal[0] * back[0] + normal[1] * back[1]
+    if abs(dot) < FRONTIER_IN_LINE_MAX_COS:
+        return back
+    return (normal[0], normal[1]) if dot > 0 else (-normal[0], -normal[1])
 
 
 def _room_cells_mask(ctx: GroundingContext, room: Room) -> BoolArray:

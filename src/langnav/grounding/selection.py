@@ -98,6 +98,10 @@ _COMPACT_RE: Final = re.compile(r"\b(?:" + "|".join(COMPACT_NOUNS) + r")\b", re.
 #: "gap" rather than "door" means one of those (``NARROW_GAP_MAX_M``).
 _GAP_RE: Final = re.compile(r"\bgaps?\b", re.IGNORECASE)
 _DOOR_RE: Final = re.compile(r"\bdoor", re.IGNORECASE)
+#: Facing within ~78 deg of across a hallway (cos 0.2), the robot faces neither of its ends.
+FACING_ALONG_MIN: Final = 0.2
+#: "The door at the end of the corridor" (``_at_the_end``).
+_END_RE: Final = re.compile(r"\bend\b", re.IGNORECASE)
 _LONG_RE: Final = re.compile(r"\b(?:" + "|".join(LONG_NOUNS) + r")\b", re.IGNORECASE)
 
 ORDINAL_WORDS: Final = {1: "first", 2: "second", 3: "third", 4: "fourth", 5: "fifth", 6: "sixth",
@@ -577,7 +581,9 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         pool = [e for e in pool if local_first(e) == 0]
 
     sup = ref.superlative
-    if sup in (Superlative.BIGGEST, Superlative.SMALLEST):
+    if sup in (Superlative.BIGGEST, Superlative.SMALLEST) and ref.kind == Kind.ROOM:
+        ordered = _rooms_by_size(pool, analysis, pose, biggest=sup == Superlative.BIGGEST)
+    elif sup in (Superlative.BIGGEST, Superlative.SMALLEST):
         ordered = sorted(pool, key=lambda e: floor_area_m2(e, analysis), reverse=sup == Superlative.BIGGEST)
     elif sup in (Superlative.WIDEST, Superlative.NARROWEST):
         ordered = sorted(pool, key=width_of, reverse=sup == Superlative.WIDEST)
@@ -588,6 +594,12 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
     else:
         ordered = sorted(pool, key=lambda e: (local_first(e), distance_to(e, pose.xy)))
 
+    if ref.kind == Kind.DOOR and sup == Superlative.FARTHEST and space is not None \
+            and space.kind == ElementKind.HALLWAY and words and _END_RE.search(words):
+        ordered = [e for e in ordered if _at_the_end(e, space, pose)]
+        if not ordered:
+            raise GroundingError(f"I see no door at the end of {label_of(space)}: its doors are along its sides. "
+                                 "Which door do you mean? Say e.g. 'the last door on your left'.")
     k = (ref.ordinal or 1) - 1
     if len(ordered) < k + count:
         if not ordered:
@@ -596,6 +608,48 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         raise GroundingError(f"I see only {_count_phrase(len(ordered), ref)}, so I cannot find "
                              f"{describe_ref(ref) if count == 1 else f'{count} of them'}.")
     return ordered[k:k + count]
+
+
+def _at_the_end(e: Element, hall: Room, pose: Pose) -> bool:
+    """"The door at the end of the corridor": a door in the end wall of the hallway as it runs where
+    the robot is, at the end the robot faces (either end when it faces across), or in a side wall
+    within one hallway width of that end; not the last of the doors along its sides when the end
+    wall is plain, nor a door at the end of another leg of the hallway."""
+    from langnav.grounding.relations import hall_axis  # relations imports this module
+
+    centre, axis = hall_axis(hall, pose.xy)
+    c, a = np.asarray(centre), np.asarray(axis)
+    cells = np.asarray(hall.cells_xy, float).reshape(-1, 2) - c
+    across = np.abs(cells[:, 0] * -a[1] + cells[:, 1] * a[0])
+    t = (cells @ a)[across <= hall.width_m]
+    p = np.asarray(reference_point(e)) - c
+    if t.size == 0 or abs(float(p[0] * -a[1] + p[1] * a[0])) > hall.width_m:
+        return False
+    t_door = float(p @ a)
+    facing = math.cos(pose.yaw_rad) * a[0] + math.sin(pose.yaw_rad) * a[1]
+    far = t_door >= float(t.max()) - hall.width_m
+    near = t_door <= float(t.min()) + hall.width_m
+    if abs(facing) < FACING_ALONG_MIN:
+        return bool(far or near)
+    return bool(far if facing > 0 else near)
+
+
+def _rooms_by_size(pool: list[Element], analysis: MapAnalysis, pose: Pose, *, biggest: bool) -> list[Element]:
+    """Rooms from biggest (or smallest) on, a room parted by a gap narrower than any door counted
+    whole (``gap_joined``: a lab split by two benches with a 0.7 m gap between them is one lab, as
+    big as both parts). Each room once, by the part of it nearest the robot (the part one enters)."""
+    area: dict[str, float] = {}
+    part: dict[str, Element] = {}
+    for e in pool:
+        if not isinstance(e, Room):
+            continue
+        group = [r for r in gap_joined(analysis, e) if r.kind == ElementKind.ROOM]
+        key = min(r.id for r in group)
+        area[key] = sum(floor_area_m2(r, analysis) for r in group)
+        if key not in part or distance_to(e, pose.xy) < distance_to(part[key], pose.xy):
+            part[key] = e
+    keys = sorted(area, key=lambda k: area[k], reverse=biggest)
+    return [part[k] for k in keys]
 
 
 def came_through_doors(analysis: MapAnalysis, pose: Pose, last_leg: tuple[Point, Point] | None) -> frozenset[str]:

@@ -27,6 +27,8 @@ SPATIAL_WORDS: Final = frozenset(
                            "triple",
                            # the map's axes ("move +x 2 m", "along the y axis"): a way in the map's frame
                            "x", "y", "+x", "-x", "+y", "-y", "axis"}
+    # a superlative picks which place ("the smallest room"): one left unread may pick another
+    | {w for w in lx.SUPERLATIVES if w.endswith("est") and " " not in w}
 ) - lx.STOPWORDS - {"a", "an", "the", "of", "to", "in", "on", "at", "up", "one", "way", "port", "positive",
                     "negative", "wall", "turn", "u", "face", "about", "other", "opposite", "direction", "came",
                     "we", "you", "your", "side", "hand", "closer", "nearer"} | {"wall", "walls", "door", "doors"}

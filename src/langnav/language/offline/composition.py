@@ -40,6 +40,7 @@ from langnav.language.intent import (
     Side,
     Step,
 )
+from langnav.language.offline.lexicon import ORDINALS
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import ONES, QuantityKind, find_quantities
 from langnav.language.offline.parser import Reading, read_clause
@@ -65,7 +66,21 @@ _UNIT_AFTER: Final = (r"(?!\s*(?:m|cm|mm|metres?|meters?|feet|foot|ft|inch(?:es)
                       r"corners|obstacles|passages|boxes|spaces|places|areas|of)\b)")
 _LABEL_RE: Final = re.compile(
     r"\b(?P<noun>narrow\s+passage|unexplored\s+area|" + "|".join(k for k in LABEL_NOUNS if " " not in k)
-    + r")\s*(?:number\s+|no\.?\s+|#\s*)?(?P<n>\d{1,4}|" + _NUMBER_WORDS + r")\b" + _UNIT_AFTER)
+    + r")\s*(?P<said>number\s+|no\.?\s+|#\s*)?(?P<n>\d{1,4}|" + _NUMBER_WORDS + r")\b" + _UNIT_AFTER)
+#: "Go past the second door", "keep going past the box", with no amount: to just beyond it along the
+#: way, not through it (a door beside a hallway is passed by, not entered) ...
+_JUST_PAST_RE: Final = re.compile(
+    r"\b(?:go|goes|going|walk|drive|head|move|roll|get|continue|proceed|carry\s+on|keep\s+going)\s+"
+    r"(?:on\s+|straight\s+|right\s+|just\s+)?(?P<prep>past|beyond)"
+    r"(?=\s+(?:the|that|this)\s+(?:[a-z]+\s+){0,3}?(?:doors?|doorways?|openings?|entrances?|obstacles?|boxe?s?|"
+    r"corners?|passages?|gaps?)\b)")
+#: ... and "just beyond" is this far past its far edge: the robot's length and more, so that the whole
+#: robot has cleared the doorway, and well within the 2 m a person calls "just past it".
+JUST_PAST_M: Final = 1.0
+#: A side said right after "door number three": the number counts the doors on that side.
+_COUNTED_SIDE_RE: Final = re.compile(r"\s+on\s+(?:your|the|my)\s+(?:left|right)\b")
+#: The ordinal word of a count ("three" -> "third"), for the first ones a person counts along a side.
+_ORDINAL_WORD: Final = {v: w for w, v in reversed(ORDINALS.items()) if w.isalpha()}
 
 #: "2 m past / before" followed by what it is measured from: a determiner, a label or a place word
 #: ("before turning left" is a time, not a place).
@@ -235,6 +250,10 @@ def extract(norm: str) -> tuple[str, Marks]:
         marks.offset = (relation, q.value, text[q.start:p.end()].strip())
         text = _cut(text, q.start, p.end(), put)
         break
+    m = _JUST_PAST_RE.search(text) if marks.offset is None else None
+    if m is not None:
+        marks.offset = (Offset.PAST, JUST_PAST_M, m.group("prep"))
+        text = _cut(text, m.start("prep"), m.end("prep"), "to")
     m = _FRACTION_RE.search(text)
     if m is not None:
         marks.fraction = (_FRACTIONS[" ".join(m.group("f").split())], m.group(0))
@@ -254,6 +273,12 @@ def extract(norm: str) -> tuple[str, Marks]:
         text = _cut(text, m.start(), m.end(), "")
     for m in reversed(list(_LABEL_RE.finditer(text))):
         noun = " ".join(m.group("noun").split())
+        counted = _COUNTED_SIDE_RE.match(text, m.end())
+        if counted is not None and (m.group("said") or not m.group("n").isdigit()) and _number(m.group("n")) in _ORDINAL_WORD:
+            # "door number three on your left": counted along a side, as "the third door on your left"
+            # is; a label is a name and needs no side ("door 3", typed as the map shows it, stays one)
+            text = _cut(text, m.start(), m.end(), f"{_ORDINAL_WORD[_number(m.group('n'))]} {noun}")
+            continue
         marks.labels.insert(0, (LABEL_NOUNS[noun], _number(m.group("n")), m.group(0)))
         text = _cut(text, m.start(), m.end(), noun)
     return " ".join(text.split()), marks

@@ -77,6 +77,13 @@ def _destinations(targets: list[Phrase]) -> list[Phrase]:
             continue
         if p.detail == Detail.THROUGH and p.ref.kind == Element.HALLWAY and later:
             continue
+        if p.detail == Detail.THROUGH and p.ref.kind in lx.CONTAINER_KINDS and _plain_space(p.ref) and later \
+                and later[0].detail == Detail.THROUGH and later[0].ref.kind in lx.THROUGH_KINDS and not later[0].pronoun:
+            # "leave the room through the door", "drive out of this room through the door": the door is the
+            # way out of the room the robot is in; one step, not a second door from outside the room
+            if later[0].ref.label is None and later[0].ref.near is None:
+                later[0].ref = later[0].ref.model_copy(update={"in_current_room": True})
+            continue
         if p.bare_prep and p.detail == Detail.NEXT_TO and kept and kept[-1].ref.near is None \
                 and not p.pronoun and p.ref.kind != Element.NONE and p.ref.kind != kept[-1].ref.kind:
             kept[-1].ref = kept[-1].ref.model_copy(update={"near": as_landmark(p.ref)})
@@ -93,6 +100,12 @@ def _destinations(targets: list[Phrase]) -> list[Phrase]:
             p.detail = kept[-1].detail  # "go to the door and the box" (two places)
         kept.append(p)
     return kept
+
+
+def _plain_space(ref: ElementRef) -> bool:
+    """"The room", "this room": the space the robot is in, with no words that pick another."""
+    return (ref.ordinal is None and ref.side is None and ref.superlative is None and ref.label is None
+            and ref.name is None and ref.relation is None and ref.near is None)
 
 
 def _infer_side_from_direction(c: Clause, first: Phrase) -> None:

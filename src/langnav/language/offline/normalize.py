@@ -79,6 +79,15 @@ _IDIOMS: Final = (
     # "come left / right" is the helm's and the pilot's turn; "come about" is turning around
     (re.compile(r"\bcome\s+(?=(?:hard\s+)?(?:left|right)\b)"), "turn "),
     (re.compile(r"\bcome\s+about\b"), "turn around"),
+    # "look at the door", "turn to look towards the corner": face it (looking is facing: the robot turns, it does
+    # not go there); a map is looked at, not faced
+    (re.compile(r"\b(?:turn\s+(?:(?:a)?round\s+)?(?:and\s+|to\s+)?)?look\s+(?:at|towards?)\s+(?!(?:the\s+|your\s+|my\s+)?map\b)"),
+     "face "),
+    # "give yourself a turn to the left" (learner phrasing): a turn
+    (re.compile(r"\bgive\s+(?:yourself|itself|it|her)\s+(?:a|the|one)\s+turn\b"), "turn"),
+    # "turn to look behind (you)", "turn so you can see behind you": a turn whose purpose names its end, behind
+    (re.compile(r"\bturn(?:\s+(?:yourself|itself))?\s+(?:(?:so\s+as\s+|in\s+order\s+)?to|so\s+(?:that\s+)?(?:you|u|it)\s+"
+                r"(?:can|could|will))\s+(?:look|see|face)\s+(?:behind(?:\s+(?:you|yourself|itself))?|back)\b"), "turn around"),
     # "make the turn around", "do a turn around": the turn around
     (re.compile(r"\b(?:make|do)\s+(?:the\s+|a\s+)?turn\s+(?=(?:a)?round\b)"), "turn "),
     # "do a twirl", "do a spin": one whole turn
@@ -116,6 +125,11 @@ _IDIOMS: Final = (
     # other side of the hall" alone is still the far side of the hallway)
     (re.compile(r"\b(room|office|space)\s+(?:(?:that|which)\s+is\s+)?(?:on|at)\s+the\s+(?:other|opposite|far)\s+side"
                 r"\s+of\s+the\s+(hall|hallway|corridor)\b"), r"\1 across the \2"),
+    # "the room which is the smallest", "whichever room is biggest", "the door that is nearest": a
+    # superlative said in a relative clause picks the same element as one said before the noun
+    (re.compile(r"\b(?:the|whichever|whatever|which\s+ever)\s+(" + "|".join(sorted({n for n in ELEMENT_NOUNS if " " not in n}))
+                + r")\s+(?:(?:which|that)\s+)?is\s+(?:the\s+)?(" + "|".join(sorted(
+                    {w for w in SUPERLATIVES if w.endswith("est") and " " not in w})) + r")(?:\s+one)?\b"), r"the \2 \1"),
     # "between the first and second doors on your left": both ordinals share the noun and its side
     (re.compile(r"\bbetween\s+the\s+(" + _ORDINAL + r")\s+and\s+(?:the\s+)?(" + _ORDINAL + r")\s+"
                 r"(door|doorway|room|obstacle|corner|opening)s?\b(\s+on\s+(?:your|the|my)\s+(?:left|right)"
@@ -144,6 +158,9 @@ _IDIOMS: Final = (
     # "back out the door", "back out of the room": leave through it (which way the robot faces while it
     # leaves is Nav2's business, not a backward move of unsaid length)
     (re.compile(r"\bback\s+out\s+(?=(?:of|through|the|this|that|via)\b)"), "go out "),
+    # "through the door, then come back through it": going back through a door is going through it,
+    # from the side the robot is on now (which is where it came from)
+    (re.compile(r"\b(?:come|go|head|get|walk|drive|move)\s+back\s+(?:out\s+|in\s+)?(?=(?:through|thru|via)\b)"), "go "),
     # "back out six feet": with an amount and no place, reversing that far ("back up six feet")
     (re.compile(r"\bback\s+out\s+(?=(?:about\s+|around\s+|roughly\s+|another\s+)?(?:\d|a\s+(?:bit|little|foot|metre|meter|"
                 r"yard)\b|half\b|one\b|two\b|three\b|four\b|five\b|six\b|seven\b|eight\b|nine\b|ten\b))"), "back up "),

@@ -261,19 +261,39 @@ DIGIT_RUN: Final = re.compile(
 _ISH: Final = re.compile(rf"\b(?P<num>\d+(?:\.\d+)?|{NUMBER_WORDS})[\s-]?ish\b", re.IGNORECASE)
 
 
-def _digits(m: re.Match[str]) -> str:
+def _digits(m: re.Match[str], said: frozenset[int] = frozenset()) -> str:
     """A run of digit words as the number it spells, when it can only be that number: its digits are
     not one digit said again ("four four": a restart, read there), and two digits one apart ("two
-    three feet") may be a range ("two or three feet"), so those stay words (and the reading asks)."""
+    three feet") may be a range ("two or three feet"), so those stay words (and the reading asks) unless
+    the number they spell was said whole in the same prompt ("left turn forty five, that's four five
+    degrees left": the radio restatement of 45, no range)."""
     words = m.group("run").lower().split()
     if words[0] in ("oh",) or len(set(words)) == 1:
         return m.group(0)
     if words[0] == words[1]:
         words = words[1:]  # "one one five": a stutter on the first digit, then the number
     values = [0 if w == "oh" else _DIGIT_VALUES[w] for w in words]
-    if len(values) < 2 or (len(values) == 2 and abs(values[1] - values[0]) == 1 and 0 not in values):
+    spelled = int("".join(map(str, values))) if values else 0
+    if len(values) < 2 or (len(values) == 2 and abs(values[1] - values[0]) == 1 and 0 not in values
+                           and spelled not in said):
         return m.group(0)
-    return str(int("".join(map(str, values))))
+    return str(spelled)
+
+
+#: A whole number said in words of two or more ("forty five", "one hundred and twenty") or in digits.
+_WHOLE_SAID: Final = re.compile(rf"\b(?:{_TENS_WORDS})[\s-]+(?:{_ONE_TO_NINE})\b|\b(?:{_TENS_WORDS}|{_TEENS_WORDS})\b|\b\d+\b",
+                                re.IGNORECASE)
+
+
+def _numbers_said(text: str) -> frozenset[int]:
+    """The whole numbers a prompt says in tens words or digits (what a digit-by-digit restatement may spell)."""
+    found: set[int] = set()
+    for m in _WHOLE_SAID.finditer(text):
+        try:
+            found.add(int(number_value(m.group(0))))
+        except ValueError:
+            continue
+    return frozenset(found)
 
 
 def canonical_numbers(text: str) -> str:
@@ -283,7 +303,9 @@ def canonical_numbers(text: str) -> str:
     ("one three five" -> "135")."""
     text = _THOUSANDS.sub(lambda m: m.group(0).replace(",", ""), text)
     text = _ISH.sub(r"about \g<num>", text)
-    return DIGIT_RUN.sub(_digits, _SCIENTIFIC.sub(_write_out, text))
+    text = _SCIENTIFIC.sub(_write_out, text)
+    said = _numbers_said(text)
+    return DIGIT_RUN.sub(lambda m: _digits(m, said), text)
 
 
 def _write_out(m: re.Match[str]) -> str:
