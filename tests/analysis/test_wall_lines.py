@@ -371,3 +371,69 @@ def test_line_scores_equal_the_plain_rounding_of_every_cell(seed: int) -> None:
     cols = rng.integers(0, side, n).astype(np.float64)
     degs = np.concatenate([np.arange(0.0, 90.0, 7.5), rng.uniform(0.0, 90.0, 9), [30.0, 45.0, 60.0]])
     assert np.array_equal(_line_scores(rows, -cols, degs), _line_scores_reference(rows, -cols, degs))
+
+
+def offices_behind_a_glass_front() -> OccupancyGrid:
+    """A 2.2 m corridor, 22 m long, with three 6 m x 5 m offices along its north side behind a
+    glass front the lidar saw only at its piers: 0.3 m pieces of wall every 2 m (1.7 m of
+    glass between them), between the corridor's solid north wall at both ends."""
+    b = MapBuilder(24.0, 10.0)
+    b.room(0.5, 1.0, 22.5, 3.2)  # the corridor
+    for x0 in (2.5, 8.65, 14.8):
+        b.room(x0, 3.35, x0 + 6.0, 8.35)
+    b.free(2.5, 3.2, 20.8, 3.35)  # the glass front, scanned only at the piers
+    for i in range(10):
+        b.wall(2.35 + 2.0 * i, 3.275, 2.65 + 2.0 * i, 3.275, 0.15)
+    return b.build("offices behind a glass front")
+
+
+def test_offices_behind_a_glass_front_between_piers_are_rooms_off_the_hallway() -> None:
+    """No gap of the front is a door cut in solid wall (each has a pier at one end), and the
+    corridor does not rise above them: by its clearance the corridor and the offices are one
+    space. The front runs in the corridor's wall line, from solid wall to solid wall, broken
+    into pieces no farther apart than an opening: a person sees a glass front, and three
+    offices behind it."""
+    grid = offices_behind_a_glass_front()
+    seg = segment_spaces(grid)
+    corridor = space_at(seg, grid, 11.5, 2.1)
+    offices = [space_at(seg, grid, x, 6.0) for x in (5.5, 11.65, 17.8)]
+    assert corridor.kind == ElementKind.HALLWAY
+    assert [o.kind for o in offices] == [ElementKind.ROOM] * 3
+    assert len({corridor.id, *(o.id for o in offices)}) == 4
+    assert len(seg.rooms) == 4
+    for office in offices:
+        assert office.area_m2 == pytest.approx(6.0 * 5.0, rel=0.05)
+        # The map cannot tell the front's door from its panes: each gap is a way in, and every
+        # one lies in the front, none across the corridor or between two offices.
+        ways = [d for d in seg.doors if set(d.connects) == {corridor.id, office.id}]
+        assert len(ways) == 3
+        assert all(abs(d.center[1] - 3.3) <= 0.1 for d in ways)
+    assert len(seg.doors) == 9
+
+
+def hall_with_a_row_of_posts() -> OccupancyGrid:
+    """A 14 m x 10 m hall with a row of 0.1 m posts (a rope barrier, a row of bollards, a
+    queue line) every 1.5 m across it from wall to wall, in line with the east wall of a
+    cloakroom at the hall's north side."""
+    b = MapBuilder(16.0, 16.0)
+    b.room(1.0, 1.0, 15.0, 11.0)
+    b.room(1.0, 11.0, 7.0, 14.0).door_h(4.0, 11.0, 0.9)  # the cloakroom, east wall at x = 7.075
+    for i in range(6):
+        y = 1.75 + 1.5 * i
+        b.box(7.025, y - 0.05, 7.125, y + 0.05)
+    return b.build("hall with a row of posts")
+
+
+def test_a_row_of_posts_across_a_hall_is_no_front() -> None:
+    """The posts stand in line with a wall and the row runs from wall to wall with gaps no
+    wider than an opening, as a front's piers do; but they are specks, not pieces of wall: the
+    hall is one room."""
+    grid = hall_with_a_row_of_posts()
+    seg = segment_spaces(grid)
+    hall = space_at(seg, grid, 4.0, 6.0)
+    assert space_at(seg, grid, 11.0, 6.0) is hall
+    assert hall.kind == ElementKind.ROOM
+    cloakroom = space_at(seg, grid, 4.0, 12.5)
+    assert cloakroom.id != hall.id
+    assert len(seg.rooms) == 2
+    assert [set(d.connects) for d in seg.doors] == [{hall.id, cloakroom.id}]

@@ -578,3 +578,18 @@ def test_a_room_parted_by_a_narrow_gap_is_as_big_as_both_parts(two_rooms: MapAna
     pose = Pose.from_deg(3.0, 3.0, 90.0)
     assert select(ElementRef(kind="room", superlative="smallest"), a, pose).id == "room_c"
     assert select(ElementRef(kind="room", superlative="biggest"), a, pose).id == "room_a"  # the part nearest
+
+
+def test_a_corridors_end_past_a_narrow_gap_is_no_room(two_rooms: MapAnalysis) -> None:
+    # A is a 60 m2 hallway; B (29.1 m2) is its end beyond a cart that leaves a 0.68 m gap: B is corridor,
+    # not the smallest room; C (40 m2) behind a door is
+    d1, d2 = two_rooms.doors
+    room_a, room_b = two_rooms.rooms[:2]
+    hall = dataclasses.replace(room_a, kind=ElementKind.HALLWAY, area_m2=60.0)
+    room_c = dataclasses.replace(room_b, id="room_c", label=3, area_m2=40.0, free_area_m2=40.0,
+                                 cells_xy=room_b.cells_xy + np.array([0.0, 20.0]))
+    a = dataclasses.replace(two_rooms, rooms=(hall, room_b, room_c), doors=(
+        dataclasses.replace(d1, connects=("room_a", "room_c")), dataclasses.replace(d2, width_m=0.68),
+        dataclasses.replace(d1, id="door_3", center=(8.0, 6.9), connects=("room_b", "room_c"))))
+    pose = Pose.from_deg(3.0, 3.0, 90.0)
+    assert select(ElementRef(kind="room", superlative="smallest"), a, pose).id == "room_c"

@@ -119,3 +119,17 @@ def test_that_points_back_at_the_door_the_step_before_went_to(two_rooms: MapAnal
         Step.model_validate({"movement": "navigate", "target": last, "text": "go to the last door on your right"}),
         Step.model_validate({"movement": "navigate", "target": last, "text": "if that's okay"})]), two_rooms, A_NORTH)
     assert [s.element_ids for s in plan.steps] == [("door_2",), ("door_2",)]
+
+
+def test_the_obstacle_of_a_room_with_one_is_that_one(two_rooms: MapAnalysis) -> None:
+    import numpy as np
+
+    from langnav.analysis.elements import Obstacle
+
+    box, = two_rooms.obstacles  # room A's box at (2.3, 5.3)
+    # a box in room B just through door_1, nearer to a robot standing by that door than room A's box
+    near = Obstacle("obstacle_2", (6.9, 2.0), 0.16, (0.4, 0.4), "room_b", np.array([[6.9, 2.0]]))
+    a = dataclasses.replace(two_rooms, obstacles=(box, near))
+    pose = Pose.from_deg(5.2, 2.4, 0.0)  # in room A by door_1
+    assert select(ref(kind="obstacle"), a, pose).id == "obstacle_1"  # the one in this room
+    assert select(ref(kind="obstacle", superlative="nearest"), a, pose).id == "obstacle_2"  # words that pick

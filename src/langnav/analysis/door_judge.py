@@ -134,8 +134,8 @@ BODY_MAX_DEPTH_M: Final = 0.8
 #: The walls around a door, whose directions its line must follow: those within this distance
 #: (m) of it (the room or corridor it opens from; a wing at an angle has its own directions).
 LOCAL_WALLS_M: Final = 3.0
-#: The floor across an opening is read over this share of its width about its centre (its ends
-#: are the ragged jambs).
+#: Whether an opening was scanned is read over this share of its width about its centre (its
+#: ends are the ragged jambs).
 OPENING_MIDDLE_SHARE: Final = 0.6
 
 

@@ -223,7 +223,10 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     # The building's wall directions, found once for the wall gaps and the doors in outer walls.
     walls = occupied & ~fl.floor
     directions = fl.wall_directions.of(walls) if fl.wall_directions is not None else dominant_directions(walls)
-    closed = closure_mask(wall_gaps(walls, fl.floor, res, params, directions), fl.floor)
+    gaps = wall_gaps(walls, fl.floor, res, params, directions)
+    closed = closure_mask(gaps, fl.floor)
+    panes = [g for g in gaps if g.in_front]
+    front = closure_mask(panes, fl.floor) if panes else None
     split_floor, split_clear = fl.floor, fl.clearance_m
     if closed.any():
         split_floor = fl.floor & ~closed
@@ -232,7 +235,7 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     judge = JambJudge(split_floor, split_clear, res, params, fl.wall_pieces) if params.seg_jamb_test else None
     labels = merge_basins(raw_labels, split_clear, res, params, judge)
     if closed.any():
-        labels = _reopen(labels, closed, params.seg_max_openings_between, res)
+        labels = _reopen(labels, closed, params.seg_max_openings_between, res, front)
     if params.seg_claim_free_m > 0:
         labels = _claim_free(labels, fl.free, ~occupied, params.seg_claim_free_m / res)
     labels, exterior = _attach_enclosed_unknown(labels, fl, grid, params)
@@ -271,7 +274,8 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
 
 
 def _reopen(labels: npt.NDArray[np.int32], closed: npt.NDArray[np.bool_],
-            max_openings: int, resolution_m: float) -> npt.NDArray[np.int32]:
+            max_openings: int, resolution_m: float,
+            front: npt.NDArray[np.bool_] | None = None) -> npt.NDArray[np.int32]:
     """Give the cells that closed the wall gaps back to the spaces on either side of them (each
     to the nearest: the two sides meet in the gap's middle): the gap becomes the doorway
     between the two.
@@ -279,7 +283,9 @@ def _reopen(labels: npt.NDArray[np.int32], closed: npt.NDArray[np.bool_],
     Two spaces parted by more than ``max_openings`` closed gaps (0: no limit) that take a large
     share of the line they lie on are one space: a wall has a door or two into the same room, a
     row of counters, desks or shelf units standing in a line has a gap between every two of
-    them (see ``seg_max_openings_between`` for openings found by the flood)."""
+    them (see ``seg_max_openings_between`` for openings found by the flood). The gaps of a
+    front (``front``: a glass front, a row of windows between piers) are no such row: it
+    stands in a wall line between stretches of solid wall."""
     todo = closed & (labels == 0)
     if not todo.any():
         return labels
@@ -301,12 +307,15 @@ def _reopen(labels: npt.NDArray[np.int32], closed: npt.NDArray[np.bool_],
     if max_openings <= 0:
         return out
     # Per pair of spaces: the closed gaps' (row, col) extents, to tell a row of clutter (open for
-    # a large share of its length) from a wall with several doors (mostly solid).
+    # a large share of its length) from a wall with several doors (mostly solid); not a front's.
     boxes: dict[tuple[int, int], list[tuple[slice, slice]]] = {}
     for k, sl in enumerate(objs, start=1):
         if sl is None:
             continue
-        got = np.unique(out[sl][pieces[sl] == k])
+        mine = pieces[sl] == k
+        if front is not None and (front[sl] & mine).any():
+            continue
+        got = np.unique(out[sl][mine])
         got = got[got > 0]
         if got.size == 2:
             boxes.setdefault((int(got[0]), int(got[1])), []).append(sl)

@@ -39,6 +39,7 @@ from typing import Final, Generic, TypeVar
 
 import numpy as np
 import numpy.typing as npt
+from scipy import ndimage as ndi
 
 from langnav.analysis.params import AnalysisParams
 from langnav.analysis.precompute import take2
@@ -78,6 +79,27 @@ GAP_MIN_FLOOR_SHARE: Final = 0.8
 #: deeper; a slot between two cabinets, desks or shelf units standing in a row is as deep as
 #: they are (0.4 m and more).
 WALL_MAX_THICKNESS_M: Final = 0.3
+#: A front (a glass front, a row of windows between piers: see :func:`_line_candidates`) runs
+#: from solid wall to solid wall over at most this length (m): the fronts of a row of offices,
+#: wards' bays or shops (five 4 m bays) between two stretches of wall.
+FRONT_MAX_LENGTH_M: Final = 20.0
+#: ... each of those walls solid (``seg_wall_line_side_share``) over at least this length (m)
+#: along the line: a wall the front continues, not a door frame or a stub.
+FRONT_ANCHOR_M: Final = 2.0
+#: ... and its pieces are pieces of wall at least this long (m, the longer side of their
+#: bounding box): a pier, a mullion, a door frame, a stretch of glass seen square on; not the
+#: specks of chair or table legs, or a row of thin posts.
+FRONT_PIECE_MIN_M: Final = 0.25
+#: ... and its gaps are open floor across the line's band and this far (m) beyond it either
+#: side (a wobbly wall a cell or two out of the line runs beside it there) ...
+FRONT_BESIDE_M: Final = 0.1
+#: ... and no wall crosses the line at either end of a gap, within this distance (m) of the
+#: line's band on both sides: a wall's end or a pier stands in the line, a wall crossing it
+#: (a corridor's side wall, for a line across the corridor) belongs to another line ...
+FRONT_CROSSING_M: Final = 0.3
+#: ... but for wall cells along at most this share of a gap's length (a pier a cell or two out
+#: of line at its end; a wobbly wall running beside the line covers the whole gap).
+FRONT_BESIDE_MAX_SHARE: Final = 0.5
 #: Share of the wall line past each end of a gap that must be a partition (thin, with floor on
 #: both sides); the rest may be a pillar, a cupboard against it, a perpendicular wall's end.
 PARTITION_MIN_SHARE: Final = 0.5
@@ -115,6 +137,9 @@ class WallGap:
     end_a_rc: tuple[float, float]
     end_b_rc: tuple[float, float]
     width_m: float
+    #: A gap of a front (a glass front, a row of windows between piers), not a gap between two
+    #: solid stretches of wall: glass the lidar saw through, or the front's door.
+    in_front: bool = False
 
 
 def _line_scores(rows: FloatArray, neg_cols: FloatArray, degs: FloatArray) -> FloatArray:
@@ -327,19 +352,32 @@ class _LineCandidates:
     pos: IntArray
     umin: int
     vmin: int
+    #: Per candidate: a gap of a front (not between two solid stretches of wall).
+    front: BoolArray | None = None
 
 
 def _line_candidates(wall: BoolArray, dirs: list[float], resolution_m: float, params: AnalysisParams,
-                     max_width_m: float) -> list[_LineCandidates]:
+                     max_width_m: float, front_max_width_m: float = 0.0) -> list[_LineCandidates]:
     """Per wall direction, the gaps ``door_min_width_m`` to ``max_width_m`` wide in its wall
     lines where the line runs on past both ends, occupied on ``seg_wall_line_side_share`` of
-    ``seg_wall_line_side_m`` (a wall, not the corner of a piece of furniture)."""
+    ``seg_wall_line_side_m`` (a wall, not the corner of a piece of furniture).
+
+    With ``front_max_width_m``, also the gaps up to that width in a *front*: a stretch of the
+    line broken into pieces (piers, mullions, door frames, the glass the lidar saw square on)
+    no farther apart than that, which runs from solid wall to solid wall (each solid over
+    ``FRONT_ANCHOR_M``) over at most ``FRONT_MAX_LENGTH_M``: a glass front or a row of windows
+    between piers stands in the wall line it continues, however little of it the scan shows."""
     res = resolution_m
     gmin = (params.door_min_width_m - res) / res
     gmax = (max_width_m + res) / res
+    fmax = (front_max_width_m + res) / res
     side = max(2, round(params.seg_wall_line_side_m / res))
+    share = params.seg_wall_line_side_share * side
     rr, cc = np.nonzero(wall)
     rr_f, cc_f = rr.astype(np.float64), cc.astype(np.float64)
+    # A front's pieces are pieces of wall, not specks (a chair's or a table's legs, the dots a
+    # row of posts leaves): small compact pieces play no part in a front.
+    pieces = _not_specks(wall, FRONT_PIECE_MIN_M / res)[rr, cc] if fmax > gmin else None
     out: list[_LineCandidates] = []
     for theta in dirs:
         cos_t, sin_t = math.cos(theta), math.sin(theta)
@@ -347,29 +385,129 @@ def _line_candidates(wall: BoolArray, dirs: list[float], resolution_m: float, pa
         v = np.rint(-cc_f * sin_t + rr_f * cos_t).astype(np.int64)
         umin, vmin = int(u.min()), int(v.min()) - LINE_BAND_CELLS
         span = int(u.max()) - umin + 1
-        # Each wall cell is on the lines within the band across it.
-        vv = np.concatenate([v + k for k in range(-LINE_BAND_CELLS, LINE_BAND_CELLS + 1)]) - vmin
-        uu = np.tile(u - umin, 2 * LINE_BAND_CELLS + 1)
-        # The distinct (line, position) keys in order: a mark per key, cheaper than np.unique.
-        flat = vv * span + uu
-        seen = np.zeros(int(flat.max()) + 1, dtype=bool)
-        seen[flat] = True
-        key = np.flatnonzero(seen)
-        line, pos = np.divmod(key, span)
-        gap = np.diff(pos) - 1
-        cand = np.flatnonzero((line[1:] == line[:-1]) & (gap >= gmin) & (gap <= gmax))
-        if cand.size == 0:
-            continue
-        # Solid share of the wall line over ``side`` cells before and after the gap.
-        lo_before = np.maximum(key[cand] - side + 1, line[cand] * span)
-        before = np.searchsorted(key, key[cand], side="right") - np.searchsorted(key, lo_before, side="left")
-        hi_after = np.minimum(key[cand + 1] + side - 1, line[cand + 1] * span + span - 1)
-        after = np.searchsorted(key, hi_after, side="right") - np.searchsorted(key, key[cand + 1], side="left")
-        share = params.seg_wall_line_side_share * side
-        cand = cand[(before >= share) & (after >= share)]
+        key, line, pos = _line_keys(u - umin, v - vmin, span)
+        cand, walled = _gap_candidates(key, line, pos, span, side, share, gmin, gmax)
+        cand = cand[walled]
         if cand.size:
             out.append(_LineCandidates(cos_t, sin_t, cand, line, pos, umin, vmin))
+        if pieces is None or not pieces.any():
+            continue
+        # Fronts: gaps with a pier at one end at least (solid wall at both is a plain gap,
+        # judged above: wider than a door, it is an opening between two walls).
+        key, line, pos = _line_keys(u[pieces] - umin, v[pieces] - vmin, span)
+        cand, walled = _gap_candidates(key, line, pos, span, side, share, gmin, fmax)
+        anchor = max(2, round(FRONT_ANCHOR_M / res))
+        front = ~walled & _in_front(key, line, pos, cand, span, anchor,
+                                    params.seg_wall_line_side_share * anchor, gmin, fmax,
+                                    FRONT_MAX_LENGTH_M / res)
+        # ... and open floor across the whole gap a wall's thickness either side of the line:
+        # where a wobbly wall runs beside the line, the line misses it in places, and those
+        # are no gaps.
+        if front.any():
+            raw = np.unique((v - vmin) * span + (u - umin))
+            i = np.flatnonzero(front)
+            p0, p1 = pos[cand[i]] + 1, pos[cand[i] + 1]
+            li = line[cand[i]]
+            beside = np.zeros(i.size, dtype=np.int64)
+            clear = LINE_BAND_CELLS + max(1, round(FRONT_BESIDE_M / res))
+            for dv in range(-clear, clear + 1):
+                beside += _count(raw, (li + dv) * span, p0, p1)
+            front[i] = beside <= FRONT_BESIDE_MAX_SHARE * (p1 - p0)
+            # ... and its ends stand in the line: a wall crossing it there (a corridor's side
+            # walls, for a line drawn across the corridor) is no pier of this line.
+            reach = max(1, round(FRONT_CROSSING_M / res))
+            crossing = np.zeros(i.size, dtype=bool)
+            for a, b in ((p0 - 1 - LINE_BAND_CELLS, p0), (p1, p1 + 1 + LINE_BAND_CELLS)):
+                sides = []
+                for sign in (-1, 1):
+                    n = np.zeros(i.size, dtype=np.int64)
+                    for d in range(LINE_BAND_CELLS + 1, LINE_BAND_CELLS + 1 + reach):
+                        n += _count(raw, (li + sign * d) * span, a, b)
+                    sides.append(n > 0)
+                crossing |= sides[0] & sides[1]
+            front[i] &= ~crossing
+        cand = cand[front]
+        if cand.size:
+            out.append(_LineCandidates(cos_t, sin_t, cand, line, pos, umin, vmin,
+                                       np.ones(cand.size, dtype=bool)))
     return out
+
+
+def _count(raw: IntArray, row0: IntArray, a: IntArray, b: IntArray) -> IntArray:
+    """Per item: how many of the sorted keys ``raw`` lie in [row0 + a, row0 + b)."""
+    return np.searchsorted(raw, row0 + b) - np.searchsorted(raw, row0 + a)
+
+
+def _line_keys(u: IntArray, v: IntArray, span: int) -> tuple[IntArray, IntArray, IntArray]:
+    """The distinct (line, position) keys (line x span + position) of the wall cells at
+    positions ``u`` along and ``v`` across a direction (``v`` at least LINE_BAND_CELLS), in
+    order: each cell is on the lines within the band across it. Returns (key, line, position)."""
+    vv = np.concatenate([v + k for k in range(-LINE_BAND_CELLS, LINE_BAND_CELLS + 1)])
+    uu = np.tile(u, 2 * LINE_BAND_CELLS + 1)
+    # A mark per key, cheaper than np.unique.
+    flat = vv * span + uu
+    seen = np.zeros(int(flat.max()) + 1, dtype=bool)
+    seen[flat] = True
+    key = np.flatnonzero(seen)
+    line, pos = np.divmod(key, span)
+    return key, line, pos
+
+
+def _gap_candidates(key: IntArray, line: IntArray, pos: IntArray, span: int, side: int, share: float,
+                    gmin: float, gmax: float) -> tuple[IntArray, BoolArray]:
+    """The gaps ``gmin`` to ``gmax`` cells wide between the sorted wall ``key`` cells of a line
+    (gap i between key i and i + 1), and whether the line is solid (``share`` of ``side``
+    cells) just before and just after each."""
+    gap = np.diff(pos) - 1
+    cand = np.flatnonzero((line[1:] == line[:-1]) & (gap >= gmin) & (gap <= gmax))
+    lo_before = np.maximum(key[cand] - side + 1, line[cand] * span)
+    before = np.searchsorted(key, key[cand], side="right") - np.searchsorted(key, lo_before, side="left")
+    hi_after = np.minimum(key[cand + 1] + side - 1, line[cand + 1] * span + span - 1)
+    after = np.searchsorted(key, hi_after, side="right") - np.searchsorted(key, key[cand + 1], side="left")
+    return cand, (before >= share) & (after >= share)
+
+
+def _not_specks(wall: BoolArray, min_cells: float) -> BoolArray:
+    """The cells of ``wall`` in 8-connected pieces whose bounding box reaches at least
+    ``min_cells`` along its longer side."""
+    lab, n = ndi.label(wall, structure=np.ones((3, 3), dtype=bool))
+    if n == 0:
+        return np.zeros_like(wall)
+    big = np.zeros(n + 1, dtype=bool)
+    for k, sl in enumerate(ndi.find_objects(lab), start=1):
+        if sl is not None:
+            big[k] = max(sl[0].stop - sl[0].start, sl[1].stop - sl[1].start) >= min_cells
+    return big[lab]
+
+
+def _in_front(key: IntArray, line: IntArray, pos: IntArray, cand: IntArray, span: int, side: int,
+              share: float, gmin: float, fmax: float, max_len: float) -> npt.NDArray[np.bool_]:
+    """Per candidate gap (between wall cells ``cand`` and ``cand + 1`` of the sorted ``key`` =
+    line x span + pos): is it in a front, a run of the line whose gaps are at most ``fmax``
+    cells, with solid wall (``share`` of ``side`` cells) ending at or before the gap's first
+    end and solid wall starting at or after its second, at most ``max_len`` cells apart, and
+    at least one more gap (``gmin`` cells or wider) between them?"""
+    n = key.size
+    idx = np.arange(n)
+    # Solid wall ending at cell j (looking back from it) / starting at cell j (looking on).
+    back = np.searchsorted(key, key, side="right") - np.searchsorted(
+        key, np.maximum(key - side + 1, line * span), side="left")
+    on = np.searchsorted(key, np.minimum(key + side - 1, line * span + span - 1), side="right") - idx
+    # Runs: a new one starts where the line changes or a gap is wider than a front's.
+    brk = np.ones(n, dtype=bool)
+    brk[1:] = (line[1:] != line[:-1]) | (np.diff(pos) - 1 > fmax)
+    run = np.cumsum(brk)
+    last_back = np.maximum.accumulate(np.where(back >= share, idx, -1))
+    next_on = np.minimum.accumulate(np.where(on >= share, idx, n)[::-1])[::-1]
+    a, b = last_back[cand], next_on[cand + 1]
+    ok = (a >= 0) & (b < n)
+    a, b = np.where(ok, a, 0), np.where(ok, b, 0)
+    # A front is broken by pieces: between its solid ends it has more than this one gap (a
+    # single wide gap between two walls is an opening, an arch, a corridor's branch).
+    gaps_before = np.concatenate([[0], np.cumsum(np.diff(pos) - 1 >= gmin)])  # gaps before key j
+    return ok & (run[a] == run[cand]) & (run[b] == run[cand + 1]) & (run[cand] == run[cand + 1]) & \
+        (pos[b] - pos[a] <= max_len) & \
+        (gaps_before[b] - gaps_before[a] >= 2)
 
 
 def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: AnalysisParams,
@@ -388,13 +526,16 @@ def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: An
     reach = math.ceil(2 * params.door_max_depth_m / res) + 2
     both = np.where(wall, WALL_BIT, 0).astype(np.uint8) | np.where(floor, FLOOR_BIT, 0).astype(np.uint8)
     out: list[WallGap] = []
-    for lc in _line_candidates(wall, dirs, res, params, params.seg_wall_line_gap_max_m):
+    for lc in _line_candidates(wall, dirs, res, params, params.seg_wall_line_gap_max_m,
+                               params.seg_wall_gap_max_width_m):
         floor_at = _LineSampler(floor, lc.cos_t, lc.sin_t)
         wall_at = _LineSampler(wall, lc.cos_t, lc.sin_t)
         both_at = _LineSampler(both, lc.cos_t, lc.sin_t)
         for b0 in range(0, lc.cand.size, CANDIDATE_BLOCK):
+            front = None if lc.front is None else lc.front[b0:b0 + CANDIDATE_BLOCK]
             out += _gaps_kept(lc.cand[b0:b0 + CANDIDATE_BLOCK], lc.line, lc.pos, lc.umin, lc.vmin, floor_at,
-                              wall_at, both_at, _GapScales(past, depths, max_depth, thin, reach, side), res)
+                              wall_at, both_at, _GapScales(past, depths, max_depth, thin, reach, side), res,
+                              front)
     return out
 
 
@@ -412,9 +553,11 @@ class _GapScales:
 
 def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: int,
                floor_at: _LineSampler[np.bool_], wall_at: _LineSampler[np.bool_],
-               both_at: _LineSampler[np.uint8], k: _GapScales, res: float) -> list[WallGap]:
+               both_at: _LineSampler[np.uint8], k: _GapScales, res: float,
+               front: BoolArray | None = None) -> list[WallGap]:
     """The candidate gaps (between ``pos[i]`` and ``pos[i + 1]`` on ``line[i]``, i in ``cand``)
-    that are doorways between two spaces (see the module doc), all candidates at once."""
+    that are doorways between two spaces (see the module doc), all candidates at once;
+    ``front``: which candidates are gaps of a front."""
     v_line = (line[cand] + vmin).astype(np.float64)
     ua, ub = (pos[cand] + umin).astype(np.float64), (pos[cand + 1] + umin).astype(np.float64)  # the last / next wall cell
     inner = (ub - ua - 1).astype(np.int64)
@@ -449,7 +592,7 @@ def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: i
     for i in np.flatnonzero(keep).tolist():
         r2, c2 = floor_at.rc(np.array([ua[i], ub[i]]), np.full(2, v_line[i]))
         out.append(WallGap((float(r2[0]), float(c2[0])), (float(r2[1]), float(c2[1])),
-                           float((ub[i] - ua[i] - 1) * res)))
+                           float((ub[i] - ua[i] - 1) * res), front is not None and bool(front[i])))
     return out
 
 

@@ -573,6 +573,12 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
 
     if ref.kind == Kind.DOOR and count == 1 and _plain(ref):
         _one_door_or_ask(pool, [space] if space is not None else here_group, analysis, pose)
+    if ref.kind == Kind.OBSTACLE and count == 1 and _plain(ref) and space is None and here_group:
+        # "the obstacle" said in a room with one obstacle is that one (the one thing of that kind both
+        # can see), even when another room's obstacle through a door is nearer
+        own = [e for e in pool if any(_in_space(e, s, analysis) for s in here_group)]
+        if len(own) == 1:
+            pool = own
 
     if ref.ordinal is not None and ref.kind in (Kind.DOOR, Kind.NARROW_PASSAGE) and here is not None \
             and space is None and any(local_first(e) == 0 for e in elements_of_kind(analysis, ref.kind)):
@@ -637,13 +643,16 @@ def _at_the_end(e: Element, hall: Room, pose: Pose) -> bool:
 def _rooms_by_size(pool: list[Element], analysis: MapAnalysis, pose: Pose, *, biggest: bool) -> list[Element]:
     """Rooms from biggest (or smallest) on, a room parted by a gap narrower than any door counted
     whole (``gap_joined``: a lab split by two benches with a 0.7 m gap between them is one lab, as
-    big as both parts). Each room once, by the part of it nearest the robot (the part one enters)."""
+    big as both parts). Each room once, by the part of it nearest the robot (the part one enters).
+    Parts that are mostly hallway (a corridor's end past a cart that narrows it) are no room."""
     area: dict[str, float] = {}
     part: dict[str, Element] = {}
     for e in pool:
         if not isinstance(e, Room):
             continue
-        group = [r for r in gap_joined(analysis, e) if r.kind == ElementKind.ROOM]
+        group = gap_joined(analysis, e)
+        if max(group, key=lambda r: r.area_m2).kind == ElementKind.HALLWAY:
+            continue
         key = min(r.id for r in group)
         area[key] = sum(floor_area_m2(r, analysis) for r in group)
         if key not in part or distance_to(e, pose.xy) < distance_to(part[key], pose.xy):
