@@ -204,6 +204,18 @@ def test_edt_scaled_matches_distance_transform_edt(m: npt.NDArray[np.bool_], ste
     assert got.dtype == np.float64 and np.array_equal(got, expected)
 
 
+@settings(max_examples=200, deadline=None)
+@given(masks(), st.tuples(st.integers(0, 5), st.integers(0, 5), st.integers(0, 5), st.integers(0, 5)),
+       st.sampled_from([0.05, 0.1, 0.3, 1.0]))
+def test_edt_scaled_of_a_mask_with_margins_matches_distance_transform_edt(
+        m: npt.NDArray[np.bool_], margins: tuple[int, int, int, int], step: float) -> None:
+    """A mask with empty rows and columns around it (worked on in its bounding box)."""
+    top, bottom, left, right = margins
+    padded = np.pad(m, ((top, bottom), (left, right)))
+    got = edt_scaled(padded, step)
+    assert got.dtype == np.float64 and np.array_equal(got, ndi.distance_transform_edt(padded, sampling=step))
+
+
 @settings(max_examples=150, deadline=None)
 @given(masks())
 def test_fill_holes_matches_binary_fill_holes(m: npt.NDArray[np.bool_]) -> None:

@@ -405,8 +405,23 @@ def edt_scaled(mask: BoolArray, step: float) -> npt.NDArray[np.float64]:
     for bit. scipy's feature transform picks the nearest outside cell of each cell (with the
     same sampling, so the same one); its distance, ``sqrt((dr * step)² + (dc * step)²)`` in
     float64, depends only on (|dr|, |dc|), so it is read from a table of those offsets instead
-    of being worked out on whole-grid float arrays."""
+    of being worked out on whole-grid float arrays.
+
+    The transform runs on the mask's bounding box and a ring of one cell around it (0 outside):
+    every cell of the mask has its nearest outside cell in there (the ring lies between it and
+    any farther one), and scipy's passes along each row and column meet the cells beyond the
+    ring only as candidates strictly farther than the ring's, which neither displace a nearer
+    one nor change which of two equally near ones is kept."""
     m = np.asarray(mask)
+    rows, cols = np.flatnonzero(m.any(axis=1)), np.flatnonzero(m.any(axis=0))
+    if rows.size == 0:
+        return np.zeros(m.shape)
+    r0, r1 = max(int(rows[0]) - 1, 0), min(int(rows[-1]) + 2, m.shape[0])
+    c0, c1 = max(int(cols[0]) - 1, 0), min(int(cols[-1]) + 2, m.shape[1])
+    if (r1 - r0) * (c1 - c0) < m.size:
+        out = np.zeros(m.shape)
+        out[r0:r1, c0:c1] = edt_scaled(m[r0:r1, c0:c1], step)
+        return out
     h, w = m.shape
     ft = ndi.distance_transform_edt(m, sampling=(step, step), return_distances=False, return_indices=True)
     dr = ft[0]
