@@ -79,6 +79,8 @@ def test_without_discourse_markers_leaves_other_openings_alone() -> None:
     "rotate clockwise to the left, like, fifty",
     "turn counterclockwise to the right 30 degrees",
     "turn left clockwise",
+    "right, left ninety degrees",
+    "left right 30 degrees",
 ])
 def test_both_sides_in_one_turn_ask(prompt: str) -> None:
     assert _asks(prompt)

@@ -11,6 +11,7 @@ from langnav.language.offline import lexicon as lx
 from langnav.language.offline.numbers import Quantity, QuantityKind, find_quantities
 from langnav.language.offline.patterns import LITTLE_RE, MOVE_DIR_RE
 from langnav.language.offline.reading import (
+    ASK_BOTH_SIDES,
     ASK_DISTANCE,
     ASK_HOW_MANY,
     ASK_UNIT,
@@ -52,6 +53,8 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
             return [rotation_from(c, prev.direction, quantities, [])]
     if verb == Verb.NONE and not lengths and _TURN_ONLY_SIDE_RE.search(text):
         return [rotation(c, None)]  # "cw 90", "then counterclockwise 45": only a turn goes clockwise
+    if len({d for d in directions if d in (Direction.LEFT, Direction.RIGHT)}) > 1 and not lengths:
+        c.asks.append(ASK_BOTH_SIDES)  # "right, left ninety degrees": both sides for one turn, none corrected
     if angles and not lengths:
         # "move back forty five degrees to your left": an angle goes with the side said
         direction = next((d for d in directions if d in (Direction.LEFT, Direction.RIGHT)), direction)
