@@ -9,6 +9,9 @@ from __future__ import annotations
 import pytest
 from hypothesis import example, given
 from hypothesis import strategies as st
+from offline_plans import Plan
+from offline_plans import asks as _asks
+from offline_plans import plan as _plan
 
 from langnav.language.intent import Amount, Movement, Query
 from langnav.language.offline import speech
@@ -16,19 +19,6 @@ from langnav.language.offline.idioms import plain_idioms
 from langnav.language.offline.translator import translate_offline
 
 FT = 0.3048
-Plan = list[tuple[str, str | None, float | None, float | None]]
-
-
-def _plan(prompt: str) -> Plan:
-    intent = translate_offline(prompt)
-    return [(s.movement.value, s.direction.value if s.direction else None,
-             None if s.distance_m is None else round(s.distance_m, 4),
-             None if s.angle_deg is None else round(s.angle_deg, 4)) for s in intent.steps]
-
-
-def _asks(prompt: str) -> bool:
-    intent = translate_offline(prompt)
-    return intent.steps == [] and bool(intent.clarification)
 
 
 # ------------------------------------------------------------------ discourse markers
