@@ -28,7 +28,7 @@ from langnav.analysis.params import DEFAULT_PARAMS
 from langnav.analysis.pipeline import analyze
 from langnav.grounding import GroundingError, ground
 from langnav.grounding.geometry import Pose
-from langnav.grounding.selection import label_of, select
+from langnav.grounding.selection import hallway_parts, label_of, select
 from langnav.language.intent import (
     Detail,
     Element,
@@ -593,3 +593,47 @@ def test_a_corridors_end_past_a_narrow_gap_is_no_room(two_rooms: MapAnalysis) ->
         dataclasses.replace(d1, id="door_3", center=(8.0, 6.9), connects=("room_b", "room_c"))))
     pose = Pose.from_deg(3.0, 3.0, 90.0)
     assert select(ElementRef(kind="room", superlative="smallest"), a, pose).id == "room_c"
+
+
+def build_cart_corridor() -> MapAnalysis:
+    """A 1.8 m corridor (x 1..23, y 5..6.8) with three rooms on each side and one room each side of
+    its east end, and a cart (x 17..17.8) standing against its south wall: a 0.75 m gap beside it."""
+    b = MapBuilder(24.0, 12.0)
+    b.room(1.0, 1.0, 23.0, 11.0)
+    b.wall(1.0, 5.0, 23.0, 5.0)
+    b.wall(1.0, 6.8, 23.0, 6.8)
+    for x in (6.0, 11.0, 16.0):
+        b.wall(x, 1.0, x, 5.0)
+        b.wall(x, 6.8, x, 11.0)
+    for x in (3.5, 8.5, 13.5, 19.5):
+        b.door_h(x, 5.0, 0.9)
+        b.door_h(x, 6.8, 0.9)
+    b.box(17.0, 5.05, 17.8, 6.0)
+    return analyze(b.build("cart_corridor"), DEFAULT_PARAMS)
+
+
+@pytest.fixture(scope="module")
+def cart_corridor() -> MapAnalysis:
+    return build_cart_corridor()
+
+
+def test_the_drawn_cart_cuts_the_corridor_in_two(cart_corridor: MapAnalysis) -> None:
+    # what the tests below are about: the analysis parts the corridor at the cart's gap
+    west, east = room_at(cart_corridor, 10.0, 5.9), room_at(cart_corridor, 20.0, 5.9)
+    assert west.kind == ElementKind.HALLWAY and east is not west
+    assert sorted(r.id for r in hallway_parts(cart_corridor, west)) == sorted((west.id, east.id))
+
+
+def test_halfway_down_the_hall_counts_the_corridor_past_a_cart(cart_corridor: MapAnalysis) -> None:
+    # from x 2 to the end wall at x 23, half the corridor is at x 12.5 (the cut at the cart gave 10)
+    r = plan("go halfway down the hall", cart_corridor, (2.0, 5.9, 0.0))
+    x, y = last_goal(r)
+    assert 12.0 <= x <= 13.0 and 5.0 < y < 6.8
+    assert all(px <= 13.0 for px, _ in goals(r))
+
+
+@pytest.mark.parametrize("prompt", ["go to the end of the corridor", "follow the corridor"])
+def test_the_end_of_the_corridor_is_past_the_cart(cart_corridor: MapAnalysis, prompt: str) -> None:
+    # the end wall is at x 23 (the cart's gap at x 17..17.8 is no end)
+    x, y = last_goal(plan(prompt, cart_corridor, (2.0, 5.9, 0.0)))
+    assert 21.5 <= x < 23.0 and 5.0 < y < 6.8

@@ -332,3 +332,33 @@ def test_words_from_a_fourth_set_of_speakers(prompt: str, expected: Plan) -> Non
 
 def test_a_number_word_left_unread_is_asked_about() -> None:
     assert _asks("rover, advance one two feet, over")
+
+
+@pytest.mark.parametrize(("prompt", "ordinal", "label", "side"), [
+    ("go to door no. 2 on the right", 2, None, "right"),
+    ("Go to the door No. 2 on your left.", 2, None, "left"),
+    ("go through room No.3", None, 3, None),
+    ("go to door nr. 4", None, 4, None),
+])
+def test_no_dot_before_a_numeral_after_a_noun_is_number(prompt: str, ordinal: int | None, label: int | None,
+                                                        side: str | None) -> None:
+    # "no." abbreviates "number": its dot ends no sentence and "2 on the right" is no 2-degree turn
+    intent = translate_offline(prompt)
+    assert len(intent.steps) == 1, intent
+    (step,) = intent.steps
+    assert step.movement == Movement.NAVIGATE and step.target is not None
+    assert step.target.kind.value == ("room" if "room" in prompt else "door")
+    assert (step.target.ordinal, step.target.label) == (ordinal, label)
+    assert (step.target.side.value if step.target.side is not None else None) == side
+
+
+@pytest.mark.parametrize(("text", "read"), [
+    ("door no. 2 on the right", "door number 2 on the right"),
+    ("room No.3", "room number 3"),
+    # after an amount "no" corrects it, and after a full stop or a comma it is the word "no"
+    ("turn 80 degrees no. 85", "turn 80 degrees no. 85"),
+    ("go forward. no. 3 metres", "go forward. no. 3 metres"),
+    ("no. 5", "no. 5"),
+])
+def test_the_number_abbreviation_is_read_only_after_a_noun(text: str, read: str) -> None:
+    assert canonical_numbers(text) == read

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Final, Literal
 
 import numpy as np
@@ -51,6 +51,7 @@ from langnav.grounding.selection import (
     came_through_doors,
     describe_ref,
     doors_of,
+    hallway_parts,
     label_of,
     select,
     select_pair,
@@ -937,6 +938,11 @@ def _room_cells_mask(ctx: GroundingContext, room: Room) -> BoolArray:
 
 def _in_label(ctx: GroundingContext, label: int) -> compose.Where:
     """The cells of the room or hallway whose label is ``label``, as a predicate on world x, y."""
+    return _in_labels(ctx, (label,))
+
+
+def _in_labels(ctx: GroundingContext, parts: tuple[int, ...]) -> compose.Where:
+    """The cells of the spaces whose labels are ``parts``, as a predicate on world x, y."""
     labels = ctx.analysis.labels
     grid = ctx.analysis.grid
 
@@ -944,7 +950,7 @@ def _in_label(ctx: GroundingContext, label: int) -> compose.Where:
         rr, cc = grid.world_to_index(xs, ys)
         ok = grid.in_bounds(rr, cc)
         out = np.zeros(xs.shape, dtype=bool)
-        out[ok] = labels[rr[ok], cc[ok]] == label
+        out[ok] = np.isin(labels[rr[ok], cc[ok]], parts)
         return out
     return inside
 
@@ -974,11 +980,12 @@ def _room_goal(step: Step, ref: ElementRef, room: Room, detail: Detail, ctx: Gro
             and len(room.cells_xy) >= 3:
         # (a space the user calls a room has an opposite side, even when it is long enough for a hall)
         # "the end of the hall": the end ahead along the way the hallway leads, before its end wall
-        way = _down_the_run(_hallway_way(room, ctx, pose, desc), room, pose)
+        hall, parts = _whole_hallway(ctx, room)
+        way = _down_the_run(_hallway_way(hall, parts, ctx, pose, desc), hall, pose)
         s_end = way.length_m - ALONG_END_MARGIN_M
         if s_end < ALONG_MIN_RUN_M:
             raise GroundingError(f"I am already at the end of {desc}; turn around to go to its other end.")
-        goal = _on_the_way(room, way, s_end, s_end, ctx, comp)
+        goal = _on_the_way(hall, parts, way, s_end, s_end, ctx, comp)
         if goal is None:
             raise GroundingError(f"I cannot reach the end of {desc}: no free space I can get to there.")
         return _nav_step(step, pose, index, [goal], f"to the end of {desc}", (room.id,))
@@ -1220,8 +1227,10 @@ def _follow_hallway(step: Step, desc: str, hall: Room, ctx: GroundingContext, po
                     index: int) -> GroundedStep:
     """'Follow the corridor', 'halfway down the hallway': along the way the hallway leads from here in
     the direction the robot faces (round the bend of an L-shaped corridor), to its far end or that
-    part of the way; poses on the hallway's middle line, never past the part asked for."""
-    way = _hallway_way(hall, ctx, pose, desc)
+    part of the way; poses on the hallway's middle line, never past the part asked for. The hallway is
+    the one a person sees, its parts past a narrow gap included (``_whole_hallway``)."""
+    hall, parts = _whole_hallway(ctx, hall)
+    way = _hallway_way(hall, parts, ctx, pose, desc)
     if step.fraction is not None:
         # "halfway down the corridor": of the straight run ahead, from here to where it turns
         way = _down_the_run(way, hall, pose)
@@ -1235,7 +1244,7 @@ def _follow_hallway(step: Step, desc: str, hall: Room, ctx: GroundingContext, po
     k = max(2, math.ceil(s_goal / ALONG_SPACING_M))
     poses: list[Point] = []
     for i in range(1, k + 1):
-        p = _on_the_way(hall, way, s_goal * i / k, s_goal, ctx, comp)
+        p = _on_the_way(hall, parts, way, s_goal * i / k, s_goal, ctx, comp)
         if p is not None and (not poses or math.dist(p, poses[-1]) > 0.3):
             poses.append(p)
     if not poses:
@@ -1243,14 +1252,28 @@ def _follow_hallway(step: Step, desc: str, hall: Room, ctx: GroundingContext, po
     return _nav_step(step, pose, index, poses, f"follow {desc}", (hall.id,))
 
 
-def _hallway_way(hall: Room, ctx: GroundingContext, pose: Pose, desc: str) -> compose.Way:
-    """The way down the hallway the robot faces (facing across it: the longer way)."""
+def _whole_hallway(ctx: GroundingContext, hall: Room) -> tuple[Room, tuple[int, ...]]:
+    """The hallway as a person sees it (``hallway_parts``: a corridor a cart narrows to a gap goes on
+    past the cart) and the labels of its parts. The hallway is ``hall`` with the free cells of every
+    part, from which its axis, its far end and its middle line are read; its width is its own."""
+    parts = hallway_parts(ctx.analysis, hall)
+    if len(parts) == 1:
+        return hall, (hall.label,)
+    cells = np.concatenate([np.asarray(r.cells_xy, dtype=float).reshape(-1, 2) for r in parts])
+    whole = replace(hall, cells_xy=cells, area_m2=sum(r.area_m2 for r in parts),
+                    free_area_m2=sum(r.free_area_m2 for r in parts))
+    return whole, tuple(r.label for r in parts)
+
+
+def _hallway_way(hall: Room, parts: tuple[int, ...], ctx: GroundingContext, pose: Pose, desc: str) -> compose.Way:
+    """The way down the hallway (of the labels ``parts``) the robot faces (facing across it: the
+    longer way)."""
     _, axis = hall_axis(hall, pose.xy)
     hx, hy = pose.heading()
     dot = axis[0] * hx + axis[1] * hy
     ways = [(axis[0], axis[1]), (-axis[0], -axis[1])] if abs(dot) < FACING_ALONG_MIN else \
         [(axis[0], axis[1]) if dot > 0 else (-axis[0], -axis[1])]
-    found = [w for w in (_way_down(hall, d, ctx, pose) for d in ways) if w is not None]
+    found = [w for w in (_way_down(hall, parts, d, ctx, pose) for d in ways) if w is not None]
     if not found:
         raise GroundingError(f"I cannot follow {desc}: none of it is reachable from here.")
     return max(found, key=lambda w: w.length_m)
@@ -1270,12 +1293,13 @@ def _down_the_run(way: compose.Way, hall: Room, pose: Pose) -> compose.Way:
     return way.straight_leg(heading, hall.width_m)
 
 
-def _on_the_way(hall: Room, way: compose.Way, s_m: float, s_max: float, ctx: GroundingContext,
-                comp: int) -> Point | None:
-    """A goal in the hallway ``s_m`` along the way, on its middle line, never past ``s_max``."""
+def _on_the_way(hall: Room, parts: tuple[int, ...], way: compose.Way, s_m: float, s_max: float,
+                ctx: GroundingContext, comp: int) -> Point | None:
+    """A goal in the hallway (of the labels ``parts``) ``s_m`` along the way, on its middle line, never
+    past ``s_max``."""
     target = _on_middle_line(hall, way.point_at(s_m), way.direction_at(s_m))
     lo, hi = s_m - FOLLOW_BAND_M, min(s_m + FOLLOW_BAND_M, s_max + compose.ALONG_SLACK_M)
-    in_hall = _in_label(ctx, hall.label)
+    in_hall = _in_labels(ctx, parts)
 
     def where(xs: FloatArray, ys: FloatArray) -> BoolArray:
         along = way.along(xs, ys)  # never past the part of the way asked for
@@ -1284,16 +1308,17 @@ def _on_the_way(hall: Room, way: compose.Way, s_m: float, s_max: float, ctx: Gro
     return ctx.space.safe_point_near(target, comp, FOLLOW_SNAP_M, prefer=target, where=where)
 
 
-def _way_down(hall: Room, direction: Point, ctx: GroundingContext, pose: Pose) -> compose.Way | None:
+def _way_down(hall: Room, parts: tuple[int, ...], direction: Point, ctx: GroundingContext,
+              pose: Pose) -> compose.Way | None:
     """The way down the hallway setting off in ``direction``: the walk to the hallway's farthest cell
     with the way back shut, ending on the hallway's middle line."""
     labels = ctx.analysis.labels
     start = ctx.space.start_cell(*pose.xy)
     # down the hallway is along it: a room with two doors onto it is no short cut (from outside the
     # hallway the walk may start anywhere)
-    inside = start is not None and labels.shape == ctx.space.components.shape and labels[start] == hall.label
+    inside = start is not None and labels.shape == ctx.space.components.shape and int(labels[start]) in parts
     walk = walk_from(ctx.space, pose.xy, onward=direction, onward_m=hall.width_m + FOLLOW_CLOSE_MARGIN_M,
-                     within=(labels, hall.label) if inside else None)
+                     within=(labels, parts) if inside else None)
     if walk is None:
         return None
     cells = np.asarray(hall.cells_xy, dtype=float).reshape(-1, 2)

@@ -261,6 +261,20 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
     return group
 
 
+def mostly_hallway(group: Sequence[Room]) -> bool:
+    """Whether spaces a narrow gap joins (``gap_joined``) are one hallway to a person: a group is of the
+    kind of its biggest part. A corridor's end cut off past a cart or a bin that narrows it is that
+    corridor's part; a stage joined by a gap to the strip behind its flats stays a room."""
+    return max(group, key=lambda r: r.area_m2).kind == ElementKind.HALLWAY
+
+
+def hallway_parts(analysis: MapAnalysis, hall: Room) -> list[Room]:
+    """The hallway as a person sees it: with the spaces narrow gaps join to it when the group is mostly
+    hallway (``mostly_hallway``), else the hallway alone. Its first part is ``hall``."""
+    group = gap_joined(analysis, hall)
+    return group if mostly_hallway(group) else [hall]
+
+
 def _space_for_ref(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Room | None:
     """The space the words restrict to: 'of the biggest room', 'of the hallway', 'in this room', or None."""
     if ref.near is not None and ref.near.kind in (Kind.ROOM, Kind.HALLWAY) and ref.kind not in (Kind.ROOM, Kind.HALLWAY):
@@ -651,7 +665,7 @@ def _rooms_by_size(pool: list[Element], analysis: MapAnalysis, pose: Pose, *, bi
         if not isinstance(e, Room):
             continue
         group = gap_joined(analysis, e)
-        if max(group, key=lambda r: r.area_m2).kind == ElementKind.HALLWAY:
+        if mostly_hallway(group):
             continue
         key = min(r.id for r in group)
         area[key] = sum(floor_area_m2(r, analysis) for r in group)
@@ -1006,6 +1020,7 @@ def _foot_on_line(p: Point, ln: WallLine) -> Point:
     return (ln.start[0] + d[0] * t, ln.start[1] + d[1] * t)
 
 
-__all__ = ["AHEAD_HALF_ANGLE_DEG", "LABEL_NOUN", "WallLine", "describe_ref", "distance_to", "label_of", "matches_side",
+__all__ = ["AHEAD_HALF_ANGLE_DEG", "LABEL_NOUN", "WallLine", "describe_ref", "distance_to", "hallway_parts", "label_of",
+           "matches_side",
            "select", "select_by_label", "select_many", "select_pair", "select_wall", "side_point", "space_of",
            "wall_lines"]

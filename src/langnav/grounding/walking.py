@@ -107,18 +107,19 @@ class Walk:
         return out
 
 
-_Key = tuple[tuple[int, int], tuple[float, float, float] | None, int | None]
+_Key = tuple[tuple[int, int], tuple[float, float, float] | None, tuple[int, ...] | None]
 _CACHE: weakref.WeakKeyDictionary[FreeSpace, dict[_Key, Walk]] = weakref.WeakKeyDictionary()
 
 
 def walk_from(space: FreeSpace, xy: Point, *, onward: Point | None = None, onward_m: float = 0.0,
-              within: tuple[npt.NDArray[np.int32], int] | None = None) -> Walk | None:
+              within: tuple[npt.NDArray[np.int32], tuple[int, ...]] | None = None) -> Walk | None:
     """The walks from the robot at ``xy``; None when it stands on no passable cell (nothing is
     reachable). With ``onward`` (a unit direction), the walks that set off that way: the passable
     cells within ``onward_m`` of the robot behind it (against ``onward``) are closed, so that the
     way back is shut (``onward_m`` a hallway's width: "down the corridor" is the way it faces).
-    With ``within`` (the analysis' label array and one label), the walks that stay in that space
-    ("down the corridor" walks the corridor, not a short cut through a room with two doors onto it).
+    With ``within`` (the analysis' label array and the labels of one space's parts), the walks that stay
+    in that space ("down the corridor" walks the corridor, not a short cut through a room with two
+    doors onto it; the corridor's part past a cart that narrows it is the corridor).
     Cached per free space, start cell, closure and space."""
     start = space.start_cell(*xy)
     if start is None:
@@ -137,7 +138,7 @@ def walk_from(space: FreeSpace, xy: Point, *, onward: Point | None = None, onwar
 
 
 def _walk(space: FreeSpace, start: tuple[int, int], xy: Point, onward: Point | None, onward_m: float,
-          within: tuple[npt.NDArray[np.int32], int] | None = None) -> Walk:
+          within: tuple[npt.NDArray[np.int32], tuple[int, ...]] | None = None) -> Walk:
     k = lattice_stride(space.grid.resolution_m, space.robot_radius_m)
     comp = int(space.components[start])
     rs, cs = space.component_box(comp)
@@ -153,8 +154,8 @@ def _walk(space: FreeSpace, start: tuple[int, int], xy: Point, onward: Point | N
         behind = (dx * onward[0] + dy * onward[1] < -CLOSED_FROM_M) & (np.hypot(dx, dy) <= onward_m)
         lattice = lattice & ~behind
     if within is not None:
-        labels, label = within
-        lattice = lattice & (labels[row0:rs.stop:k, col0:cs.stop:k] == label)
+        labels, parts = within
+        lattice = lattice & np.isin(labels[row0:rs.stop:k, col0:cs.stop:k], parts)
     costs = np.where(lattice, 1.0, np.inf)
     mcp = MCP_Geometric(costs, fully_connected=True)
     cum, _ = mcp.find_costs([s])

@@ -257,6 +257,20 @@ DIGIT_RUN: Final = re.compile(
     r"(?!\s+(?:point|hundred|thousand|and\s+(?:a\s+)?(?:half|quarter))\b)(?![\w-])", re.IGNORECASE)
 
 
+#: "door no. 2", "room No.3", "gate nr. 4": "no." / "nr." / "num." before a numeral abbreviates "number"
+#: (its dot ends no sentence, and "2 on the right" after it is no turn). Only right after a word
+#: naming a thing: after an amount ("80 degrees no. 85") "no" corrects it, and after a comma or a
+#: full stop it is the word "no".
+_NUMBER_ABBREVIATION: Final = re.compile(r"\b(?P<noun>[a-z]+)\s+(?:no|nr|num)\.\s*(?=\d)", re.IGNORECASE)
+
+
+def _abbreviation_read(m: re.Match[str]) -> str:
+    noun = m.group("noun").lower()
+    if noun in LENGTH_UNITS_M or noun in ANGLE_UNITS_DEG or noun in ONES or noun in TENS:
+        return m.group(0)
+    return f"{m.group('noun')} number "
+
+
 #: "five-ish feet", "90ish degrees": about that number.
 _ISH: Final = re.compile(rf"\b(?P<num>\d+(?:\.\d+)?|{NUMBER_WORDS})[\s-]?ish\b", re.IGNORECASE)
 
@@ -300,7 +314,8 @@ def canonical_numbers(text: str) -> str:
     """Digits in one form before a prompt is split and read: scientific notation written out
     ("1e3" -> "1000", "1e309" -> a huge number, "1e-400" -> "0"), thousands separators
     dropped ("1,000,000" -> "1000000") and numbers said digit by digit written as the number
-    ("one three five" -> "135")."""
+    ("one three five" -> "135"); "no." before a numeral after a noun is "number" ("door no. 2")."""
+    text = _NUMBER_ABBREVIATION.sub(_abbreviation_read, text)
     text = _THOUSANDS.sub(lambda m: m.group(0).replace(",", ""), text)
     text = _ISH.sub(r"about \g<num>", text)
     text = _SCIENTIFIC.sub(_write_out, text)
