@@ -4,6 +4,7 @@ wall standing free between two doorways still parts two rooms."""
 
 from __future__ import annotations
 
+import pytest
 from analysis_maps import space_at
 
 from langnav.analysis.elements import ElementKind
@@ -54,6 +55,31 @@ def test_the_engines_and_the_table_are_obstacles_and_the_bay_middle_is_its_own()
     assert len(engines) == 2
     assert abs(engines[0].centroid[0] - 6.55) < 0.1 and abs(engines[1].centroid[0] - 12.75) < 0.1
     assert all(o.room == bay.id for o in engines)
+
+
+def l_shaped_lab(bench_y: float) -> OccupancyGrid:
+    """An L-shaped lab (4.8 m x 7.8 m, and a 2.8 m x 6 m wing to the north) entered from a corridor
+    along its west side, with a 2 m x 0.8 m bench standing free across its wide part (1.3 m from
+    its west wall, 1.5 m from its east wall), its south edge at ``bench_y``."""
+    b = MapBuilder(12.0, 18.0)
+    b.room(3.0, 1.0, 7.8, 8.8)
+    b.free(3.0, 8.8, 5.8, 14.8)
+    b.wall(5.8, 8.8, 5.8, 14.8).wall(5.8, 8.8, 7.8, 8.8).wall(3.0, 14.8, 5.8, 14.8)
+    b.wall(3.0 - 0.075, 8.8, 3.0 - 0.075, 14.8)
+    b.room(0.8, 1.0, 2.8, 16.0)
+    b.door_v(2.9, 5.3, 0.9)
+    b.box(4.3, bench_y, 6.3, bench_y + 0.8)
+    return b.build("lab")
+
+
+@pytest.mark.parametrize("bench_y", [3.8, 5.0, 6.0])
+def test_a_lab_bench_across_a_room_leaves_it_one_room(bench_y: float) -> None:
+    grid = l_shaped_lab(bench_y)
+    seg = segment_spaces(grid)
+    lab = space_at(seg, grid, 4.0, 2.0)
+    for x, y in ((3.6, bench_y + 0.4), (7.2, bench_y + 0.4), (6.5, 8.0), (4.4, 14.0)):
+        assert space_at(seg, grid, x, y) is lab
+    assert len(seg.rooms) == 2  # the lab and the corridor
 
 
 def test_a_thin_wall_standing_free_between_two_doorways_still_parts_two_rooms() -> None:

@@ -105,10 +105,12 @@ def test_the_unexplored_part_of_the_room_is_looked_at_from_the_side_facing_the_r
     x, y = drawn_goal("go to the unexplored part of this room", 2.6, 4.4, 0.0)
     assert 5.0 - 0.95 <= x <= 5.0 - 0.15
     assert 5.2 + IN_FRONT_M <= y <= 7.4
-    # from the south-south-west: in front of its south side
-    x, y = drawn_goal("go to the unexplored part of this room", 4.2, 2.8, 90.0)
-    assert 5.0 + IN_FRONT_M <= x <= 7.0
-    assert 5.2 - 0.95 <= y <= 5.2 - 0.15
+    # from the south-south-west, and from straight below the corner (its west side edge-on): in
+    # front of its south side
+    for x0, y0 in ((4.2, 2.8), (4.9, 1.2)):
+        x, y = drawn_goal("go to the unexplored part of this room", x0, y0, 90.0)
+        assert 5.0 + IN_FRONT_M <= x <= 7.0
+        assert 5.2 - 0.95 <= y <= 5.2 - 0.15
 
 
 def test_the_side_of_the_block_is_the_one_the_robot_arrives_at(two_rooms: MapAnalysis) -> None:

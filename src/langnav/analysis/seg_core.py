@@ -69,12 +69,13 @@ WALL_LINE_PIECE_MAX_THICKNESS_M: Final = 0.3
 #: Wall cells within this many cells across a piece's own line are in line with it (scanned
 #: walls wobble a cell, and a rotated wall's staircase another half).
 WALL_LINE_BAND_CELLS: Final = 1.5
-#: A wall is at most this thick (m: a load-bearing wall, a double wall as a SLAM map draws it).
-#: A piece of non-floor standing free of the building's walls that is deeper than this where a
-#: gap meets it is a solid thing standing in a space (a vehicle, a table, a block of shelving, a
-#: counter), not a wall however big it is: no doorway is cut between it and a wall, since a
-#: person sees one space around it, not two rooms.
-FREE_BLOCK_MIN_THICKNESS_M: Final = 0.9
+#: A wall is at most this thick (m): twice the thickest interior wall
+#: (WALL_LINE_PIECE_MAX_THICKNESS_M), as a SLAM map whose loop closure is a few centimetres off
+#: draws one wall twice. A piece of non-floor standing free of the building's walls that is deeper
+#: than this where a gap meets it is a solid thing standing in a space (a vehicle, a lab bench, a
+#: table, a kitchen island, a block of shelving), not a wall however big it is: no doorway is cut
+#: between it and a wall, since a person sees one space around it, not two rooms.
+FREE_BLOCK_MIN_THICKNESS_M: Final = 2 * WALL_LINE_PIECE_MAX_THICKNESS_M
 #: 3x3 neighbourhood: 8-connectivity for components of cells.
 EIGHT: Final = np.ones((3, 3), dtype=bool)
 

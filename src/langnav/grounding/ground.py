@@ -947,14 +947,14 @@ def _face_towards(piece: FloatArray, near: Point, ctx: GroundingContext, pose: P
         proj = rel @ np.asarray(n)
         on = proj >= proj.max() - FRONTIER_STRAIGHT_TOL_M
         along = rel[on] @ np.asarray((-n[1], n[0]))
-        facing = n[0] * back[0] + n[1] * back[1]
-        if facing > 0 and float(along.max() - along.min()) >= FRONTIER_FACE_MIN_M:
-            faces.append((facing, on))
+        if float(along.max() - along.min()) >= FRONTIER_FACE_MIN_M:
+            faces.append((n[0] * back[0] + n[1] * back[1], on))
     if len(faces) < 2:
         return piece
     faces.sort(key=lambda fo: -fo[0])
-    # a corner: its two sides hold nearly all of the piece (a ragged edge does not)
-    if float(np.mean(faces[0][1] | faces[1][1])) < FRONTIER_CORNER_MIN_SHARE:
+    # a corner: its two sides nearest to facing the robot hold nearly all of the piece (a ragged
+    # edge does not); the robot sees the first of them
+    if faces[0][0] <= 0.0 or float(np.mean(faces[0][1] | faces[1][1])) < FRONTIER_CORNER_MIN_SHARE:
         return piece
     return piece[faces[0][1]]
 
