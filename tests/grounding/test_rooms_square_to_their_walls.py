@@ -127,3 +127,24 @@ def test_the_side_of_the_block_is_the_one_the_robot_arrives_at(two_rooms: MapAna
     # from room A the walk goes through door_2 (6.075, 5.0): it arrives from the west
     x, y = towards((3.0, 2.0, 0.0))
     assert 9.0 - 0.95 <= x <= 9.0 - 0.15 and 5.5 + IN_FRONT_M <= y <= 7.0
+
+
+def test_a_corner_filled_by_furniture_is_reached_from_its_own_room() -> None:
+    # two rooms parted by a wall at x = 5; in the west room a cabinet fills its north-east corner
+    # but for 0.2 m slits: no spot near the corner is free on its side, while the east room's floor
+    # lies just behind the wall
+    b = MapBuilder(11.0, 7.0)
+    b.room(1.0, 1.0, 10.0, 6.0)
+    b.wall(5.0, 1.0, 5.0, 6.0)
+    b.door_v(5.0, 2.0, 0.9)
+    b.box(3.6, 4.6, 4.8, 5.8)
+    a = analyze(b.build("cabinet"), DEFAULT_PARAMS)
+    pose = (3.2, 4.0, 45.0)  # the north-east corner is the nearest (2.7 m; the north-west 3.0 m)
+    room = a.room_at(3.2, 4.0)
+    assert room is not None
+    r = Planner(get_translator("offline")).plan("go to the nearest corner", a, pose)
+    assert r.ok, r.clarification
+    navs = [c for c in r.commands if isinstance(c, NavigateThroughPoses)]
+    x, y = navs[-1].poses[-1][0], navs[-1].poses[-1][1]
+    assert a.room_at(x, y) is room  # not behind the wall in the east room
+    assert math.dist((x, y), (4.925, 5.925)) <= 2.0

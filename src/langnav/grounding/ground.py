@@ -761,7 +761,14 @@ def _goal_at(e: Element, detail: Detail, ctx: GroundingContext, pose: Pose, comp
             if not ctx.space.is_goal_ok(*goal, component=comp):
                 goal = None
         if goal is None:
-            goal = ctx.space.safe_point_near(e.point, comp, CORNER_GOAL_MAX_M, prefer=e.approach)
+            # in the corner's own room: a free spot as near behind its wall, in the next room, is
+            # no corner of this one
+            own = [r.label for r in ctx.analysis.rooms if r.id == e.room]
+            goal = ctx.space.safe_point_near(e.point, comp, CORNER_GOAL_MAX_M, prefer=e.approach,
+                                             where=_in_labels(ctx, tuple(own)) if own else None)
+        if goal is None and ctx.space.is_goal_ok(*e.approach, component=comp):
+            # furniture fills the corner: the nearest spot of the room the robot can stand on
+            goal = e.approach
     elif isinstance(e, Obstacle):
         goal = _next_to_cells(e.cells_xy if len(e.cells_xy) else np.array([e.centroid]), ctx, pose, comp)
     elif isinstance(e, UnexploredArea):
