@@ -741,3 +741,14 @@ def test_aisles_ending_in_a_narrow_cross_aisle_lead_somewhere(resolution_m: floa
         assert p.center == pytest.approx((4.0, 1.2 + 1.2 * k + 0.4 + 0.4), abs=0.06)
         assert p.width_m == pytest.approx(0.8, abs=0.051)
         assert p.length_m == pytest.approx(4.0, abs=0.15)
+
+
+@pytest.mark.parametrize("degrees", [10.0, 23.0, 45.0])
+def test_pews_and_cross_aisles_read_the_same_rotated(degrees: float) -> None:
+    # Stair-stepped at any angle: no slot between pews 0.5 m apart, the eight 0.6 m aisles, and
+    # the four rack aisles that end in a narrow cross aisle.
+    assert passages_of(rotated(pews(0.5), degrees)) == ()
+    wide = passages_of(rotated(pews(0.6), degrees))
+    assert len(wide) == 8 and all(p.width_m == pytest.approx(0.6, abs=0.06) for p in wide)
+    racks = passages_of(rotated(cross_aisle(), degrees))
+    assert len(racks) == 4 and all(p.width_m == pytest.approx(0.8, abs=0.06) for p in racks)
