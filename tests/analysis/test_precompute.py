@@ -23,6 +23,7 @@ from langnav.analysis.precompute import (
     edt_scaled,
     fill_holes,
     label8_cells,
+    longest_contour,
     maximum3,
     median,
     nonzero2,
@@ -185,6 +186,33 @@ def test_approximate_polygon_matches_skimage(pts: npt.NDArray[np.float64], toler
     expected = measure.approximate_polygon(coords, tolerance)
     got = approximate_polygon(coords, tolerance)
     assert got.shape == expected.shape and np.array_equal(got, expected)
+
+
+@settings(max_examples=200, deadline=None)
+@given(SHAPES.flatmap(lambda s: arrays(np.bool_, s)), st.integers(0, 3))
+def test_longest_contour_matches_find_contours(m: npt.NDArray[np.bool_], thin: int) -> None:
+    # Sparse masks too (saddles, single cells, several loops of one length).
+    if thin:
+        m = m & (np.arange(m.size).reshape(m.shape) % (thin + 1) == 0)
+    contours = measure.find_contours(np.pad(m, 1).astype(np.uint8), 0.5)
+    got = longest_contour(m)
+    if not contours:
+        assert got is None
+        return
+    expected = max(contours, key=len)
+    assert got is not None and got.shape == expected.shape and np.array_equal(got, expected)
+
+
+def test_longest_contour_of_a_square_and_a_speck() -> None:
+    m = np.zeros((6, 6), dtype=bool)
+    m[0, 5] = True  # a speck, met first in raster order but shorter
+    m[2:5, 1:4] = True
+    got = longest_contour(m)
+    assert got is not None and len(got) == 13  # 12 edge midpoints round a 3 x 3 block, closed
+    assert got[0].tolist() == got[-1].tolist()
+    # In the padded image the block spans rows 3-5 and columns 2-4: its outline runs half a
+    # cell outside them.
+    assert (got[:, 0].min(), got[:, 0].max(), got[:, 1].min(), got[:, 1].max()) == (2.5, 5.5, 1.5, 4.5)
 
 
 def test_approximate_polygon_keeps_corners_of_a_square() -> None:

@@ -199,11 +199,36 @@ def free_widths(free: BoolArray, center_rc: tuple[float, float], normal_rc: tupl
     # samples are sampled across the whole look.
     near = min(s_max, FIRST_LOOK_SAMPLES)
     n_right, n_left, on = _runs_through_zero(free, center_rc, t, s[s_max - near:s_max + near + 1], normal_rc)
-    far = (n_right > near) | (n_left > near)
-    if far.any():
-        n_right[far], n_left[far], on[far] = _runs_through_zero(free, center_rc, t[far], s, normal_rc)
+    # A half that ran through that strip runs on: it is looked along further, in stretches that
+    # double, for its rows only (the samples a look across the whole width reads, up to the first
+    # blocked one).
+    _run_on(free, center_rc, t, s[s_max:], normal_rc, n_right, near + 1)
+    _run_on(free, center_rc, t, s[s_max::-1], normal_rc, n_left, near + 1)
     width = np.where(on, (n_right + n_left - 1) * _STEP_CELLS * resolution_m, 0.0)
     return np.asarray(t * resolution_m, dtype=np.float64), np.asarray(width, dtype=np.float64)
+
+
+def _run_on(free: BoolArray, center_rc: tuple[float, float], t: npt.NDArray[np.floating],
+            half: npt.NDArray[np.floating], normal_rc: tuple[float, float], n: npt.NDArray[np.int64],
+            looked: int) -> None:
+    """Carry on the free runs that reached ``looked`` samples along ``half`` (offsets along the
+    tangent from 0 outwards, one side of the line): ``n`` (per offset ``t``) becomes the index of
+    the first blocked sample, or the length of ``half`` when there is none (as
+    :func:`_runs_through_zero` counts over the whole of ``half``)."""
+    nr, nc = normal_rc
+    tr, tc = -nc, nr
+    rows_on = np.flatnonzero(n >= looked)
+    a = looked
+    while rows_on.size and a < half.size:
+        b = min(half.size, 2 * a)
+        tt, ss = t[rows_on], half[a:b]
+        rows = center_rc[0] + tt[:, None] * nr + ss[None, :] * tr
+        cols = center_rc[1] + tt[:, None] * nc + ss[None, :] * tc
+        ok = _sample(free, rows, cols, outside=False)
+        through = ok.all(axis=1)
+        n[rows_on] = np.where(through, b, a + np.argmin(ok, axis=1))
+        rows_on = rows_on[through]
+        a = b
 
 
 def _runs_through_zero(free: BoolArray, center_rc: tuple[float, float], t: npt.NDArray[np.floating],

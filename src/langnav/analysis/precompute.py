@@ -21,6 +21,9 @@ The stand-ins give *exactly* what the numpy / scipy call they replace gives (pro
   step for both axes, the distances read from a table of the few (|drow|, |dcol|) offsets;
 - :func:`fill_holes`: ``ndi.binary_fill_holes`` of a 2-D mask, by one labelling of the rest;
 - :func:`take2`: ``a[rows, cols]`` (a gather by two index arrays), as one flat take;
+- :func:`longest_contour`: the longest of ``skimage.measure.find_contours`` of a binary mask
+  (padded with a ring of 0) at level 0.5, from the marching-squares segments of all squares at
+  once instead of a dictionary walk over them;
 - :func:`approximate_polygon`: ``skimage.measure.approximate_polygon`` (Douglas-Peucker), all
   the segments of a level of its recursion at once.
 
@@ -30,6 +33,7 @@ others by mistake.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Any, Final, TypeVar
@@ -446,3 +450,97 @@ def take2(a: npt.NDArray[_S], rows: npt.NDArray[np.integer], cols: npt.NDArray[n
     flat = np.multiply(rows, a.shape[1], dtype=np.intp)
     flat += cols
     return np.take(a.reshape(-1), flat)
+
+
+#: Marching squares on a binary image at level 0.5, as ``skimage.measure.find_contours`` draws
+#: them (``fully_connected="low"``): for each square's code (upper-left * 8 + upper-right * 4 +
+#: lower-left * 2 + lower-right, 1 where the image is above the level), the segments it adds, in
+#: the order it adds them, each from one edge's midpoint to another's: T(op), B(ottom), L(eft),
+#: R(ight). The two saddles (6, 9) add two; codes 0 and 15 none.
+_MS_SEGMENTS: Final = {1: (("B", "R"),), 2: (("L", "B"),), 3: (("L", "R"),), 4: (("R", "T"),),
+                       5: (("B", "T"),), 6: (("R", "T"), ("L", "B")), 7: (("L", "T"),),
+                       8: (("T", "L"),), 9: (("T", "L"), ("B", "R")), 10: (("T", "B"),),
+                       11: (("T", "R"),), 12: (("R", "L"),), 13: (("B", "L"),), 14: (("R", "B"),)}
+
+
+@functools.lru_cache(maxsize=64)
+def _ms_offsets(width: int) -> tuple[npt.NDArray[np.int64], ...]:
+    """Per square code: the ids of its first and second segments' ends, less twice the square's
+    flat index (its upper-left vertex, ``row * width + col``). An edge midpoint's id is twice the
+    flat index of the vertex it starts from, plus 1 when the edge runs down (a column's edge)."""
+    edge = {"T": 0, "B": 2 * width, "L": 1, "R": 3}
+    out = [np.full(16, -1, dtype=np.int64) for _ in range(4)]
+    for code, segs in _MS_SEGMENTS.items():
+        for k, (a, b) in enumerate(segs):
+            out[2 * k][code] = edge[a]
+            out[2 * k + 1][code] = edge[b]
+    return tuple(_frozen(a) for a in out)
+
+
+def longest_contour(mask: BoolArray) -> npt.NDArray[np.float64] | None:
+    """``max(skimage.measure.find_contours(np.pad(mask, 1).astype(np.uint8), 0.5), key=len)``
+    (None where there is no contour): the same points, in the same order, bit for bit.
+
+    skimage adds each square's segments in raster order and chains them in a dictionary walk;
+    in a binary image every edge midpoint is on exactly one closed loop (the padding closes them
+    all), so the chaining is a permutation of the segments (each one's successor starts where it
+    ends) and what it returns follows from it: the loops in the order of their first segment,
+    each starting (and ending again) at the end of its last segment, then along the segments.
+    """
+    h, w = mask.shape[0] + 2, mask.shape[1] + 2
+    m = np.zeros((h, w), dtype=bool)
+    m[1:-1, 1:-1] = mask
+    code = (m[:-1, :-1].astype(np.uint8) << 3) | (m[:-1, 1:].astype(np.uint8) << 2) \
+        | (m[1:, :-1].astype(np.uint8) << 1) | m[1:, 1:].astype(np.uint8)
+    cells = np.flatnonzero((code != 0) & (code != 15))
+    if cells.size == 0:
+        return None
+    c = code.reshape(-1)[cells]
+    q2 = 2 * (cells // (w - 1) * w + cells % (w - 1))  # twice the squares' flat vertex index
+    f1, t1, f2, t2 = _ms_offsets(w)
+    two = (c == 6) | (c == 9)
+    count = 1 + two.astype(np.int64)
+    first = np.cumsum(count) - count  # each square's first segment, in skimage's order
+    n = int(count.sum())
+    frm = np.empty(n, dtype=np.int64)
+    to = np.empty(n, dtype=np.int64)
+    frm[first] = q2 + f1[c]
+    to[first] = q2 + t1[c]
+    frm[first[two] + 1] = q2[two] + f2[c[two]]
+    to[first[two] + 1] = q2[two] + t2[c[two]]
+    # The successor of each segment: the one that starts where it ends.
+    by_start = np.argsort(frm)
+    nxt = by_start[np.searchsorted(frm[by_start], to)]
+    # Each loop's first segment, by pointer jumping: after step k every segment holds the
+    # smallest index among the 2**k segments from it on; once no value changes, each holds its
+    # loop's smallest (the windows of one stride, laid end to end, cover the loop).
+    loop = np.arange(n, dtype=np.intp)
+    jump = nxt
+    while True:
+        nearer = np.minimum(loop, loop[jump])
+        if np.array_equal(nearer, loop):
+            break
+        loop = nearer
+        jump = jump[jump]
+    sizes = np.bincount(loop, minlength=n)
+    # The longest loop; of equal ones the first (skimage's list is in the order of their first
+    # segments, and ``max`` keeps the first of equals).
+    best = int(np.argmax(sizes))
+    last = int(np.flatnonzero(loop == best)[-1])
+    # From the end of the loop's last segment round along the successors, back to it.
+    succ = nxt.tolist()
+    order = [last]
+    j = succ[last]
+    while j != last:
+        order.append(j)
+        j = succ[j]
+    order.append(last)
+    ids = to[np.array(order, dtype=np.intp)]
+    # An id back to its point: a row's edge (even) is (row, col + 0.5), a column's (odd) is
+    # (row + 0.5, col).
+    vertex, down = np.divmod(ids, 2)
+    rows, cols = np.divmod(vertex, w)
+    out = np.empty((ids.size, 2), dtype=np.float64)
+    out[:, 0] = rows + 0.5 * down
+    out[:, 1] = cols + 0.5 * (1 - down)
+    return out

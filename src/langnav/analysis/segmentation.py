@@ -27,7 +27,6 @@ from typing import Final
 import numpy as np
 import numpy.typing as npt
 from scipy import ndimage as ndi
-from skimage.measure import find_contours
 from skimage.segmentation import watershed
 
 from langnav.analysis.door_judge import judge_doors
@@ -40,6 +39,7 @@ from langnav.analysis.precompute import (
     dilate8,
     edt_scaled,
     fill_holes,
+    longest_contour,
     maximum3,
     nonzero2,
 )
@@ -841,10 +841,10 @@ def _outline(grid: OccupancyGrid, sub: npt.NDArray[np.bool_], sl: tuple[slice, s
     """The outer outline of a space in world metres (for drawing), simplified to about a cell."""
     # Large spaces are outlined on a coarser copy: the outline is for drawing.
     k = max(1, math.ceil(math.sqrt(sub.size / OUTLINE_MAX_CELLS)))
-    contours = find_contours(np.pad(sub[::k, ::k], 1).astype(np.uint8), 0.5)
-    if not contours:
+    # The longest of find_contours(np.pad(sub[::k, ::k], 1).astype(np.uint8), 0.5), exactly.
+    c = longest_contour(sub[::k, ::k])
+    if c is None:
         return np.zeros((0, 2))
-    c = max(contours, key=len)
     c = (c - 1) * k + 1
     step = max(1, len(c) // OUTLINE_MAX_POINTS)
     c = approximate_polygon(np.vstack([c[::step], c[:1]]), tolerance=1.0)
