@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import numpy.typing as npt
 from analysis_maps import room_with_door
@@ -21,6 +23,7 @@ from langnav.analysis.precompute import (
     dilate4,
     dilate8,
     edt_scaled,
+    far_from_outside,
     fill_holes,
     label8_cells,
     longest_contour,
@@ -78,6 +81,14 @@ def test_truncated_sq_edt_is_exact_up_to_its_bound(m: npt.NDArray[np.bool_], bou
         assert np.array_equal(beyond, ~near[m])
     else:
         assert beyond.all()
+
+
+@settings(max_examples=150, deadline=None)
+@given(masks(), st.sampled_from([0.05, 0.1, 0.3, 0.5]), st.sampled_from([0.025, 0.05, 0.07]))
+def test_far_from_outside_matches_its_formula(m: npt.NDArray[np.bool_], min_m: float, res: float) -> None:
+    bound = math.ceil(min_m / res) + 1
+    expected = np.sqrt(truncated_sq_edt(m, bound).astype(np.float64)) * res >= min_m
+    assert np.array_equal(far_from_outside(m, min_m, res), expected)
 
 
 def test_truncated_sq_edt_known_values() -> None:

@@ -15,7 +15,8 @@ The stand-ins give *exactly* what the numpy / scipy call they replace gives (pro
 - :func:`label8_cells`: ``ndi.label(..., EIGHT)`` of a sparse set of cells (a skeleton);
 - :func:`component_boxes`: ``ndi.find_objects`` for chosen components, from their cells;
 - :func:`truncated_sq_edt`: ``distance_transform_edt`` squared, exact up to a bound (what a
-  test of short clearances needs), in small integers;
+  test of short clearances needs), in small integers; :func:`far_from_outside`: its test
+  against a distance, read from a table of its few values;
 - :func:`median`, :func:`cov2`: ``np.median`` and ``np.cov`` without their overhead;
 - :func:`edt_scaled`: ``ndi.distance_transform_edt(mask, sampling=step)`` for a 2-D mask and one
   step for both axes, the distances read from a table of the few (|drow|, |dcol|) offsets;
@@ -34,6 +35,7 @@ others by mistake.
 from __future__ import annotations
 
 import functools
+import math
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Any, Final, TypeVar
@@ -198,7 +200,11 @@ def truncated_sq_edt(mask: BoolArray, max_cells: int) -> npt.NDArray[np.signedin
     m = np.asarray(mask, dtype=bool)
     h, w = m.shape
     cap = int(max_cells) + 1
-    dtype: type[np.signedinteger[Any]] = np.int16 if cap * cap + max_cells * max_cells < np.iinfo(np.int16).max else np.int32
+    # The smallest integer type that holds every value of the row pass (a capped square plus a
+    # square): fewer bytes per cell for its passes over the whole array.
+    top = cap * cap + max_cells * max_cells
+    dtype: type[np.signedinteger[Any]] = (np.int8 if top < np.iinfo(np.int8).max
+                                          else np.int16 if top < np.iinfo(np.int16).max else np.int32)
     # Column pass: rows to the nearest outside cell above / below ("far" when there is none),
     # in place, in the smallest integer type that holds the row numbers.
     far = h + cap + 1
@@ -231,6 +237,18 @@ def truncated_sq_edt(mask: BoolArray, max_cells: int) -> npt.NDArray[np.signedin
         np.minimum(out[:, :e], g2[:, dc:dc + e] + k, out=out[:, :e])
         np.minimum(out[:, w - e:], g2[:, w - e - dc:w - dc] + k, out=out[:, w - e:])
     return out
+
+
+def far_from_outside(mask: BoolArray, min_m: float, resolution_m: float) -> BoolArray:
+    """The cells of ``mask`` at least ``min_m`` from the nearest cell outside it (cell centre to
+    cell centre, ``resolution_m`` a cell), as ``np.sqrt(truncated_sq_edt(mask, bound)
+    .astype(np.float64)) * resolution_m >= min_m`` gives them with ``bound = ceil(min_m /
+    resolution_m) + 1``, exactly: the test is worked out once for each value the transform takes
+    (a few dozen small integers) and read for every cell."""
+    d2 = truncated_sq_edt(mask, math.ceil(min_m / resolution_m) + 1)
+    top = int(d2.max()) if d2.size else 0
+    table = np.sqrt(np.arange(top + 1, dtype=np.float64)) * resolution_m >= min_m
+    return np.take(table, d2)
 
 
 def component_boxes(ids: npt.NDArray[np.integer], rows: npt.NDArray[np.integer], cols: npt.NDArray[np.integer],
