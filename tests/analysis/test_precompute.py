@@ -13,10 +13,12 @@ from hypothesis.extra.numpy import arrays
 from scipy import ndimage as ndi
 from skimage import measure
 
+from langnav.analysis import precompute
 from langnav.analysis.precompute import (
     EIGHT,
     GridLayers,
     approximate_polygon,
+    approximate_polygons,
     border_labels,
     component_boxes,
     cov2,
@@ -121,11 +123,20 @@ def test_component_boxes_match_find_objects(m: npt.NDArray[np.bool_]) -> None:
 
 
 @settings(max_examples=150, deadline=None)
-@given(masks())
-def test_label8_cells_matches_ndi_label(m: npt.NDArray[np.bool_]) -> None:
+@given(masks(), st.sampled_from(["dense", "few", "sparse"]))
+def test_label8_cells_matches_ndi_label(m: npt.NDArray[np.bool_], way: str) -> None:
     lab, n = ndi.label(m, structure=EIGHT)
     flat = np.flatnonzero(m)
-    got, got_n = label8_cells(flat, m.shape)
+    # Each of the three ways: a labelling of the cells' box, union-find, a sparse graph.
+    old = (precompute.LABEL8_DENSE_CELLS_PER_CELL, precompute.LABEL8_DENSE_MIN_CELLS, precompute.LABEL8_SMALL_CELLS)
+    if way != "dense":
+        precompute.LABEL8_DENSE_CELLS_PER_CELL, precompute.LABEL8_DENSE_MIN_CELLS = -1, -1  # type: ignore[misc]
+        precompute.LABEL8_SMALL_CELLS = 10**9 if way == "few" else 0  # type: ignore[misc]
+    try:
+        got, got_n = label8_cells(flat, m.shape)
+    finally:
+        (precompute.LABEL8_DENSE_CELLS_PER_CELL, precompute.LABEL8_DENSE_MIN_CELLS,  # type: ignore[misc]
+         precompute.LABEL8_SMALL_CELLS) = old
     assert got_n == n
     assert np.array_equal(got, lab.ravel()[flat])
 
@@ -224,6 +235,18 @@ def test_longest_contour_of_a_square_and_a_speck() -> None:
     # In the padded image the block spans rows 3-5 and columns 2-4: its outline runs half a
     # cell outside them.
     assert (got[:, 0].min(), got[:, 0].max(), got[:, 1].min(), got[:, 1].max()) == (2.5, 5.5, 1.5, 4.5)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.integers(0, 60).flatmap(lambda n: arrays(np.float64, (n, 2), elements=st.integers(-40, 40).map(
+    lambda v: v / 2))), min_size=1, max_size=5), st.sampled_from([0.3, 1.0, 2.5]))
+def test_approximate_polygons_match_skimage_one_by_one(chains: list[npt.NDArray[np.float64]], tolerance: float) -> None:
+    walks = [np.cumsum(c, axis=0) / 3.0 for c in chains]
+    got = approximate_polygons(walks, tolerance)
+    assert len(got) == len(walks)
+    for g, w in zip(got, walks, strict=True):
+        expected = measure.approximate_polygon(w, tolerance) if len(w) else w
+        assert g.shape == expected.shape and np.array_equal(g, expected)
 
 
 def test_approximate_polygon_keeps_corners_of_a_square() -> None:
