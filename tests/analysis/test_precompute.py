@@ -27,6 +27,7 @@ from langnav.analysis.precompute import (
     edt_scaled,
     far_from_outside,
     fill_holes,
+    grow_by_disc,
     label8_cells,
     longest_contour,
     maximum3,
@@ -91,6 +92,17 @@ def test_far_from_outside_matches_its_formula(m: npt.NDArray[np.bool_], min_m: f
     bound = math.ceil(min_m / res) + 1
     expected = np.sqrt(truncated_sq_edt(m, bound).astype(np.float64)) * res >= min_m
     assert np.array_equal(far_from_outside(m, min_m, res), expected)
+
+
+@settings(max_examples=150, deadline=None)
+@given(masks(), st.floats(0.0, 60.0))
+def test_grow_by_disc_is_a_binary_dilation_by_the_disc(m: npt.NDArray[np.bool_], r2: float) -> None:
+    reach = math.isqrt(int(r2)) + 1
+    a = np.arange(reach + 1)
+    near = a[:, None] ** 2 + a[None, :] ** 2 <= r2
+    full = np.arange(-reach, reach + 1)
+    disc = full[:, None] ** 2 + full[None, :] ** 2 <= r2
+    assert np.array_equal(grow_by_disc(m, near), ndi.binary_dilation(m, structure=disc))
 
 
 def test_truncated_sq_edt_known_values() -> None:

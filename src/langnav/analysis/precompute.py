@@ -16,7 +16,8 @@ The stand-ins give *exactly* what the numpy / scipy call they replace gives (pro
 - :func:`component_boxes`: ``ndi.find_objects`` for chosen components, from their cells;
 - :func:`truncated_sq_edt`: ``distance_transform_edt`` squared, exact up to a bound (what a
   test of short clearances needs), in small integers; :func:`far_from_outside`: its test
-  against a distance, read from a table of its few values;
+  against a distance, as the outside grown by the disc of the offsets that fail it
+  (:func:`grow_by_disc`);
 - :func:`median`, :func:`cov2`: ``np.median`` and ``np.cov`` without their overhead;
 - :func:`edt_scaled`: ``ndi.distance_transform_edt(mask, sampling=step)`` for a 2-D mask and one
   step for both axes, the distances read from a table of the few (|drow|, |dcol|) offsets;
@@ -244,12 +245,49 @@ def far_from_outside(mask: BoolArray, min_m: float, resolution_m: float) -> Bool
     """The cells of ``mask`` at least ``min_m`` from the nearest cell outside it (cell centre to
     cell centre, ``resolution_m`` a cell), as ``np.sqrt(truncated_sq_edt(mask, bound)
     .astype(np.float64)) * resolution_m >= min_m`` gives them with ``bound = ceil(min_m /
-    resolution_m) + 1``, exactly: the test is worked out once for each value the transform takes
-    (a few dozen small integers) and read for every cell."""
-    d2 = truncated_sq_edt(mask, math.ceil(min_m / resolution_m) + 1)
-    top = int(d2.max()) if d2.size else 0
-    table = np.sqrt(np.arange(top + 1, dtype=np.float64)) * resolution_m >= min_m
-    return np.take(table, d2)
+    resolution_m) + 1``, exactly.
+
+    That test rises with the distance, so a cell passes it when every outside cell passes it:
+    when no outside cell lies at an offset that fails it; the others are the outside grown by
+    those offsets (:func:`grow_by_disc`).
+    """
+    bound = math.ceil(min_m / resolution_m) + 1
+    a = np.arange(bound + 1)
+    near = ~(np.sqrt((a[:, None] ** 2 + a[None, :] ** 2).astype(np.float64)) * resolution_m >= min_m)
+    return ~grow_by_disc(~np.asarray(mask, dtype=bool), near)
+
+
+def grow_by_disc(mask: BoolArray, near: BoolArray) -> BoolArray:
+    """The cells a cell of ``mask`` reaches at an offset (rows, columns) with ``near[|rows|,
+    |columns|]`` (cells beyond the array reach nothing): a binary dilation by that disc, exactly.
+
+    ``near`` must be a disc: in each row of it the offsets that reach form one run from column 0
+    (as any test that rises with the distance gives). The mask is grown along its rows by each
+    run's length, then those copies across rows: a few dozen passes over a boolean array, in
+    place of a distance transform for a test against one distance.
+    """
+    m = np.asarray(mask, dtype=bool)
+    h, w = m.shape
+    half = [int(np.flatnonzero(row).max()) if row.any() else -1 for row in np.asarray(near, dtype=bool)]
+    out = np.zeros(m.shape, dtype=bool)
+    if half[0] < 0:
+        return out  # the disc is empty
+    grown: dict[int, BoolArray] = {}
+    cur = m.copy()
+    done = 0
+    for width in sorted({x for x in half if x >= 0}):
+        for d in range(done + 1, min(width, w - 1) + 1):
+            cur[:, d:] |= m[:, :-d]
+            cur[:, :-d] |= m[:, d:]
+        done = width
+        grown[width] = cur.copy()
+    out |= grown[half[0]]
+    for dr in range(1, min(len(half) - 1, h - 1) + 1):
+        if half[dr] >= 0:
+            row = grown[half[dr]]
+            out[dr:] |= row[:-dr]
+            out[:-dr] |= row[dr:]
+    return out
 
 
 def component_boxes(ids: npt.NDArray[np.integer], rows: npt.NDArray[np.integer], cols: npt.NDArray[np.integer],
