@@ -40,6 +40,12 @@ stand in and the door leaf can open past the corner).
 seen only from around it), deeper than a wall is thick and shallower than a room, is a piece of
 furniture: the gap beside it is a way past the furniture, not a door.
 
+*A doorway is clear across.* From jamb to jamb, through its centre, the floor is open for at
+least the robot's width: the robot drives through a door. A "gap" whose line through its
+centre is blocked by a speck of clutter a few centimetres from its middle is a gap between
+pieces of clutter (chairs, table legs, boxes standing about a room), not a door; the clearance
+flood, which measures an opening by its widest point, cannot tell.
+
 *A doorway was scanned.* The robot saw through an opening: across it, from jamb to jamb, the
 cells are scanned (free floor, or a post or a door leaf standing in it; a few unscanned specks
 aside). A notch of unknown between two walls' ends (the shadow a wall's corner casts, a wedge
@@ -165,6 +171,10 @@ class DoorEvidence:
     #: The share of the opening's middle (OPENING_MIDDLE_SHARE of its width, across the normal
     #: through its centre) that was scanned (free or occupied, not unknown).
     scanned_share: float = 1.0
+    #: The clear width (m) along the opening's line through its centre: the narrowest free run
+    #: across it within CENTRE_SLACK_M of its centre along the normal, on space ``a``'s side and
+    #: on the other (each from the centre; infinite where not measured).
+    clear_width_m: tuple[float, float] = (math.inf, math.inf)
 
 
 def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np.float64],
@@ -329,13 +339,14 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     t, w = t_all[through], w_all[through]
     depth = constriction_depth(t, w, width_m)
     back = constriction_depth(t, w, width_m, back_only=True)
+    clear = (clear_width(t_all, w_all, -1.0), clear_width(t_all, w_all, 1.0))
     beyond = (typical_width(t_all, w_all, -1.0, params.door_max_depth_m),
               typical_width(t_all, w_all, 1.0, params.door_max_depth_m))
     scanned = scanned_across(free, occupied, center_rc, normal_rc, width_m, resolution_m, unknown)
     jj = jamb_cells(occupied, center_rc, width_m, resolution_m)
     if jj is None:
         return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(0.0, 0.0), across=(0.0, 0.0),
-                            beyond_width_m=beyond, scanned_share=scanned)
+                            beyond_width_m=beyond, scanned_share=scanned, clear_width_m=clear)
     (r1, c1), (r2, c2) = jj
     # The opening's line runs from jamb to jamb (the candidate's own normal is the mean step
     # across a ragged boundary, often slanted).
@@ -362,7 +373,14 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     furniture = unknown is not None and any(is_furniture(free, unknown, j, resolution_m) for j in jj)
     return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]),
                         across=(across[0], across[1]), line_turn_deg=turn, beyond_width_m=beyond,
-                        furniture_jamb=furniture, scanned_share=scanned)
+                        furniture_jamb=furniture, scanned_share=scanned, clear_width_m=clear)
+
+
+def clear_width(t_m: npt.NDArray[np.float64], width_m: npt.NDArray[np.float64], side: float) -> float:
+    """The narrowest free run (m) across an opening through its centre, over the free samples
+    from it to CENTRE_SLACK_M on ``side`` (+1: along the normal) (0 when none is free)."""
+    near = (side * t_m >= -1e-9) & (side * t_m <= CENTRE_SLACK_M + 1e-9) & (width_m > 0)
+    return float(width_m[near].min()) if near.any() else 0.0
 
 
 def scanned_across(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float],
@@ -465,6 +483,12 @@ def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wal
     # Along a wall: the opening's line follows the walls' direction.
     if ev.line_turn_deg > ALONG_MAX_TURN_DEG:
         return False
+    # Clear across: the robot fits through it along its line (a speck of clutter in the middle
+    # of a "gap" makes it a gap between pieces of clutter). Into the unexplored, only the
+    # space's own side: beyond lie the rays through it, a streak each.
+    clear = ev.clear_width_m[0] if into_unknown else min(ev.clear_width_m)
+    if clear < 2.0 * params.robot_radius_m:
+        return False
     # It was scanned: the robot saw through it.
     if ev.scanned_share < GAP_MIN_FLOOR_SHARE:
         return False
@@ -527,6 +551,7 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
 __all__ = [
     "SEEN_FLOOR_MIN_M",
     "DoorEvidence",
+    "clear_width",
     "constriction_depth",
     "evidence",
     "floor_beyond",
