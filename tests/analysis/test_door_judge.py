@@ -424,3 +424,33 @@ def test_a_door_onto_the_unexplored_was_seen_through() -> None:
         ev = evidence(grid.cells == FREE, grid.cells == OCCUPIED, (float(r), float(c)), (1.0, 0.0), 0.8,
                       grid.resolution_m, DEFAULT_PARAMS, unknown=grid.cells == UNKNOWN)
         assert (ev.scanned_share >= GAP_MIN_FLOOR_SHARE) is scanned
+
+
+def wall_with_a_clear_and_a_blocked_gap() -> OccupancyGrid:
+    """A 10 m x 6 m room parted at y = 3 by a wall with two 0.9 m gaps, at x = 2.5 and x = 7.5;
+    the legs of a chair (5 cm specks, 0.3 m apart) stand in the second gap's line."""
+    b = MapBuilder(12.0, 8.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 10.0, 6.0).wall(0.0, 3.0, 10.0, 3.0)
+    b.door_h(2.5, 3.0, 0.9).door_h(7.5, 3.0, 0.9)
+    b.rect(7.3, 2.975, 7.35, 3.025, OCCUPIED).rect(7.65, 2.975, 7.7, 3.025, OCCUPIED)
+    return b.build("a clear and a blocked gap")
+
+
+def test_a_gap_blocked_in_its_middle_is_no_door() -> None:
+    """Both gaps have wall jambs and open onto rooms wider than themselves; across the second
+    one, through its centre, the floor is open for less than the robot's width (clutter stands
+    in it): the robot cannot drive through it, it is no door."""
+    grid = wall_with_a_clear_and_a_blocked_gap()
+    free, occ, unknown = grid.cells == FREE, grid.cells == OCCUPIED, grid.cells == UNKNOWN
+    res = grid.resolution_m
+    cands = []
+    for x in (2.5, 7.5):
+        r, c = grid.world_to_cell(x, 3.0)
+        cands.append(RawDoor(1, 2, (float(r) + 0.5, float(c) + 0.5), (1.0, 0.0), 0.9))
+    clear, blocked = cands
+    ev_clear = evidence(free, occ, clear.center_rc, clear.normal_rc, 0.9, res, DEFAULT_PARAMS, unknown)
+    ev_blocked = evidence(free, occ, blocked.center_rc, blocked.normal_rc, 0.9, res, DEFAULT_PARAMS, unknown)
+    assert ev_clear.clear_width_m == pytest.approx((0.9, 0.9), abs=2 * res)
+    assert max(ev_blocked.clear_width_m) < 2 * DEFAULT_PARAMS.robot_radius_m
+    doors, rest = judge_doors(cands, free, occ, res, DEFAULT_PARAMS, unknown=unknown)
+    assert doors == [clear] and rest == [blocked]

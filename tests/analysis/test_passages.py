@@ -681,3 +681,100 @@ def test_passages_do_not_depend_on_the_maps_resolution(building: str, resolution
         assert p.center == pytest.approx(q.center, abs=max(resolution_m, 0.05) + 0.01)
         assert p.width_m == pytest.approx(q.width_m, abs=max(resolution_m, 0.05) + 0.01)
         assert p.length_m == pytest.approx(q.length_m, abs=2 * max(resolution_m, 0.05) + 0.01)
+
+
+def pews(gap_m: float, resolution_m: float = 0.05) -> OccupancyGrid:
+    """A 10 x 8 m nave: two blocks of five 3 m pews (0.4 m deep) either side of a 1 m centre
+    aisle, ``gap_m`` between one pew and the next, the rows from y = 2 m."""
+    b = MapBuilder(12.0, 10.0, resolution_m=resolution_m, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 10.0, 8.0)
+    for k in range(5):
+        y = 2.0 + k * (0.4 + gap_m)
+        b.box(2.0, y, 5.0, y + 0.4)
+        b.box(6.0, y, 9.0, y + 0.4)
+    return b.build(source=f"pews_{gap_m}")
+
+
+@pytest.mark.parametrize("resolution_m", [0.025, 0.05, 0.1])
+def test_the_slots_between_pews_are_no_passages(resolution_m: float) -> None:
+    # 0.5 m as the map reads it (pews 0.35 m apart, their edges cleared by the lidar): no way
+    # to send a 0.35 m robot, and no person calls the slot one sits in a passage.
+    assert passages_of(pews(0.5, resolution_m)) == ()
+
+
+@pytest.mark.parametrize("resolution_m", [0.025, 0.05, 0.1])
+def test_aisles_between_rows_wide_enough_for_the_robot_are_passages(resolution_m: float) -> None:
+    # The same nave with 0.6 m between the rows: each of the eight slots is a short aisle the
+    # robot can take (0.125 m a side), from the side aisle to the centre aisle.
+    found = sorted(passages_of(pews(0.6, resolution_m)), key=lambda p: (p.center[1], p.center[0]))
+    want = [(x, 2.4 + k * 1.0 + 0.3) for k in range(4) for x in (3.5, 7.5)]
+    assert len(found) == len(want)
+    for p, centre in zip(found, want, strict=True):
+        assert p.center == pytest.approx(centre, abs=0.06)
+        assert p.width_m == pytest.approx(0.6, abs=0.051)
+        assert p.length_m == pytest.approx(3.0, abs=0.15)
+
+
+def cross_aisle(resolution_m: float = 0.05) -> OccupancyGrid:
+    """A 9 x 8 m store room: a 0.4 m rack stands 0.8 m off its west wall (x 0.8-1.2, y 0.3-7.7,
+    0.3 m from the north and south walls: too tight to pass), and five 4 m rack rows run east
+    from x = 2 (0.4 m deep, from y = 1.2 every 1.2 m): their 0.8 m aisles open east into the
+    room and west into the 0.8 m cross aisle between the rack and the rows' ends, which meets
+    the room's floor only past the first and last rows."""
+    b = MapBuilder(11.0, 10.0, resolution_m=resolution_m, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 9.0, 8.0)
+    b.box(0.8, 0.3, 1.2, 7.7)
+    for k in range(5):
+        y = 1.2 + 1.2 * k
+        b.box(2.0, y, 6.0, y + 0.4)
+    return b.build(source="cross_aisle")
+
+
+@pytest.mark.parametrize("resolution_m", [0.025, 0.05, 0.1])
+def test_aisles_ending_in_a_narrow_cross_aisle_lead_somewhere(resolution_m: float) -> None:
+    # The middle aisles' west mouths open into the cross aisle, 2.5 m from open floor: they lead
+    # somewhere (the robot drives on down the cross aisle). The strip behind the rack leads
+    # nowhere: 0.3 m gaps at both of its ends.
+    found = sorted(passages_of(cross_aisle(resolution_m)), key=lambda p: p.center[1])
+    assert len(found) == 4
+    for k, p in enumerate(found):
+        assert p.center == pytest.approx((4.0, 1.2 + 1.2 * k + 0.4 + 0.4), abs=0.06)
+        assert p.width_m == pytest.approx(0.8, abs=0.051)
+        assert p.length_m == pytest.approx(4.0, abs=0.15)
+
+
+@pytest.mark.parametrize("degrees", [10.0, 23.0, 45.0])
+def test_pews_and_cross_aisles_read_the_same_rotated(degrees: float) -> None:
+    # Stair-stepped at any angle: no slot between pews 0.5 m apart, the eight 0.6 m aisles, and
+    # the four rack aisles that end in a narrow cross aisle.
+    assert passages_of(rotated(pews(0.5), degrees)) == ()
+    wide = passages_of(rotated(pews(0.6), degrees))
+    assert len(wide) == 8 and all(p.width_m == pytest.approx(0.6, abs=0.06) for p in wide)
+    racks = passages_of(rotated(cross_aisle(), degrees))
+    assert len(racks) == 4 and all(p.width_m == pytest.approx(0.8, abs=0.06) for p in racks)
+
+
+def bike_grid(resolution_m: float = 0.05, gap_m: float = 0.75) -> OccupancyGrid:
+    """A spin studio: a 4 x 3 grid of bikes (0.5 x 1.1 m) with ``gap_m`` between them and to the
+    walls, its door a 0.9 m gap in the south wall."""
+    nx, ny, bike_w, bike_l = 4, 3, 0.5, 1.1
+    w, h = gap_m + nx * (bike_w + gap_m), gap_m + ny * (bike_l + gap_m)
+    b = MapBuilder(w + 2.0, h + 2.0, resolution_m=resolution_m, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, w, h)
+    b.free(w / 2 - 0.45, -0.2, w / 2 + 0.45, 0.0)
+    for i in range(nx):
+        for j in range(ny):
+            x, y = gap_m + i * (bike_w + gap_m), gap_m + j * (bike_l + gap_m)
+            b.box(x, y, x + bike_w, y + bike_l)
+    return b.build(source=f"bike_grid_{gap_m}")
+
+
+@pytest.mark.parametrize("resolution_m", [0.025, 0.05, 0.1])
+def test_the_lanes_of_a_grid_of_bikes_are_no_passages(resolution_m: float) -> None:
+    # Every gap between two bikes, or a bike and a wall, is as tight as the ways round it (0.75
+    # m): none is the narrow passage a person points at (eight to ten were reported).
+    assert passages_of(bike_grid(resolution_m)) == ()
+
+
+def test_the_lanes_of_a_rotated_grid_of_bikes_are_no_passages() -> None:
+    assert passages_of(rotated(bike_grid(), 23.0)) == ()

@@ -40,6 +40,12 @@ stand in and the door leaf can open past the corner).
 seen only from around it), deeper than a wall is thick and shallower than a room, is a piece of
 furniture: the gap beside it is a way past the furniture, not a door.
 
+*A doorway is clear across.* From jamb to jamb, through its centre, the floor is open for at
+least the robot's width: the robot drives through a door. A "gap" whose line through its
+centre is blocked by a speck of clutter a few centimetres from its middle is a gap between
+pieces of clutter (chairs, table legs, boxes standing about a room), not a door; the clearance
+flood, which measures an opening by its widest point, cannot tell.
+
 *A doorway was scanned.* The robot saw through an opening: across it, from jamb to jamb, the
 cells are scanned (free floor, or a post or a door leaf standing in it; a few unscanned specks
 aside). A notch of unknown between two walls' ends (the shadow a wall's corner casts, a wedge
@@ -62,7 +68,7 @@ import numpy.typing as npt
 from scipy import ndimage as ndi
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import take2, truncated_sq_edt
+from langnav.analysis.precompute import EIGHT, far_from_outside, median, take2
 from langnav.analysis.seg_doors import SEEN_FLOOR_MIN_M, RawDoor
 from langnav.analysis.wall_lines import (
     GAP_MIN_FLOOR_SHARE,
@@ -165,15 +171,28 @@ class DoorEvidence:
     #: The share of the opening's middle (OPENING_MIDDLE_SHARE of its width, across the normal
     #: through its centre) that was scanned (free or occupied, not unknown).
     scanned_share: float = 1.0
+    #: The clear width (m) along the opening's line through its centre: the narrowest free run
+    #: across it within CENTRE_SLACK_M of its centre along the normal, on space ``a``'s side and
+    #: on the other (each from the centre; infinite where not measured).
+    clear_width_m: tuple[float, float] = (math.inf, math.inf)
 
 
 def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np.float64],
             outside: bool) -> BoolArray:
     """``mask`` at continuous (row, col) positions in cell-corner coordinates (cell i spans
     [i, i + 1)); ``outside`` where they leave the grid."""
+    r, c, inside = _cells(mask.shape, rows, cols)
+    got = np.asarray(take2(mask, r, c), dtype=bool)
+    return got | ~inside if outside else got & inside
+
+
+def _cells(shape: tuple[int, ...], rows: npt.NDArray[np.float64], cols: npt.NDArray[np.float64]
+           ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64], BoolArray]:
+    """The cells :func:`_sample` reads at (row, col) positions, clamped onto a grid of ``shape``,
+    and whether each position is on the grid (several masks are read at the same positions)."""
     r = np.floor(rows).astype(np.int64)
     c = np.floor(cols).astype(np.int64)
-    h, w = mask.shape
+    h, w = shape[0], shape[1]
     # On the grid: 0 <= r < h and 0 <= c < w (a negative index read unsigned is past the end).
     inside = (r.view(np.uint64) < h) & (c.view(np.uint64) < w)
     # Read every sample (clamped onto the grid), then set those off it: no masked indexing.
@@ -182,8 +201,7 @@ def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np
     np.minimum(r, h - 1, out=r)
     np.maximum(c, 0, out=c)
     np.minimum(c, w - 1, out=c)
-    got = np.asarray(take2(mask, r, c), dtype=bool)
-    return got | ~inside if outside else got & inside
+    return r, c, inside
 
 
 def free_widths(free: BoolArray, center_rc: tuple[float, float], normal_rc: tuple[float, float],
@@ -199,11 +217,36 @@ def free_widths(free: BoolArray, center_rc: tuple[float, float], normal_rc: tupl
     # samples are sampled across the whole look.
     near = min(s_max, FIRST_LOOK_SAMPLES)
     n_right, n_left, on = _runs_through_zero(free, center_rc, t, s[s_max - near:s_max + near + 1], normal_rc)
-    far = (n_right > near) | (n_left > near)
-    if far.any():
-        n_right[far], n_left[far], on[far] = _runs_through_zero(free, center_rc, t[far], s, normal_rc)
+    # A half that ran through that strip runs on: it is looked along further, in stretches that
+    # double, for its rows only (the samples a look across the whole width reads, up to the first
+    # blocked one).
+    _run_on(free, center_rc, t, s[s_max:], normal_rc, n_right, near + 1)
+    _run_on(free, center_rc, t, s[s_max::-1], normal_rc, n_left, near + 1)
     width = np.where(on, (n_right + n_left - 1) * _STEP_CELLS * resolution_m, 0.0)
     return np.asarray(t * resolution_m, dtype=np.float64), np.asarray(width, dtype=np.float64)
+
+
+def _run_on(free: BoolArray, center_rc: tuple[float, float], t: npt.NDArray[np.floating],
+            half: npt.NDArray[np.floating], normal_rc: tuple[float, float], n: npt.NDArray[np.int64],
+            looked: int) -> None:
+    """Carry on the free runs that reached ``looked`` samples along ``half`` (offsets along the
+    tangent from 0 outwards, one side of the line): ``n`` (per offset ``t``) becomes the index of
+    the first blocked sample, or the length of ``half`` when there is none (as
+    :func:`_runs_through_zero` counts over the whole of ``half``)."""
+    nr, nc = normal_rc
+    tr, tc = -nc, nr
+    rows_on = np.flatnonzero(n >= looked)
+    a = looked
+    while rows_on.size and a < half.size:
+        b = min(half.size, 2 * a)
+        tt, ss = t[rows_on], half[a:b]
+        rows = center_rc[0] + tt[:, None] * nr + ss[None, :] * tr
+        cols = center_rc[1] + tt[:, None] * nc + ss[None, :] * tc
+        ok = _sample(free, rows, cols, outside=False)
+        through = ok.all(axis=1)
+        n[rows_on] = np.where(through, b, a + np.argmin(ok, axis=1))
+        rows_on = rows_on[through]
+        a = b
 
 
 def _runs_through_zero(free: BoolArray, center_rc: tuple[float, float], t: npt.NDArray[np.floating],
@@ -329,13 +372,14 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     t, w = t_all[through], w_all[through]
     depth = constriction_depth(t, w, width_m)
     back = constriction_depth(t, w, width_m, back_only=True)
+    clear = (clear_width(t_all, w_all, -1.0), clear_width(t_all, w_all, 1.0))
     beyond = (typical_width(t_all, w_all, -1.0, params.door_max_depth_m),
               typical_width(t_all, w_all, 1.0, params.door_max_depth_m))
     scanned = scanned_across(free, occupied, center_rc, normal_rc, width_m, resolution_m, unknown)
     jj = jamb_cells(occupied, center_rc, width_m, resolution_m)
     if jj is None:
         return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(0.0, 0.0), across=(0.0, 0.0),
-                            beyond_width_m=beyond, scanned_share=scanned)
+                            beyond_width_m=beyond, scanned_share=scanned, clear_width_m=clear)
     (r1, c1), (r2, c2) = jj
     # The opening's line runs from jamb to jamb (the candidate's own normal is the mean step
     # across a ragged boundary, often slanted).
@@ -362,7 +406,14 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     furniture = unknown is not None and any(is_furniture(free, unknown, j, resolution_m) for j in jj)
     return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]),
                         across=(across[0], across[1]), line_turn_deg=turn, beyond_width_m=beyond,
-                        furniture_jamb=furniture, scanned_share=scanned)
+                        furniture_jamb=furniture, scanned_share=scanned, clear_width_m=clear)
+
+
+def clear_width(t_m: npt.NDArray[np.float64], width_m: npt.NDArray[np.float64], side: float) -> float:
+    """The narrowest free run (m) across an opening through its centre, over the free samples
+    from it to CENTRE_SLACK_M on ``side`` (+1: along the normal) (0 when none is free)."""
+    near = (side * t_m >= -1e-9) & (side * t_m <= CENTRE_SLACK_M + 1e-9) & (width_m > 0)
+    return float(width_m[near].min()) if near.any() else 0.0
 
 
 def scanned_across(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float],
@@ -395,7 +446,7 @@ def is_furniture(free: BoolArray, unknown: BoolArray, cell_rc: tuple[float, floa
     r0, r1, c0, c1 = max(r - rad, 0), min(r + rad + 1, h), max(c - rad, 0), min(c + rad + 1, w)
     body[r0 - r + rad:r1 - r + rad, c0 - c + rad:c1 - c + rad] = ~free[r0:r1, c0:c1]
     unk[r0 - r + rad:r1 - r + rad, c0 - c + rad:c1 - c + rad] = unknown[r0:r1, c0:c1]
-    pieces, _ = ndi.label(body, structure=np.ones((3, 3), dtype=bool))
+    pieces, _ = ndi.label(body, structure=EIGHT)
     mine = pieces == pieces[rad, rad]
     if mine[0].any() or mine[-1].any() or mine[:, 0].any() or mine[:, -1].any():
         return False  # it runs on beyond the look: a wall
@@ -415,7 +466,7 @@ def typical_width(t_m: npt.NDArray[np.float64], width_m: npt.NDArray[np.float64]
     free = got[got > 0]
     if got.size == 0 or free.size < MOUTH_MIN_FREE_SHARE * got.size:
         return math.inf
-    return float(np.median(free))
+    return median(free)
 
 
 def opens_wider(ev: DoorEvidence, width_m: float, sides: tuple[int, ...] = (0, 1)) -> bool:
@@ -465,6 +516,12 @@ def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wal
     # Along a wall: the opening's line follows the walls' direction.
     if ev.line_turn_deg > ALONG_MAX_TURN_DEG:
         return False
+    # Clear across: the robot fits through it along its line (a speck of clutter in the middle
+    # of a "gap" makes it a gap between pieces of clutter). Into the unexplored, only the
+    # space's own side: beyond lie the rays through it, a streak each.
+    clear = ev.clear_width_m[0] if into_unknown else min(ev.clear_width_m)
+    if clear < 2.0 * params.robot_radius_m:
+        return False
     # It was scanned: the robot saw through it.
     if ev.scanned_share < GAP_MIN_FLOOR_SHARE:
         return False
@@ -487,10 +544,11 @@ def floor_beyond(free: BoolArray, far_from_unknown: BoolArray, center_rc: tuple[
     sv = np.arange(-BEYOND_HALF_WIDTH_M, BEYOND_HALF_WIDTH_M + 1e-9, resolution_m) / resolution_m
     rows = center_rc[0] + side * t[:, None] * nr + sv[None, :] * tr
     cols = center_rc[1] + side * t[:, None] * nc + sv[None, :] * tc
-    f = _sample(free, rows, cols, outside=False)
+    r, c, inside = _cells(free.shape, rows, cols)
+    f = np.asarray(take2(free, r, c), dtype=bool) & inside
     if not f.any():
         return 0.0
-    return float(_sample(far_from_unknown, rows, cols, outside=False)[f].mean())
+    return float(np.asarray(take2(far_from_unknown, r, c), dtype=bool)[f].mean())
 
 
 def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray, resolution_m: float,
@@ -503,8 +561,7 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
     if unknown is not None and unknown.any() and candidates:
         # Only distances up to SEEN_FLOOR_MIN_M matter: the exact truncated transform (bit for
         # bit the full one's distances up to its bound; farther cells read farther).
-        bound = math.ceil(SEEN_FLOOR_MIN_M / resolution_m) + 1
-        far = np.sqrt(truncated_sq_edt(~unknown, bound).astype(np.float64)) * resolution_m >= SEEN_FLOOR_MIN_M
+        far = far_from_outside(~unknown, SEEN_FLOOR_MIN_M, resolution_m)
     for d in candidates:
         ev = evidence(free, occupied, d.center_rc, d.normal_rc, d.width_m, resolution_m, params, unknown)
         ok = is_door(ev, params, into_unknown=d.b == 0, in_wall_line=d.in_wall_line, width_m=d.width_m)
@@ -527,6 +584,7 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
 __all__ = [
     "SEEN_FLOOR_MIN_M",
     "DoorEvidence",
+    "clear_width",
     "constriction_depth",
     "evidence",
     "floor_beyond",

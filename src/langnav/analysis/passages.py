@@ -8,11 +8,12 @@ close to its typical width (the stretch over which the way stays tight, between 
 sides, without the flaring mouths; one pinch point does not shorten it). A core is a passage when
 it is longer than a doorway could be deep in this building (``params.door_max_depth_m`` and
 ``WALL_LENGTHS`` of its typical wall thickness, :func:`typical_wall_thickness_m`; up to
-``params.passage_min_length_m``), wide enough for the robot with a margin, has sides along most
+``params.passage_min_length_m``), wide enough for the robot with a margin (``PASSAGE_MIN_MARGIN_M``: 0.1 m a side), has sides along most
 of its length (or a wall along one side and a single doorway in the other: a passage with a door
 off it), solid ones (walls, furniture, a shelf's unscanned inside: not
 laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
-unexplored area), leads somewhere (both mouths open into free space wider than any passage: a
+unexplored area), leads somewhere (both mouths open into free space wider than any passage, or,
+for an aisle, into another narrow way that reaches such space within ``MOUTH_LEADS_ON_M``: a
 dead-end slot does not), is not a door's own gap (a door across its middle; a door at one of its
 mouths is how it is entered; a door found in a squeeze between two things with parallel faces,
 deeper than any wall, is no door), and is
@@ -25,7 +26,9 @@ deeper than any wall, is no door), and is
   parked bed and a trolley in a corridor, a column and a planter): its sides are no wall with a
   doorway in it. It is a passage however one could go round when it is tight for a person
   (``TIGHT_WIDTH_M``), except beside a lone thing by a wall that open floor leads round nearby
-  (a pallet: one walks round it); a roomier one only when it is the only way past.
+  (a pallet: one walks round it), or where the ways round it near it are as tight and none
+  clearly roomier (one of the equal lanes of a grid of bikes or desks); a roomier one only when
+  it is the only way past.
 
 A passage along a wall (between the wall and a long shelf) shares its skeleton line with the
 one-sided strip along the rest of the room's walls: a core without sides along most of its length
@@ -34,6 +37,7 @@ is split into its two-sided stretches, and each is judged on its own.
 
 from __future__ import annotations
 
+import logging
 import math
 from collections.abc import Mapping, Sequence
 from typing import Final
@@ -108,6 +112,10 @@ DOOR_ACROSS_COS: Final = math.cos(math.radians(45.0))
 #: past. A way through other rooms, round a ring corridor or a long machine line, is a detour:
 #: the squeeze is still the way.
 WAY_ROUND_M: Final = 4.0
+#: A short gap with a way round near it as tight as itself is one of equal gaps (the lanes of a
+#: grid of bikes or desks) unless a way round is clearly roomier: wider by this (m; scan noise on
+#: two faces, as PARALLEL_SPREAD_M), as the open floor round a column and a planter.
+EQUAL_GAP_ROOMIER_M: Final = 0.15
 #: A squeeze one could go round is a narrow passage only when it is tight for a person: narrower
 #: than the narrowest point of an accessible route (0.815 m, 32 in: ADA 403.5.1 lets a 0.915 m
 #: route narrow to that for at most 0.61 m), where two people cannot pass and one turns sideways.
@@ -123,20 +131,42 @@ WALL_LENGTHS: Final = 2.0
 WALL_MAX_THICKNESS_M: Final = 0.45
 #: Look this far beyond a mouth for the space the passage opens into.
 MOUTH_SEARCH_M: Final = 1.0
-#: A passage leaves the robot at least this much room on each side (about a robot's
-#: localisation error): a 0.40 m slot is no way through for a 0.35 m robot.
+#: Where the robot's centre fits with its localisation error (about this much room on each
+#: side): the floor of a way round a squeeze.
 PASSAGE_SIDE_MARGIN_M: Final = 0.05
+#: A narrow passage leaves the robot at least this much room on each side as the map reads it:
+#: its localisation error (PASSAGE_SIDE_MARGIN_M) and as much again for the map itself, whose
+#: lidar clears a cell or two off a thing's grazed edges (a row of pews 0.35 m apart maps with
+#: 0.45-0.5 m gaps). A 0.5 m gap is no way to send a 0.35 m robot through, and no person calls
+#: the slot between two pews, seats or bikes a passage.
+PASSAGE_MIN_MARGIN_M: Final = 0.1
 #: A side is solid when nothing open lies within this depth past where it starts (a shelf's
 #: unscanned inside, a wall); laser-ray stripes of unknown are thinner, with free space behind.
 SOLID_UNKNOWN_DEPTH_M: Final = 0.3
 #: A mouth opens into a free area when one is found within this distance beyond it (the core
 #: stops where the sides start to flare, up to about a width before the space itself).
 MOUTH_OPEN_SEARCH_M: Final = 1.5
+#: A mouth that opens into another narrow way (the next aisle round a shelving island) leads
+#: somewhere when that way reaches open floor within this distance of the mouth (m): about a
+#: shelf's length; a dead-end slot's far end leads nowhere however far one looks.
+MOUTH_LEADS_ON_M: Final = 3.0
 #: Side distances of many pieces are sampled together, about this many samples at a time
 #: (bounded memory on a large map; fewer numpy calls on a small one).
 SIDE_BATCH_SAMPLES: Final = 400_000
 
 BoolArray = npt.NDArray[np.bool_]
+
+log = logging.getLogger(__name__)
+
+
+def _rejected(reason: str, grid: OccupancyGrid, r0: int, c0: int, centre_g: npt.NDArray[np.float64],
+              width_m: float = math.nan, length_m: float = math.nan) -> None:
+    """Log (debug) why a candidate (its centre in window cells) is no passage: what a reader of
+    a map asks when a passage they point at is not found."""
+    if log.isEnabledFor(logging.DEBUG):
+        x, y = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
+        log.debug("no passage at (%.2f, %.2f), width %.2f m, length %.2f m: %s", float(x), float(y), width_m,
+                  length_m, reason)
 
 
 def clearance_m(grid: OccupancyGrid, blocking: BoolArray) -> npt.NDArray[np.float64]:
@@ -278,23 +308,33 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 if across is not None and len(rr) * math.sqrt(2) >= min_cells:
                     retry_r.append(rr[across])
                     retry_c.append(cc[across])
+                _rejected('no two sides along it', grid, r0, c0, pts.mean(axis=0))
                 continue
             # Width: across the passage between its two sides (exact for axis-aligned sides).
             width_m = (median(sides[bounded].sum(axis=1)) - 0.5) * res
             # It runs where it has two sides: not on into its flaring mouths.
             lo, hi = float(proj[bounded].min()), float(proj[bounded].max())
             length_m = (hi - lo + 1.0) * res
+            mid = mean + 0.5 * (lo + hi) * axis
             if length_m < min_len_m:
+                _rejected('shorter than a doorway is deep', grid, r0, c0, mid, width_m, length_m)
                 continue
             # Wide enough for the robot to pass, and narrow (the band's test used the skeleton's
             # width, up to a cell off).
-            if width_m < 2.0 * (params.robot_radius_m + PASSAGE_SIDE_MARGIN_M) or width_m > params.passage_max_width_m:
+            # Across its axis, and by the distance from its middle line to its sides whatever
+            # the direction (twice it, up to a cell over): an axis drawn askew through a strip
+            # (round the corner of a box) measures it wider than it is.
+            min_width_m = 2.0 * (params.robot_radius_m + PASSAGE_MIN_MARGIN_M)
+            if (width_m < min_width_m or width_m > params.passage_max_width_m
+                    or 2.0 * median(dist_of[d2[rr[bounded], cc[bounded]]]) < min_width_m):
+                _rejected('too narrow or too wide', grid, r0, c0, mid, width_m, length_m)
                 continue
             # Between two things: both sides solid along most of its two-sided length, not
             # laser-ray stripes.
             normal = np.array([-axis[1], axis[0]])
             solid = _solid_sides(sub, occupied[r0:r1, c0:c1], exterior[r0:r1, c0:c1], pts, normal, sides, SOLID_UNKNOWN_DEPTH_M / res)
             if np.count_nonzero(solid) < MIN_BOUNDED_FRACTION * np.count_nonzero(bounded):
+                _rejected('sides not solid', grid, r0, c0, mid, width_m, length_m)
                 continue
             ends_g = [mean + lo * axis, mean + hi * axis]
             # It leads somewhere: both mouths open into free space wider than any passage. A way
@@ -305,10 +345,18 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             two = pts[bounded]
             lasts = ([two[int(np.argmin(proj[bounded]))], two[int(np.argmax(proj[bounded]))]] if corridor_like
                      else [None, None])
+            # An aisle (at least PASSAGE_MIN_ELONGATION times longer than wide) whose mouth opens
+            # into another narrow way leads somewhere when that way goes on to open floor nearby
+            # (aisles round a shelving island meet at its corners; rack aisles end in a narrow
+            # cross aisle). Its own middle line: its two-sided stretch, not the next aisle's.
+            aisle = length_m >= PASSAGE_MIN_ELONGATION * width_m
+            own = (proj >= lo) & (proj <= hi) & (np.abs((pts - mean) @ normal) <= width_m / res / 2.0 + 1.0)
             if not all(_opens_into_space(sub, e, sign * axis, res, params, last)
+                       or (aisle and _leads_on(fits, wide, e, rr[own], cc[own], width_m / res, MOUTH_LEADS_ON_M / res))
                        for sign, e, last in zip((-1.0, 1.0), ends_g, lasts, strict=True)):
+                _rejected('a mouth leads nowhere', grid, r0, c0, mid, width_m, length_m)
                 continue
-            centre_g = mean + 0.5 * (lo + hi) * axis
+            centre_g = mid
             # Short (less than PASSAGE_MIN_ELONGATION times longer than wide), it is a gap: in a
             # wall line (a door's business), between two objects or beside one (walked round).
             # Except a squeeze past things deeper than any wall or door leaf (a sofa, a cart, a
@@ -343,6 +391,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                                      params.seg_wall_line_side_m / res, SIDE_TOL_M / res).max()
                         < WALL_RUNS_ON_SHARE))
                     if not squeeze:
+                        _rejected('no squeeze past deep things', grid, r0, c0, mid, width_m, length_m)
                         continue
                 # A gap where a door was found parts two spaces, and is a passage only when it is
                 # the only way between them (else it is one of their doorways, however thick the
@@ -360,10 +409,24 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 round_reach = WAY_ROUND_M / res if thing is None and not door_at else math.inf
                 if (thing is not None or squeeze) and (door_at or width_m > TIGHT_WIDTH_M) and _way_round(
                         fits, fits, centre_g, axis, half_len, width_m / res, round_reach):
+                    _rejected('a way round it', grid, r0, c0, mid, width_m, length_m)
                     continue
                 if thing is not None and not door_at and _way_round(wide, fits, centre_g, axis, half_len,
                                                                    width_m / res, WAY_ROUND_M / res):
+                    _rejected('open floor round the thing', grid, r0, c0, mid, width_m, length_m)
                     continue
+                # A short gap among equal ones (a grid of bikes, a block of desks, seats) is no
+                # narrow passage: a way round near it is as tight (as wide, a cell of slack), and
+                # none clearly roomier (EQUAL_GAP_ROOMIER_M) leads round it. A person points at the
+                # squeeze that is tighter than the floor around it, not at one of a grid's lanes.
+                if not elongated and (thing is not None or squeeze) and not door_at:
+                    as_wide = d2 >= max(width_m / res / 2.0 - 1.0, 0.0) ** 2
+                    roomier = wide | (d2 >= ((width_m + EQUAL_GAP_ROOMIER_M) / res / 2.0) ** 2)
+                    if (_way_round(as_wide, fits, centre_g, axis, half_len, width_m / res, WAY_ROUND_M / res)
+                            and not _way_round(roomier, fits, centre_g, axis, half_len, width_m / res,
+                                               WAY_ROUND_M / res)):
+                        _rejected('one of equal gaps', grid, r0, c0, mid, width_m, length_m)
+                        continue
             cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
             centre = (float(cx), float(cy))
             ax_w = np.subtract(grid.grid_to_world(r0 + centre_g[1] + axis[1], c0 + centre_g[0] + axis[0]), centre)
@@ -382,6 +445,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                     any(_is_the_door(d, centre, axis_w, length_m, width_m, params) for d in doors)
                     or (not elongated and any(math.dist(d.center, centre) <= length_m / 2 + params.door_max_depth_m
                                               for d in doors))):
+                _rejected('a door', grid, r0, c0, mid, width_m, length_m)
                 continue
             ends_w: list[tuple[float, float]] = []
             spaces: list[str] = []
@@ -794,6 +858,39 @@ def _opens_into_space(open_: BoolArray, end_g: npt.NDArray[np.float64], directio
         return False
     clear = ndi.distance_transform_edt(np.pad(win, 1))[1:-1, 1:-1]
     return bool(clear[lab == start].max() > need)
+
+
+def _leads_on(fits: BoolArray, wide: BoolArray, end_g: npt.NDArray[np.float64], rr: npt.NDArray[np.intp],
+              cc: npt.NDArray[np.intp], width: float, reach: float) -> bool:
+    """Does the way beyond a mouth (``end_g``, x, y in grid cells) lead on to open floor: from the
+    mouth, over cells where the robot fits (``fits``) and not back along the passage itself (its
+    middle line ``rr``, ``cc`` and the floor within its half width ``width / 2`` of it), a cell of
+    ``wide`` floor (wider than any passage) within ``reach`` cells of the mouth? A dead-end slot's
+    far end does not, nor a strip past a gap the robot cannot take; a mouth opening into the next
+    aisle round an island or into a narrow cross aisle does, where that aisle meets the room."""
+    h, w = fits.shape
+    x, y = float(end_g[0]), float(end_g[1])
+    pad = math.ceil(reach) + 1
+    r0, r1 = max(0, math.floor(y) - pad), min(h, math.floor(y) + pad + 1)
+    c0, c1 = max(0, math.floor(x) - pad), min(w, math.floor(x) + pad + 1)
+    own = np.zeros((r1 - r0, c1 - c0), dtype=bool)
+    keep = (rr >= r0) & (rr < r1) & (cc >= c0) & (cc < c1)
+    own[rr[keep] - r0, cc[keep] - c0] = True
+    if not own.any():
+        return False
+    # The passage's own floor: within its half width (and a cell) of its middle line.
+    cut = ndi.distance_transform_edt(~own) <= width / 2.0 + 1.0
+    gy, gx = np.mgrid[r0:r1, c0:c1]
+    dx, dy = gx + 0.5 - x, gy + 0.5 - y
+    # From the mouth (its end of the passage's floor, within its half width), over floor where
+    # the robot fits, not back along the passage.
+    at_mouth = dx * dx + dy * dy <= (width / 2.0 + 1.0) ** 2
+    floor = fits[r0:r1, c0:c1] & (~cut | at_mouth) & (dx * dx + dy * dy <= reach * reach)
+    lab, _n = ndi.label(floor, structure=np.ones((3, 3), dtype=bool))
+    first = np.unique(lab[at_mouth & (lab > 0)])
+    if len(first) == 0:
+        return False
+    return bool((wide[r0:r1, c0:c1] & ~cut & np.isin(lab, first)).any())
 
 
 def _space_beyond(labels: npt.NDArray[np.int32], end_g: npt.NDArray[np.float64],

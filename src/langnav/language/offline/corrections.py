@@ -24,6 +24,7 @@ from langnav.language.offline.idioms import named_turn_alone
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import find_quantities
 from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE, STOP_RE, rx
+from langnav.language.offline.vocabulary import VOCABULARY
 
 #: Words that open a correction of the instruction before ("actually", "no wait", "i'm sorry").
 CORRECTION_START_RE: Final = re.compile(
@@ -31,7 +32,7 @@ CORRECTION_START_RE: Final = re.compile(
     r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|my\s+(?:bad|mistake)|or\s+rather|rather|make\s+that|make\s+it|correction|"
     r"oops)\b[\s,]*)+", re.IGNORECASE)
 #: Words that take back what was said before ("never mind", "scratch that").
-CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|forget\s+(?:it|that|everything|all\s+(?:of\s+)?that)|"
+CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|belay\s+(?:that|the\s+last)|forget\s+(?:it|that|everything|all\s+(?:of\s+)?that)|"
                               r"cancel\s+that|ignore\s+that|disregard\s+that)\b[\s,]*", re.IGNORECASE)
 #: Of those, the words that drop the whole request so far, not only its last instruction: "never mind"
 #: dismisses what the speaker was asking for ("keep going two feet, go south, go two t- ... never mind,
@@ -40,7 +41,7 @@ CANCEL_ALL_RE: Final = re.compile(r"\b(?:never\s*mind|forget\s+(?:everything|all
 #: Words that give the side of a move or a turn (a fragment may carry one).
 SIDE_RE: Final = re.compile(
     r"(?:\b(?:to|on|towards?)\s+(?:the|your)\s+)?\b(?:left|right|clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw|"
-    r"forwards?|backwards?|ahead|straight)\b(?:\s+(?:hand\s+)?side)?")
+    r"forwards?|backwards?|ahead|straight|port|starboard|astern)\b(?:\s+(?:hand\s+)?side)?")
 _HEAD_RE: Final = rx([*lx.ELEMENT_NOUNS], "head")
 #: Words a speaker holds the floor with while correcting ("no, wait, ..."): no instruction of their own.
 _HOLD_RE: Final = re.compile(r"^\s*(?:wait|hold\s+on|hang\s+on|one\s+sec(?:ond)?|let\s+me\s+think)\s*$", re.IGNORECASE)
@@ -226,6 +227,11 @@ def _corrected(previous: str, fragment: str) -> str:
     norm_prev = normalize(previous)
     norm_frag = normalize(fragment)
     if SIDE_RE.search(norm_frag):
+        if not SIDE_RE.search(norm_prev):
+            # no side was read before: the word said where the side goes (right after the verb) is the one
+            # put right ("turn lest 30 degrees. no. left": the recogniser's "lest" was the side)
+            norm_prev = _SIDE_SLOT_RE.sub(lambda m: m.group("verb") if m.group("word") not in VOCABULARY
+                                          and m.group("word") not in lx.STOPWORDS else m.group(0), norm_prev, count=1)
         # the side said before goes, "back" too ("go back two feet, no, forward two feet"; "reverse
         # one metre, actually forward")
         norm_prev = _BACK_RE.sub(" ", _BACK_VERB_RE.sub("move", SIDE_RE.sub(" ", norm_prev)))
@@ -239,6 +245,10 @@ def _corrected(previous: str, fragment: str) -> str:
         for q in reversed(said):
             norm_prev = norm_prev[:q.start] + " " + norm_prev[q.end:]
     return " ".join(f"{norm_prev} {norm_frag}".split())
+
+
+#: A verb of motion opening an instruction and the word right after it (where a side or a way is said).
+_SIDE_SLOT_RE: Final = re.compile(r"^\s*(?P<verb>turn|rotate|move|go|spin|pivot|drive|head|step|veer)\s+(?P<word>[a-z]+)\b")
 
 
 def _restated(previous: str, correction: str) -> str:

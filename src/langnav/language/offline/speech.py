@@ -13,6 +13,7 @@ from typing import Final
 
 from langnav.language.offline.lexicon import TYPOS
 from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS
+from langnav.language.offline.sidetalk import without_side_talk
 from langnav.language.offline.vocabulary import VOCABULARY
 
 #: Hesitation sounds: no meaning in any position.
@@ -83,7 +84,14 @@ HOMOPHONES: Final = (
     (re.compile(rf"\b(?P<slot>{_SIDE_SLOT}|go|move|head|drive|slide|step|to\s+the|on\s+the|a)\s+(?:write|rite|wright)\b",
                 re.IGNORECASE), r"\g<slot> right"),
     (re.compile(rf"\b(?P<slot>{_SIDE_SLOT})\s+lift\b", re.IGNORECASE), r"\g<slot> left"),
+    # "move for word two feet", "move Ford 3 meters": what a recogniser writes for "forward" right after a verb
+    # of motion (where a way is expected; "Ford" or "word" there name nothing the robot could go to)
+    (re.compile(r"\b(?P<verb>move|moving|go|going|drive|driving|head|step|roll|advance|proceed|inch|creep|continue|"
+                r"keep\s+going|carry\s+on|straight|push|nudge|scoot)\s+(?:for\s+word|foreword|fore\s+word|ford|"
+                r"four\s+ward|for\s+ward|fore\s+ward)s?\b", re.IGNORECASE), r"\g<verb> forward"),
     (re.compile(r"\s*\b(?:comma)\b\s*", re.IGNORECASE), ", "),
+    # "go forward five feet, wait, metres": "wait" right before a unit alone puts the unit right
+    (re.compile(rf"\bwait\s*[,.]\s*(?=(?:no\s*,?\s*)?{_UNIT_WORD}\s*(?:[,.;!?]|$))", re.IGNORECASE), "i mean "),
     (re.compile(r"(?<=[a-z0-9])\s+n\s+(?=[a-z])", re.IGNORECASE), " and "),  # chat "n" between two words
     (re.compile(r"\b(?:thn|thne|hten|tehn)\b", re.IGNORECASE), "then"),  # the connective, before the split
     (re.compile(r"\s*\b(?:period(?!\s+of\b)|full\s+stop|new\s*line|new\s+paragraph|semicolon|question\s+mark|"
@@ -122,6 +130,11 @@ REMARKS: Final = re.compile(
     r"[^,.;!?]*"
     r"|(?:and\s+)?(?:be\s+)?careful\s+not\s+to\s+(?:crash|hit|bump|collide|smash|run\s+into|touch)\b[^,.;!?]*)"
     r"|\bso\s+(?:that\s+)?(?:i|we)\s+(?:can|could|may|might|will)\b[^,.;!?]*"
+    # a purpose said of someone else ("so the group can see you", "so that the kids can get past"): why, not where
+    # (one with a way in it, "so you can see behind you", says where the robot is to turn, and stays)
+    r"|\bso\s+(?:that\s+)?(?!(?:you|u)\b)(?:the\s+|my\s+|our\s+|your\s+|his\s+|her\s+|their\s+)?[a-z]+(?:\s+[a-z]+)?\s+"
+    r"(?:can|could|may|might|will|would)\b(?![^,.;!?]*\b(?:behind|left|right|around|round|ahead|north|south|east|west)\b)"
+    r"[^,.;!?]*"
     # "please do one thing, ...": announces the request that follows
     r"|(?:^|(?<=[,.;!?]))\s*(?:please\s+)?do\s+one\s+thing\b[^,.;!?]*"
     # thanks said ahead: "..., that would be great", "that'd be awesome"
@@ -171,6 +184,10 @@ ASIDES: Final = re.compile(
     r"|(?:that|this|it)(?:'s|\s+is)\s+where\s[^,.;!?]*"
     r")\s*(?=[,.;!?]|$)",
     re.IGNORECASE)
+#: "go back out the way, one metre back", "move oot o' the way": getting out of someone's way says why the robot
+#: moves, not where to or how far (the way and the amount are said beside it, or asked).
+OUT_OF_THE_WAY: Final = re.compile(r"\b(?:out|oot)\s+(?:of\s+|o'?\s+)?(?:the|my|our|his|her|their|your|yer)\s+way\b",
+                                   re.IGNORECASE)
 #: A concession before a request: "this room is lovely but I want you to leave it": what the place is like,
 #: said before "but", is a remark; the request follows "but" (and is no name for the place).
 CONCESSION: Final = re.compile(
@@ -220,7 +237,11 @@ RADIO_NO: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*negative(?:\s+on\s+that)?(?:
 #: A radio call opening a message names who is called and who calls ("base to robot, ...", "robot, this is
 #: base, ..."): no instruction.
 _STATION: Final = r"(?:robot|rover|bot|unit|base|command|control|operator|team|hq|headquarters|scout)"
-RADIO_CALL: Final = re.compile(rf"^\s*(?:{_STATION}\s+to\s+{_STATION}|{_STATION},?\s+this\s+is\s+{_STATION})\s*(?=[,.;!?]|$)",
+#: A station's call sign said alone to open the message ("unit one, advance ...", "rover two, ..."): it names
+#: who is called (the robot), as "robot, ..." does; its number counts no amount.
+RADIO_CALL: Final = re.compile(rf"^\s*(?:{_STATION}\s+to\s+{_STATION}|{_STATION},?\s+this\s+is\s+{_STATION}|"
+                               rf"{_STATION}\s+(?:number\s+)?(?:\d{{1,2}}|one|two|three|four|five|six|seven|eight|nine|ten|"
+                               r"alpha|bravo|charlie|delta|echo))\s*(?=[,.;!?]|$)",
                                re.IGNORECASE)
 RADIO_NOISE: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*(?:affirmative|roger(?:\s+that)?|copy(?:\s+that)?|wilco|that\s+is|i\.?e|"
                                 r"over(?:\s+and\s+out)?|out)\s*(?=[,.;!?]|$)", re.IGNORECASE)
@@ -307,7 +328,7 @@ def plain_speech(prompt: str) -> str:
     """``prompt`` with hesitations, hedges, cut-off words, stutters and noise tokens removed, a comma
     before each self-correction marker, the words speech recognition mistook put right, and polite
     frames and side remarks taken out."""
-    text = without_discourse_markers(prompt)
+    text = without_discourse_markers(without_side_talk(prompt))
     for pattern, repl in HOMOPHONES:
         text = pattern.sub(repl, text)
     text = LIST_ITEM.sub(". ", ENUMERATION.sub(" ", text))
@@ -320,6 +341,7 @@ def plain_speech(prompt: str) -> str:
     text = REQUEST_FRAMES.sub(" ", PSEUDO_CLEFT.sub(" ", text))
     text = THAT_CLAUSE.sub("", REMARKS.sub(" ", ASIDES.sub(" ", CONCESSION.sub(" ", text))))
     text = NOT_TOO_FAR.sub(" a little", KEEPING_HEADING.sub(" ", ESTIMATING_WHAT.sub(" ", text)))
+    text = OUT_OF_THE_WAY.sub(" ", text)
     text = _ABANDONED.sub(_drop_abandoned, text)
     kept_cuts = {m.start() for m in _unfinished(text)}  # kept: the reading must ask about them
     text = _CUT_OFF.sub(lambda m: m.group(0) if m.start() in kept_cuts else " ", text)
