@@ -24,12 +24,10 @@ def test_table_scores_match_line_scores(m: npt.NDArray[np.bool_], keep_one_in: i
     rr, cc = np.nonzero(m)
     if rr.size < 2:
         return
-    coarse = np.arange(0.0, 90.0, wall_lines.DIRECTION_BIN_DEG)
-    # The coarse directions, and a refinement around one of them (as dominant_directions asks).
-    for degs in (coarse, coarse[keep_one_in] + np.linspace(-1.0, 1.0, 21)):
-        expected = wall_lines._line_scores(rr.astype(np.float64), -cc.astype(np.float64), degs)
-        got = wall_lines._scores(rr, cc, degs, small=True)
-        assert got.dtype == expected.dtype and np.array_equal(got, expected)
+    expected = wall_lines._line_scores(rr.astype(np.float64), -cc.astype(np.float64),
+                                       np.arange(0.0, 90.0, wall_lines.DIRECTION_BIN_DEG))
+    got = wall_lines._coarse_scores(rr, cc)
+    assert got.dtype == expected.dtype and np.array_equal(got, expected)
 
 
 def test_directions_of_a_rotated_room_match_with_and_without_the_table() -> None:

@@ -35,7 +35,6 @@ from __future__ import annotations
 
 import math
 import threading
-from collections import OrderedDict
 from dataclasses import dataclass
 from typing import Final, Generic, TypeVar
 
@@ -190,15 +189,12 @@ def _line_scores(rows: FloatArray, neg_cols: FloatArray, degs: FloatArray) -> Fl
 
 
 #: Wall masks up to this many rows and columns (a door's surroundings, LOCAL_WALLS_M either side
-#: at 5 cm cells, fits) have their cells' line numbers read from a :class:`_LineTable`, a table
-#: by each cell's (row, column) in the mask, one per set of directions.
+#: at 5 cm cells, fits) have their cells' line numbers along the coarse directions read from a
+#: :class:`_LineTable`, a table by each cell's (row, column) in the mask.
 LINE_TABLE_SIDE: Final = 128
-#: Tables kept besides the coarse directions' (each refinement around a peak has its own; a
-#: building's doors share its few directions): 5.5 MB each, the coarse one 24 MB.
-LINE_TABLES_KEPT: Final = 4
-#: In a table, each line number is stored shifted by this (more than any line number's size:
+#: In the table, each line number is stored shifted by this (more than any line number's size:
 #: the table's diagonal, 128 * sqrt(2) cells) and each direction's numbers by a span of twice
-#: it, so that one count over a table's rows gives every direction's counts apart.
+#: it, so that one count over the table's rows gives every direction's counts apart.
 _TABLE_SHIFT: Final = 184
 _TABLE_SPAN: Final = 2 * _TABLE_SHIFT + 2
 
@@ -207,7 +203,9 @@ class _LineTable:
     """The line numbers :func:`_line_scores` works out for a cell at (row, column) along each of
     a set of directions and its right angle (a pure function of those), kept for the cells of a
     LINE_TABLE_SIDE square as they are first met: a door's surroundings are scored from numbers
-    read, not worked out again for each door (wall cells placed alike in their windows recur)."""
+    read, not worked out again for each door (wall cells placed alike in their windows recur).
+    One table, of the coarse directions, kept for the process (the refinements around a peak
+    differ from building to building: worked out each time)."""
 
     def __init__(self, degs: FloatArray) -> None:
         self.degs = degs.copy()
@@ -216,7 +214,7 @@ class _LineTable:
 
     def scores(self, rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp]) -> FloatArray:
         """``_line_scores(rr, -cc, self.degs)``, exactly, for cells inside the square (call
-        with the tables' lock held)."""
+        with the table's lock held)."""
         flat = rr * LINE_TABLE_SIDE + cc
         new = flat[~self.known[flat]]
         if new.size:
@@ -244,26 +242,18 @@ class _LineTable:
 
 _COARSE_DEGS: Final = np.arange(0.0, 90.0, DIRECTION_BIN_DEG)
 _COARSE_DEGS.flags.writeable = False
-_tables: OrderedDict[bytes, _LineTable] = OrderedDict()
-_tables_lock = threading.Lock()
+#: The coarse directions' table, made on first use (24 MB once filled), and its lock.
+_coarse_table: list[_LineTable] = []
+_coarse_lock = threading.Lock()
 
 
-def _scores(rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp], degs: FloatArray, small: bool) -> FloatArray:
-    """``_line_scores`` of the cells (rr, cc) along ``degs``: from a table when the mask is
-    ``small`` (within LINE_TABLE_SIDE), else worked out."""
-    if not small:
-        return _line_scores(rr.astype(np.float64), -cc.astype(np.float64), degs)
-    key = degs.tobytes()
-    with _tables_lock:
-        table = _tables.get(key)
-        if table is None:
-            table = _tables[key] = _LineTable(degs)
-            # Keep the coarse table and the most recent refinements.
-            while len(_tables) > LINE_TABLES_KEPT + 1:
-                oldest = next(k for k in _tables if k != _COARSE_DEGS.tobytes())
-                del _tables[oldest]
-        _tables.move_to_end(key)
-        return table.scores(rr, cc)
+def _coarse_scores(rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp]) -> FloatArray:
+    """``_line_scores(rr, -cc, _COARSE_DEGS)`` for cells (rr, cc) of a mask within
+    LINE_TABLE_SIDE, from the table."""
+    with _coarse_lock:
+        if not _coarse_table:
+            _coarse_table.append(_LineTable(_COARSE_DEGS))
+        return _coarse_table[0].scores(rr, cc)
 
 
 def dominant_directions(wall: BoolArray) -> list[float]:
@@ -281,11 +271,13 @@ def dominant_directions(wall: BoolArray) -> list[float]:
     if rr.size > DIRECTION_MAX_CELLS:  # a fixed, even sample of the cells is as good
         pick = np.linspace(0, rr.size - 1, DIRECTION_MAX_CELLS).astype(np.int64)
         rr, cc = rr[pick], cc[pick]
-    # A small mask (a door's surroundings) is scored from tables of line numbers (a fixed
+    rows, cols = rr.astype(np.float64), cc.astype(np.float64)
+    grid_deg = _COARSE_DEGS
+    neg_cols = -cols
+    # A small mask (a door's surroundings) is scored from the table of line numbers (a fixed
     # sample of the cells would not be the mask's own cells).
     small = max(wall.shape) <= LINE_TABLE_SIDE and rr.size == np.count_nonzero(wall)
-    grid_deg = _COARSE_DEGS
-    score = _scores(rr, cc, grid_deg, small)
+    score = _coarse_scores(rr, cc) if small else _line_scores(rows, neg_cols, grid_deg)
     base = float(score.min())
     peaks = np.flatnonzero((score >= np.roll(score, 1)) & (score > np.roll(score, -1)))
     peaks = peaks[np.argsort(-score[peaks])]
@@ -295,7 +287,7 @@ def dominant_directions(wall: BoolArray) -> list[float]:
             break
         # Refined to a tenth of a bin around the peak.
         fine = grid_deg[p] + np.linspace(-DIRECTION_BIN_DEG, DIRECTION_BIN_DEG, 21)
-        deg = float(fine[int(np.argmax(_scores(rr, cc, fine, small)))] % 90.0)
+        deg = float(fine[int(np.argmax(_line_scores(rows, neg_cols, fine)))] % 90.0)
         if all(min(abs(deg - t) % 90.0, 90.0 - abs(deg - t) % 90.0) >= DIRECTION_MIN_SEPARATION_DEG
                for t in taken):
             taken.append(deg)
