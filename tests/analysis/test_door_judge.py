@@ -14,6 +14,7 @@ from langnav.analysis.door_judge import (
     BEYOND_MIN_FLOOR_SHARE,
     JAMB_ALONG_MIN_SHARE,
     SEEN_FLOOR_MIN_M,
+    STRIP_WALLED_MAX_SHARE,
     constriction_depth,
     evidence,
     floor_beyond,
@@ -454,3 +455,39 @@ def test_a_gap_blocked_in_its_middle_is_no_door() -> None:
     assert max(ev_blocked.clear_width_m) < 2 * DEFAULT_PARAMS.robot_radius_m
     doors, rest = judge_doors(cands, free, occ, res, DEFAULT_PARAMS, unknown=unknown)
     assert doors == [clear] and rest == [blocked]
+
+
+def aisle_between_blocks_and_a_door_to_rays() -> OccupancyGrid:
+    """A 10 m x 5 m hall; north of it two shelf blocks (scanned on their faces, unknown inside)
+    stand 0.8 m apart, and the aisle between them was seen 1.5 m in; a 0.9 m door in the hall's
+    east wall (0.1 m thick) opens onto territory never entered, seen only as the rays through it."""
+    b = MapBuilder(14.0, 10.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 10.0, 5.0)
+    b.rect(2.0, 5.0, 3.5, 8.0, OCCUPIED).unknown(2.05, 5.05, 3.45, 7.95)
+    b.rect(4.3, 5.0, 6.0, 8.0, OCCUPIED).unknown(4.35, 5.05, 5.95, 7.95)
+    b.free(3.55, 4.9, 4.25, 6.5)
+    b.door_v(10.0, 2.5, 0.9, depth_m=0.1)
+    b.free(10.05, 2.2, 11.5, 2.8)
+    return b.build("aisle between blocks and a door to rays")
+
+
+def test_the_mouth_of_an_aisle_running_into_the_unknown_is_no_door() -> None:
+    """Both openings lead from the hall into unexplored territory and have wall at both jambs.
+    Beyond the door lie only the rays through it, bounded by the unknown; beyond the aisle's
+    mouth the strip seen runs on as narrow as the mouth between the blocks' scanned sides: an
+    aisle running on, not a door."""
+    grid = aisle_between_blocks_and_a_door_to_rays()
+    free, occ, unknown = grid.cells == FREE, grid.cells == OCCUPIED, grid.cells == UNKNOWN
+    res = grid.resolution_m
+    r, c = grid.world_to_cell(3.9, 5.0)
+    aisle = RawDoor(1, 0, (float(r) + 0.5, float(c) + 0.5), (1.0, 0.0), 0.75)
+    r, c = grid.world_to_cell(10.0, 2.5)
+    door = RawDoor(1, 0, (float(r) + 0.5, float(c) + 0.5), (0.0, 1.0), 0.9)
+    ev_aisle = evidence(free, occ, aisle.center_rc, aisle.normal_rc, 0.75, res, DEFAULT_PARAMS, unknown,
+                        into_unknown=True)
+    ev_door = evidence(free, occ, door.center_rc, door.normal_rc, 0.9, res, DEFAULT_PARAMS, unknown,
+                       into_unknown=True)
+    assert ev_aisle.walled_beyond_share > STRIP_WALLED_MAX_SHARE
+    assert ev_door.walled_beyond_share == 0.0
+    doors, rest = judge_doors([aisle, door], free, occ, res, DEFAULT_PARAMS, unknown=unknown)
+    assert doors == [door] and rest == [aisle]
