@@ -47,6 +47,12 @@ stand in and the door leaf can open past the corner).
 seen only from around it), deeper than a wall is thick and shallower than a room, is a piece of
 furniture: the gap beside it is a way past the furniture, not a door.
 
+*A door is judged on its wall line.* The flood puts the boundary between two spaces where
+their clearance basins meet, which beside a door is often off the wall: pulled into a room by
+its unscanned shadow, or slanted from a jamb to the corner of the room beyond. A person looks at
+the opening where the wall is, the narrowest crossing next to that boundary: the cells there are
+judged.
+
 *A doorway is clear across.* From jamb to jamb, through its centre, the floor is open for at
 least the robot's width: the robot drives through a door. A "gap" whose line through its
 centre is blocked by a speck of clutter a few centimetres from its middle is a gap between
@@ -66,6 +72,7 @@ Pure functions over the grid's masks; thresholds in metres with their reasons.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 from typing import Final
@@ -152,6 +159,10 @@ LOCAL_WALLS_M: Final = 3.0
 #: narrow as the opening with scanned wall beside it for more than this share (half: a door
 #: frame's returns are short, a passage's walls run on as far as it was seen).
 STRIP_WALLED_MAX_SHARE: Final = 0.5
+#: The wall line of an opening between two spaces (its narrowest crossing) is looked for within
+#: this distance (m) of the boundary the flood found, along its normal: a wall's thickness and
+#: a door's depth (a room's unscanned shadow beside the door pulls the boundary that far).
+WALL_LINE_SEARCH_M: Final = 0.5
 #: Whether an opening was scanned is read over this share of its width about its centre (its
 #: ends are the ragged jambs).
 OPENING_MIDDLE_SHARE: Final = 0.6
@@ -572,6 +583,20 @@ def floor_beyond(free: BoolArray, far_from_unknown: BoolArray, center_rc: tuple[
     return float(_sample(far_from_unknown, rows, cols, outside=False)[f].mean())
 
 
+def on_wall_line(free: BoolArray, door: RawDoor, resolution_m: float) -> RawDoor:
+    """``door`` moved along its normal onto its narrowest free crossing within
+    WALL_LINE_SEARCH_M (the nearest such crossing to where it was; unchanged when no crossing
+    there is free)."""
+    t_m, w_m = free_widths(free, door.center_rc, door.normal_rc, resolution_m, WALL_LINE_SEARCH_M)
+    ok = (np.abs(t_m) <= WALL_LINE_SEARCH_M + 1e-9) & (w_m > 0)
+    if not ok.any():
+        return door
+    narrowest = np.flatnonzero(ok & (w_m <= w_m[ok].min() + 1e-9))
+    step = float(t_m[narrowest[np.argmin(np.abs(t_m[narrowest]))]]) / resolution_m
+    nr, nc = door.normal_rc
+    return dataclasses.replace(door, center_rc=(door.center_rc[0] + step * nr, door.center_rc[1] + step * nc))
+
+
 def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray, resolution_m: float,
                 params: AnalysisParams, unknown: BoolArray | None = None) -> tuple[list[RawDoor], list[RawDoor]]:
     """Split ``candidates`` into (doors, the rest) by the rules of the module doc (``unknown``:
@@ -585,7 +610,10 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
         bound = math.ceil(SEEN_FLOOR_MIN_M / resolution_m) + 1
         far = np.sqrt(truncated_sq_edt(~unknown, bound).astype(np.float64)) * resolution_m >= SEEN_FLOOR_MIN_M
     for d in candidates:
-        ev = evidence(free, occupied, d.center_rc, d.normal_rc, d.width_m, resolution_m, params, unknown,
+        # Between two spaces, judged on the wall line (into the unexplored, the rays beyond
+        # would read as the narrowest crossing).
+        at = d if d.b == 0 else on_wall_line(free, d, resolution_m)
+        ev = evidence(free, occupied, at.center_rc, at.normal_rc, d.width_m, resolution_m, params, unknown,
                       into_unknown=d.b == 0)
         ok = is_door(ev, params, into_unknown=d.b == 0, in_wall_line=d.in_wall_line, width_m=d.width_m)
         if ok and far is not None:
@@ -616,6 +644,7 @@ __all__ = [
     "is_furniture",
     "judge_doors",
     "line_turn_deg",
+    "on_wall_line",
     "opens_wider",
     "scanned_across",
     "typical_width",
