@@ -681,3 +681,35 @@ def test_passages_do_not_depend_on_the_maps_resolution(building: str, resolution
         assert p.center == pytest.approx(q.center, abs=max(resolution_m, 0.05) + 0.01)
         assert p.width_m == pytest.approx(q.width_m, abs=max(resolution_m, 0.05) + 0.01)
         assert p.length_m == pytest.approx(q.length_m, abs=2 * max(resolution_m, 0.05) + 0.01)
+
+
+def pews(gap_m: float, resolution_m: float = 0.05) -> OccupancyGrid:
+    """A 10 x 8 m nave: two blocks of five 3 m pews (0.4 m deep) either side of a 1 m centre
+    aisle, ``gap_m`` between one pew and the next, the rows from y = 2 m."""
+    b = MapBuilder(12.0, 10.0, resolution_m=resolution_m, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 10.0, 8.0)
+    for k in range(5):
+        y = 2.0 + k * (0.4 + gap_m)
+        b.box(2.0, y, 5.0, y + 0.4)
+        b.box(6.0, y, 9.0, y + 0.4)
+    return b.build(source=f"pews_{gap_m}")
+
+
+@pytest.mark.parametrize("resolution_m", [0.025, 0.05, 0.1])
+def test_the_slots_between_pews_are_no_passages(resolution_m: float) -> None:
+    # 0.5 m as the map reads it (pews 0.35 m apart, their edges cleared by the lidar): no way
+    # to send a 0.35 m robot, and no person calls the slot one sits in a passage.
+    assert passages_of(pews(0.5, resolution_m)) == ()
+
+
+@pytest.mark.parametrize("resolution_m", [0.025, 0.05, 0.1])
+def test_aisles_between_rows_wide_enough_for_the_robot_are_passages(resolution_m: float) -> None:
+    # The same nave with 0.6 m between the rows: each of the eight slots is a short aisle the
+    # robot can take (0.125 m a side), from the side aisle to the centre aisle.
+    found = sorted(passages_of(pews(0.6, resolution_m)), key=lambda p: (p.center[1], p.center[0]))
+    want = [(x, 2.4 + k * 1.0 + 0.3) for k in range(4) for x in (3.5, 7.5)]
+    assert len(found) == len(want)
+    for p, centre in zip(found, want, strict=True):
+        assert p.center == pytest.approx(centre, abs=0.06)
+        assert p.width_m == pytest.approx(0.6, abs=0.051)
+        assert p.length_m == pytest.approx(3.0, abs=0.15)

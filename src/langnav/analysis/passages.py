@@ -8,7 +8,7 @@ close to its typical width (the stretch over which the way stays tight, between 
 sides, without the flaring mouths; one pinch point does not shorten it). A core is a passage when
 it is longer than a doorway could be deep in this building (``params.door_max_depth_m`` and
 ``WALL_LENGTHS`` of its typical wall thickness, :func:`typical_wall_thickness_m`; up to
-``params.passage_min_length_m``), wide enough for the robot with a margin, has sides along most
+``params.passage_min_length_m``), wide enough for the robot with a margin (``PASSAGE_MIN_MARGIN_M``: 0.1 m a side), has sides along most
 of its length (or a wall along one side and a single doorway in the other: a passage with a door
 off it), solid ones (walls, furniture, a shelf's unscanned inside: not
 laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
@@ -34,6 +34,7 @@ is split into its two-sided stretches, and each is judged on its own.
 
 from __future__ import annotations
 
+import logging
 import math
 from collections.abc import Mapping, Sequence
 from typing import Final
@@ -123,9 +124,15 @@ WALL_LENGTHS: Final = 2.0
 WALL_MAX_THICKNESS_M: Final = 0.45
 #: Look this far beyond a mouth for the space the passage opens into.
 MOUTH_SEARCH_M: Final = 1.0
-#: A passage leaves the robot at least this much room on each side (about a robot's
-#: localisation error): a 0.40 m slot is no way through for a 0.35 m robot.
+#: Where the robot's centre fits with its localisation error (about this much room on each
+#: side): the floor of a way round a squeeze.
 PASSAGE_SIDE_MARGIN_M: Final = 0.05
+#: A narrow passage leaves the robot at least this much room on each side as the map reads it:
+#: its localisation error (PASSAGE_SIDE_MARGIN_M) and as much again for the map itself, whose
+#: lidar clears a cell or two off a thing's grazed edges (a row of pews 0.35 m apart maps with
+#: 0.45-0.5 m gaps). A 0.5 m gap is no way to send a 0.35 m robot through, and no person calls
+#: the slot between two pews, seats or bikes a passage.
+PASSAGE_MIN_MARGIN_M: Final = 0.1
 #: A side is solid when nothing open lies within this depth past where it starts (a shelf's
 #: unscanned inside, a wall); laser-ray stripes of unknown are thinner, with free space behind.
 SOLID_UNKNOWN_DEPTH_M: Final = 0.3
@@ -137,6 +144,18 @@ MOUTH_OPEN_SEARCH_M: Final = 1.5
 SIDE_BATCH_SAMPLES: Final = 400_000
 
 BoolArray = npt.NDArray[np.bool_]
+
+log = logging.getLogger(__name__)
+
+
+def _rejected(reason: str, grid: OccupancyGrid, r0: int, c0: int, centre_g: npt.NDArray[np.float64],
+              width_m: float = math.nan, length_m: float = math.nan) -> None:
+    """Log (debug) why a candidate (its centre in window cells) is no passage: what a reader of
+    a map asks when a passage they point at is not found."""
+    if log.isEnabledFor(logging.DEBUG):
+        x, y = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
+        log.debug("no passage at (%.2f, %.2f), width %.2f m, length %.2f m: %s", float(x), float(y), width_m,
+                  length_m, reason)
 
 
 def clearance_m(grid: OccupancyGrid, blocking: BoolArray) -> npt.NDArray[np.float64]:
@@ -278,23 +297,28 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 if across is not None and len(rr) * math.sqrt(2) >= min_cells:
                     retry_r.append(rr[across])
                     retry_c.append(cc[across])
+                _rejected('no two sides along it', grid, r0, c0, pts.mean(axis=0))
                 continue
             # Width: across the passage between its two sides (exact for axis-aligned sides).
             width_m = (median(sides[bounded].sum(axis=1)) - 0.5) * res
             # It runs where it has two sides: not on into its flaring mouths.
             lo, hi = float(proj[bounded].min()), float(proj[bounded].max())
             length_m = (hi - lo + 1.0) * res
+            mid = mean + 0.5 * (lo + hi) * axis
             if length_m < min_len_m:
+                _rejected('shorter than a doorway is deep', grid, r0, c0, mid, width_m, length_m)
                 continue
             # Wide enough for the robot to pass, and narrow (the band's test used the skeleton's
             # width, up to a cell off).
-            if width_m < 2.0 * (params.robot_radius_m + PASSAGE_SIDE_MARGIN_M) or width_m > params.passage_max_width_m:
+            if width_m < 2.0 * (params.robot_radius_m + PASSAGE_MIN_MARGIN_M) or width_m > params.passage_max_width_m:
+                _rejected('too narrow or too wide', grid, r0, c0, mid, width_m, length_m)
                 continue
             # Between two things: both sides solid along most of its two-sided length, not
             # laser-ray stripes.
             normal = np.array([-axis[1], axis[0]])
             solid = _solid_sides(sub, occupied[r0:r1, c0:c1], exterior[r0:r1, c0:c1], pts, normal, sides, SOLID_UNKNOWN_DEPTH_M / res)
             if np.count_nonzero(solid) < MIN_BOUNDED_FRACTION * np.count_nonzero(bounded):
+                _rejected('sides not solid', grid, r0, c0, mid, width_m, length_m)
                 continue
             ends_g = [mean + lo * axis, mean + hi * axis]
             # It leads somewhere: both mouths open into free space wider than any passage. A way
@@ -307,8 +331,9 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                      else [None, None])
             if not all(_opens_into_space(sub, e, sign * axis, res, params, last)
                        for sign, e, last in zip((-1.0, 1.0), ends_g, lasts, strict=True)):
+                _rejected('a mouth leads nowhere', grid, r0, c0, mid, width_m, length_m)
                 continue
-            centre_g = mean + 0.5 * (lo + hi) * axis
+            centre_g = mid
             # Short (less than PASSAGE_MIN_ELONGATION times longer than wide), it is a gap: in a
             # wall line (a door's business), between two objects or beside one (walked round).
             # Except a squeeze past things deeper than any wall or door leaf (a sofa, a cart, a
@@ -343,6 +368,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                                      params.seg_wall_line_side_m / res, SIDE_TOL_M / res).max()
                         < WALL_RUNS_ON_SHARE))
                     if not squeeze:
+                        _rejected('no squeeze past deep things', grid, r0, c0, mid, width_m, length_m)
                         continue
                 # A gap where a door was found parts two spaces, and is a passage only when it is
                 # the only way between them (else it is one of their doorways, however thick the
@@ -360,9 +386,11 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 round_reach = WAY_ROUND_M / res if thing is None and not door_at else math.inf
                 if (thing is not None or squeeze) and (door_at or width_m > TIGHT_WIDTH_M) and _way_round(
                         fits, fits, centre_g, axis, half_len, width_m / res, round_reach):
+                    _rejected('a way round it', grid, r0, c0, mid, width_m, length_m)
                     continue
                 if thing is not None and not door_at and _way_round(wide, fits, centre_g, axis, half_len,
                                                                    width_m / res, WAY_ROUND_M / res):
+                    _rejected('open floor round the thing', grid, r0, c0, mid, width_m, length_m)
                     continue
             cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
             centre = (float(cx), float(cy))
@@ -382,6 +410,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                     any(_is_the_door(d, centre, axis_w, length_m, width_m, params) for d in doors)
                     or (not elongated and any(math.dist(d.center, centre) <= length_m / 2 + params.door_max_depth_m
                                               for d in doors))):
+                _rejected('a door', grid, r0, c0, mid, width_m, length_m)
                 continue
             ends_w: list[tuple[float, float]] = []
             spaces: list[str] = []

@@ -171,6 +171,10 @@ sideways move add nothing; "where you at", "where do you stand?" -> pose query; 
 - Contradictions ask: both sides in one turn ("rotate clockwise to the left") -> no steps, ask which way. A \
 place named by a thing in it ("the room with the sofa") or by two sides ("the door behind you on the left") \
 -> ask.
+- A boat's words are ways: "ahead" = forward, "astern" = backward, "port" = left, "starboard" = right. An amount \
+said only to be large ("a fair bit", "quite a way", "a good distance", "a lot") -> ask how far (unlike "a \
+little", it has no bound). A word you do not understand where the way or the amount goes ("go aft one metre" \
+if you do not know "aft") -> ask; never assume forward.
 - Ask, don't guess: when the side of a turn ("rotate 45 degrees"), the unit of a distance ("move forward 3") \
 or any word about where or how far is unclear, give no steps; in clarification say what you understood and \
 ask about the rest."""

@@ -24,6 +24,7 @@ from langnav.language.offline.idioms import named_turn_alone
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import find_quantities
 from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE, STOP_RE, rx
+from langnav.language.offline.vocabulary import VOCABULARY
 
 #: Words that open a correction of the instruction before ("actually", "no wait", "i'm sorry").
 CORRECTION_START_RE: Final = re.compile(
@@ -226,6 +227,11 @@ def _corrected(previous: str, fragment: str) -> str:
     norm_prev = normalize(previous)
     norm_frag = normalize(fragment)
     if SIDE_RE.search(norm_frag):
+        if not SIDE_RE.search(norm_prev):
+            # no side was read before: the word said where the side goes (right after the verb) is the one
+            # put right ("turn lest 30 degrees. no. left": the recogniser's "lest" was the side)
+            norm_prev = _SIDE_SLOT_RE.sub(lambda m: m.group("verb") if m.group("word") not in VOCABULARY
+                                          and m.group("word") not in lx.STOPWORDS else m.group(0), norm_prev, count=1)
         # the side said before goes, "back" too ("go back two feet, no, forward two feet"; "reverse
         # one metre, actually forward")
         norm_prev = _BACK_RE.sub(" ", _BACK_VERB_RE.sub("move", SIDE_RE.sub(" ", norm_prev)))
@@ -239,6 +245,10 @@ def _corrected(previous: str, fragment: str) -> str:
         for q in reversed(said):
             norm_prev = norm_prev[:q.start] + " " + norm_prev[q.end:]
     return " ".join(f"{norm_prev} {norm_frag}".split())
+
+
+#: A verb of motion opening an instruction and the word right after it (where a side or a way is said).
+_SIDE_SLOT_RE: Final = re.compile(r"^\s*(?P<verb>turn|rotate|move|go|spin|pivot|drive|head|step|veer)\s+(?P<word>[a-z]+)\b")
 
 
 def _restated(previous: str, correction: str) -> str:

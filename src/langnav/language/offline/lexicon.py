@@ -369,7 +369,9 @@ MOVE_DIRECTIONS: Final[dict[str, Direction]] = {
         "up", "closer", "nearer")},
     **{w: Direction.BACKWARD for w in (
         "backward", "backwards", "back", "in reverse", "reverse", "rearward", "rearwards",
-        "to the back", "straight back", "back up", "backup", "back off", "the other way")},
+        "to the back", "straight back", "back up", "backup", "back off", "the other way",
+        # a boat's words, ordinary English for anyone who has been on one: astern is backwards
+        "astern")},
     **{w: Direction.LEFT for w in (
         "left", "to the left", "to your left", "leftward", "leftwards", "sideways left",
         "sideways to the left", "to the left side", "left side", "on the left", "on your left",
@@ -419,6 +421,17 @@ LITTLE_PHRASES: Final = (
       for noun in ("bit", "touch", "tad", "smidge", "nudge", "amount")),
 )
 
+#: Amounts said only to be large ("a fair bit", "quite a way", "a good distance", "a lot"): unlike "a
+#: little", which the contract bounds (0.15-0.5 m, 10-40 degrees), a large amount said without a number
+#: has no bound a person would agree on, so the robot asks how far (never a guessed distance).
+MUCH_PATTERNS: Final = (
+    r"\b(?:a\s+)?(?:fair|good|decent|big|long|large|great|considerable|healthy|reasonable|sizeable|sizable|"
+    r"fair\s+old|good\s+long)\s+(?:bit|way|ways|distance|amount|stretch|piece|chunk|whack|lot)\b",
+    r"\bquite\s+(?:a\s+)?(?:bit|way|ways|distance|lot|stretch)\b", r"\ba\s+(?:whole\s+)?lot\b", r"\ba\s+ways\b",
+    r"\bsome\s+(?:way|distance)\b(?!\s+(?:to|of)\b)", r"\bplenty\b", r"\bloads\b", r"\ba\s+(?:fair\s+)?whack\b",
+    r"\bheaps\b", r"\ba\s+long\s+way\b",
+)
+
 # ------------------------------------------------------------------------------ filler & safety
 #: Politeness and filler, removed before reading (consumed, never "unread").
 FILLER_PATTERNS: Final = (
@@ -451,6 +464,8 @@ FILLER_PATTERNS: Final = (
     r"\bover\s+there\b(?=.*\b(?:to|through)\b)", r"\bmy\s+friend\b", r"\bsir\b", r"\bmister\b",
     r"\bwhat\s+i\s+want\s+is\s+(?:for\s+you\s+)?(?:to\s+)?", r"\bdo\s+me\s+a\s+favou?r\s+and\b",
     r"\bi\s+(?:would\s+)?appreciate\s+(?:it\s+)?if\s+you\s+(?:would|could)?\b", r"\byou\s+(?:should|must|need\s+to|have\s+to|can|may)\b",
+    # "start moving ten feet", "begin to turn left": the aspect verb says when the motion begins, not where
+    r"\b(?:start|begin)\s+(?:to\s+)?(?=\w+ing\b|(?:move|go|drive|turn|rotate|head|back|reverse|roll)\b)",
     r"\bmake\s+sure\s+(?:to|you)\b", r"\btry\s+(?:to|and)\b", r"\btry\s+(?=\w+ing\b)", r"\bplease\s+do\b", r"\bgo\s+on\b(?=\s+and\b)",
     r"\bfrom\s+(?:here|there|where\s+you\s+are(?:\s+now)?)\b", r"\bstarting\s+from\s+here\b",
     # a name for the robot said in passing ("turn around, silly")
@@ -660,4 +675,6 @@ NOT_TYPOS: Final = frozenset({
     "though", "thorough", "thought", "tough", "bought", "father", "farther", "further", "closer",
     "sixths", "eights", "eighty", "fifth", "fifty", "fourth", "forty", "fourty", "nearer",
     "navigator", "explorer", "explored", "exploring", "follows", "follower", "middles", "cold",
+    # "a fair bit" is a large amount (it asks how far), not "far"
+    "fair",
 })

@@ -9,7 +9,7 @@ from typing import Final
 from langnav.language.intent import Amount, Direction, Movement, Step
 from langnav.language.offline import lexicon as lx
 from langnav.language.offline.numbers import Quantity, QuantityKind, find_quantities
-from langnav.language.offline.patterns import LITTLE_RE, MOVE_DIR_RE
+from langnav.language.offline.patterns import LITTLE_RE, MOVE_DIR_RE, MUCH_RE
 from langnav.language.offline.reading import (
     ASK_BOTH_SIDES,
     ASK_DISTANCE,
@@ -60,8 +60,9 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
         direction = next((d for d in directions if d in (Direction.LEFT, Direction.RIGHT)), direction)
         return [rotation_from(c, direction, quantities, [])] if direction in (Direction.LEFT, Direction.RIGHT) \
             else [rotation(c, None)]  # "go left 90 degrees", "then 45 degrees"
+    much = c.s.take_all(MUCH_RE)
     little = c.s.take_all(LITTLE_RE)
-    if verb == Verb.NONE and direction is None and not quantities:
+    if verb == Verb.NONE and direction is None and not quantities and not much:
         return []
     if verb == Verb.NONE and direction in (Direction.LEFT, Direction.RIGHT) and not lengths:
         c.doubt(ELLIPSIS_FACTOR)  # "then left": a turn
@@ -88,8 +89,12 @@ def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
         else:
             c.lost.append(c.s.text[q.start:q.end])
     distance = amount_said(c, counted)
-    if distance is None and direction is None and not little:
+    if distance is None and direction is None and not little and not much:
         return []  # "go to the kitchen": no element, no direction, no number -> a name or nothing
+    if distance is None and much:
+        # "go forward a fair bit": an amount said only to be large has no bound: ask how far
+        c.asks.append(ASK_HOW_MANY.format(said=c.s.text[much[0].start():much[0].end()].strip()))
+        little = []
     if distance is None:
         if little:
             amount = Amount.LITTLE

@@ -96,6 +96,7 @@ from langnav.language.offline.refusals import (
 from langnav.language.offline.scratch import Clause, Scratch
 from langnav.language.offline.turns import rotate_steps
 from langnav.language.offline.verbs import Verb, main_verb
+from langnav.language.offline.vocabulary import VOCABULARY
 
 __all__ = ["Problem", "Reading", "is_unsafe", "read_clause"]
 
@@ -184,11 +185,14 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
         return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.DURATION)
     unnumbered = [st for st in steps if st.movement in (Movement.MOVE, Movement.ROTATE)
                   and st.target is None] if not find_quantities(norm) else []
-    way_unread = c.guessed_direction and any(_WAY_INSIDE_RE.search(w) for w in leftovers)
+    # a move whose way was assumed (forward: "go 2 m") while a word of the clause was not understood: that
+    # word may be the way ("go astern one metre", "go backside one metre", "go aft two feet"), and the
+    # assumed way could be the very opposite of the one said; a person would ask which way, so do we
+    way_unread = (c.guessed_direction and bool(leftovers or c.lost)) or _unread_before_amount(c, norm, steps)
     if ((guessed or unnumbered) and (leftovers or c.lost)) or way_unread:
         # a default move or turn built around words not understood ("take the stairs ..."), or a move
-        # whose way was assumed while a word not understood has a way in it ("go backside one metre":
-        # it may be the way) is a misreading: never motion, hand the clause on instead
+        # whose way was assumed while a word was not understood is a misreading: never motion, hand the
+        # clause on instead
         return Reading(unread=(text,), confidence=NOTHING_READ_CONFIDENCE, problem=Problem.UNREADABLE)
     c.lost.extend(c.s.text[m.start():m.end()].strip() for m in durations)
     if not steps:
@@ -209,6 +213,31 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
                    through_previous=c.through_previous, open=_is_open(steps, norm), asks=tuple(c.asks))
 
 
+#: The last word before a place in the text (its span is checked against what was read).
+_LAST_WORD_RE: Final = re.compile(r"([a-z][a-z'-]*)[^a-z0-9]*$")
+
+
+def _unread_before_amount(c: Clause, norm: str, steps: list[Step]) -> bool:
+    """A word not understood right before the amount of a plain move or turn ("move forward zorbl two
+    metres", "turn left nigh on ninety degrees"): the word in that slot says something about the amount or
+    the way ("nigh", "twenny", "astern"), so the amount read without it may not be the one meant; a person
+    would ask, so do we. (Words the reading knows and left as harmless, "full", "direction", and a number
+    started and said again, "fif- ninety", are no such word.)"""
+    if c.asks or not any(st.movement in (Movement.MOVE, Movement.ROTATE) and st.target is None
+                         and st.heading_deg is None for st in steps):
+        return False  # (a reading that asks already, "turn lest 30 degrees": which way?, may still be corrected)
+    for q in find_quantities(norm):
+        m = _LAST_WORD_RE.search(norm[:q.start])
+        if m is None:
+            continue
+        word = m.group(1)
+        if word in VOCABULARY or any(n.startswith(word) for n in NUMBER_WORD_SET):
+            continue  # a word the reading knows (and chose to leave), or a number started again ("fif- ninety")
+        if c.s.is_free(m.start(1), m.end(1)):
+            return True
+    return False
+
+
 def _number_word_left(leftovers: list[str], norm: str) -> bool:
     """A number word left unread ("rover, advance one two feet": the "one"): the amount was not read in
     full. ("one" is also a pronoun, "the one on the left": only right before another number is it one.)"""
@@ -218,8 +247,6 @@ def _number_word_left(leftovers: list[str], norm: str) -> bool:
 
 _ONE_BEFORE_NUMBER_RE: Final = re.compile(rf"\bone\s+(?:\d|(?:{NUMBER_WORDS})\b)")
 NUMBER_WORD_SET: Final = frozenset(NUMBER_WORD_LIST)
-#: A word not read that has a way inside it ("backside", "leftways", "rearward"): it may say the way.
-_WAY_INSIDE_RE: Final = re.compile(r"back|side|left|right|front|rear|revers|ward|round")
 #: Words that give the side of a move or a turn.
 _SIDE_WORD_RE: Final = re.compile(r"\b(?:left|right|forwards?|ahead|straight|back|backwards?|reverse|around|round|"
                                   r"clockwise|counter\s*clockwise|anti\s*clockwise|sideways)\b")

@@ -25,5 +25,7 @@ ROTATE_VERB_RE: Final = rx(lx.ROTATE_VERBS, "verb")
 GO_VERB_RE: Final = rx(lx.GO_VERBS, "verb")
 #: "a little bit more", "a tad further": a little (it adds to what was done).
 LITTLE_RE: Final = re.compile(lx.phrase_regex(lx.LITTLE_PHRASES) + r"(?:\s+(?:more|further|farther|extra|again)\b)?")
+#: "a fair bit", "quite a way further": an amount said only to be large (ask how far).
+MUCH_RE: Final = re.compile("(?:" + any_of(lx.MUCH_PATTERNS).pattern + r")(?:\s+(?:more|further|farther|extra|again))?\b")
 MOVE_DIR_RE: Final = rx(lx.MOVE_DIRECTIONS, "dir")
 ROTATE_DIR_RE: Final = rx(lx.ROTATE_DIRECTIONS, "dir")

@@ -42,6 +42,7 @@ ASK_DISTANCE: Final = "How far should I move {direction}?"
 ASK_UNIT: Final = "In what unit is '{number}': metres, feet or something else?"
 ASK_AMOUNT: Final = "I heard more than one amount ({amounts}): which one did you mean?"
 ASK_HOW_MANY: Final = "How far exactly is '{said}'?"
+ASK_HOW_MUCH_TURN: Final = "How many degrees exactly is '{said}'?"
 
 
 class Problem(StrEnum):

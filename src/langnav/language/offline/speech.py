@@ -83,6 +83,11 @@ HOMOPHONES: Final = (
     (re.compile(rf"\b(?P<slot>{_SIDE_SLOT}|go|move|head|drive|slide|step|to\s+the|on\s+the|a)\s+(?:write|rite|wright)\b",
                 re.IGNORECASE), r"\g<slot> right"),
     (re.compile(rf"\b(?P<slot>{_SIDE_SLOT})\s+lift\b", re.IGNORECASE), r"\g<slot> left"),
+    # "move for word two feet", "move Ford 3 meters": what a recogniser writes for "forward" right after a verb
+    # of motion (where a way is expected; "Ford" or "word" there name nothing the robot could go to)
+    (re.compile(r"\b(?P<verb>move|moving|go|going|drive|driving|head|step|roll|advance|proceed|inch|creep|continue|"
+                r"keep\s+going|carry\s+on|straight|push|nudge|scoot)\s+(?:for\s+word|foreword|fore\s+word|ford|"
+                r"four\s+ward|for\s+ward|fore\s+ward)s?\b", re.IGNORECASE), r"\g<verb> forward"),
     (re.compile(r"\s*\b(?:comma)\b\s*", re.IGNORECASE), ", "),
     (re.compile(r"(?<=[a-z0-9])\s+n\s+(?=[a-z])", re.IGNORECASE), " and "),  # chat "n" between two words
     (re.compile(r"\b(?:thn|thne|hten|tehn)\b", re.IGNORECASE), "then"),  # the connective, before the split
@@ -220,7 +225,11 @@ RADIO_NO: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*negative(?:\s+on\s+that)?(?:
 #: A radio call opening a message names who is called and who calls ("base to robot, ...", "robot, this is
 #: base, ..."): no instruction.
 _STATION: Final = r"(?:robot|rover|bot|unit|base|command|control|operator|team|hq|headquarters|scout)"
-RADIO_CALL: Final = re.compile(rf"^\s*(?:{_STATION}\s+to\s+{_STATION}|{_STATION},?\s+this\s+is\s+{_STATION})\s*(?=[,.;!?]|$)",
+#: A station's call sign said alone to open the message ("unit one, advance ...", "rover two, ..."): it names
+#: who is called (the robot), as "robot, ..." does; its number counts no amount.
+RADIO_CALL: Final = re.compile(rf"^\s*(?:{_STATION}\s+to\s+{_STATION}|{_STATION},?\s+this\s+is\s+{_STATION}|"
+                               rf"{_STATION}\s+(?:number\s+)?(?:\d{{1,2}}|one|two|three|four|five|six|seven|eight|nine|ten|"
+                               r"alpha|bravo|charlie|delta|echo))\s*(?=[,.;!?]|$)",
                                re.IGNORECASE)
 RADIO_NOISE: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*(?:affirmative|roger(?:\s+that)?|copy(?:\s+that)?|wilco|that\s+is|i\.?e|"
                                 r"over(?:\s+and\s+out)?|out)\s*(?=[,.;!?]|$)", re.IGNORECASE)

@@ -10,11 +10,12 @@ from langnav.language.intent import Amount, Detail, Direction, Movement, Step
 from langnav.language.offline import lexicon as lx
 from langnav.language.offline.navigation import ref_step
 from langnav.language.offline.numbers import Quantity, QuantityKind, find_quantities, one_amount
-from langnav.language.offline.patterns import LITTLE_RE, ROTATE_DIR_RE
+from langnav.language.offline.patterns import LITTLE_RE, MUCH_RE, ROTATE_DIR_RE
 from langnav.language.offline.phrases import Phrase
 from langnav.language.offline.reading import (
     ASK_AMOUNT,
     ASK_BOTH_SIDES,
+    ASK_HOW_MUCH_TURN,
     ASK_SIDE,
     ASK_UNIT,
     DEFAULT_TURN_DEG,
@@ -132,7 +133,12 @@ def _single_rotation(c: Clause, vm: re.Match[str] | None) -> Step:
         else:
             c.lost.append(c.text)
     angle = amount_said(c, counted)
+    much = c.s.take_all(MUCH_RE)
     little = c.s.take_all(LITTLE_RE)
+    if much and angle is None:
+        # "turn left a fair bit": a turn said only to be large has no bound a person would agree on: ask
+        c.asks.append(ASK_HOW_MUCH_TURN.format(said=c.s.text[much[0].start():much[0].end()].strip()))
+        little = []
     sides: list[Direction] = []
     for m in c.s.take_all(ROTATE_DIR_RE):
         d = lx.lookup(lx.ROTATE_DIRECTIONS, m.group("dir"))
