@@ -713,3 +713,31 @@ def test_aisles_between_rows_wide_enough_for_the_robot_are_passages(resolution_m
         assert p.center == pytest.approx(centre, abs=0.06)
         assert p.width_m == pytest.approx(0.6, abs=0.051)
         assert p.length_m == pytest.approx(3.0, abs=0.15)
+
+
+def cross_aisle(resolution_m: float = 0.05) -> OccupancyGrid:
+    """A 9 x 8 m store room: a 0.4 m rack stands 0.8 m off its west wall (x 0.8-1.2, y 0.3-7.7,
+    0.3 m from the north and south walls: too tight to pass), and five 4 m rack rows run east
+    from x = 2 (0.4 m deep, from y = 1.2 every 1.2 m): their 0.8 m aisles open east into the
+    room and west into the 0.8 m cross aisle between the rack and the rows' ends, which meets
+    the room's floor only past the first and last rows."""
+    b = MapBuilder(11.0, 10.0, resolution_m=resolution_m, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 9.0, 8.0)
+    b.box(0.8, 0.3, 1.2, 7.7)
+    for k in range(5):
+        y = 1.2 + 1.2 * k
+        b.box(2.0, y, 6.0, y + 0.4)
+    return b.build(source="cross_aisle")
+
+
+@pytest.mark.parametrize("resolution_m", [0.025, 0.05, 0.1])
+def test_aisles_ending_in_a_narrow_cross_aisle_lead_somewhere(resolution_m: float) -> None:
+    # The middle aisles' west mouths open into the cross aisle, 2.5 m from open floor: they lead
+    # somewhere (the robot drives on down the cross aisle). The strip behind the rack leads
+    # nowhere: 0.3 m gaps at both of its ends.
+    found = sorted(passages_of(cross_aisle(resolution_m)), key=lambda p: p.center[1])
+    assert len(found) == 4
+    for k, p in enumerate(found):
+        assert p.center == pytest.approx((4.0, 1.2 + 1.2 * k + 0.4 + 0.4), abs=0.06)
+        assert p.width_m == pytest.approx(0.8, abs=0.051)
+        assert p.length_m == pytest.approx(4.0, abs=0.15)

@@ -398,3 +398,44 @@ def test_a_corridor_on_a_huge_mostly_unknown_grid_keeps_its_own_area() -> None:
     assert len(seg.rooms) == 1
     assert seg.rooms[0].kind == ElementKind.HALLWAY
     assert seg.rooms[0].area_m2 == pytest.approx(2.0 * 170.0, rel=0.05)
+
+
+def _narthex_and_nave(res: float) -> OccupancyGrid:
+    """A 3 x 12 m narthex and a 12 x 12 m nave with six rows of pews (0.5 m benches), parted by
+    a wall with a 0.9 m side door, a 1.8 m double door and another 0.9 m side door."""
+    b = MapBuilder(17.0, 13.5, resolution_m=res)
+    b.room(0.5, 0.5, 3.5, 12.5).room(3.65, 0.5, 16.0, 12.5)
+    for y, w in ((1.5, 0.9), (6.5, 1.8), (11.5, 0.9)):
+        b.door_v(3.575, y, w)
+    for row in range(6):
+        x = 6.0 + row * 1.4
+        b.rect(x, 1.5, x + 0.5, 5.5, 100).rect(x, 7.5, x + 0.5, 11.5, 100)
+    return b.build("narthex and nave")
+
+
+@pytest.mark.parametrize("res", [0.05, 0.025])
+def test_a_wall_with_three_doors_parts_a_narthex_from_its_nave(res: float) -> None:
+    """Three doors in one wall are still a wall between two rooms (a row of clutter is open for
+    as much of its length as it is solid), at 5 cm and 2.5 cm cells alike."""
+    grid = _narthex_and_nave(res)
+    seg = segment_spaces(grid)
+    narthex, nave = room_by_point(seg, grid, 2.0, 6.5), room_by_point(seg, grid, 10.0, 6.5)
+    assert narthex.id != nave.id
+    assert sorted(r.kind.value for r in seg.rooms) == ["room", "room"]
+    assert narthex.area_m2 == pytest.approx(36.0, rel=0.03)
+    assert len(seg.doors) == 3
+    assert sorted(round(d.center[1], 1) for d in seg.doors) == pytest.approx([1.5, 6.5, 11.5], abs=POS_TOL_M)
+
+
+@pytest.mark.parametrize("res", [0.05, 0.025])
+def test_a_corridor_narrowed_between_two_wall_piers_stays_one_hallway(res: float) -> None:
+    """A 2.6 m corridor narrowed to 1.6 m between two piers of its side walls: the piers stand
+    in from walls that have no floor running on along them past the gap (no room there), so it
+    is a corridor narrowed, not two spaces and a door."""
+    b = MapBuilder(24.0, 4.0, resolution_m=res)
+    b.room(0.5, 0.5, 23.5, 3.1)
+    b.rect(11.8, 0.5, 12.2, 1.0, 100).rect(11.8, 2.6, 12.2, 3.1, 100)
+    seg = segment_spaces(b.build("narrowed corridor"))
+    assert [r.kind for r in seg.rooms] == [ElementKind.HALLWAY]
+    assert seg.rooms[0].area_m2 == pytest.approx(23.0 * 2.6 - 0.4, rel=0.03)
+    assert seg.doors == ()

@@ -20,6 +20,7 @@ from langnav.language.offline.idioms import plain_idioms
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import canonical_numbers
 from langnav.language.offline.patterns import FILLER_RE
+from langnav.language.offline.sidetalk import without_side_talk
 from langnav.language.offline.speech import HESITATIONS, plain_speech
 from langnav.language.offline.translator import translate_offline
 from langnav.language.offline.vocabulary import VOCABULARY
@@ -108,3 +109,64 @@ def test_an_amount_said_only_to_be_large_asks(prompt: str) -> None:
 def test_small_amounts_stay_a_little(prompt: str, movement: str) -> None:
     steps = translate_offline(prompt).steps
     assert [(s.movement.value, s.amount.value if s.amount else None) for s in steps] == [(movement, "little")]
+
+
+# ------------------------------------------------------------------ speech not addressed to the robot
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("sorry, one second, bed twelve is calling, okay, back up two feet, quietly",
+     [("move", "backward", round(2 * FT, 4), None)]),
+    ("water line about eighteen inches on this wall, okay, go forward three feet",
+     [("move", "forward", round(3 * FT, 4), None)]),
+    ("robot turn left, no, jack, sit down, turn left forty five degrees", [("rotate", "left", None, 45.0)]),
+    ("robot, back up eight metres, no, harper, that's mine", [("move", "backward", 8.0, None)]),
+    ("and five, six, seven, eight, step forward two feet", [("move", "forward", round(2 * FT, 4), None)]),
+    ("fire table six! robot, forward three feet", [("move", "forward", round(3 * FT, 4), None)]),
+    ("all day two salmon, robot, turn around", [("rotate", "around", None, 180.0)]),
+    ("note, drywall is soft here. turn around please", [("rotate", "around", None, 180.0)]),
+    ("mommy's talking to the robot, okay, turn right ninety", [("rotate", "right", None, 90.0)]),
+])
+def test_talk_to_someone_else_or_notes_are_no_instruction(prompt: str, expected: Plan) -> None:
+    assert _plan(prompt) == expected
+
+
+@pytest.mark.parametrize(("prompt", "kind"), [
+    ("okay robot, go to the last door on the right, no, sam, leave it", "door"),
+    ("carpet's stained all along here, noted. okay, go to the third door on your left", "door"),
+    ("okay robot, go towards the unexplored part in front of you, sorry, she's asking about the robot",
+     "unexplored_area"),
+    ("okay robot, go to the first door on your left, ava, hands off", "door"),
+])
+def test_talk_to_someone_else_after_a_place_leaves_the_trip(prompt: str, kind: str) -> None:
+    steps = translate_offline(prompt).steps
+    assert [(s.movement, s.target.kind.value if s.target else None) for s in steps] == [(Movement.NAVIGATE, kind)]
+
+
+@pytest.mark.parametrize(("prompt", "expected"), [
+    # a correction, a hesitation, a question or a stop after a pause is never taken for talk to someone else
+    ("forward five metres, oops, I meant feet", [("move", "forward", round(5 * FT, 4), None)]),
+    ("face north. uh, actually, face south", [("rotate", None, None, None)]),
+    ("turn right sixty, um, no, ninety degrees", [("rotate", "right", None, 90.0)]),
+    ("move forward, two metres, okay", [("move", "forward", 2.0, None)]),
+    ("turn left, it's about thirty degrees", [("rotate", "left", None, 30.0)]),
+])
+def test_corrections_and_amounts_after_a_pause_are_kept(prompt: str, expected: Plan) -> None:
+    assert _plan(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "turn left, zed, ninety degrees", "zed, go left two metres", "lily, stop it. robot, go back one metre",
+    "there's a door on your left, go through it", "move forward, um, two metres", "rover, say your position, over",
+])
+def test_talk_that_may_be_meant_for_the_robot_is_kept(prompt: str) -> None:
+    """A name followed by a way, an amount, a place, a stop or a question: a listener cannot tell the name
+    from a word of the instruction, so nothing is taken out (the reading asks about what it cannot read)."""
+    assert without_side_talk(prompt) == prompt
+
+
+@given(name=st.sampled_from(["jack", "sam", "ava", "emma", "harper", "mia", "noah"]),
+       said=st.sampled_from(["sit down", "leave it", "hands off", "not now", "shoes on", "that's mine"]),
+       metres=st.integers(1, 9))
+@example(name="jack", said="sit down", metres=2)
+def test_talk_to_a_named_person_never_adds_or_removes_a_motion(name: str, said: str, metres: int) -> None:
+    for prompt in (f"go forward {metres} metres, {name}, {said}", f"{name}, {said}, okay, go forward {metres} metres"):
+        assert _plan(prompt) == [("move", "forward", float(metres), None)]

@@ -12,7 +12,8 @@ it is longer than a doorway could be deep in this building (``params.door_max_de
 of its length (or a wall along one side and a single doorway in the other: a passage with a door
 off it), solid ones (walls, furniture, a shelf's unscanned inside: not
 laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
-unexplored area), leads somewhere (both mouths open into free space wider than any passage: a
+unexplored area), leads somewhere (both mouths open into free space wider than any passage, or,
+for an aisle, into another narrow way that reaches such space within ``MOUTH_LEADS_ON_M``: a
 dead-end slot does not), is not a door's own gap (a door across its middle; a door at one of its
 mouths is how it is entered; a door found in a squeeze between two things with parallel faces,
 deeper than any wall, is no door), and is
@@ -139,6 +140,10 @@ SOLID_UNKNOWN_DEPTH_M: Final = 0.3
 #: A mouth opens into a free area when one is found within this distance beyond it (the core
 #: stops where the sides start to flare, up to about a width before the space itself).
 MOUTH_OPEN_SEARCH_M: Final = 1.5
+#: A mouth that opens into another narrow way (the next aisle round a shelving island) leads
+#: somewhere when that way reaches open floor within this distance of the mouth (m): about a
+#: shelf's length; a dead-end slot's far end leads nowhere however far one looks.
+MOUTH_LEADS_ON_M: Final = 3.0
 #: Side distances of many pieces are sampled together, about this many samples at a time
 #: (bounded memory on a large map; fewer numpy calls on a small one).
 SIDE_BATCH_SAMPLES: Final = 400_000
@@ -310,7 +315,12 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 continue
             # Wide enough for the robot to pass, and narrow (the band's test used the skeleton's
             # width, up to a cell off).
-            if width_m < 2.0 * (params.robot_radius_m + PASSAGE_MIN_MARGIN_M) or width_m > params.passage_max_width_m:
+            # Across its axis, and by the distance from its middle line to its sides whatever
+            # the direction (twice it, up to a cell over): an axis drawn askew through a strip
+            # (round the corner of a box) measures it wider than it is.
+            min_width_m = 2.0 * (params.robot_radius_m + PASSAGE_MIN_MARGIN_M)
+            if (width_m < min_width_m or width_m > params.passage_max_width_m
+                    or 2.0 * median(dist_of[d2[rr[bounded], cc[bounded]]]) < min_width_m):
                 _rejected('too narrow or too wide', grid, r0, c0, mid, width_m, length_m)
                 continue
             # Between two things: both sides solid along most of its two-sided length, not
@@ -329,7 +339,14 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             two = pts[bounded]
             lasts = ([two[int(np.argmin(proj[bounded]))], two[int(np.argmax(proj[bounded]))]] if corridor_like
                      else [None, None])
+            # An aisle (at least PASSAGE_MIN_ELONGATION times longer than wide) whose mouth opens
+            # into another narrow way leads somewhere when that way goes on to open floor nearby
+            # (aisles round a shelving island meet at its corners; rack aisles end in a narrow
+            # cross aisle). Its own middle line: its two-sided stretch, not the next aisle's.
+            aisle = length_m >= PASSAGE_MIN_ELONGATION * width_m
+            own = (proj >= lo) & (proj <= hi) & (np.abs((pts - mean) @ normal) <= width_m / res / 2.0 + 1.0)
             if not all(_opens_into_space(sub, e, sign * axis, res, params, last)
+                       or (aisle and _leads_on(fits, wide, e, rr[own], cc[own], width_m / res, MOUTH_LEADS_ON_M / res))
                        for sign, e, last in zip((-1.0, 1.0), ends_g, lasts, strict=True)):
                 _rejected('a mouth leads nowhere', grid, r0, c0, mid, width_m, length_m)
                 continue
@@ -823,6 +840,39 @@ def _opens_into_space(open_: BoolArray, end_g: npt.NDArray[np.float64], directio
         return False
     clear = ndi.distance_transform_edt(np.pad(win, 1))[1:-1, 1:-1]
     return bool(clear[lab == start].max() > need)
+
+
+def _leads_on(fits: BoolArray, wide: BoolArray, end_g: npt.NDArray[np.float64], rr: npt.NDArray[np.intp],
+              cc: npt.NDArray[np.intp], width: float, reach: float) -> bool:
+    """Does the way beyond a mouth (``end_g``, x, y in grid cells) lead on to open floor: from the
+    mouth, over cells where the robot fits (``fits``) and not back along the passage itself (its
+    middle line ``rr``, ``cc`` and the floor within its half width ``width / 2`` of it), a cell of
+    ``wide`` floor (wider than any passage) within ``reach`` cells of the mouth? A dead-end slot's
+    far end does not, nor a strip past a gap the robot cannot take; a mouth opening into the next
+    aisle round an island or into a narrow cross aisle does, where that aisle meets the room."""
+    h, w = fits.shape
+    x, y = float(end_g[0]), float(end_g[1])
+    pad = math.ceil(reach) + 1
+    r0, r1 = max(0, math.floor(y) - pad), min(h, math.floor(y) + pad + 1)
+    c0, c1 = max(0, math.floor(x) - pad), min(w, math.floor(x) + pad + 1)
+    own = np.zeros((r1 - r0, c1 - c0), dtype=bool)
+    keep = (rr >= r0) & (rr < r1) & (cc >= c0) & (cc < c1)
+    own[rr[keep] - r0, cc[keep] - c0] = True
+    if not own.any():
+        return False
+    # The passage's own floor: within its half width (and a cell) of its middle line.
+    cut = ndi.distance_transform_edt(~own) <= width / 2.0 + 1.0
+    gy, gx = np.mgrid[r0:r1, c0:c1]
+    dx, dy = gx + 0.5 - x, gy + 0.5 - y
+    # From the mouth (its end of the passage's floor, within its half width), over floor where
+    # the robot fits, not back along the passage.
+    at_mouth = dx * dx + dy * dy <= (width / 2.0 + 1.0) ** 2
+    floor = fits[r0:r1, c0:c1] & (~cut | at_mouth) & (dx * dx + dy * dy <= reach * reach)
+    lab, _n = ndi.label(floor, structure=np.ones((3, 3), dtype=bool))
+    first = np.unique(lab[at_mouth & (lab > 0)])
+    if len(first) == 0:
+        return False
+    return bool((wide[r0:r1, c0:c1] & ~cut & np.isin(lab, first)).any())
 
 
 def _space_beyond(labels: npt.NDArray[np.int32], end_g: npt.NDArray[np.float64],

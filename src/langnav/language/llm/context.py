@@ -175,6 +175,11 @@ place named by a thing in it ("the room with the sofa") or by two sides ("the do
 said only to be large ("a fair bit", "quite a way", "a good distance", "a lot") -> ask how far (unlike "a \
 little", it has no bound). A word you do not understand where the way or the amount goes ("go aft one metre" \
 if you do not know "aft") -> ask; never assume forward.
+- Talk not meant for the robot gives no steps: notes and remarks before "okay" / "noted" / "robot," ("water \
+line about eighteen inches on this wall, okay, go forward three feet" -> only the move), statements about \
+others ("..., she's asking about the robot"), a person named and what is said to them ("no, jack, sit \
+down", "sam, leave it": the "no" is theirs, it corrects nothing), a count-in ("five, six, seven, eight"). \
+Talk with a way, a place, a stop or a question in it is kept.
 - Ask, don't guess: when the side of a turn ("rotate 45 degrees"), the unit of a distance ("move forward 3") \
 or any word about where or how far is unclear, give no steps; in clarification say what you understood and \
 ask about the rest."""

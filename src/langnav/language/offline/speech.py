@@ -13,6 +13,7 @@ from typing import Final
 
 from langnav.language.offline.lexicon import TYPOS
 from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS
+from langnav.language.offline.sidetalk import without_side_talk
 from langnav.language.offline.vocabulary import VOCABULARY
 
 #: Hesitation sounds: no meaning in any position.
@@ -316,7 +317,7 @@ def plain_speech(prompt: str) -> str:
     """``prompt`` with hesitations, hedges, cut-off words, stutters and noise tokens removed, a comma
     before each self-correction marker, the words speech recognition mistook put right, and polite
     frames and side remarks taken out."""
-    text = without_discourse_markers(prompt)
+    text = without_discourse_markers(without_side_talk(prompt))
     for pattern, repl in HOMOPHONES:
         text = pattern.sub(repl, text)
     text = LIST_ITEM.sub(". ", ENUMERATION.sub(" ", text))
