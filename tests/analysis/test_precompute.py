@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import numpy.typing as npt
 from analysis_maps import room_with_door
@@ -11,18 +13,23 @@ from hypothesis.extra.numpy import arrays
 from scipy import ndimage as ndi
 from skimage import measure
 
+from langnav.analysis import precompute
 from langnav.analysis.precompute import (
     EIGHT,
     GridLayers,
     approximate_polygon,
+    approximate_polygons,
     border_labels,
     component_boxes,
     cov2,
     dilate4,
     dilate8,
     edt_scaled,
+    far_from_outside,
     fill_holes,
+    grow_by_disc,
     label8_cells,
+    longest_contour,
     maximum3,
     median,
     nonzero2,
@@ -79,6 +86,25 @@ def test_truncated_sq_edt_is_exact_up_to_its_bound(m: npt.NDArray[np.bool_], bou
         assert beyond.all()
 
 
+@settings(max_examples=150, deadline=None)
+@given(masks(), st.sampled_from([0.05, 0.1, 0.3, 0.5]), st.sampled_from([0.025, 0.05, 0.07]))
+def test_far_from_outside_matches_its_formula(m: npt.NDArray[np.bool_], min_m: float, res: float) -> None:
+    bound = math.ceil(min_m / res) + 1
+    expected = np.sqrt(truncated_sq_edt(m, bound).astype(np.float64)) * res >= min_m
+    assert np.array_equal(far_from_outside(m, min_m, res), expected)
+
+
+@settings(max_examples=150, deadline=None)
+@given(masks(), st.floats(0.0, 60.0))
+def test_grow_by_disc_is_a_binary_dilation_by_the_disc(m: npt.NDArray[np.bool_], r2: float) -> None:
+    reach = math.isqrt(int(r2)) + 1
+    a = np.arange(reach + 1)
+    near = a[:, None] ** 2 + a[None, :] ** 2 <= r2
+    full = np.arange(-reach, reach + 1)
+    disc = full[:, None] ** 2 + full[None, :] ** 2 <= r2
+    assert np.array_equal(grow_by_disc(m, near), ndi.binary_dilation(m, structure=disc))
+
+
 def test_truncated_sq_edt_known_values() -> None:
     m = np.ones((5, 9), dtype=bool)
     m[2, 0] = False
@@ -109,11 +135,20 @@ def test_component_boxes_match_find_objects(m: npt.NDArray[np.bool_]) -> None:
 
 
 @settings(max_examples=150, deadline=None)
-@given(masks())
-def test_label8_cells_matches_ndi_label(m: npt.NDArray[np.bool_]) -> None:
+@given(masks(), st.sampled_from(["dense", "few", "sparse"]))
+def test_label8_cells_matches_ndi_label(m: npt.NDArray[np.bool_], way: str) -> None:
     lab, n = ndi.label(m, structure=EIGHT)
     flat = np.flatnonzero(m)
-    got, got_n = label8_cells(flat, m.shape)
+    # Each of the three ways: a labelling of the cells' box, union-find, a sparse graph.
+    old = (precompute.LABEL8_DENSE_CELLS_PER_CELL, precompute.LABEL8_DENSE_MIN_CELLS, precompute.LABEL8_SMALL_CELLS)
+    if way != "dense":
+        precompute.LABEL8_DENSE_CELLS_PER_CELL, precompute.LABEL8_DENSE_MIN_CELLS = -1, -1  # type: ignore[misc]
+        precompute.LABEL8_SMALL_CELLS = 10**9 if way == "few" else 0  # type: ignore[misc]
+    try:
+        got, got_n = label8_cells(flat, m.shape)
+    finally:
+        (precompute.LABEL8_DENSE_CELLS_PER_CELL, precompute.LABEL8_DENSE_MIN_CELLS,  # type: ignore[misc]
+         precompute.LABEL8_SMALL_CELLS) = old
     assert got_n == n
     assert np.array_equal(got, lab.ravel()[flat])
 
@@ -185,6 +220,45 @@ def test_approximate_polygon_matches_skimage(pts: npt.NDArray[np.float64], toler
     expected = measure.approximate_polygon(coords, tolerance)
     got = approximate_polygon(coords, tolerance)
     assert got.shape == expected.shape and np.array_equal(got, expected)
+
+
+@settings(max_examples=200, deadline=None)
+@given(SHAPES.flatmap(lambda s: arrays(np.bool_, s)), st.integers(0, 3))
+def test_longest_contour_matches_find_contours(m: npt.NDArray[np.bool_], thin: int) -> None:
+    # Sparse masks too (saddles, single cells, several loops of one length).
+    if thin:
+        m = m & (np.arange(m.size).reshape(m.shape) % (thin + 1) == 0)
+    contours = measure.find_contours(np.pad(m, 1).astype(np.uint8), 0.5)
+    got = longest_contour(m)
+    if not contours:
+        assert got is None
+        return
+    expected = max(contours, key=len)
+    assert got is not None and got.shape == expected.shape and np.array_equal(got, expected)
+
+
+def test_longest_contour_of_a_square_and_a_speck() -> None:
+    m = np.zeros((6, 6), dtype=bool)
+    m[0, 5] = True  # a speck, met first in raster order but shorter
+    m[2:5, 1:4] = True
+    got = longest_contour(m)
+    assert got is not None and len(got) == 13  # 12 edge midpoints round a 3 x 3 block, closed
+    assert got[0].tolist() == got[-1].tolist()
+    # In the padded image the block spans rows 3-5 and columns 2-4: its outline runs half a
+    # cell outside them.
+    assert (got[:, 0].min(), got[:, 0].max(), got[:, 1].min(), got[:, 1].max()) == (2.5, 5.5, 1.5, 4.5)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.integers(0, 60).flatmap(lambda n: arrays(np.float64, (n, 2), elements=st.integers(-40, 40).map(
+    lambda v: v / 2))), min_size=1, max_size=5), st.sampled_from([0.3, 1.0, 2.5]))
+def test_approximate_polygons_match_skimage_one_by_one(chains: list[npt.NDArray[np.float64]], tolerance: float) -> None:
+    walks = [np.cumsum(c, axis=0) / 3.0 for c in chains]
+    got = approximate_polygons(walks, tolerance)
+    assert len(got) == len(walks)
+    for g, w in zip(got, walks, strict=True):
+        expected = measure.approximate_polygon(w, tolerance) if len(w) else w
+        assert g.shape == expected.shape and np.array_equal(g, expected)
 
 
 def test_approximate_polygon_keeps_corners_of_a_square() -> None:

@@ -236,7 +236,9 @@ def find_corners(grid: OccupancyGrid, params: AnalysisParams, walls: tuple[Wall,
         corners.append(Corner(id=f"corner_{k}", point=x, room=room, walls=(a.id, b.id),
                               approach=approach_point(grid, params, x, labels, label, free=layers.free,
                                                       clear_sq=clear_sq)))
-    new_walls = tuple(dataclasses.replace(w, start=ends[w.id][0], end=ends[w.id][1]) for w in walls)
+    # Walls with an end moved to a corner are new walls; the others are kept as they are.
+    new_walls = tuple(w if ends[w.id][0] is w.start and ends[w.id][1] is w.end
+                      else dataclasses.replace(w, start=ends[w.id][0], end=ends[w.id][1]) for w in walls)
     return tuple(corners), new_walls
 
 

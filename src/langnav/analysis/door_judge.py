@@ -82,7 +82,7 @@ import numpy.typing as npt
 from scipy import ndimage as ndi
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import take2, truncated_sq_edt
+from langnav.analysis.precompute import EIGHT, far_from_outside, median, take2
 from langnav.analysis.seg_doors import SEEN_FLOOR_MIN_M, RawDoor
 from langnav.analysis.wall_lines import (
     GAP_MIN_FLOOR_SHARE,
@@ -208,9 +208,18 @@ def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np
             outside: bool) -> BoolArray:
     """``mask`` at continuous (row, col) positions in cell-corner coordinates (cell i spans
     [i, i + 1)); ``outside`` where they leave the grid."""
+    r, c, inside = _cells(mask.shape, rows, cols)
+    got = np.asarray(take2(mask, r, c), dtype=bool)
+    return got | ~inside if outside else got & inside
+
+
+def _cells(shape: tuple[int, ...], rows: npt.NDArray[np.float64], cols: npt.NDArray[np.float64]
+           ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64], BoolArray]:
+    """The cells :func:`_sample` reads at (row, col) positions, clamped onto a grid of ``shape``,
+    and whether each position is on the grid (several masks are read at the same positions)."""
     r = np.floor(rows).astype(np.int64)
     c = np.floor(cols).astype(np.int64)
-    h, w = mask.shape
+    h, w = shape[0], shape[1]
     # On the grid: 0 <= r < h and 0 <= c < w (a negative index read unsigned is past the end).
     inside = (r.view(np.uint64) < h) & (c.view(np.uint64) < w)
     # Read every sample (clamped onto the grid), then set those off it: no masked indexing.
@@ -219,8 +228,7 @@ def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np
     np.minimum(r, h - 1, out=r)
     np.maximum(c, 0, out=c)
     np.minimum(c, w - 1, out=c)
-    got = np.asarray(take2(mask, r, c), dtype=bool)
-    return got | ~inside if outside else got & inside
+    return r, c, inside
 
 
 def free_widths(free: BoolArray, center_rc: tuple[float, float], normal_rc: tuple[float, float],
@@ -236,11 +244,36 @@ def free_widths(free: BoolArray, center_rc: tuple[float, float], normal_rc: tupl
     # samples are sampled across the whole look.
     near = min(s_max, FIRST_LOOK_SAMPLES)
     n_right, n_left, on = _runs_through_zero(free, center_rc, t, s[s_max - near:s_max + near + 1], normal_rc)
-    far = (n_right > near) | (n_left > near)
-    if far.any():
-        n_right[far], n_left[far], on[far] = _runs_through_zero(free, center_rc, t[far], s, normal_rc)
+    # A half that ran through that strip runs on: it is looked along further, in stretches that
+    # double, for its rows only (the samples a look across the whole width reads, up to the first
+    # blocked one).
+    _run_on(free, center_rc, t, s[s_max:], normal_rc, n_right, near + 1)
+    _run_on(free, center_rc, t, s[s_max::-1], normal_rc, n_left, near + 1)
     width = np.where(on, (n_right + n_left - 1) * _STEP_CELLS * resolution_m, 0.0)
     return np.asarray(t * resolution_m, dtype=np.float64), np.asarray(width, dtype=np.float64)
+
+
+def _run_on(free: BoolArray, center_rc: tuple[float, float], t: npt.NDArray[np.floating],
+            half: npt.NDArray[np.floating], normal_rc: tuple[float, float], n: npt.NDArray[np.int64],
+            looked: int) -> None:
+    """Carry on the free runs that reached ``looked`` samples along ``half`` (offsets along the
+    tangent from 0 outwards, one side of the line): ``n`` (per offset ``t``) becomes the index of
+    the first blocked sample, or the length of ``half`` when there is none (as
+    :func:`_runs_through_zero` counts over the whole of ``half``)."""
+    nr, nc = normal_rc
+    tr, tc = -nc, nr
+    rows_on = np.flatnonzero(n >= looked)
+    a = looked
+    while rows_on.size and a < half.size:
+        b = min(half.size, 2 * a)
+        tt, ss = t[rows_on], half[a:b]
+        rows = center_rc[0] + tt[:, None] * nr + ss[None, :] * tr
+        cols = center_rc[1] + tt[:, None] * nc + ss[None, :] * tc
+        ok = _sample(free, rows, cols, outside=False)
+        through = ok.all(axis=1)
+        n[rows_on] = np.where(through, b, a + np.argmin(ok, axis=1))
+        rows_on = rows_on[through]
+        a = b
 
 
 def _runs_through_zero(free: BoolArray, center_rc: tuple[float, float], t: npt.NDArray[np.floating],
@@ -476,7 +509,7 @@ def is_furniture(free: BoolArray, unknown: BoolArray, cell_rc: tuple[float, floa
     r0, r1, c0, c1 = max(r - rad, 0), min(r + rad + 1, h), max(c - rad, 0), min(c + rad + 1, w)
     body[r0 - r + rad:r1 - r + rad, c0 - c + rad:c1 - c + rad] = ~free[r0:r1, c0:c1]
     unk[r0 - r + rad:r1 - r + rad, c0 - c + rad:c1 - c + rad] = unknown[r0:r1, c0:c1]
-    pieces, _ = ndi.label(body, structure=np.ones((3, 3), dtype=bool))
+    pieces, _ = ndi.label(body, structure=EIGHT)
     mine = pieces == pieces[rad, rad]
     if mine[0].any() or mine[-1].any() or mine[:, 0].any() or mine[:, -1].any():
         return False  # it runs on beyond the look: a wall
@@ -496,7 +529,7 @@ def typical_width(t_m: npt.NDArray[np.float64], width_m: npt.NDArray[np.float64]
     free = got[got > 0]
     if got.size == 0 or free.size < MOUTH_MIN_FREE_SHARE * got.size:
         return math.inf
-    return float(np.median(free))
+    return median(free)
 
 
 def opens_wider(ev: DoorEvidence, width_m: float, sides: tuple[int, ...] = (0, 1)) -> bool:
@@ -577,10 +610,11 @@ def floor_beyond(free: BoolArray, far_from_unknown: BoolArray, center_rc: tuple[
     sv = np.arange(-BEYOND_HALF_WIDTH_M, BEYOND_HALF_WIDTH_M + 1e-9, resolution_m) / resolution_m
     rows = center_rc[0] + side * t[:, None] * nr + sv[None, :] * tr
     cols = center_rc[1] + side * t[:, None] * nc + sv[None, :] * tc
-    f = _sample(free, rows, cols, outside=False)
+    r, c, inside = _cells(free.shape, rows, cols)
+    f = np.asarray(take2(free, r, c), dtype=bool) & inside
     if not f.any():
         return 0.0
-    return float(_sample(far_from_unknown, rows, cols, outside=False)[f].mean())
+    return float(np.asarray(take2(far_from_unknown, r, c), dtype=bool)[f].mean())
 
 
 def on_wall_line(free: BoolArray, door: RawDoor, resolution_m: float) -> RawDoor:
@@ -607,8 +641,7 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
     if unknown is not None and unknown.any() and candidates:
         # Only distances up to SEEN_FLOOR_MIN_M matter: the exact truncated transform (bit for
         # bit the full one's distances up to its bound; farther cells read farther).
-        bound = math.ceil(SEEN_FLOOR_MIN_M / resolution_m) + 1
-        far = np.sqrt(truncated_sq_edt(~unknown, bound).astype(np.float64)) * resolution_m >= SEEN_FLOOR_MIN_M
+        far = far_from_outside(~unknown, SEEN_FLOOR_MIN_M, resolution_m)
     for d in candidates:
         # Between two spaces, judged on the wall line (into the unexplored, the rays beyond
         # would read as the narrowest crossing).

@@ -15,14 +15,20 @@ The stand-ins give *exactly* what the numpy / scipy call they replace gives (pro
 - :func:`label8_cells`: ``ndi.label(..., EIGHT)`` of a sparse set of cells (a skeleton);
 - :func:`component_boxes`: ``ndi.find_objects`` for chosen components, from their cells;
 - :func:`truncated_sq_edt`: ``distance_transform_edt`` squared, exact up to a bound (what a
-  test of short clearances needs), in small integers;
+  test of short clearances needs), in small integers; :func:`far_from_outside`: its test
+  against a distance, as the outside grown by the disc of the offsets that fail it
+  (:func:`grow_by_disc`);
 - :func:`median`, :func:`cov2`: ``np.median`` and ``np.cov`` without their overhead;
 - :func:`edt_scaled`: ``ndi.distance_transform_edt(mask, sampling=step)`` for a 2-D mask and one
   step for both axes, the distances read from a table of the few (|drow|, |dcol|) offsets;
 - :func:`fill_holes`: ``ndi.binary_fill_holes`` of a 2-D mask, by one labelling of the rest;
 - :func:`take2`: ``a[rows, cols]`` (a gather by two index arrays), as one flat take;
+- :func:`longest_contour`: the longest of ``skimage.measure.find_contours`` of a binary mask
+  (padded with a ring of 0) at level 0.5, from the marching-squares segments of all squares at
+  once instead of a dictionary walk over them;
 - :func:`approximate_polygon`: ``skimage.measure.approximate_polygon`` (Douglas-Peucker), all
-  the segments of a level of its recursion at once.
+  the segments of a level of its recursion at once (:func:`approximate_polygons`: of several
+  chains at once).
 
 The cached arrays are shared: they are marked read-only so that no caller changes them for the
 others by mistake.
@@ -30,6 +36,8 @@ others by mistake.
 
 from __future__ import annotations
 
+import functools
+import math
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Any, Final, TypeVar
@@ -194,7 +202,11 @@ def truncated_sq_edt(mask: BoolArray, max_cells: int) -> npt.NDArray[np.signedin
     m = np.asarray(mask, dtype=bool)
     h, w = m.shape
     cap = int(max_cells) + 1
-    dtype: type[np.signedinteger[Any]] = np.int16 if cap * cap + max_cells * max_cells < np.iinfo(np.int16).max else np.int32
+    # The smallest integer type that holds every value of the row pass (a capped square plus a
+    # square): fewer bytes per cell for its passes over the whole array.
+    top = cap * cap + max_cells * max_cells
+    dtype: type[np.signedinteger[Any]] = (np.int8 if top < np.iinfo(np.int8).max
+                                          else np.int16 if top < np.iinfo(np.int16).max else np.int32)
     # Column pass: rows to the nearest outside cell above / below ("far" when there is none),
     # in place, in the smallest integer type that holds the row numbers.
     far = h + cap + 1
@@ -226,6 +238,55 @@ def truncated_sq_edt(mask: BoolArray, max_cells: int) -> npt.NDArray[np.signedin
         e = min(dc, w - dc)
         np.minimum(out[:, :e], g2[:, dc:dc + e] + k, out=out[:, :e])
         np.minimum(out[:, w - e:], g2[:, w - e - dc:w - dc] + k, out=out[:, w - e:])
+    return out
+
+
+def far_from_outside(mask: BoolArray, min_m: float, resolution_m: float) -> BoolArray:
+    """The cells of ``mask`` at least ``min_m`` from the nearest cell outside it (cell centre to
+    cell centre, ``resolution_m`` a cell), as ``np.sqrt(truncated_sq_edt(mask, bound)
+    .astype(np.float64)) * resolution_m >= min_m`` gives them with ``bound = ceil(min_m /
+    resolution_m) + 1``, exactly.
+
+    That test rises with the distance, so a cell passes it when every outside cell passes it:
+    when no outside cell lies at an offset that fails it; the others are the outside grown by
+    those offsets (:func:`grow_by_disc`).
+    """
+    bound = math.ceil(min_m / resolution_m) + 1
+    a = np.arange(bound + 1)
+    near = ~(np.sqrt((a[:, None] ** 2 + a[None, :] ** 2).astype(np.float64)) * resolution_m >= min_m)
+    return ~grow_by_disc(~np.asarray(mask, dtype=bool), near)
+
+
+def grow_by_disc(mask: BoolArray, near: BoolArray) -> BoolArray:
+    """The cells a cell of ``mask`` reaches at an offset (rows, columns) with ``near[|rows|,
+    |columns|]`` (cells beyond the array reach nothing): a binary dilation by that disc, exactly.
+
+    ``near`` must be a disc: in each row of it the offsets that reach form one run from column 0
+    (as any test that rises with the distance gives). The mask is grown along its rows by each
+    run's length, then those copies across rows: a few dozen passes over a boolean array, in
+    place of a distance transform for a test against one distance.
+    """
+    m = np.asarray(mask, dtype=bool)
+    h, w = m.shape
+    half = [int(np.flatnonzero(row).max()) if row.any() else -1 for row in np.asarray(near, dtype=bool)]
+    out = np.zeros(m.shape, dtype=bool)
+    if half[0] < 0:
+        return out  # the disc is empty
+    grown: dict[int, BoolArray] = {}
+    cur = m.copy()
+    done = 0
+    for width in sorted({x for x in half if x >= 0}):
+        for d in range(done + 1, min(width, w - 1) + 1):
+            cur[:, d:] |= m[:, :-d]
+            cur[:, :-d] |= m[:, d:]
+        done = width
+        grown[width] = cur.copy()
+    out |= grown[half[0]]
+    for dr in range(1, min(len(half) - 1, h - 1) + 1):
+        if half[dr] >= 0:
+            row = grown[half[dr]]
+            out[dr:] |= row[:-dr]
+            out[:-dr] |= row[dr:]
     return out
 
 
@@ -281,6 +342,11 @@ def nonzero2(mask: npt.NDArray[np.generic]) -> tuple[npt.NDArray[np.intp], npt.N
 #: Up to this many cells, :func:`label8_cells` joins them in plain Python (a sparse graph's
 #: set-up costs more than the whole job).
 LABEL8_SMALL_CELLS: Final = 200
+#: ... unless their bounding box holds at most this many cells per cell plus
+#: LABEL8_DENSE_MIN_CELLS: then ``ndi.label`` of the box is cheaper (a few nanoseconds a cell of
+#: the box, against about a microsecond per cell joined in Python or in a sparse graph).
+LABEL8_DENSE_CELLS_PER_CELL: Final = 32
+LABEL8_DENSE_MIN_CELLS: Final = 4096
 
 
 def _label8_few(flat: list[int], shape: tuple[int, int]) -> tuple[npt.NDArray[np.int32], int]:
@@ -320,11 +386,20 @@ def label8_cells(flat: npt.NDArray[np.integer], shape: tuple[int, int]) -> tuple
     n_cells = len(flat)
     if n_cells == 0:
         return np.zeros(0, dtype=np.int32), 0
+    f = np.asarray(flat, dtype=np.int64)
+    r, c = np.divmod(f, shape[1])
+    r0, c0 = int(r[0]), int(c.min())  # the cells are sorted: the first is in the top row
+    box_h, box_w = int(r[-1]) - r0 + 1, int(c.max()) - c0 + 1
+    if box_h * box_w <= LABEL8_DENSE_CELLS_PER_CELL * n_cells + LABEL8_DENSE_MIN_CELLS:
+        # Few cells in a small box: one labelling of the box (its raster order is the grid's,
+        # so the components are numbered alike).
+        box = np.zeros((box_h, box_w), dtype=bool)
+        box[r - r0, c - c0] = True
+        lab, n = ndi.label(box, structure=EIGHT)
+        return lab[r - r0, c - c0].astype(np.int32, copy=False), int(n)
     if n_cells <= LABEL8_SMALL_CELLS:
         return _label8_few(np.asarray(flat).tolist(), shape)
     h, w = shape
-    f = np.asarray(flat, dtype=np.int64)
-    r, c = np.divmod(f, w)
     src: list[npt.NDArray[np.intp]] = []
     dst: list[npt.NDArray[np.intp]] = []
     # Each neighbour pair once: east, south-west, south, south-east.
@@ -347,23 +422,35 @@ def label8_cells(flat: npt.NDArray[np.integer], shape: tuple[int, int]) -> tuple
 
 def approximate_polygon(coords: npt.NDArray[np.float64], tolerance: float) -> npt.NDArray[np.float64]:
     """``skimage.measure.approximate_polygon(coords, tolerance)`` for a (K, 2) float64 chain and
-    ``tolerance > 0``: the same points, bit for bit.
+    ``tolerance > 0``: the same points, bit for bit (see :func:`approximate_polygons`)."""
+    return approximate_polygons([coords], tolerance)[0]
+
+
+def approximate_polygons(chains: list[npt.NDArray[np.float64]], tolerance: float) -> list[npt.NDArray[np.float64]]:
+    """:func:`approximate_polygon` of each of ``chains``, all at once.
 
     Douglas-Peucker keeps a point where it splits a segment, and whether and where a segment
     splits depends on that segment alone, so the segments of one level of the recursion are
-    measured together, with skimage's arithmetic element by element (numpy's sine, cosine and
-    arctangent give an array the values they give its elements one by one).
+    measured together, of every chain (a segment never leaves its chain), with skimage's
+    arithmetic element by element (numpy's sine, cosine and arctangent give an array the values
+    they give its elements one by one).
     """
     if tolerance <= 0:
         raise ValueError(f"approximate_polygon needs a positive tolerance, got {tolerance}")
-    xy = np.asarray(coords, dtype=np.float64)
+    if not chains:
+        return []
+    parts = [np.asarray(c, dtype=np.float64).reshape(-1, 2) for c in chains]
+    sizes = np.array([len(c) for c in parts], dtype=np.intp)
+    xy = np.concatenate(parts)
     n = xy.shape[0]
+    bounds = np.concatenate([[0], np.cumsum(sizes)])
     chain = np.zeros(n, dtype=bool)
-    chain[0] = True
-    chain[-1] = True
+    some = sizes > 0
+    starts = bounds[:-1][some]
+    ends = bounds[1:][some] - 1
+    chain[starts] = True
+    chain[ends] = True
     rows, cols = xy[:, 0], xy[:, 1]
-    starts = np.array([0], dtype=np.intp)
-    ends = np.array([n - 1], dtype=np.intp)
     while True:
         inner = ends - starts > 1  # a segment with no point between its ends never splits
         starts, ends = starts[inner], ends[inner]
@@ -397,7 +484,7 @@ def approximate_polygon(coords: npt.NDArray[np.float64], tolerance: float) -> np
         chain[new] = True
         starts = np.concatenate([starts[split], new])
         ends = np.concatenate([new, ends[split]])
-    return xy[chain, :]
+    return [xy[a:b][chain[a:b]] for a, b in zip(bounds[:-1].tolist(), bounds[1:].tolist(), strict=True)]
 
 
 def edt_scaled(mask: BoolArray, step: float) -> npt.NDArray[np.float64]:
@@ -446,3 +533,97 @@ def take2(a: npt.NDArray[_S], rows: npt.NDArray[np.integer], cols: npt.NDArray[n
     flat = np.multiply(rows, a.shape[1], dtype=np.intp)
     flat += cols
     return np.take(a.reshape(-1), flat)
+
+
+#: Marching squares on a binary image at level 0.5, as ``skimage.measure.find_contours`` draws
+#: them (``fully_connected="low"``): for each square's code (upper-left * 8 + upper-right * 4 +
+#: lower-left * 2 + lower-right, 1 where the image is above the level), the segments it adds, in
+#: the order it adds them, each from one edge's midpoint to another's: T(op), B(ottom), L(eft),
+#: R(ight). The two saddles (6, 9) add two; codes 0 and 15 none.
+_MS_SEGMENTS: Final = {1: (("B", "R"),), 2: (("L", "B"),), 3: (("L", "R"),), 4: (("R", "T"),),
+                       5: (("B", "T"),), 6: (("R", "T"), ("L", "B")), 7: (("L", "T"),),
+                       8: (("T", "L"),), 9: (("T", "L"), ("B", "R")), 10: (("T", "B"),),
+                       11: (("T", "R"),), 12: (("R", "L"),), 13: (("B", "L"),), 14: (("R", "B"),)}
+
+
+@functools.lru_cache(maxsize=64)
+def _ms_offsets(width: int) -> tuple[npt.NDArray[np.int64], ...]:
+    """Per square code: the ids of its first and second segments' ends, less twice the square's
+    flat index (its upper-left vertex, ``row * width + col``). An edge midpoint's id is twice the
+    flat index of the vertex it starts from, plus 1 when the edge runs down (a column's edge)."""
+    edge = {"T": 0, "B": 2 * width, "L": 1, "R": 3}
+    out = [np.full(16, -1, dtype=np.int64) for _ in range(4)]
+    for code, segs in _MS_SEGMENTS.items():
+        for k, (a, b) in enumerate(segs):
+            out[2 * k][code] = edge[a]
+            out[2 * k + 1][code] = edge[b]
+    return tuple(_frozen(a) for a in out)
+
+
+def longest_contour(mask: BoolArray) -> npt.NDArray[np.float64] | None:
+    """``max(skimage.measure.find_contours(np.pad(mask, 1).astype(np.uint8), 0.5), key=len)``
+    (None where there is no contour): the same points, in the same order, bit for bit.
+
+    skimage adds each square's segments in raster order and chains them in a dictionary walk;
+    in a binary image every edge midpoint is on exactly one closed loop (the padding closes them
+    all), so the chaining is a permutation of the segments (each one's successor starts where it
+    ends) and what it returns follows from it: the loops in the order of their first segment,
+    each starting (and ending again) at the end of its last segment, then along the segments.
+    """
+    h, w = mask.shape[0] + 2, mask.shape[1] + 2
+    m = np.zeros((h, w), dtype=bool)
+    m[1:-1, 1:-1] = mask
+    code = (m[:-1, :-1].astype(np.uint8) << 3) | (m[:-1, 1:].astype(np.uint8) << 2) \
+        | (m[1:, :-1].astype(np.uint8) << 1) | m[1:, 1:].astype(np.uint8)
+    cells = np.flatnonzero((code != 0) & (code != 15))
+    if cells.size == 0:
+        return None
+    c = code.reshape(-1)[cells]
+    q2 = 2 * (cells // (w - 1) * w + cells % (w - 1))  # twice the squares' flat vertex index
+    f1, t1, f2, t2 = _ms_offsets(w)
+    two = (c == 6) | (c == 9)
+    count = 1 + two.astype(np.int64)
+    first = np.cumsum(count) - count  # each square's first segment, in skimage's order
+    n = int(count.sum())
+    frm = np.empty(n, dtype=np.int64)
+    to = np.empty(n, dtype=np.int64)
+    frm[first] = q2 + f1[c]
+    to[first] = q2 + t1[c]
+    frm[first[two] + 1] = q2[two] + f2[c[two]]
+    to[first[two] + 1] = q2[two] + t2[c[two]]
+    # The successor of each segment: the one that starts where it ends.
+    by_start = np.argsort(frm)
+    nxt = by_start[np.searchsorted(frm[by_start], to)]
+    # Each loop's first segment, by pointer jumping: after step k every segment holds the
+    # smallest index among the 2**k segments from it on; once no value changes, each holds its
+    # loop's smallest (the windows of one stride, laid end to end, cover the loop).
+    loop = np.arange(n, dtype=np.intp)
+    jump = nxt
+    while True:
+        nearer = np.minimum(loop, loop[jump])
+        if np.array_equal(nearer, loop):
+            break
+        loop = nearer
+        jump = jump[jump]
+    sizes = np.bincount(loop, minlength=n)
+    # The longest loop; of equal ones the first (skimage's list is in the order of their first
+    # segments, and ``max`` keeps the first of equals).
+    best = int(np.argmax(sizes))
+    last = int(np.flatnonzero(loop == best)[-1])
+    # From the end of the loop's last segment round along the successors, back to it.
+    succ = nxt.tolist()
+    order = [last]
+    j = succ[last]
+    while j != last:
+        order.append(j)
+        j = succ[j]
+    order.append(last)
+    ids = to[np.array(order, dtype=np.intp)]
+    # An id back to its point: a row's edge (even) is (row, col + 0.5), a column's (odd) is
+    # (row + 0.5, col).
+    vertex, down = np.divmod(ids, 2)
+    rows, cols = np.divmod(vertex, w)
+    out = np.empty((ids.size, 2), dtype=np.float64)
+    out[:, 0] = rows + 0.5 * down
+    out[:, 1] = cols + 0.5 * (1 - down)
+    return out

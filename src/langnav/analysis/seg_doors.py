@@ -26,7 +26,7 @@ from scipy import ndimage as ndi
 from skimage.segmentation import watershed
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import maximum3, truncated_sq_edt
+from langnav.analysis.precompute import far_from_outside, maximum3
 from langnav.analysis.seg_core import EIGHT, BoolArray, FloatArray, IntArray
 from langnav.analysis.wall_lines import outer_gaps
 
@@ -228,8 +228,7 @@ def doors_in_outer_walls(labels: IntArray, floor: BoolArray, exterior: BoolArray
     at a doorway between two spaces (``known``) is left out. ``directions``: the wall directions
     of ``obstacle & ~floor``, when the caller has them."""
     walls = obstacle & ~floor
-    bound = math.ceil(SEEN_FLOOR_MIN_M / resolution_m) + 1
-    seen = floor & (np.sqrt(truncated_sq_edt(~exterior, bound).astype(np.float64)) * resolution_m >= SEEN_FLOOR_MIN_M)
+    seen = floor & far_from_outside(~exterior, SEEN_FLOOR_MIN_M, resolution_m)
     out = list(found)
     look = np.arange(OUTER_LABEL_FROM_M, OUTER_LABEL_TO_M + 1e-9, resolution_m) / resolution_m
     h, w = labels.shape

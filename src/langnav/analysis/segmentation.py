@@ -27,7 +27,6 @@ from typing import Final
 import numpy as np
 import numpy.typing as npt
 from scipy import ndimage as ndi
-from skimage.measure import find_contours
 from skimage.segmentation import watershed
 
 from langnav.analysis.door_judge import judge_doors
@@ -36,10 +35,11 @@ from langnav.analysis.errors import AnalysisError
 from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
 from langnav.analysis.precompute import (
     GridLayers,
-    approximate_polygon,
+    approximate_polygons,
     dilate8,
     edt_scaled,
     fill_holes,
+    longest_contour,
     maximum3,
     nonzero2,
 )
@@ -790,23 +790,19 @@ def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
     """The spaces of ``labels``, measured; ``peaks``: the widest clearance of each (by label);
     ``openings``: how many doorways each has."""
     res = grid.resolution_m
-    n = int(labels.max())
     rooms: list[Room] = []
     objs = ndi.find_objects(labels)
     typical, wide_share = _typical_widths(labels, fl.clearance_m, fl.floor, res,
                                           params.hallway_max_width_m / 2)
-    for k in range(1, n + 1):
-        sl = objs[k - 1]
-        if sl is None:
-            continue
-        sub = labels[sl] == k
+    present = [(k, sl, labels[sl] == k) for k, sl in enumerate(objs, start=1) if sl is not None]
+    polygons = _outlines(grid, [(sub, sl) for _, sl, sub in present])
+    for (k, sl, sub), polygon in zip(present, polygons, strict=True):
         free_sub = sub & fl.free[sl]
         rr, cc = np.nonzero(free_sub if free_sub.any() else sub)
         rr = rr + sl[0].start
         cc = cc + sl[1].start
         xs, ys = grid.cell_to_world(rr, cc)
         area = float(sub.sum()) * res * res
-        polygon = _outline(grid, sub, sl)
         kind, length, width = _kind_and_size(area, float(peaks[k]), float(typical[k]), float(wide_share[k]),
                                              int(openings[k]) if k < openings.size else 0,
                                              functools.partial(_whole_width, sub, res,
@@ -837,21 +833,32 @@ def _extent(polygon: npt.NDArray[np.float64]) -> float:
     return float(np.sqrt((d * d).sum(axis=-1).max()))
 
 
-def _outline(grid: OccupancyGrid, sub: npt.NDArray[np.bool_], sl: tuple[slice, slice]) -> npt.NDArray[np.float64]:
-    """The outer outline of a space in world metres (for drawing), simplified to about a cell."""
-    # Large spaces are outlined on a coarser copy: the outline is for drawing.
-    k = max(1, math.ceil(math.sqrt(sub.size / OUTLINE_MAX_CELLS)))
-    contours = find_contours(np.pad(sub[::k, ::k], 1).astype(np.uint8), 0.5)
-    if not contours:
-        return np.zeros((0, 2))
-    c = max(contours, key=len)
-    c = (c - 1) * k + 1
-    step = max(1, len(c) // OUTLINE_MAX_POINTS)
-    c = approximate_polygon(np.vstack([c[::step], c[:1]]), tolerance=1.0)
-    r = c[:, 0] - 1 + sl[0].start + 0.5
-    col = c[:, 1] - 1 + sl[1].start + 0.5
-    xs, ys = grid.grid_to_world(r, col)
-    return np.column_stack([xs, ys])
+def _outlines(grid: OccupancyGrid, spaces: list[tuple[npt.NDArray[np.bool_], tuple[slice, slice]]]
+              ) -> list[npt.NDArray[np.float64]]:
+    """The outer outline of each space (its mask in the window ``sl`` of the grid) in world
+    metres (for drawing), simplified to about a cell; all simplified at once."""
+    chains: list[npt.NDArray[np.float64]] = []
+    for sub, _ in spaces:
+        # Large spaces are outlined on a coarser copy: the outline is for drawing.
+        k = max(1, math.ceil(math.sqrt(sub.size / OUTLINE_MAX_CELLS)))
+        # The longest of find_contours(np.pad(sub[::k, ::k], 1).astype(np.uint8), 0.5), exactly.
+        c = longest_contour(sub[::k, ::k])
+        if c is None:
+            chains.append(np.zeros((0, 2)))
+            continue
+        c = (c - 1) * k + 1
+        step = max(1, len(c) // OUTLINE_MAX_POINTS)
+        chains.append(np.vstack([c[::step], c[:1]]))
+    out: list[npt.NDArray[np.float64]] = []
+    for (_, sl), c in zip(spaces, approximate_polygons(chains, tolerance=1.0), strict=True):
+        if len(c) == 0:
+            out.append(np.zeros((0, 2)))
+            continue
+        r = c[:, 0] - 1 + sl[0].start + 0.5
+        col = c[:, 1] - 1 + sl[1].start + 0.5
+        xs, ys = grid.grid_to_world(r, col)
+        out.append(np.column_stack([xs, ys]))
+    return out
 
 
 def _doors(grid: OccupancyGrid, raw: list[RawDoor], ids: dict[int, str], prefix: str = "door") -> list[Door]:

@@ -39,6 +39,7 @@ from langnav.analysis.precompute import (
     border_labels,
     component_boxes,
     dilate8,
+    grow_by_disc,
     label8,
     label8_cells,
     nonzero2,
@@ -259,6 +260,9 @@ def _cut_thin_parts(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     need = (params.unexplored_min_width_m / res + 1.0) / 2.0  # disc centre to outside, cells
     cover2 = (need - 0.5) ** 2  # the disc's cells, centre to centre (its width over two)
     reach = math.ceil(need) + 1
+    a = np.arange(reach + 1)
+    d2 = a[:, None] ** 2 + a[None, :] ** 2
+    near_need, near_cover = d2 < need * need, d2 <= cover2 + 1e-9  # the offsets (cells) within each
     half = max(1, math.ceil(params.robot_radius_m / res))
     pad = reach + 2 * half + 1
     worth_cells = params.unexplored_worth_area_m2 / grid.cell_area_m2
@@ -272,8 +276,10 @@ def _cut_thin_parts(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
         c0, c1 = max(0, sc.start - pad), min(grid.width, sc.stop + pad)
         own = lab[r0:r1, c0:c1] == k
         region = _unknown_or_too_tight(layers, r0, r1, c0, c1, half)
-        centres = truncated_sq_edt(region, reach) >= need * need
-        covered = truncated_sq_edt(~centres, reach) <= cover2 + 1e-9
+        # truncated_sq_edt(region, reach) >= need * need and truncated_sq_edt(~centres, reach) <=
+        # cover2 + 1e-9, exactly (both within the reach), as the outside and the centres grown.
+        centres = ~grow_by_disc(~region, near_need)
+        covered = grow_by_disc(centres, near_cover)
         thin = own & ~covered
         if not thin.any():
             continue

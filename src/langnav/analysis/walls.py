@@ -170,15 +170,17 @@ def _direction_peaks(theta_deg: FloatArray, min_points: float) -> list[float]:
     smooth = hist + 0.5 * (np.roll(hist, 1) + np.roll(hist, -1))
     peaks: list[float] = []
     order = np.argsort(-smooth)
-    taken = np.zeros(nbins, dtype=bool)
+    # The bins walked one by one: as Python values (a numpy scalar per look costs more).
+    sm = smooth.tolist()
+    taken = [False] * nbins
+    span = math.ceil(DIRECTION_TOL_DEG / DIRECTION_BIN_DEG)
     for b in order.tolist():
-        if smooth[b] < min_points:
+        if sm[b] < min_points:
             break
         if taken[b]:
             continue
-        if smooth[b] < smooth[(b - 1) % nbins] or smooth[b] < smooth[(b + 1) % nbins]:
+        if sm[b] < sm[(b - 1) % nbins] or sm[b] < sm[(b + 1) % nbins]:
             continue
-        span = math.ceil(DIRECTION_TOL_DEG / DIRECTION_BIN_DEG)
         for d in range(-span, span + 1):
             taken[(b + d) % nbins] = True
         peaks.append((b + 0.5) * DIRECTION_BIN_DEG)
@@ -267,7 +269,8 @@ def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
                 m_nx, m_ny, m_centre = (n_x, n_y, centre) if fit is None else fit
                 s_line = -x_sel[member] * m_ny + y_sel[member] * m_nx
                 s_m = np.sort(s_line)
-                gaps = np.flatnonzero(np.diff(s_m) > max_gap)
+                steps = np.diff(s_m)
+                gaps = np.flatnonzero(steps > max_gap)
                 starts = np.concatenate([[0], gaps + 1])
                 ends = np.concatenate([gaps, [len(s_m) - 1]])
                 for a, b in zip(starts.tolist(), ends.tolist(), strict=True):
@@ -277,7 +280,7 @@ def fit_wall_lines(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
                     # Solid for at least half its length not counting its widest opening (a
                     # short wall that is mostly a doorway, as at a corridor's end, is still a
                     # wall), and for at least half the shortest wall's length.
-                    opening = max(float(np.max(np.diff(s_m[a:b + 1]))) - 1.0, 0.0) if b > a else 0.0
+                    opening = max(float(steps[a:b].max()) - 1.0, 0.0) if b > a else 0.0
                     solid_needed = MIN_SOLID_FRACTION * max(s1 - s0 - opening, min_len)
                     if s1 - s0 >= min_len and (b - a + 1) >= solid_needed:
                         lines.append(WallLine(int(space), (m_nx, m_ny), m_centre, s0, s1))
