@@ -741,3 +741,40 @@ def test_aisles_ending_in_a_narrow_cross_aisle_lead_somewhere(resolution_m: floa
         assert p.center == pytest.approx((4.0, 1.2 + 1.2 * k + 0.4 + 0.4), abs=0.06)
         assert p.width_m == pytest.approx(0.8, abs=0.051)
         assert p.length_m == pytest.approx(4.0, abs=0.15)
+
+
+@pytest.mark.parametrize("degrees", [10.0, 23.0, 45.0])
+def test_pews_and_cross_aisles_read_the_same_rotated(degrees: float) -> None:
+    # Stair-stepped at any angle: no slot between pews 0.5 m apart, the eight 0.6 m aisles, and
+    # the four rack aisles that end in a narrow cross aisle.
+    assert passages_of(rotated(pews(0.5), degrees)) == ()
+    wide = passages_of(rotated(pews(0.6), degrees))
+    assert len(wide) == 8 and all(p.width_m == pytest.approx(0.6, abs=0.06) for p in wide)
+    racks = passages_of(rotated(cross_aisle(), degrees))
+    assert len(racks) == 4 and all(p.width_m == pytest.approx(0.8, abs=0.06) for p in racks)
+
+
+def bike_grid(resolution_m: float = 0.05, gap_m: float = 0.75) -> OccupancyGrid:
+    """A spin studio: a 4 x 3 grid of bikes (0.5 x 1.1 m) with ``gap_m`` between them and to the
+    walls, its door a 0.9 m gap in the south wall."""
+    nx, ny, bike_w, bike_l = 4, 3, 0.5, 1.1
+    w, h = gap_m + nx * (bike_w + gap_m), gap_m + ny * (bike_l + gap_m)
+    b = MapBuilder(w + 2.0, h + 2.0, resolution_m=resolution_m, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, w, h)
+    b.free(w / 2 - 0.45, -0.2, w / 2 + 0.45, 0.0)
+    for i in range(nx):
+        for j in range(ny):
+            x, y = gap_m + i * (bike_w + gap_m), gap_m + j * (bike_l + gap_m)
+            b.box(x, y, x + bike_w, y + bike_l)
+    return b.build(source=f"bike_grid_{gap_m}")
+
+
+@pytest.mark.parametrize("resolution_m", [0.025, 0.05, 0.1])
+def test_the_lanes_of_a_grid_of_bikes_are_no_passages(resolution_m: float) -> None:
+    # Every gap between two bikes, or a bike and a wall, is as tight as the ways round it (0.75
+    # m): none is the narrow passage a person points at (eight to ten were reported).
+    assert passages_of(bike_grid(resolution_m)) == ()
+
+
+def test_the_lanes_of_a_rotated_grid_of_bikes_are_no_passages() -> None:
+    assert passages_of(rotated(bike_grid(), 23.0)) == ()

@@ -170,3 +170,50 @@ def test_talk_that_may_be_meant_for_the_robot_is_kept(prompt: str) -> None:
 def test_talk_to_a_named_person_never_adds_or_removes_a_motion(name: str, said: str, metres: int) -> None:
     for prompt in (f"go forward {metres} metres, {name}, {said}", f"{name}, {said}, okay, go forward {metres} metres"):
         assert _plan(prompt) == [("move", "forward", float(metres), None)]
+
+
+# ------------------------------------------------------------------ varieties of English and learners
+@pytest.mark.parametrize(("prompt", "expected"), [
+    # a boat's words
+    ("hard to port, ninety degrees", [("rotate", "left", None, 90.0)]),
+    ("ahead one metre, then starboard ninety, then ahead three metres",
+     [("move", "forward", 1.0, None), ("rotate", "right", None, 90.0), ("move", "forward", 3.0, None)]),
+    ("come round to face north", [("rotate", None, None, None)]),
+    ("turn left, i mean port, forty, belay that, sixty degrees", [("rotate", "left", None, 60.0)]),
+    # Scots as a recogniser writes it
+    ("aye, just turn yerself around", [("rotate", "around", None, 180.0)]),
+    ("go back oot the way, one metre back", [("move", "backward", 1.0, None)]),
+    # French-English
+    ("turn on the right of forty-five degrees", [("rotate", "right", None, 45.0)]),
+    ("turn on the left of one hundred thirty-five degrees and advance of four meters",
+     [("rotate", "left", None, 135.0), ("move", "forward", 4.0, None)]),
+    ("move forward of eighty centimeters, and after turn on the right",
+     [("move", "forward", 0.8, None), ("rotate", "right", None, None)]),
+    # learners and trades
+    ("take left", [("rotate", "left", None, None)]),
+    ("back out eighteen inches", [("move", "backward", round(18 * 0.0254, 4), None)]),
+    ("do a slow three sixty", [("rotate", "left", None, 360.0)]),
+    ("an eighth of a turn to the left", [("rotate", "left", None, 45.0)]),
+    ("a third of a turn to the right", [("rotate", "right", None, 120.0)]),
+    # a unit put right after "wait"
+    ("go forward like five feet, wait, metres, five metres", [("move", "forward", 5.0, None)]),
+    # purposes and wishes to see are no places to go to
+    ("turn left ninety degrees, i want to see the hallway", [("rotate", "left", None, 90.0)]),
+    ("please turn around so the group can see you", [("rotate", "around", None, 180.0)]),
+])
+def test_words_of_english_varieties_and_learners(prompt: str, expected: Plan) -> None:
+    assert _plan(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", ["turn of thirty degrees", "can ye tell me where ye are"])
+def test_varieties_keep_asking_what_is_not_said(prompt: str) -> None:
+    """"Turn of thirty degrees" still has no side (asks); "ye" is "you" (a question the robot answers)."""
+    intent = translate_offline(prompt)
+    assert (intent.steps == []) == (prompt.startswith("turn"))
+    if intent.steps:
+        assert [s.movement for s in intent.steps] == [Movement.QUERY]
+
+
+def test_take_the_left_door_is_still_a_place() -> None:
+    steps = translate_offline("take the left door").steps
+    assert [s.movement for s in steps] == [Movement.NAVIGATE]

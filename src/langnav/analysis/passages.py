@@ -8,9 +8,10 @@ close to its typical width (the stretch over which the way stays tight, between 
 sides, without the flaring mouths; one pinch point does not shorten it). A core is a passage when
 it is longer than a doorway could be deep in this building (``params.door_max_depth_m`` and
 ``WALL_LENGTHS`` of its typical wall thickness, :func:`typical_wall_thickness_m`; up to
-``params.passage_min_length_m``), wide enough for the robot with a margin (``PASSAGE_MIN_MARGIN_M``: 0.1 m a side), has sides along most
-of its length (or a wall along one side and a single doorway in the other: a passage with a door
-off it), solid ones (walls, furniture, a shelf's unscanned inside: not
+``params.passage_min_length_m``), wide enough for the robot with a margin
+(``PASSAGE_MIN_MARGIN_M``: 0.1 m a side, across its axis and by the distance to its sides), has
+sides along most of its length (or a wall along one side and a single doorway in the other: a
+passage with a door off it), solid ones (walls, furniture, a shelf's unscanned inside: not
 laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
 unexplored area), leads somewhere (both mouths open into free space wider than any passage, or,
 for an aisle, into another narrow way that reaches such space within ``MOUTH_LEADS_ON_M``: a
@@ -26,7 +27,9 @@ deeper than any wall, is no door), and is
   parked bed and a trolley in a corridor, a column and a planter): its sides are no wall with a
   doorway in it. It is a passage however one could go round when it is tight for a person
   (``TIGHT_WIDTH_M``), except beside a lone thing by a wall that open floor leads round nearby
-  (a pallet: one walks round it); a roomier one only when it is the only way past.
+  (a pallet: one walks round it), or where the ways round it near it are as tight and none
+  clearly roomier (one of the equal lanes of a grid of bikes or desks); a roomier one only when
+  it is the only way past.
 
 A passage along a wall (between the wall and a long shelf) shares its skeleton line with the
 one-sided strip along the rest of the room's walls: a core without sides along most of its length
@@ -110,6 +113,10 @@ DOOR_ACROSS_COS: Final = math.cos(math.radians(45.0))
 #: past. A way through other rooms, round a ring corridor or a long machine line, is a detour:
 #: the squeeze is still the way.
 WAY_ROUND_M: Final = 4.0
+#: A short gap with a way round near it as tight as itself is one of equal gaps (the lanes of a
+#: grid of bikes or desks) unless a way round is clearly roomier: wider by this (m; scan noise on
+#: two faces, as PARALLEL_SPREAD_M), as the open floor round a column and a planter.
+EQUAL_GAP_ROOMIER_M: Final = 0.15
 #: A squeeze one could go round is a narrow passage only when it is tight for a person: narrower
 #: than the narrowest point of an accessible route (0.815 m, 32 in: ADA 403.5.1 lets a 0.915 m
 #: route narrow to that for at most 0.61 m), where two people cannot pass and one turns sideways.
@@ -409,6 +416,18 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                                                                    width_m / res, WAY_ROUND_M / res):
                     _rejected('open floor round the thing', grid, r0, c0, mid, width_m, length_m)
                     continue
+                # A short gap among equal ones (a grid of bikes, a block of desks, seats) is no
+                # narrow passage: a way round near it is as tight (as wide, a cell of slack), and
+                # none clearly roomier (EQUAL_GAP_ROOMIER_M) leads round it. A person points at the
+                # squeeze that is tighter than the floor around it, not at one of a grid's lanes.
+                if not elongated and (thing is not None or squeeze) and not door_at:
+                    as_wide = d2 >= max(width_m / res / 2.0 - 1.0, 0.0) ** 2
+                    roomier = wide | (d2 >= ((width_m + EQUAL_GAP_ROOMIER_M) / res / 2.0) ** 2)
+                    if (_way_round(as_wide, fits, centre_g, axis, half_len, width_m / res, WAY_ROUND_M / res)
+                            and not _way_round(roomier, fits, centre_g, axis, half_len, width_m / res,
+                                               WAY_ROUND_M / res)):
+                        _rejected('one of equal gaps', grid, r0, c0, mid, width_m, length_m)
+                        continue
             cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
             centre = (float(cx), float(cy))
             ax_w = np.subtract(grid.grid_to_world(r0 + centre_g[1] + axis[1], c0 + centre_g[0] + axis[0]), centre)

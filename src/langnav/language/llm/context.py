@@ -175,6 +175,12 @@ place named by a thing in it ("the room with the sofa") or by two sides ("the do
 said only to be large ("a fair bit", "quite a way", "a good distance", "a lot") -> ask how far (unlike "a \
 little", it has no bound). A word you do not understand where the way or the amount goes ("go aft one metre" \
 if you do not know "aft") -> ask; never assume forward.
+- Varieties and learners: "hard to port" -> rotate left; "starboard ninety" -> rotate right 90; "come round to \
+face north" -> face north; "belay that" = scratch that; Scots "tae" to, "yer" your, "ye" you, "oot" out, "aye" \
+yes ("oot the way" says why, not where); "take left" -> rotate left; "back out" = back up; "turn on the left" \
+(French) -> rotate left, "advance of four meters" -> move forward 4, "and after" = then; "an eighth of a turn" \
+-> 45 degrees; "do a slow three sixty" -> rotate 360; "five feet, wait, metres" -> five metres; "I want to see \
+the hallway" after a motion is a picture (no camera), no trip; "so the group can see you" is a purpose.
 - Talk not meant for the robot gives no steps: notes and remarks before "okay" / "noted" / "robot," ("water \
 line about eighteen inches on this wall, okay, go forward three feet" -> only the move), statements about \
 others ("..., she's asking about the robot"), a person named and what is said to them ("no, jack, sit \

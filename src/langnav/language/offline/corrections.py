@@ -32,7 +32,7 @@ CORRECTION_START_RE: Final = re.compile(
     r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|my\s+(?:bad|mistake)|or\s+rather|rather|make\s+that|make\s+it|correction|"
     r"oops)\b[\s,]*)+", re.IGNORECASE)
 #: Words that take back what was said before ("never mind", "scratch that").
-CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|forget\s+(?:it|that|everything|all\s+(?:of\s+)?that)|"
+CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|belay\s+(?:that|the\s+last)|forget\s+(?:it|that|everything|all\s+(?:of\s+)?that)|"
                               r"cancel\s+that|ignore\s+that|disregard\s+that)\b[\s,]*", re.IGNORECASE)
 #: Of those, the words that drop the whole request so far, not only its last instruction: "never mind"
 #: dismisses what the speaker was asking for ("keep going two feet, go south, go two t- ... never mind,
@@ -41,7 +41,7 @@ CANCEL_ALL_RE: Final = re.compile(r"\b(?:never\s*mind|forget\s+(?:everything|all
 #: Words that give the side of a move or a turn (a fragment may carry one).
 SIDE_RE: Final = re.compile(
     r"(?:\b(?:to|on|towards?)\s+(?:the|your)\s+)?\b(?:left|right|clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw|"
-    r"forwards?|backwards?|ahead|straight)\b(?:\s+(?:hand\s+)?side)?")
+    r"forwards?|backwards?|ahead|straight|port|starboard|astern)\b(?:\s+(?:hand\s+)?side)?")
 _HEAD_RE: Final = rx([*lx.ELEMENT_NOUNS], "head")
 #: Words a speaker holds the floor with while correcting ("no, wait, ..."): no instruction of their own.
 _HOLD_RE: Final = re.compile(r"^\s*(?:wait|hold\s+on|hang\s+on|one\s+sec(?:ond)?|let\s+me\s+think)\s*$", re.IGNORECASE)

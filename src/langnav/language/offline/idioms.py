@@ -64,7 +64,8 @@ _TURN_SIDE: Final = (r"(?:hard\s+|sharp\s+|quickly\s+|slightly\s+|a\s+bit\s+|a\s
 #: Light verbs that take a turn as their object ("hit a left", "pull a u-turn").
 _TURN_LIGHT_VERBS: Final = r"(?:hit|pull|throw|bust|chuck|bang|whip|hook|swing|cut|rip|hang|do|make|perform|execute|take|try)"
 #: Turns named as things: a side, a u-turn, or a half or full turn by its degrees.
-_NAMED_TURN: Final = (r"(?P<named>(?:quick\s+|fast\s+|sharp\s+|hard\s+|little\s+|full\s+|complete\s+|whole\s+)?"
+_NAMED_TURN: Final = (r"(?P<named>(?:quick\s+|fast\s+|sharp\s+|hard\s+|little\s+|full\s+|complete\s+|whole\s+|slow\s+|"
+                      r"gentle\s+|careful\s+|smooth\s+|steady\s+|lazy\s+|nice\s+)?"
                       r"(?:(?P<side>left|right)|(?P<u>u\s*turn|u\s*ey|u\s*ie|yooie|uey|youey)|(?P<half>one\s+eighty|180)"
                       r"|(?P<full>three\s+sixty|360)))\b(?!\s*(?:degrees?|deg|turns?|spins?))")
 
@@ -111,6 +112,24 @@ _IDIOMS: Final[tuple[tuple[re.Pattern[str], Replacement], ...]] = (
     # "a proper left turn", "a nice clean one eighty": words that praise a turn say nothing of its side or size
     (re.compile(r"\b(?:(?:proper|real|nice|clean|normal|regular|standard|decent|good|neat|tidy)\s+)+"
                 r"(?=(?:left|right|u)\s*turn\b|(?:one\s+eighty|three\s+sixty|180|360)\b)"), ""),
+    # learner grammar (Indian English and others): "take left", "take right" with no article and no place after
+    # it is a turn that way, as "take a left" is
+    (re.compile(r"\btake\s+(?P<side>left|right)\b(?!\s+(?:hand\s+|side\s+)?(?:door|doorway|room|corridor|hallway|hall|exit|"
+                r"passage|corner|wall|one|turn)\b)"), r"take a \g<side>"),
+    # a boat's helm orders: "hard to port", "hard a-starboard", "hard over to port": the rudder put over, a turn
+    # that way (how far is said after, or asked)
+    (re.compile(r"\b(?:(?:turn|come|go)\s+)?(?:hard|full)(?:\s+over)?\s+(?:to\s+|a\s*-?\s*)(?P<side>port|starboard)\b"),
+     r"turn \g<side>"),
+    # "come round to face north", "swing around to face the door": the facing is the turn; "round" says only
+    # that the robot turns to it
+    (re.compile(r"\b(?:come|swing|turn|bring\s+(?:her|it))\s+(?:a)?round\s+(?:so\s+as\s+)?(?:to\s+)?(?=face\b)"), ""),
+    # French and other learners: "turn on the left" (tourner à gauche) is a turn to the left; a side is nothing
+    # one switches on
+    (re.compile(r"\bturn\s+on\s+(?:the|your)\s+(?P<side>left|right)\b"), r"turn \g<side>"),
+    # learners' "of" before an amount ("advance of four meters", "turn right of forty-five degrees", after
+    # French "de"): the amount of the motion, as "by"
+    (re.compile(rf"\b(?P<w>forwards?|backwards?|back|left|right|ahead|advance|move|go|turn|rotate|reverse)\s+of\s+"
+                rf"(?=(?:about\s+|around\s+|roughly\s+)?(?:{NUMBER}|a|an|half)\b)"), r"\g<w> "),
     # learner grammar: "make turn", "do turn" (no article) is a turn
     (re.compile(r"\b(?:make|do|take|perform|give)\s+(?:a\s+)?turn(?=\s+(?:on|in|to|at|towards?)?\s*(?:the\s+)?"
                 r"(?:left|right)\b)"), "turn"),

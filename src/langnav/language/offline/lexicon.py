@@ -266,7 +266,7 @@ GO_VERBS: Final = (
     "enter", "exit", "leave", "cross", "pass", "approach", "visit", "find", "park", "position yourself",
     "get yourself", "continue", "keep going", "carry on", "step", "slide", "shift", "creep", "inch", "sidestep",
     "side step",
-    "scoot", "back up", "reverse", "back off", "go back", "head back", "strafe", "run", "ride",
+    "scoot", "back up", "back out", "reverse", "back off", "go back", "head back", "strafe", "run", "ride",
     "navigate yourself", "steer", "relocate", "put yourself", "place yourself", "be", "traverse",
     "squeeze", "wander", "journey", "cruise", "zip", "hop", "nudge", "budge", "position", "get over",
     "come over", "swing by", "pull up", "pull over", "pull", "arrive", "set off", "follow", "hug",
@@ -646,6 +646,11 @@ TYPOS: Final[dict[str, str]] = {
     "arnd": "around", "til": "till", "untill": "until", "b4": "before", "shw": "show",
     "niner": "nine", "wru": "where are you", "wya": "where are you", "nrth": "north", "noth": "north", "nort": "north",
     "souht": "south", "suoth": "south", "wset": "west", "esat": "east",
+    # Scots as a recogniser writes it ("turn tae yer left", "can ye tell me where ye are", "oot the way",
+    # "aye"): the same words of general English, said in a variety of it
+    "tae": "to", "yer": "your", "ye": "you", "oot": "out", "aye": "yes", "gonnae": "going to", "intae": "into",
+    "ontae": "onto", "yersel": "yourself", "yerself": "yourself", "wantae": "want to", "dinnae": "do not",
+    "doon": "down",
 }
 
 #: Words that typo repair may aim at (edit distance 1, words of at least five letters).

@@ -30,7 +30,9 @@ from langnav.language.offline.verbs import Verb
 #: Sides only a turn has ("clockwise"): a fragment with one of them is a turn.
 _TURN_ONLY_SIDE_RE: Final = re.compile(r"\b(?:clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw)\b")
 _SIDEWAYS_RE: Final = re.compile(r"\bsideways\b")
-_BACKWARD_VERBS: Final = frozenset({"back up", "reverse", "back off", "go back", "head back", "retreat", "withdraw"})
+#: ("back out": reversing out of where one stands, as from a parking space or a tank's manhole)
+_BACKWARD_VERBS: Final = frozenset({"back up", "back out", "reverse", "back off", "go back", "head back", "retreat",
+                                    "withdraw"})
 
 
 def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:

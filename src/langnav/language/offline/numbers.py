@@ -214,7 +214,9 @@ _PI_PATTERN: Final = re.compile(
 #: "a quarter turn", "half a turn", "a full turn", "two full turns", "one and a half turns"
 _TURN_PATTERN: Final = re.compile(
     rf"(?<!\w)(?:(?P<ratio>\d+\s*/\s*\d+)(?:\s+of)?(?:\s+an?)?|(?P<frac>(?:a|one)\s+quarter|quarter|a\s+half|half\s+(?:a|an|of\s+a)|half|"
-    rf"(?:a\s+)?three[\s-]+quarters?(?:\s+of\s+a)?|three[\s-]+quarter)"
+    rf"(?:a\s+)?three[\s-]+quarters?(?:\s+of\s+a)?|three[\s-]+quarter"
+    # "an eighth of a turn", "a third of a turn", "a quarter of a turn": any share of a whole turn
+    rf"|(?:(?:a|an|one)\s+)?(?:eighth|sixth|third|quarter)(?=\s+of\s+(?:a|an|one)\b))(?:\s+of\s+(?:a|an|one))?"
     rf"|(?:(?P<num>{NUMBER})\s+|(?:a|an)\s+)?(?P<whole>(?:{'|'.join(WHOLE_TURN_WORDS)}))"
     rf"|(?P<count>{NUMBER}))"
     rf"[\s-]*(?:full\s+|complete\s+|whole\s+)?(?P<noun>{_TURN_NOUN})")
@@ -408,7 +410,7 @@ def _word_integer(t: str) -> int:
 def _fraction_value(frac: str) -> float:
     f = " ".join(frac.split())
     for words, value in (("three quarter", 0.75), ("two thirds", 2 / 3), ("quarter", 0.25),
-                         ("half", 0.5), ("third", 1 / 3)):
+                         ("half", 0.5), ("third", 1 / 3), ("eighth", 1 / 8), ("sixth", 1 / 6)):
         if words in f:
             return value
     raise ValueError(f"{frac!r} is not a fraction")

@@ -249,10 +249,11 @@ _ONE_BEFORE_NUMBER_RE: Final = re.compile(rf"\bone\s+(?:\d|(?:{NUMBER_WORDS})\b)
 NUMBER_WORD_SET: Final = frozenset(NUMBER_WORD_LIST)
 #: Words that give the side of a move or a turn.
 _SIDE_WORD_RE: Final = re.compile(r"\b(?:left|right|forwards?|ahead|straight|back|backwards?|reverse|around|round|"
+                                  r"port|starboard|astern|"
                                   r"clockwise|counter\s*clockwise|anti\s*clockwise|sideways)\b")
 
 
-_TURN_SIDE_RE: Final = re.compile(r"\b(?:left|right|around|round|clockwise|counter\s*clockwise|anti\s*clockwise)\b")
+_TURN_SIDE_RE: Final = re.compile(r"\b(?:left|right|port|starboard|around|round|clockwise|counter\s*clockwise|anti\s*clockwise)\b")
 
 
 def _is_open(steps: list[Step], norm: str) -> bool:

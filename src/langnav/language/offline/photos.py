@@ -25,6 +25,10 @@ PHOTO_RE: Final = re.compile(
     # "i want to see behind you", "i'd like to look to the left" (learners: "i want see behind")
     r"|(?:i|we)(?:\s+want|\s+would\s+like|'?d\s+like|\s+need|\s+wanna)\s+(?:to\s+)?(?:see|look)"
     r"(?=\s+(?:behind|around|to\s+(?:the|your)|on\s+(?:the|your)|at\s+(?:the|your))\b)"
+    # "turn left ninety degrees, i want to see the hallway": seeing a place through the robot is a picture
+    # (going there is asked with a verb of going); the map is asked for by name
+    r"|(?:i|we)(?:\s+want|\s+would\s+like|'?d\s+like|\s+need|\s+wanna)\s+(?:to\s+)?(?:see|look\s+at)\s+"
+    r"(?:the|this|that|it|what|where|how)\b(?![^,.;!?]*\bmap\b)[^,.;!?]*"
     r"|(?:take|have)\s+a\s+look(?:\s+around)?(?=\s*$|\s+(?:to|on)\s+(?:your|the)\s+(?:left|right)\b)"
     r"|(?:turn|switch)\s+on\s+(?:the\s+|your\s+)?(?:video\s+)?camera|(?:start|begin)\s+(?:recording|filming)"
     r"|record\s+(?:a\s+)?video"

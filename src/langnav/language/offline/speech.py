@@ -90,6 +90,8 @@ HOMOPHONES: Final = (
                 r"keep\s+going|carry\s+on|straight|push|nudge|scoot)\s+(?:for\s+word|foreword|fore\s+word|ford|"
                 r"four\s+ward|for\s+ward|fore\s+ward)s?\b", re.IGNORECASE), r"\g<verb> forward"),
     (re.compile(r"\s*\b(?:comma)\b\s*", re.IGNORECASE), ", "),
+    # "go forward five feet, wait, metres": "wait" right before a unit alone puts the unit right
+    (re.compile(rf"\bwait\s*[,.]\s*(?=(?:no\s*,?\s*)?{_UNIT_WORD}\s*(?:[,.;!?]|$))", re.IGNORECASE), "i mean "),
     (re.compile(r"(?<=[a-z0-9])\s+n\s+(?=[a-z])", re.IGNORECASE), " and "),  # chat "n" between two words
     (re.compile(r"\b(?:thn|thne|hten|tehn)\b", re.IGNORECASE), "then"),  # the connective, before the split
     (re.compile(r"\s*\b(?:period(?!\s+of\b)|full\s+stop|new\s*line|new\s+paragraph|semicolon|question\s+mark|"
@@ -128,6 +130,11 @@ REMARKS: Final = re.compile(
     r"[^,.;!?]*"
     r"|(?:and\s+)?(?:be\s+)?careful\s+not\s+to\s+(?:crash|hit|bump|collide|smash|run\s+into|touch)\b[^,.;!?]*)"
     r"|\bso\s+(?:that\s+)?(?:i|we)\s+(?:can|could|may|might|will)\b[^,.;!?]*"
+    # a purpose said of someone else ("so the group can see you", "so that the kids can get past"): why, not where
+    # (one with a way in it, "so you can see behind you", says where the robot is to turn, and stays)
+    r"|\bso\s+(?:that\s+)?(?!(?:you|u)\b)(?:the\s+|my\s+|our\s+|your\s+|his\s+|her\s+|their\s+)?[a-z]+(?:\s+[a-z]+)?\s+"
+    r"(?:can|could|may|might|will|would)\b(?![^,.;!?]*\b(?:behind|left|right|around|round|ahead|north|south|east|west)\b)"
+    r"[^,.;!?]*"
     # "please do one thing, ...": announces the request that follows
     r"|(?:^|(?<=[,.;!?]))\s*(?:please\s+)?do\s+one\s+thing\b[^,.;!?]*"
     # thanks said ahead: "..., that would be great", "that'd be awesome"
@@ -177,6 +184,10 @@ ASIDES: Final = re.compile(
     r"|(?:that|this|it)(?:'s|\s+is)\s+where\s[^,.;!?]*"
     r")\s*(?=[,.;!?]|$)",
     re.IGNORECASE)
+#: "go back out the way, one metre back", "move oot o' the way": getting out of someone's way says why the robot
+#: moves, not where to or how far (the way and the amount are said beside it, or asked).
+OUT_OF_THE_WAY: Final = re.compile(r"\b(?:out|oot)\s+(?:of\s+|o'?\s+)?(?:the|my|our|his|her|their|your|yer)\s+way\b",
+                                   re.IGNORECASE)
 #: A concession before a request: "this room is lovely but I want you to leave it": what the place is like,
 #: said before "but", is a remark; the request follows "but" (and is no name for the place).
 CONCESSION: Final = re.compile(
@@ -330,6 +341,7 @@ def plain_speech(prompt: str) -> str:
     text = REQUEST_FRAMES.sub(" ", PSEUDO_CLEFT.sub(" ", text))
     text = THAT_CLAUSE.sub("", REMARKS.sub(" ", ASIDES.sub(" ", CONCESSION.sub(" ", text))))
     text = NOT_TOO_FAR.sub(" a little", KEEPING_HEADING.sub(" ", ESTIMATING_WHAT.sub(" ", text)))
+    text = OUT_OF_THE_WAY.sub(" ", text)
     text = _ABANDONED.sub(_drop_abandoned, text)
     kept_cuts = {m.start() for m in _unfinished(text)}  # kept: the reading must ask about them
     text = _CUT_OFF.sub(lambda m: m.group(0) if m.start() in kept_cuts else " ", text)
