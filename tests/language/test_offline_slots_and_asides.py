@@ -217,3 +217,23 @@ def test_varieties_keep_asking_what_is_not_said(prompt: str) -> None:
 def test_take_the_left_door_is_still_a_place() -> None:
     steps = translate_offline("take the left door").steps
     assert [s.movement for s in steps] == [Movement.NAVIGATE]
+
+
+@pytest.mark.parametrize(("prompt", "side"), [
+    ("make your way through the door on your starboard side", "right"),
+    ("make your way to the last door on your port side", "left"),
+    ("go to the starboard door", "right"),
+])
+def test_a_boats_sides_name_the_side_of_a_place(prompt: str, side: str) -> None:
+    steps = translate_offline(prompt).steps
+    assert [s.target.side.value if s.target and s.target.side else None for s in steps] == [side]
+
+
+@pytest.mark.parametrize(("prompt", "details"), [
+    ("Go to the door of this room and after through it.", ["to", "through"]),
+    ("sand from the sandpit everywhere in here. okay, go to the middle of this room", ["middle"]),
+    ("aye, head tae the unexplored bit o' this room", ["towards"]),
+])
+def test_learners_and_notes_around_places(prompt: str, details: list[str]) -> None:
+    steps = translate_offline(prompt).steps
+    assert [s.detail.value if s.detail else None for s in steps] == details

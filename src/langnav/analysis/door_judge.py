@@ -247,32 +247,37 @@ def free_widths(free: BoolArray, center_rc: tuple[float, float], normal_rc: tupl
     # A half that ran through that strip runs on: it is looked along further, in stretches that
     # double, for its rows only (the samples a look across the whole width reads, up to the first
     # blocked one).
-    _run_on(free, center_rc, t, s[s_max:], normal_rc, n_right, near + 1)
-    _run_on(free, center_rc, t, s[s_max::-1], normal_rc, n_left, near + 1)
+    _run_on(free, center_rc, t, s[s_max:], normal_rc, n_right, n_left, near + 1)
     width = np.where(on, (n_right + n_left - 1) * _STEP_CELLS * resolution_m, 0.0)
     return np.asarray(t * resolution_m, dtype=np.float64), np.asarray(width, dtype=np.float64)
 
 
 def _run_on(free: BoolArray, center_rc: tuple[float, float], t: npt.NDArray[np.floating],
-            half: npt.NDArray[np.floating], normal_rc: tuple[float, float], n: npt.NDArray[np.int64],
-            looked: int) -> None:
-    """Carry on the free runs that reached ``looked`` samples along ``half`` (offsets along the
-    tangent from 0 outwards, one side of the line): ``n`` (per offset ``t``) becomes the index of
-    the first blocked sample, or the length of ``half`` when there is none (as
-    :func:`_runs_through_zero` counts over the whole of ``half``)."""
+            half: npt.NDArray[np.floating], normal_rc: tuple[float, float], n_right: npt.NDArray[np.int64],
+            n_left: npt.NDArray[np.int64], looked: int) -> None:
+    """Carry on the free runs that reached ``looked`` samples along the tangent (``half``: its
+    offsets from 0 outwards; the left half's are their negatives): ``n_right`` / ``n_left`` (per
+    offset ``t``) become the index of the first blocked sample, or the length of ``half`` when
+    there is none (as :func:`_runs_through_zero` counts over the whole of each half). Both halves
+    are looked along together."""
     nr, nc = normal_rc
     tr, tc = -nc, nr
-    rows_on = np.flatnonzero(n >= looked)
+    right, left = np.flatnonzero(n_right >= looked), np.flatnonzero(n_left >= looked)
+    rows_on = np.concatenate([right, left])
+    sign = np.concatenate([np.ones(right.size), -np.ones(left.size)])
+    is_left = np.concatenate([np.zeros(right.size, dtype=bool), np.ones(left.size, dtype=bool)])
     a = looked
     while rows_on.size and a < half.size:
         b = min(half.size, 2 * a)
-        tt, ss = t[rows_on], half[a:b]
-        rows = center_rc[0] + tt[:, None] * nr + ss[None, :] * tr
-        cols = center_rc[1] + tt[:, None] * nc + ss[None, :] * tc
+        tt, ss = t[rows_on], sign[:, None] * half[None, a:b]
+        rows = center_rc[0] + tt[:, None] * nr + ss * tr
+        cols = center_rc[1] + tt[:, None] * nc + ss * tc
         ok = _sample(free, rows, cols, outside=False)
         through = ok.all(axis=1)
-        n[rows_on] = np.where(through, b, a + np.argmin(ok, axis=1))
-        rows_on = rows_on[through]
+        got = np.where(through, b, a + np.argmin(ok, axis=1))
+        n_right[rows_on[~is_left]] = got[~is_left]
+        n_left[rows_on[is_left]] = got[is_left]
+        rows_on, sign, is_left = rows_on[through], sign[through], is_left[through]
         a = b
 
 
