@@ -212,3 +212,20 @@ def test_a_room_round_a_shelf_block_is_a_room_a_loop_round_a_core_a_hallway() ->
     corridor = space_at(seg, grid, 9.0, 7.0)
     assert len({store.id, loop.id, corridor.id}) == 3
     assert set(door_near(seg.doors, 4.0, 6.0).connects) == {store.id, corridor.id}
+
+
+def test_many_openings_into_one_place_do_not_make_a_room_a_hallway() -> None:
+    """A 31 m2 meeting room 3 m wide whose glass front onto an open floor was scanned as three
+    pane gaps, with a door into its own store: four openings, but they lead on to one place
+    only (the floor), so no one walks through it: a room. The same room with its openings into
+    four places is walked through: a hallway."""
+    from langnav.analysis.segmentation import _kind_and_size
+
+    def kind(served: int | None) -> ElementKind:
+        return _kind_and_size(31.0, 1.58, 2.33, 0.0, 4, lambda: 3.1, 0.05, DEFAULT_PARAMS,
+                              whole_wide_share=lambda: 0.0, whole_typical=lambda: 2.33, ways_on=3,
+                              extent_m=9.4, served=served)[0]
+
+    assert kind(1) == ElementKind.ROOM
+    assert kind(4) == ElementKind.HALLWAY
+    assert kind(None) == ElementKind.HALLWAY  # counted by openings alone

@@ -8,9 +8,10 @@ close to its typical width (the stretch over which the way stays tight, between 
 sides, without the flaring mouths; one pinch point does not shorten it). A core is a passage when
 it is longer than a doorway could be deep in this building (``params.door_max_depth_m`` and
 ``WALL_LENGTHS`` of its typical wall thickness, :func:`typical_wall_thickness_m`; up to
-``params.passage_min_length_m``), wide enough for the robot with a margin (``PASSAGE_MIN_MARGIN_M``: 0.1 m a side), has sides along most
-of its length (or a wall along one side and a single doorway in the other: a passage with a door
-off it), solid ones (walls, furniture, a shelf's unscanned inside: not
+``params.passage_min_length_m``), wide enough for the robot with a margin
+(``PASSAGE_MIN_MARGIN_M``: 0.1 m a side, across its axis and by the distance to its sides), has
+sides along most of its length (or a wall along one side and a single doorway in the other: a
+passage with a door off it), solid ones (walls, furniture, a shelf's unscanned inside: not
 laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
 unexplored area), leads somewhere (both mouths open into free space wider than any passage, or,
 for an aisle, into another narrow way that reaches such space within ``MOUTH_LEADS_ON_M``: a

@@ -263,8 +263,9 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     raw_wide += [d for d in not_doors if d.b != 0]
     openings = np.bincount(np.array([x for d in raw_doors + raw_wide for x in (d.a, d.b) if x > 0], dtype=np.int64),
                            minlength=int(labels.max()) + 1)
-    rooms = _rooms(grid, labels, fl, params, peaks, openings,
-                   _ways_on(openings, [(d.a, d.b) for d in raw_doors + raw_wide], labels))
+    pairs = [(d.a, d.b) for d in raw_doors + raw_wide]
+    rooms = _rooms(grid, labels, fl, params, peaks, openings, _ways_on(openings, pairs, labels),
+                   _served(pairs, openings, labels))
     ids = {r.label: r.id for r in rooms}
     doors = _doors(grid, raw_doors, ids)
     narrow = _doors(grid, raw_narrow, ids, prefix="narrow_door")
@@ -562,7 +563,8 @@ def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: 
                    whole_width: Callable[[], float], res: float, params: AnalysisParams,
                    whole_wide_share: Callable[[], float] = lambda: 0.0,
                    whole_typical: Callable[[], float] = lambda: 0.0,
-                   ways_on: int | None = None, extent_m: float = math.inf) -> tuple[ElementKind, float, float]:
+                   ways_on: int | None = None, extent_m: float = math.inf,
+                   served: int | None = None) -> tuple[ElementKind, float, float]:
     """Hallway or room, with (length, width).
 
     A hallway is walked through (not a dead end entered through one doorway, unless it is
@@ -572,7 +574,8 @@ def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: 
     junction or an alcove widens it here and there, for its typical width (the median width
     along its centre line) if it has two openings or more, is many times longer than that
     typical width and has little floor wider than a corridor; or, with many doorways off it
-    (``HALLWAY_MIN_DOORWAYS``), longer than wide for that typical width. Either way its typical
+    (``HALLWAY_MIN_DOORWAYS``, into more than one place: ``served``), longer than wide for
+    that typical width. Either way its typical
     width wall to wall (``whole_typical()``, furniture as floor) is a corridor's too. Its width
     is the one it was judged on; length = area / width. Judged on its widest point, it is long
     for that width on that length, but no more than its extent (``extent_m``, how far apart its
@@ -617,7 +620,9 @@ def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: 
         long = area_m2 / typical >= params.hallway_long_elongation * typical
         # A space that many others open onto is walked through: it need only be longer than
         # it is wide, as a corridor is (an entrance hall, a ward corridor with a bay).
-        serves = openings >= HALLWAY_MIN_DOORWAYS \
+        # ... into more than one place (``served``): a meeting room's glass front onto an
+        # open floor is many openings into one space, and no one walks through it.
+        serves = openings >= HALLWAY_MIN_DOORWAYS and (served is None or served >= 2) \
             and area_m2 / typical >= params.hallway_min_elongation * typical
         if (long or serves) and whole_wide_share() <= params.hallway_max_wide_share \
                 and whole_typical() <= params.hallway_max_width_m:
@@ -767,6 +772,30 @@ def _split_halls_from_corridors(labels: npt.NDArray[np.int32], res: float,
     return out
 
 
+def _served(pairs: list[tuple[int, int]], openings: npt.NDArray[np.int64],
+            labels: npt.NDArray[np.int32]) -> npt.NDArray[np.int64]:
+    """Per label, how many places its openings lead on to: each other space once however many
+    openings it shares with it (the panes of a glass front, two doors into one room), all but
+    one smaller space with no other opening (a room with its own store or en-suite is still a
+    dead end, as in :func:`_ways_on`), and each opening into unexplored territory as a place of
+    its own."""
+    n = openings.size
+    area = np.bincount(labels.ravel(), minlength=n)
+    others: list[set[int]] = [set() for _ in range(n)]
+    dead_end = np.zeros(n, dtype=bool)
+    unknown = np.zeros(n, dtype=np.int64)
+    for a, b in pairs:
+        for x, y in ((a, b), (b, a)):
+            if not 0 < x < n:
+                continue
+            if y <= 0:
+                unknown[x] += 1
+            else:
+                others[x].add(y)
+                dead_end[x] |= bool(openings[y] == 1 and area[y] < area[x])
+    return np.array([len(o) for o in others], dtype=np.int64) - dead_end + unknown
+
+
 def _ways_on(openings: npt.NDArray[np.int64], pairs: list[tuple[int, int]],
              labels: npt.NDArray[np.int32]) -> npt.NDArray[np.int64]:
     """Per label, its openings that lead on: all of them but one into a smaller space that has
@@ -786,7 +815,8 @@ def _ways_on(openings: npt.NDArray[np.int64], pairs: list[tuple[int, int]],
 
 def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
            params: AnalysisParams, peaks: npt.NDArray[np.float64],
-           openings: npt.NDArray[np.int64], ways_on: npt.NDArray[np.int64] | None = None) -> list[Room]:
+           openings: npt.NDArray[np.int64], ways_on: npt.NDArray[np.int64] | None = None,
+           served: npt.NDArray[np.int64] | None = None) -> list[Room]:
     """The spaces of ``labels``, measured; ``peaks``: the widest clearance of each (by label);
     ``openings``: how many doorways each has."""
     res = grid.resolution_m
@@ -814,6 +844,7 @@ def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
                                                                params.hallway_max_width_m / 2,
                                                                params.seg_enclosed_unknown_max_area_m2),
                                              ways_on=int(ways_on[k]) if ways_on is not None and k < ways_on.size else None,
+                                             served=int(served[k]) if served is not None and k < served.size else None,
                                              extent_m=_extent(polygon))
         prefix = "hallway" if kind == ElementKind.HALLWAY else "room"
         rooms.append(Room(
