@@ -96,7 +96,10 @@ def _instructs(body: str) -> bool:
     """Whether the words may ask something of the robot: a verb of motion, a stop, a way, a place to go
     to, or a question it answers."""
     norm = normalize(body)
-    return bool(GO_VERB_RE.search(norm) or ROTATE_VERB_RE.search(norm) or STOP_RE.search(norm)
+    # verbs as said (with the known misspellings): the typo repair that helps read an instruction would make
+    # verbs of other words ("sand" -> "stand"); ways, stops and places are looked for in the repaired words
+    said = " ".join(lx.TYPOS.get(w, w) for w in body.lower().split())
+    return bool(GO_VERB_RE.search(said) or ROTATE_VERB_RE.search(said) or STOP_RE.search(norm)
                 or _WAY_RE.search(norm) or _PLACE_RE.search(norm) or _QUERY_RE.search(norm))
 
 
