@@ -68,6 +68,9 @@ MAX_CELLS = 8_000_000
 #: How many maps to list as moving most, per transform.
 TOP_MOVERS = 4
 
+#: How many lost / gained / new false elements to list per map.
+MAX_CHANGES = 8
+
 FIGURES = ("doors P", "doors R", "spaces P", "spaces R", "kind", "pass P", "pass R")
 
 
@@ -133,7 +136,7 @@ def segmented_coarse(grid: OccupancyGrid) -> bool:
     h = min(grid.height, rows[-1] + m + 1) - max(0, rows[0] - m)
     w = min(grid.width, cols[-1] + m + 1) - max(0, cols[0] - m)
     f = int(DEFAULT_PARAMS.seg_coarse_resolution_m / grid.resolution_m + 1e-9)
-    return h * w > DEFAULT_PARAMS.seg_max_cells_full_resolution and f >= 2
+    return bool(h * w > DEFAULT_PARAMS.seg_max_cells_full_resolution and f >= 2)
 
 
 def load_scorer() -> ModuleType:
@@ -232,6 +235,13 @@ def lost_and_gained(scorer: ModuleType, ann: PointsAnnotation, orig: Run, var: R
                 lines.append(f"lost {label} {where}: original found it {o_dets[o_found[j]]['width_m']:.2f} m wide")
             elif j in v_found and j not in o_found:
                 lines.append(f"gained {label} {where}: found {v_dets[v_found[j]]['width_m']:.2f} m wide")
+        # detections matching no annotation on the variant, with none such near on the original
+        o_false = [d["center"] for i, d in enumerate(o_dets) if i not in o_match and not scorer.ignored(truth_json, d["center"])]
+        for i, d in enumerate(v_dets):
+            p = variant.back(grid, tuple(d["center"]))
+            if i in v_match or scorer.ignored(truth_json, p) or any(math.dist(p, q) <= radius for q in o_false):
+                continue
+            lines.append(f"new false {label} at ({p[0]:.1f}, {p[1]:.1f}) {d['width_m']:.2f} m wide")
     return lines
 
 
@@ -254,10 +264,8 @@ def annotated_maps(folders: list[Path], max_maps: int | None, quick: bool) -> li
     return out
 
 
-def report(per_map: dict[str, dict[str, Any]], seconds: float) -> None:
-    """Print the pooled table and the maps that move most."""
-    print(f"\ninvariance: pooled over maps (score_points.py matching); each transform beside the original "
-          f"on the same maps; {seconds:.0f} s")
+def table(per_map: dict[str, dict[str, Any]]) -> None:
+    """Per transform, the pooled figures beside the original's on the same maps."""
     print(f"{'':18s}{'maps':>5s} " + "".join(f"{k:>9s}" for k in FIGURES) + "   change")
     for v in VARIANTS:
         names = [n for n, e in per_map.items() if v.name in e["variants"]]
@@ -268,6 +276,17 @@ def report(per_map: dict[str, dict[str, Any]], seconds: float) -> None:
         print(f"{'original':18s}{len(names):5d} " + "".join(f"{o[k]:9.2f}" for k in FIGURES))
         print(f"{v.name:18s}{len(names):5d} " + "".join(f"{t[k]:9.2f}" for k in FIGURES)
               + "   " + " ".join(f"{t[k] - o[k]:+.2f}" for k in FIGURES))
+
+
+def report(per_map: dict[str, dict[str, Any]], seconds: float) -> None:
+    """Print the pooled tables and the maps that move most."""
+    print(f"\ninvariance: pooled over maps (score_points.py matching); each transform beside the original "
+          f"on the same maps; {seconds:.0f} s")
+    table(per_map)
+    real = {n: e for n, e in per_map.items() if "/" not in n}
+    if real and len(real) < len(per_map):
+        print(f"\nthe real maps only ({ROS}):")
+        table(real)
     print("\nmaps whose counts move most, per transform (original -> transformed):")
     for v in VARIANTS:
         moved = []
@@ -284,7 +303,7 @@ def report(per_map: dict[str, dict[str, Any]], seconds: float) -> None:
                 break
             what = ", ".join(f"{k} {x}->{y}" for k, (x, y) in diff.items())
             print(f"    {n:38s} {what}")
-            for change in per_map[n]["changes"][v.name][:6]:
+            for change in per_map[n]["changes"][v.name][:MAX_CHANGES]:
                 print(f"      {change}")
 
 

@@ -130,7 +130,7 @@ def test_noise_is_fixed_by_its_seed_and_stays_near_walls() -> None:
     assert changed.any()
     # every change is free <-> occupied (unknown is never touched) and near a wall
     assert not (changed & (grid.cells == UNKNOWN)).any()
-    near_wall = ndimage.distance_transform_edt(grid.cells != OCCUPIED) * grid.resolution_m <= 0.3 + 1e-9
+    near_wall = (ndimage.distance_transform_edt(grid.cells != OCCUPIED) - 0.5) * grid.resolution_m <= 0.3 + 1e-9
     assert not (changed & ~near_wall).any()
     assert free_area_m2(a) == pytest.approx(free_area_m2(grid), rel=0.1)
     # no hole opens through a wall: free floor stays one region (bar a few cells cut off in corners
@@ -142,8 +142,21 @@ def test_noise_is_fixed_by_its_seed_and_stays_near_walls() -> None:
 
 
 def test_noise_refuses_a_probability_out_of_range() -> None:
-    with pytest.raises(MapError, match="speckle_probability"):
-        add_scan_noise(two_rooms(), 0, speckle_probability=1.5)
+    with pytest.raises(MapError, match="speckle_per_m2"):
+        add_scan_noise(two_rooms(), 0, speckle_per_m2=1000.0)
+
+
+def test_speckle_is_per_square_metre_whatever_the_cell_size() -> None:
+    grid = two_rooms()
+    fine = resample(grid, 0.025)
+
+    def hits_per_m2(g: OccupancyGrid) -> float:
+        hits = [np.count_nonzero(add_scan_noise(g, seed, wobble_probability=0.0).cells != g.cells)
+                for seed in range(6)]
+        return float(np.mean(hits)) / free_area_m2(g)
+
+    # speckle only (no wobble): the same density per square metre at 0.05 and 0.025 m cells
+    assert hits_per_m2(fine) == pytest.approx(hits_per_m2(grid), rel=0.25)
 
 
 def test_annotation_round_trips_its_unknown_keys() -> None:

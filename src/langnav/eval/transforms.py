@@ -45,9 +45,11 @@ ROTATE_SUBSAMPLES: Final = ((-0.25, -0.25), (-0.25, 0.25), (0.25, -0.25), (0.25,
 #: Speckle: free cells this close to a wall may turn occupied. Spurious hits in lidar maps sit near
 #: surfaces (chair legs, cables, reflections off a wall's foot), not in the middle of a room.
 SPECKLE_NEAR_WALL_M: Final = 0.3
-#: Chance that such a free cell turns occupied: a few per cent, the density of isolated hits along
-#: walls in the slam_toolbox maps of ../shared/maps/ros.
-SPECKLE_PROBABILITY: Final = 0.03
+#: Spurious hits per square metre of such floor: the density of isolated hits along walls in the
+#: slam_toolbox maps of ../shared/maps/ros (about 3 % of the 0.05 m cells). Given per area, not per
+#: cell, because spurious returns come from the floor and its clutter, whatever the cell size: a
+#: 0.025 m map has the same hits per metre of wall as a 0.05 m one, each in a smaller cell.
+SPECKLE_PER_M2: Final = 12.0
 #: Chance that a wall's edge cell moves by one cell (out into the free cell beside it, or in, when
 #: the wall behind it stays at least one cell thick): a lidar's range noise of a few centimetres
 #: at 0.05 m cells.
@@ -189,16 +191,17 @@ def resample(grid: OccupancyGrid, resolution_m: float) -> OccupancyGrid:
                          source=f"{grid.source} at {resolution_m:g} m")
 
 
-def add_scan_noise(grid: OccupancyGrid, seed: int, *, speckle_probability: float = SPECKLE_PROBABILITY,
+def add_scan_noise(grid: OccupancyGrid, seed: int, *, speckle_per_m2: float = SPECKLE_PER_M2,
                    wobble_probability: float = WOBBLE_PROBABILITY) -> OccupancyGrid:
     """The map with lidar-like noise drawn from ``seed`` (the same seed gives the same map).
 
-    Speckle: free cells within :data:`SPECKLE_NEAR_WALL_M` of a wall turn occupied with
-    ``speckle_probability``. Wobble: a wall's edge moves by one cell with ``wobble_probability``
+    Speckle: free cells within :data:`SPECKLE_NEAR_WALL_M` of a wall turn occupied, ``speckle_per_m2``
+    of them per square metre of such floor. Wobble: a wall's edge moves by one cell with ``wobble_probability``
     per edge cell, outwards (the free cell beside it turns occupied) or inwards (the edge cell turns
     free, only where the wall behind it is occupied, so no hole opens through a wall).
     """
-    for name, p in (("speckle_probability", speckle_probability), ("wobble_probability", wobble_probability)):
+    speckle_probability = speckle_per_m2 * grid.cell_area_m2
+    for name, p in (("speckle_per_m2 x cell area", speckle_probability), ("wobble_probability", wobble_probability)):
         if not 0.0 <= p <= 1.0:
             raise MapError(f"add_scan_noise: {name} must be in [0, 1], got {p!r}")
     rng = np.random.default_rng(seed)
@@ -217,7 +220,9 @@ def add_scan_noise(grid: OccupancyGrid, seed: int, *, speckle_probability: float
         free_side = padded_free[1 + dr:1 + dr + h, 1 + dc:1 + dc + w]
         wall_behind = padded[1 - dr:1 - dr + h, 1 - dc:1 - dc + w]
         backed |= free_side & wall_behind
-    near = ndimage.distance_transform_edt(~wall) * grid.resolution_m <= SPECKLE_NEAR_WALL_M
+    # distance from a cell's centre to the nearest wall cell's edge (half a cell less than centre to
+    # centre), so the band is as wide in metres at every cell size
+    near = (ndimage.distance_transform_edt(~wall) - 0.5) * grid.resolution_m <= SPECKLE_NEAR_WALL_M + 1e-9
     speckle = free & near & ~free_edge & (rng.random(cells.shape) < speckle_probability)
     grow = free_edge & (rng.random(cells.shape) < wobble_probability / 2.0)
     recede = wall_edge & backed & (rng.random(cells.shape) < wobble_probability / 2.0)
