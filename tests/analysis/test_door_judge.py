@@ -14,6 +14,7 @@ from langnav.analysis.door_judge import (
     BEYOND_MIN_FLOOR_SHARE,
     JAMB_ALONG_MIN_SHARE,
     SEEN_FLOOR_MIN_M,
+    STRIP_WALLED_MAX_SHARE,
     constriction_depth,
     evidence,
     floor_beyond,
@@ -22,6 +23,7 @@ from langnav.analysis.door_judge import (
     is_furniture,
     judge_doors,
     line_turn_deg,
+    on_wall_line,
 )
 from langnav.analysis.params import DEFAULT_PARAMS
 from langnav.analysis.seg_doors import RawDoor
@@ -454,3 +456,68 @@ def test_a_gap_blocked_in_its_middle_is_no_door() -> None:
     assert max(ev_blocked.clear_width_m) < 2 * DEFAULT_PARAMS.robot_radius_m
     doors, rest = judge_doors(cands, free, occ, res, DEFAULT_PARAMS, unknown=unknown)
     assert doors == [clear] and rest == [blocked]
+
+
+def aisle_between_blocks_and_a_door_to_rays() -> OccupancyGrid:
+    """A 10 m x 5 m hall; north of it two shelf blocks (scanned on their faces, unknown inside)
+    stand 0.8 m apart, and the aisle between them was seen 1.5 m in; a 0.9 m door in the hall's
+    east wall (0.1 m thick) opens onto territory never entered, seen only as the rays through it."""
+    b = MapBuilder(14.0, 10.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 10.0, 5.0)
+    b.rect(2.0, 5.0, 3.5, 8.0, OCCUPIED).unknown(2.05, 5.05, 3.45, 7.95)
+    b.rect(4.3, 5.0, 6.0, 8.0, OCCUPIED).unknown(4.35, 5.05, 5.95, 7.95)
+    b.free(3.55, 4.9, 4.25, 6.5)
+    b.door_v(10.0, 2.5, 0.9, depth_m=0.1)
+    b.free(10.05, 2.2, 11.5, 2.8)
+    return b.build("aisle between blocks and a door to rays")
+
+
+def test_the_mouth_of_an_aisle_running_into_the_unknown_is_no_door() -> None:
+    """Both openings lead from the hall into unexplored territory and have wall at both jambs.
+    Beyond the door lie only the rays through it, bounded by the unknown; beyond the aisle's
+    mouth the strip seen runs on as narrow as the mouth between the blocks' scanned sides: an
+    aisle running on, not a door."""
+    grid = aisle_between_blocks_and_a_door_to_rays()
+    free, occ, unknown = grid.cells == FREE, grid.cells == OCCUPIED, grid.cells == UNKNOWN
+    res = grid.resolution_m
+    r, c = grid.world_to_cell(3.9, 5.0)
+    aisle = RawDoor(1, 0, (float(r) + 0.5, float(c) + 0.5), (1.0, 0.0), 0.75)
+    r, c = grid.world_to_cell(10.0, 2.5)
+    door = RawDoor(1, 0, (float(r) + 0.5, float(c) + 0.5), (0.0, 1.0), 0.9)
+    ev_aisle = evidence(free, occ, aisle.center_rc, aisle.normal_rc, 0.75, res, DEFAULT_PARAMS, unknown,
+                        into_unknown=True)
+    ev_door = evidence(free, occ, door.center_rc, door.normal_rc, 0.9, res, DEFAULT_PARAMS, unknown,
+                       into_unknown=True)
+    assert ev_aisle.walled_beyond_share > STRIP_WALLED_MAX_SHARE
+    assert ev_door.walled_beyond_share == 0.0
+    doors, rest = judge_doors([aisle, door], free, occ, res, DEFAULT_PARAMS, unknown=unknown)
+    assert doors == [door] and rest == [aisle]
+
+
+def door_beside_a_corner_with_a_shadow() -> OccupancyGrid:
+    """A 10 m x 4 m hall; north of it a 4.5 m x 4 m room whose east wall meets the hall's north
+    wall at x = 5.5, where a 0.9 m door (centre x = 5.0) opens beside that corner; east of the
+    room, unscanned."""
+    b = MapBuilder(12.0, 10.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 10.0, 4.0).room(1.0, 4.0, 5.5, 8.0)
+    b.unknown(5.55, 4.05, 9.95, 8.0)
+    b.door_h(5.0, 4.0, 0.9)
+    return b.build("door beside a corner")
+
+
+def test_a_door_is_judged_on_its_wall_line_not_where_the_flood_put_its_boundary() -> None:
+    """The flood's boundary between the hall and the room lies 0.3 m into the room: judged
+    there, the jamb beside the corner has no wall along that line. On the wall line (the
+    narrowest crossing next to it) both jambs are walls: it is a door."""
+    grid = door_beside_a_corner_with_a_shadow()
+    free, occ, unknown = grid.cells == FREE, grid.cells == OCCUPIED, grid.cells == UNKNOWN
+    res = grid.resolution_m
+    r, c = grid.world_to_cell(5.0, 4.3)
+    off = RawDoor(1, 2, (float(r) + 0.5, float(c) + 0.5), (1.0, 0.0), 0.9)
+    ev_off = evidence(free, occ, off.center_rc, off.normal_rc, 0.9, res, DEFAULT_PARAMS, unknown)
+    assert not is_door(ev_off, DEFAULT_PARAMS, into_unknown=False, width_m=0.9)
+    on = on_wall_line(free, off, res)
+    x, y = grid.grid_to_world(*on.center_rc)
+    assert math.dist((float(x), float(y)), (5.0, 4.0)) <= 2 * res
+    doors, rest = judge_doors([off], free, occ, res, DEFAULT_PARAMS, unknown=unknown)
+    assert doors == [off] and rest == []

@@ -43,6 +43,14 @@ def _moves(prompt: str) -> bool:
     return any(s.movement in _MOTIONS for s in translate_offline(prompt).steps)
 
 
+def _moves_without_reading(prompt: str, word: str) -> bool:
+    """Whether ``prompt`` runs a move or turn while ``word`` was left unread (a word the reading reads, as
+    "twice" is a count, may move)."""
+    intent = translate_offline(prompt)
+    unread = " ".join(intent.unread).lower().split()
+    return any(s.movement in _MOTIONS for s in intent.steps) and word in unread
+
+
 # ------------------------------------------------------------------ the way's and the amount's slots
 @pytest.mark.parametrize(("prompt", "expected"), [
     ("go astern one metre", [("move", "backward", 1.0, None)]),
@@ -74,12 +82,13 @@ def test_a_word_not_understood_in_the_way_or_amount_slot_asks(prompt: str) -> No
                                  "roll {w} {n} feet", "head {w} {n} metres please"]))
 @example(word="astern", n=1, template="go {w} {n} metres")
 @example(word="zorbl", n=2, template="move {w} {n} feet")
+@example(word="twice", n=1, template="go {w} {n} metres")  # read: a count (found by hypothesis)
 def test_an_unknown_word_where_the_way_goes_never_moves(word: str, n: int, template: str) -> None:
     """The way of a move is never assumed (forward) around a word not understood: that word may be the
     way, and the assumed one its opposite."""
     prompt = template.format(w=word, n=n)
     assume(_unknown(word, prompt))
-    assert not _moves(prompt)
+    assert not _moves_without_reading(prompt, word)
 
 
 @given(word=st.text(alphabet="abcdefghijklmnopqrstuvwxyz", min_size=3, max_size=9), n=st.integers(2, 9),
@@ -90,7 +99,7 @@ def test_an_unknown_word_where_the_way_goes_never_moves(word: str, n: int, templ
 def test_an_unknown_word_where_the_amount_goes_never_moves(word: str, n: int, template: str) -> None:
     prompt = template.format(w=word, n=n)
     assume(_unknown(word, prompt))
-    assert not _moves(prompt)
+    assert not _moves_without_reading(prompt, word)
 
 
 # ------------------------------------------------------------------ large amounts without a number
@@ -217,3 +226,23 @@ def test_varieties_keep_asking_what_is_not_said(prompt: str) -> None:
 def test_take_the_left_door_is_still_a_place() -> None:
     steps = translate_offline("take the left door").steps
     assert [s.movement for s in steps] == [Movement.NAVIGATE]
+
+
+@pytest.mark.parametrize(("prompt", "side"), [
+    ("make your way through the door on your starboard side", "right"),
+    ("make your way to the last door on your port side", "left"),
+    ("go to the starboard door", "right"),
+])
+def test_a_boats_sides_name_the_side_of_a_place(prompt: str, side: str) -> None:
+    steps = translate_offline(prompt).steps
+    assert [s.target.side.value if s.target and s.target.side else None for s in steps] == [side]
+
+
+@pytest.mark.parametrize(("prompt", "details"), [
+    ("Go to the door of this room and after through it.", ["to", "through"]),
+    ("sand from the sandpit everywhere in here. okay, go to the middle of this room", ["middle"]),
+    ("aye, head tae the unexplored bit o' this room", ["towards"]),
+])
+def test_learners_and_notes_around_places(prompt: str, details: list[str]) -> None:
+    steps = translate_offline(prompt).steps
+    assert [s.detail.value if s.detail else None for s in steps] == details

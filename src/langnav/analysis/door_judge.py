@@ -18,6 +18,13 @@ niche, a side door or a ray hole near the mouth does not make a corridor a room)
 is the mouth of that corridor or passage: where a corridor runs into a hall, where a corridor is
 cut across at a jog, not a door.
 
+*Beyond a door into the unexplored lie rays, not walls.* Through a door onto territory the
+robot never entered, the lidar saw a fan of rays bounded by the unknown (past, at most, the
+short returns of a door frame). Where the strip seen beyond an opening stays as narrow as the
+opening with scanned wall along its side for half of what was seen of it, the opening is the
+mouth of a passage running on (an aisle between two shelf blocks, a slot between lockers, a
+corridor whose far part was not scanned), not a door.
+
 *A door lies along its wall.* Walls run along a few directions (the building's, or a wing's
 at an angle), and a door is a gap in one: the line from jamb to jamb runs along a direction of
 the walls around it, give or take the tilt of ragged jambs. A slanted gap, from the end of one
@@ -40,6 +47,12 @@ stand in and the door leaf can open past the corner).
 seen only from around it), deeper than a wall is thick and shallower than a room, is a piece of
 furniture: the gap beside it is a way past the furniture, not a door.
 
+*A door is judged on its wall line.* The flood puts the boundary between two spaces where
+their clearance basins meet, which beside a door is often off the wall: pulled into a room by
+its unscanned shadow, or slanted from a jamb to the corner of the room beyond. A person looks at
+the opening where the wall is, the narrowest crossing next to that boundary: the cells there are
+judged.
+
 *A doorway is clear across.* From jamb to jamb, through its centre, the floor is open for at
 least the robot's width: the robot drives through a door. A "gap" whose line through its
 centre is blocked by a speck of clutter a few centimetres from its middle is a gap between
@@ -59,6 +72,7 @@ Pure functions over the grid's masks; thresholds in metres with their reasons.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 from typing import Final
@@ -140,6 +154,15 @@ BODY_MAX_DEPTH_M: Final = 0.8
 #: The walls around a door, whose directions its line must follow: those within this distance
 #: (m) of it (the room or corridor it opens from; a wing at an angle has its own directions).
 LOCAL_WALLS_M: Final = 3.0
+#: The strip seen beyond an opening into the unexplored is a passage running on (see module
+#: doc) when, over what was seen of it from a wall's thickness to MOUTH_LOOK_M, it is as
+#: narrow as the opening with scanned wall beside it for more than this share (half: a door
+#: frame's returns are short, a passage's walls run on as far as it was seen).
+STRIP_WALLED_MAX_SHARE: Final = 0.5
+#: The wall line of an opening between two spaces (its narrowest crossing) is looked for within
+#: this distance (m) of the boundary the flood found, along its normal: a wall's thickness and
+#: a door's depth (a room's unscanned shadow beside the door pulls the boundary that far).
+WALL_LINE_SEARCH_M: Final = 0.5
 #: Whether an opening was scanned is read over this share of its width about its centre (its
 #: ends are the ragged jambs).
 OPENING_MIDDLE_SHARE: Final = 0.6
@@ -175,6 +198,10 @@ class DoorEvidence:
     #: across it within CENTRE_SLACK_M of its centre along the normal, on space ``a``'s side and
     #: on the other (each from the centre; infinite where not measured).
     clear_width_m: tuple[float, float] = (math.inf, math.inf)
+    #: Beyond the opening on the side the normal points to: the share of the strip seen there
+    #: that is as narrow as the opening with scanned wall beside it (:func:`walled_strip_share`;
+    #: 0 where not measured).
+    walled_beyond_share: float = 0.0
 
 
 def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np.float64],
@@ -220,32 +247,37 @@ def free_widths(free: BoolArray, center_rc: tuple[float, float], normal_rc: tupl
     # A half that ran through that strip runs on: it is looked along further, in stretches that
     # double, for its rows only (the samples a look across the whole width reads, up to the first
     # blocked one).
-    _run_on(free, center_rc, t, s[s_max:], normal_rc, n_right, near + 1)
-    _run_on(free, center_rc, t, s[s_max::-1], normal_rc, n_left, near + 1)
+    _run_on(free, center_rc, t, s[s_max:], normal_rc, n_right, n_left, near + 1)
     width = np.where(on, (n_right + n_left - 1) * _STEP_CELLS * resolution_m, 0.0)
     return np.asarray(t * resolution_m, dtype=np.float64), np.asarray(width, dtype=np.float64)
 
 
 def _run_on(free: BoolArray, center_rc: tuple[float, float], t: npt.NDArray[np.floating],
-            half: npt.NDArray[np.floating], normal_rc: tuple[float, float], n: npt.NDArray[np.int64],
-            looked: int) -> None:
-    """Carry on the free runs that reached ``looked`` samples along ``half`` (offsets along the
-    tangent from 0 outwards, one side of the line): ``n`` (per offset ``t``) becomes the index of
-    the first blocked sample, or the length of ``half`` when there is none (as
-    :func:`_runs_through_zero` counts over the whole of ``half``)."""
+            half: npt.NDArray[np.floating], normal_rc: tuple[float, float], n_right: npt.NDArray[np.int64],
+            n_left: npt.NDArray[np.int64], looked: int) -> None:
+    """Carry on the free runs that reached ``looked`` samples along the tangent (``half``: its
+    offsets from 0 outwards; the left half's are their negatives): ``n_right`` / ``n_left`` (per
+    offset ``t``) become the index of the first blocked sample, or the length of ``half`` when
+    there is none (as :func:`_runs_through_zero` counts over the whole of each half). Both halves
+    are looked along together."""
     nr, nc = normal_rc
     tr, tc = -nc, nr
-    rows_on = np.flatnonzero(n >= looked)
+    right, left = np.flatnonzero(n_right >= looked), np.flatnonzero(n_left >= looked)
+    rows_on = np.concatenate([right, left])
+    sign = np.concatenate([np.ones(right.size), -np.ones(left.size)])
+    is_left = np.concatenate([np.zeros(right.size, dtype=bool), np.ones(left.size, dtype=bool)])
     a = looked
     while rows_on.size and a < half.size:
         b = min(half.size, 2 * a)
-        tt, ss = t[rows_on], half[a:b]
-        rows = center_rc[0] + tt[:, None] * nr + ss[None, :] * tr
-        cols = center_rc[1] + tt[:, None] * nc + ss[None, :] * tc
+        tt, ss = t[rows_on], sign[:, None] * half[None, a:b]
+        rows = center_rc[0] + tt[:, None] * nr + ss * tr
+        cols = center_rc[1] + tt[:, None] * nc + ss * tc
         ok = _sample(free, rows, cols, outside=False)
         through = ok.all(axis=1)
-        n[rows_on] = np.where(through, b, a + np.argmin(ok, axis=1))
-        rows_on = rows_on[through]
+        got = np.where(through, b, a + np.argmin(ok, axis=1))
+        n_right[rows_on[~is_left]] = got[~is_left]
+        n_left[rows_on[is_left]] = got[is_left]
+        rows_on, sign, is_left = rows_on[through], sign[through], is_left[through]
         a = b
 
 
@@ -360,9 +392,10 @@ _ALONG_ANGLES: Final = tuple(math.radians(a) for a in
 
 def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float],
              normal_rc: tuple[float, float], width_m: float, resolution_m: float,
-             params: AnalysisParams, unknown: BoolArray | None = None) -> DoorEvidence:
+             params: AnalysisParams, unknown: BoolArray | None = None, into_unknown: bool = False) -> DoorEvidence:
     """The evidence of one candidate (``center_rc`` in cell-corner coordinates, unit normal;
-    ``unknown``: the unscanned cells, to tell furniture at a jamb)."""
+    ``unknown``: the unscanned cells, to tell furniture at a jamb; ``into_unknown``: the
+    normal points into unexplored territory, whose seen strip is judged)."""
     # A wall's length: the shortest wall stub that is a jamb; a scanned wall's cells scatter
     # about its line by a few cells (JAMB_BAND_M).
     wall_m = params.seg_wall_min_length_m
@@ -376,10 +409,13 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     beyond = (typical_width(t_all, w_all, -1.0, params.door_max_depth_m),
               typical_width(t_all, w_all, 1.0, params.door_max_depth_m))
     scanned = scanned_across(free, occupied, center_rc, normal_rc, width_m, resolution_m, unknown)
+    walled = (walled_strip_share(free, occupied, center_rc, normal_rc, width_m, resolution_m, params)
+              if into_unknown else 0.0)
     jj = jamb_cells(occupied, center_rc, width_m, resolution_m)
     if jj is None:
         return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(0.0, 0.0), across=(0.0, 0.0),
-                            beyond_width_m=beyond, scanned_share=scanned, clear_width_m=clear)
+                            beyond_width_m=beyond, scanned_share=scanned, clear_width_m=clear,
+                            walled_beyond_share=walled)
     (r1, c1), (r2, c2) = jj
     # The opening's line runs from jamb to jamb (the candidate's own normal is the mean step
     # across a ragged boundary, often slanted).
@@ -406,7 +442,39 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     furniture = unknown is not None and any(is_furniture(free, unknown, j, resolution_m) for j in jj)
     return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]),
                         across=(across[0], across[1]), line_turn_deg=turn, beyond_width_m=beyond,
-                        furniture_jamb=furniture, scanned_share=scanned, clear_width_m=clear)
+                        furniture_jamb=furniture, scanned_share=scanned, clear_width_m=clear,
+                        walled_beyond_share=walled)
+
+
+def walled_strip_share(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float],
+                       normal_rc: tuple[float, float], width_m: float, resolution_m: float,
+                       params: AnalysisParams) -> float:
+    """Of the samples along the normal (its + side, from ``door_max_depth_m`` to MOUTH_LOOK_M)
+    where the floor through the opening's centre line is free, the share where the free run
+    across is as narrow as the opening (within WIDEN_FACTOR / WIDEN_MIN_M of ``width_m``) and
+    ends, on at least one side, at an occupied cell within JAMB_BAND_M (a wall beside the
+    strip, not the unknown beside a ray)."""
+    limit = max(width_m * WIDEN_FACTOR, width_m + WIDEN_MIN_M)
+    t = np.arange(params.door_max_depth_m, MOUTH_LOOK_M + 1e-9, resolution_m * _STEP_CELLS) / resolution_m
+    s_max = math.ceil(limit / resolution_m / _STEP_CELLS) + 1
+    s = np.arange(-s_max, s_max + 1) * _STEP_CELLS
+    n_right, n_left, on = _runs_through_zero(free, center_rc, t, s, normal_rc)
+    if not on.any():
+        return 0.0
+    narrow = on & ((n_right + n_left - 1) * _STEP_CELLS * resolution_m <= limit)
+    nr, nc = normal_rc
+    tr, tc = -nc, nr
+    band = np.arange(0.0, JAMB_BAND_M / resolution_m + 1e-9, _STEP_CELLS)
+
+    def wall_at(offset: npt.NDArray[np.floating], sign: float) -> BoolArray:
+        # An occupied cell within the band just past the run's end (offset, in cells).
+        o = offset[:, None] + sign * band[None, :]
+        rows = center_rc[0] + t[:, None] * nr + o * tr
+        cols = center_rc[1] + t[:, None] * nc + o * tc
+        return np.asarray(_sample(occupied, rows, cols, outside=False).any(axis=1), dtype=bool)
+
+    walled = wall_at(n_right * _STEP_CELLS, 1.0) | wall_at(-n_left * _STEP_CELLS, -1.0)
+    return float((narrow & walled).sum() / on.sum())
 
 
 def clear_width(t_m: npt.NDArray[np.float64], width_m: npt.NDArray[np.float64], side: float) -> float:
@@ -522,6 +590,9 @@ def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wal
     clear = ev.clear_width_m[0] if into_unknown else min(ev.clear_width_m)
     if clear < 2.0 * params.robot_radius_m:
         return False
+    # Into the unexplored: beyond lie rays, not a passage running on between walls.
+    if into_unknown and ev.walled_beyond_share > STRIP_WALLED_MAX_SHARE:
+        return False
     # It was scanned: the robot saw through it.
     if ev.scanned_share < GAP_MIN_FLOOR_SHARE:
         return False
@@ -551,6 +622,20 @@ def floor_beyond(free: BoolArray, far_from_unknown: BoolArray, center_rc: tuple[
     return float(np.asarray(take2(far_from_unknown, r, c), dtype=bool)[f].mean())
 
 
+def on_wall_line(free: BoolArray, door: RawDoor, resolution_m: float) -> RawDoor:
+    """``door`` moved along its normal onto its narrowest free crossing within
+    WALL_LINE_SEARCH_M (the nearest such crossing to where it was; unchanged when no crossing
+    there is free)."""
+    t_m, w_m = free_widths(free, door.center_rc, door.normal_rc, resolution_m, WALL_LINE_SEARCH_M)
+    ok = (np.abs(t_m) <= WALL_LINE_SEARCH_M + 1e-9) & (w_m > 0)
+    if not ok.any():
+        return door
+    narrowest = np.flatnonzero(ok & (w_m <= w_m[ok].min() + 1e-9))
+    step = float(t_m[narrowest[np.argmin(np.abs(t_m[narrowest]))]]) / resolution_m
+    nr, nc = door.normal_rc
+    return dataclasses.replace(door, center_rc=(door.center_rc[0] + step * nr, door.center_rc[1] + step * nc))
+
+
 def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray, resolution_m: float,
                 params: AnalysisParams, unknown: BoolArray | None = None) -> tuple[list[RawDoor], list[RawDoor]]:
     """Split ``candidates`` into (doors, the rest) by the rules of the module doc (``unknown``:
@@ -563,7 +648,11 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
         # bit the full one's distances up to its bound; farther cells read farther).
         far = far_from_outside(~unknown, SEEN_FLOOR_MIN_M, resolution_m)
     for d in candidates:
-        ev = evidence(free, occupied, d.center_rc, d.normal_rc, d.width_m, resolution_m, params, unknown)
+        # Between two spaces, judged on the wall line (into the unexplored, the rays beyond
+        # would read as the narrowest crossing).
+        at = d if d.b == 0 else on_wall_line(free, d, resolution_m)
+        ev = evidence(free, occupied, at.center_rc, at.normal_rc, d.width_m, resolution_m, params, unknown,
+                      into_unknown=d.b == 0)
         ok = is_door(ev, params, into_unknown=d.b == 0, in_wall_line=d.in_wall_line, width_m=d.width_m)
         if ok and far is not None:
             # A place on each side that is a space: its floor was seen, not only rays through
@@ -593,7 +682,9 @@ __all__ = [
     "is_furniture",
     "judge_doors",
     "line_turn_deg",
+    "on_wall_line",
     "opens_wider",
     "scanned_across",
     "typical_width",
+    "walled_strip_share",
 ]

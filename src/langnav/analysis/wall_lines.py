@@ -34,6 +34,7 @@ closed before the flood (ROSE², RA-L 2022, bounds rooms by the building's wall 
 from __future__ import annotations
 
 import math
+import threading
 from dataclasses import dataclass
 from typing import Final, Generic, TypeVar
 
@@ -187,6 +188,74 @@ def _line_scores(rows: FloatArray, neg_cols: FloatArray, degs: FloatArray) -> Fl
     return out
 
 
+#: Wall masks up to this many rows and columns (a door's surroundings, LOCAL_WALLS_M either side
+#: at 5 cm cells, fits) have their cells' line numbers along the coarse directions read from a
+#: :class:`_LineTable`, a table by each cell's (row, column) in the mask.
+LINE_TABLE_SIDE: Final = 128
+#: In the table, each line number is stored shifted by this (more than any line number's size:
+#: the table's diagonal, 128 * sqrt(2) cells) and each direction's numbers by a span of twice
+#: it, so that one count over the table's rows gives every direction's counts apart.
+_TABLE_SHIFT: Final = 184
+_TABLE_SPAN: Final = 2 * _TABLE_SHIFT + 2
+
+
+class _LineTable:
+    """The line numbers :func:`_line_scores` works out for a cell at (row, column) along each of
+    a set of directions and its right angle (a pure function of those), kept for the cells of a
+    LINE_TABLE_SIDE square as they are first met: a door's surroundings are scored from numbers
+    read, not worked out again for each door (wall cells placed alike in their windows recur).
+    One table, of the coarse directions, kept for the process (the refinements around a peak
+    differ from building to building: worked out each time)."""
+
+    def __init__(self, degs: FloatArray) -> None:
+        self.degs = degs.copy()
+        self.numbers = np.empty((LINE_TABLE_SIDE * LINE_TABLE_SIDE, 2 * len(degs)), dtype=np.int64)
+        self.known = np.zeros(LINE_TABLE_SIDE * LINE_TABLE_SIDE, dtype=bool)
+
+    def scores(self, rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp]) -> FloatArray:
+        """``_line_scores(rr, -cc, self.degs)``, exactly, for cells inside the square (call
+        with the table's lock held)."""
+        flat = rr * LINE_TABLE_SIDE + cc
+        new = flat[~self.known[flat]]
+        if new.size:
+            self.numbers[new] = self._work_out(new // LINE_TABLE_SIDE, new % LINE_TABLE_SIDE)
+            self.known[new] = True
+        v = self.numbers[flat]
+        k = 2 * len(self.degs)
+        counts = np.bincount(v.ravel(), minlength=k * _TABLE_SPAN).reshape(k, _TABLE_SPAN)
+        sq = (counts * counts).sum(axis=1)
+        return np.asarray((sq[0::2] + sq[1::2]).astype(np.float64) / len(flat), dtype=np.float64)
+
+    def _work_out(self, rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp]) -> IntArray:
+        """The shifted line numbers of cells, with :func:`_line_scores`' arithmetic (see there),
+        every direction (and its right angle) at once."""
+        ts = [math.radians(float(d)) for d in self.degs]
+        sin = [v for t in ts for v in (math.sin(t), math.cos(t))]
+        cos = [v for t in ts for v in (math.cos(t), -math.sin(t))]
+        x = np.multiply.outer(sin, -cc.astype(np.float64))
+        x += np.multiply.outer(cos, rr.astype(np.float64))
+        x += (_ROUNDER + _TABLE_SHIFT + np.arange(len(sin), dtype=np.float64) * _TABLE_SPAN)[:, None]
+        v = x.view(np.int64)
+        v -= _ROUNDER_BITS
+        return v.T
+
+
+_COARSE_DEGS: Final = np.arange(0.0, 90.0, DIRECTION_BIN_DEG)
+_COARSE_DEGS.flags.writeable = False
+#: The coarse directions' table, made on first use (24 MB once filled), and its lock.
+_coarse_table: list[_LineTable] = []
+_coarse_lock = threading.Lock()
+
+
+def _coarse_scores(rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp]) -> FloatArray:
+    """``_line_scores(rr, -cc, _COARSE_DEGS)`` for cells (rr, cc) of a mask within
+    LINE_TABLE_SIDE, from the table."""
+    with _coarse_lock:
+        if not _coarse_table:
+            _coarse_table.append(_LineTable(_COARSE_DEGS))
+        return _coarse_table[0].scores(rr, cc)
+
+
 def dominant_directions(wall: BoolArray) -> list[float]:
     """The building's wall directions (radians in the (col, row) plane, in [0, pi)), main first.
 
@@ -203,9 +272,12 @@ def dominant_directions(wall: BoolArray) -> list[float]:
         pick = np.linspace(0, rr.size - 1, DIRECTION_MAX_CELLS).astype(np.int64)
         rr, cc = rr[pick], cc[pick]
     rows, cols = rr.astype(np.float64), cc.astype(np.float64)
-    grid_deg = np.arange(0.0, 90.0, DIRECTION_BIN_DEG)
+    grid_deg = _COARSE_DEGS
     neg_cols = -cols
-    score = _line_scores(rows, neg_cols, grid_deg)
+    # A small mask (a door's surroundings) is scored from the table of line numbers (a fixed
+    # sample of the cells would not be the mask's own cells).
+    small = max(wall.shape) <= LINE_TABLE_SIDE and rr.size == np.count_nonzero(wall)
+    score = _coarse_scores(rr, cc) if small else _line_scores(rows, neg_cols, grid_deg)
     base = float(score.min())
     peaks = np.flatnonzero((score >= np.roll(score, 1)) & (score > np.roll(score, -1)))
     peaks = peaks[np.argsort(-score[peaks])]

@@ -178,7 +178,8 @@ if you do not know "aft") -> ask; never assume forward.
 - Varieties and learners: "hard to port" -> rotate left; "starboard ninety" -> rotate right 90; "come round to \
 face north" -> face north; "belay that" = scratch that; Scots "tae" to, "yer" your, "ye" you, "oot" out, "aye" \
 yes ("oot the way" says why, not where); "take left" -> rotate left; "back out" = back up; "turn on the left" \
-(French) -> rotate left, "advance of four meters" -> move forward 4, "and after" = then; "an eighth of a turn" \
+(French) -> rotate left, "advance of four meters" -> move forward 4, "and after" = then ("go to the door and \
+after through it" -> to it, then through it); "the door on your starboard side" -> side right ("port" left); "o'" of; "an eighth of a turn" \
 -> 45 degrees; "do a slow three sixty" -> rotate 360; "five feet, wait, metres" -> five metres; "I want to see \
 the hallway" after a motion is a picture (no camera), no trip; "so the group can see you" is a purpose.
 - Talk not meant for the robot gives no steps: notes and remarks before "okay" / "noted" / "robot," ("water \

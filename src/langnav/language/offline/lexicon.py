@@ -121,6 +121,8 @@ POST_SUPERLATIVES: Final[dict[str, Superlative]] = {
 SIDE_ADJECTIVES: Final[dict[str, Side]] = {
     "left": Side.LEFT, "left-hand": Side.LEFT, "left hand": Side.LEFT, "lefthand": Side.LEFT,
     "right": Side.RIGHT, "right-hand": Side.RIGHT, "right hand": Side.RIGHT, "righthand": Side.RIGHT,
+    # a boat's sides ("the starboard door")
+    "port": Side.LEFT, "starboard": Side.RIGHT,
 }
 
 #: Sides only for walls and corners ("the front wall", "the back corner"); "the front door" is a name.
@@ -130,7 +132,9 @@ FRONT_BACK_ADJECTIVES: Final[dict[str, Side]] = {
 
 _YOU: Final = ("you", "yourself", "the robot", "me", "us")
 _SIDE_WORDS: Final = {"left": Side.LEFT, "left-hand": Side.LEFT, "left hand": Side.LEFT,
-                      "right": Side.RIGHT, "right-hand": Side.RIGHT, "right hand": Side.RIGHT}
+                      "right": Side.RIGHT, "right-hand": Side.RIGHT, "right hand": Side.RIGHT,
+                      # a boat's sides, said of places too ("the door on your starboard side")
+                      "port": Side.LEFT, "starboard": Side.RIGHT}
 
 #: Sides as phrases after the noun ("the door on your left", "the door in front of you").
 SIDE_PHRASES: Final[dict[str, Side]] = {
@@ -650,7 +654,7 @@ TYPOS: Final[dict[str, str]] = {
     # "aye"): the same words of general English, said in a variety of it
     "tae": "to", "yer": "your", "ye": "you", "oot": "out", "aye": "yes", "gonnae": "going to", "intae": "into",
     "ontae": "onto", "yersel": "yourself", "yerself": "yourself", "wantae": "want to", "dinnae": "do not",
-    "doon": "down",
+    "doon": "down", "o'": "of",
 }
 
 #: Words that typo repair may aim at (edit distance 1, words of at least five letters).

@@ -28,11 +28,12 @@ usual, and anything it leaves unclear is asked about.
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 from typing import Final
 
 from langnav.language.offline import lexicon as lx
 from langnav.language.offline.corrections import CANCEL_RE, CORRECTION_START_RE
-from langnav.language.offline.normalize import normalize
+from langnav.language.offline.normalize import normalize as _normalize
 from langnav.language.offline.numbers import ONES, TENS, find_quantities
 from langnav.language.offline.patterns import GO_VERB_RE, ROTATE_VERB_RE, STOP_RE
 from langnav.language.offline.vocabulary import VOCABULARY
@@ -92,11 +93,20 @@ def without_side_talk(text: str) -> str:
     return " ".join(" ".join(kept).split())
 
 
+@lru_cache(maxsize=1024)
+def normalize(text: str) -> str:
+    """The reading's normalised words of a stretch (each stretch is looked at by several rules)."""
+    return _normalize(text)
+
+
 def _instructs(body: str) -> bool:
     """Whether the words may ask something of the robot: a verb of motion, a stop, a way, a place to go
     to, or a question it answers."""
     norm = normalize(body)
-    return bool(GO_VERB_RE.search(norm) or ROTATE_VERB_RE.search(norm) or STOP_RE.search(norm)
+    # verbs as said (with the known misspellings): the typo repair that helps read an instruction would make
+    # verbs of other words ("sand" -> "stand"); ways, stops and places are looked for in the repaired words
+    said = " ".join(lx.TYPOS.get(w, w) for w in body.lower().split())
+    return bool(GO_VERB_RE.search(said) or ROTATE_VERB_RE.search(said) or STOP_RE.search(norm)
                 or _WAY_RE.search(norm) or _PLACE_RE.search(norm) or _QUERY_RE.search(norm))
 
 

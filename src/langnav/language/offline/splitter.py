@@ -21,6 +21,8 @@ _CONNECTIVE_SPLIT: Final = re.compile(
     r"subsequently|and\s+next|and\s+also|as\s+well\s+as|followed\s+by|once\s+done|when\s+done|"
     r"once\s+finished|when\s+finished|once\s+you\s+are\s+done|and\s+when\s+you\s+are\s+done|"
     r"and\s+once\s+there|and\s+when\s+there|and\s+from\s+there"
+    # learners' "and after" (French "et après", Spanish "y después") before the next way or place: "then"
+    r"|and\s+after(?=\s+(?:through|into|to|towards?|past|along|across|out|back|left|right|forwards?|ahead|straight)\b)"
     # "move forward two metres but don't turn": what not to do is an instruction of its own
     r"|but(?=\s+(?:do\s+not|don'?t|never)\b))\b",
     re.IGNORECASE)
