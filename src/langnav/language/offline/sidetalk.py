@@ -28,11 +28,12 @@ usual, and anything it leaves unclear is asked about.
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 from typing import Final
 
 from langnav.language.offline import lexicon as lx
 from langnav.language.offline.corrections import CANCEL_RE, CORRECTION_START_RE
-from langnav.language.offline.normalize import normalize
+from langnav.language.offline.normalize import normalize as _normalize
 from langnav.language.offline.numbers import ONES, TENS, find_quantities
 from langnav.language.offline.patterns import GO_VERB_RE, ROTATE_VERB_RE, STOP_RE
 from langnav.language.offline.vocabulary import VOCABULARY
@@ -90,6 +91,12 @@ def without_side_talk(text: str) -> str:
         return text
     kept = [s for s, d in zip(segments, drop, strict=True) if not d]
     return " ".join(" ".join(kept).split())
+
+
+@lru_cache(maxsize=1024)
+def normalize(text: str) -> str:
+    """The reading's normalised words of a stretch (each stretch is looked at by several rules)."""
+    return _normalize(text)
 
 
 def _instructs(body: str) -> bool:
