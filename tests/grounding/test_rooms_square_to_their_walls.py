@@ -2,8 +2,8 @@
 opposite side of this room" is straight across, square to the walls, in a room about as wide as it
 is long with tables in it (the spread of its floor points elsewhere); "the unexplored part of this
 room", an unscanned block in a corner seen on two sides, is looked at from in front of the side
-facing the robot, not from off its corner; of the hand-built two rooms' unscanned block, the side the
-robot's walk arrives at.
+facing the robot, not from off its corner; of the hand-built two rooms' unscanned block, the side facing
+the robot.
 
 The floor, drawn (metres; the map is this drawing turned about the origin):
 
@@ -113,7 +113,7 @@ def test_the_unexplored_part_of_the_room_is_looked_at_from_the_side_facing_the_r
         assert 5.2 - 0.95 <= y <= 5.2 - 0.15
 
 
-def test_the_side_of_the_block_is_the_one_the_robot_arrives_at(two_rooms: MapAnalysis) -> None:
+def test_the_side_of_the_block_is_the_one_facing_the_robot(two_rooms: MapAnalysis) -> None:
     def towards(pose: tuple[float, float, float]) -> tuple[float, float]:
         plan = ground(Intent(steps=[Step.model_validate(
             {"movement": "navigate", "detail": "towards", "target": {"kind": "unexplored_area"}})]), two_rooms, pose)
@@ -121,10 +121,10 @@ def test_the_side_of_the_block_is_the_one_the_robot_arrives_at(two_rooms: MapAna
         return x, y
 
     # the unscanned block x 9-11, y 5.5-7 in room B's north-east corner; from room B's south-west,
-    # by door_1, the robot walks up to its south side
+    # by door_1, its south side faces the robot
     x, y = towards((7.0, 2.0, 0.0))
     assert 9.0 + IN_FRONT_M <= x <= 11.0 and 5.5 - 0.95 <= y <= 5.5 - 0.15
-    # from room A the walk goes through door_2 (6.075, 5.0): it arrives from the west
+    # from room A, far to the west: its west side
     x, y = towards((3.0, 2.0, 0.0))
     assert 9.0 - 0.95 <= x <= 9.0 - 0.15 and 5.5 + IN_FRONT_M <= y <= 7.0
 

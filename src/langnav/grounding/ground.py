@@ -125,9 +125,6 @@ FRONTIER_STANDOFF_M: Final = 0.5
 #: hallway's end), which a person stops square in front of: three map cells, for the staircase of a
 #: line drawn at an angle and a cell of scan noise on either side; a corner's two faces are not.
 FRONTIER_STRAIGHT_TOL_M: Final = 0.15
-#: The side of an unscanned block a person stops in front of is the one they see over the last
-#: this many metres of their walk to it (twice the piece of edge they look at).
-FRONTIER_ARRIVAL_M: Final = 2 * FRONTIER_PIECE_M
 #: A side of an unscanned block is one a person stops in front of when at least this long (m: about
 #: the robot's width).
 FRONTIER_FACE_MIN_M: Final = 0.5
@@ -935,8 +932,8 @@ def _facing_the_frontier(f: FloatArray, ctx: GroundingContext, pose: Pose, comp:
 
 def _face_towards(piece: FloatArray, near: Point, ctx: GroundingContext, pose: Pose) -> FloatArray:
     """Of a piece of an unexplored area's edge that goes round a corner (an unscanned block in a
-    room's corner, seen on two sides), the side that faces the robot most squarely: a person walking
-    up to look at it stops in front of the side they see, not off its corner. The sides run with the
+    room's corner, seen on two sides), the side that faces the robot most squarely from where it
+    stands: a person sent to look at it stops in front of that side, not off its corner. The sides run with the
     walls of the room the edge is in. The piece itself when it is no such corner (a straight edge, a
     ragged one, a room with no wall direction)."""
     if len(piece) < 3:
@@ -945,8 +942,7 @@ def _face_towards(piece: FloatArray, near: Point, ctx: GroundingContext, pose: P
     theta = None if room is None else _wall_run(room, ctx)
     if theta is None:
         return piece
-    view = _arriving_from(ctx, pose, near)
-    back = unit((view[0] - near[0], view[1] - near[1]))
+    back = unit((pose.x_m - near[0], pose.y_m - near[1]))
     rel = piece - piece.mean(axis=0)
     faces: list[tuple[float, BoolArray]] = []
     for k in range(4):
@@ -964,25 +960,6 @@ def _face_towards(piece: FloatArray, near: Point, ctx: GroundingContext, pose: P
     if faces[0][0] <= 0.0 or float(np.mean(faces[0][1] | faces[1][1])) < FRONTIER_CORNER_MIN_SHARE:
         return piece
     return piece[faces[0][1]]
-
-
-def _arriving_from(ctx: GroundingContext, pose: Pose, target: Point) -> Point:
-    """Where the robot is as it comes up to ``target``: the point of its walk there
-    ``FRONTIER_ARRIVAL_M`` before the end (the robot's own spot when it is nearer, or when no walk
-    is known). A person sees the side of a thing they walk up to from the way they arrive, which
-    need not be the straight line from where they set off (that may run through a wall)."""
-    walk = walk_from(ctx.space, pose.xy)
-    if walk is None:
-        return pose.xy
-    path = walk.path_to(target)
-    left = FRONTIER_ARRIVAL_M
-    for a, b in zip(path[::-1], path[-2::-1], strict=False):
-        step = math.dist(a, b)
-        if step >= left:
-            t = left / step
-            return (a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t)
-        left -= step
-    return pose.xy
 
 
 def _square_to_the_edge(piece: FloatArray, back: Point) -> Point:
