@@ -12,7 +12,7 @@ from scipy import ndimage as ndi
 from skimage.segmentation import watershed
 
 from langnav.analysis.precompute import EIGHT, edt_scaled, maximum3
-from langnav.analysis.seg_core import basins, distinct_openings, wall_with_doors
+from langnav.analysis.seg_core import basins
 
 
 def _whole_grid_flood(clearance_m: npt.NDArray[np.float64], floor: npt.NDArray[np.bool_],
@@ -51,32 +51,3 @@ def test_two_rooms_joined_by_a_doorway_are_two_basins() -> None:
     assert set(np.unique(got[2:12, 2:11])) == {1}
     assert set(np.unique(got[2:12, 13:22])) == {2}
     assert not got[~floor].any()
-
-
-def test_one_doorway_met_as_several_saddles_is_one_opening() -> None:
-    """The flood meets a 1.8 m door as three saddles a few cells apart (more basins touch it on
-    a fine grid): one opening; a door 3 m along the same wall is another."""
-    width, res = 1000, 0.025
-    def at(r: int, c: int) -> int:
-        return r * width + c
-
-    seen = [(0.9, at(100, 200)), (0.6, at(103, 204)), (0.4, at(98, 197)), (0.45, at(100, 320))]
-    got = distinct_openings(seen, width, res)
-    assert sorted(got) == [(0.45, at(100, 320)), (0.9, at(100, 200))]
-
-
-def test_doors_in_a_mostly_solid_wall_are_no_row_of_clutter() -> None:
-    width, res = 1000, 0.05
-    def at(r: int, c: int) -> int:
-        return r * width + c
-
-    # Three doors (0.9, 1.8, 0.9 m) along a 12 m wall: open for 3.6 m of about 11 m.
-    doors = [(0.45, at(30, 100)), (0.9, at(130, 100)), (0.45, at(230, 100))]
-    assert wall_with_doors(doors, width, res)
-    # A row of shelf units 1.2 m long with 1 m gaps between them: open about as much as solid.
-    gaps = [(0.5, at(20, 100 + 44 * k)) for k in range(5)]
-    assert not wall_with_doors(gaps, width, res)
-    # Openings scattered over the floor (around desks) lie on no line.
-    scattered = [(0.45, at(30, 100)), (0.45, at(130, 160)), (0.45, at(60, 260))]
-    assert not wall_with_doors(scattered, width, res)
-    assert not wall_with_doors(doors[:1], width, res)

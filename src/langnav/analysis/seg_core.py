@@ -69,13 +69,6 @@ WALL_LINE_PIECE_MAX_THICKNESS_M: Final = 0.3
 #: Wall cells within this many cells across a piece's own line are in line with it (scanned
 #: walls wobble a cell, and a rotated wall's staircase another half).
 WALL_LINE_BAND_CELLS: Final = 1.5
-#: A row of shelf units, counters or desks is open for about as much of its length as it is
-#: solid; a wall with several doors into the same room (a church's narthex, a reception's front)
-#: is mostly wall: openings that take less than this share of the line they lie on are doors.
-ROW_OF_CLUTTER_MIN_OPEN_SHARE: Final = 0.4
-#: ... the openings lie on one line when their centres are within this distance (m, rms) of it:
-#: half an interior wall's thickness.
-ROW_OF_CLUTTER_MAX_OFF_LINE_M: Final = 0.15
 #: 3x3 neighbourhood: 8-connectivity for components of cells.
 EIGHT: Final = np.ones((3, 3), dtype=bool)
 
@@ -440,41 +433,6 @@ class JambJudge:
 _SIDE_OPENING_MIN_COS: Final = math.cos(math.radians(30.0))
 
 
-def distinct_openings(gaps: list[tuple[float, int]], width: int, resolution_m: float
-                      ) -> list[tuple[float, int]]:
-    """The openings among these saddles (clearance in m, flat index in a grid ``width`` cells
-    wide), each once: the flood meets one doorway as several saddles when several basins touch
-    it (more of them on a finer grid), and two saddles whose centres are closer than the sum of
-    their half-widths lie in one opening. The widest saddle of each is kept."""
-    out: list[tuple[float, int]] = []
-    for s, loc in sorted(gaps, key=lambda g: -g[0]):
-        r, c = divmod(loc, width)
-        if all(math.hypot(r - r2, c - c2) * resolution_m >= s + s2
-               for s2, loc2 in out for r2, c2 in (divmod(loc2, width),)):
-            out.append((s, loc))
-    return out
-
-
-def wall_with_doors(gaps: list[tuple[float, int]], width: int, resolution_m: float) -> bool:
-    """Are these openings between two spaces (saddle clearance in m, flat index of the
-    saddle in a grid ``width`` cells wide) doors in one wall: on one line
-    (``ROW_OF_CLUTTER_MAX_OFF_LINE_M``) and open for less than ``ROW_OF_CLUTTER_MIN_OPEN_SHARE``
-    of it, from the first opening's far jamb to the last's? A row of clutter is open for about
-    as much of its length as it is solid; openings scattered over the floor are no wall."""
-    if len(gaps) < 2:
-        return False
-    centres = np.array([divmod(loc, width) for _, loc in gaps], dtype=float)
-    centred = centres - centres.mean(axis=0)
-    _, sv, vt = np.linalg.svd(centred, full_matrices=False)
-    if float(sv[-1]) / math.sqrt(len(gaps)) * resolution_m > ROW_OF_CLUTTER_MAX_OFF_LINE_M:
-        return False
-    along = centred @ vt[0] * resolution_m
-    widths = np.array([2.0 * s for s, _ in gaps])
-    lo, hi = int(np.argmin(along)), int(np.argmax(along))
-    span = float(along[hi] - along[lo]) + (widths[lo] + widths[hi]) / 2
-    return float(widths.sum()) < ROW_OF_CLUTTER_MIN_OPEN_SHARE * span
-
-
 class _UnionFind:
     def __init__(self, n: int) -> None:
         self.parent = list(range(n))
@@ -637,20 +595,18 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
                 judged.add((min(ra, rb), max(ra, rb)))
             elif s >= crack_clear:
                 join(ra, rb)
-    # Spaces joined through many door-wide openings are one space with a row of clutter; not
-    # when the openings are doors in one wall that is mostly solid (see wall_with_doors).
+    # Spaces joined through many door-wide openings are one space with a row of clutter.
     if params.seg_max_openings_between > 0:
         min_clear = (params.door_min_width_m - resolution_m) / 2
-        count: dict[tuple[int, int], list[tuple[float, int]]] = {}
-        for a, b, s, loc in kept:
+        count: dict[tuple[int, int], int] = {}
+        for a, b, s, _ in kept:
             ra, rb = uf.find(a), uf.find(b)
             if ra != rb and s >= min_clear:
-                count.setdefault((min(ra, rb), max(ra, rb)), []).append((s, loc))
-        for (ra, rb), seen in count.items():
+                key = (min(ra, rb), max(ra, rb))
+                count[key] = count.get(key, 0) + 1
+        for (ra, rb), c in count.items():
             ra, rb = uf.find(ra), uf.find(rb)
-            gaps = distinct_openings(seen, width, resolution_m)
-            if ra != rb and len(gaps) > params.seg_max_openings_between and \
-                    not wall_with_doors(gaps, width, resolution_m):
+            if ra != rb and c > params.seg_max_openings_between:
                 join(ra, rb)
     # A piece whose opening is wide for its size (a bay of a room behind a desk) is part of
     # the neighbour: a doorway is narrow next to the room it leads into.
