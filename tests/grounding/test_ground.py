@@ -59,7 +59,9 @@ CASES = [
      ntp([3.475, 3.975])),
     ("towards the unexplored area",
      AT_A, [step(movement="navigate", detail="towards", target={"kind": "unexplored_area"})],
-     ntp([8.575, 5.625])),  # a step short of the middle of the unknown's nearest edge, on the robot's side
+     # a step short of the middle of the side of the unscanned block the robot arrives at (through
+     # door_2, from the west): in front of its west side, not off its corner
+     ntp([8.475, 6.225])),
     ("between the two doors",
      AT_A, [step(movement="navigate", detail="between", target={"kind": "door"})],
      ntp([5.825, 3.475])),

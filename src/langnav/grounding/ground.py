@@ -125,6 +125,15 @@ FRONTIER_STANDOFF_M: Final = 0.5
 #: hallway's end), which a person stops square in front of: three map cells, for the staircase of a
 #: line drawn at an angle and a cell of scan noise on either side; a corner's two faces are not.
 FRONTIER_STRAIGHT_TOL_M: Final = 0.15
+#: The side of an unscanned block a person stops in front of is the one they see over the last
+#: this many metres of their walk to it (twice the piece of edge they look at).
+FRONTIER_ARRIVAL_M: Final = 2 * FRONTIER_PIECE_M
+#: A side of an unscanned block is one a person stops in front of when at least this long (m: about
+#: the robot's width).
+FRONTIER_FACE_MIN_M: Final = 0.5
+#: A piece of edge goes round a block's corner when its two sides facing the robot hold this share
+#: of its cells (a ragged edge between laser rays does not).
+FRONTIER_CORNER_MIN_SHARE: Final = 0.9
 #: ... unless they come at it nearly in its line (within ~78 deg of along it, cos 0.2): then towards them.
 FRONTIER_IN_LINE_MAX_COS: Final = 0.2
 #: frontier cells tried (nearest first) before giving up on an area.
@@ -165,6 +174,9 @@ OPPOSITE_FRACTION: Final = 2.0 / 3.0
 #: "The opposite side of the room" is by its far wall: this far from it (clear of the wall, and
 #: deep in the far third of any room wider than a corridor).
 OPPOSITE_WALL_STANDOFF_M: Final = 0.6
+#: A room's walls run in one direction (modulo a quarter turn) when their length-weighted
+#: directions agree this much (1: all square to each other; a round or many-sided room: near 0).
+WALL_RUN_MIN_AGREEMENT: Final = 0.5
 #: Two points of the robot's way closer than this are the same point: a millimetre, far below a
 #: cell, and above the error of the poses' rounding to 3 decimals (at most 0.7 mm).
 SAME_POINT_M: Final = 1e-3
@@ -749,7 +761,14 @@ def _goal_at(e: Element, detail: Detail, ctx: GroundingContext, pose: Pose, comp
             if not ctx.space.is_goal_ok(*goal, component=comp):
                 goal = None
         if goal is None:
-            goal = ctx.space.safe_point_near(e.point, comp, CORNER_GOAL_MAX_M, prefer=e.approach)
+            # in the corner's own room: a free spot as near behind its wall, in the next room, is
+            # no corner of this one
+            own = [r.label for r in ctx.analysis.rooms if r.id == e.room]
+            goal = ctx.space.safe_point_near(e.point, comp, CORNER_GOAL_MAX_M, prefer=e.approach,
+                                             where=_in_labels(ctx, tuple(own)) if own else None)
+        if goal is None and ctx.space.is_goal_ok(*e.approach, component=comp):
+            # furniture fills the corner: the nearest spot of the room the robot can stand on
+            goal = e.approach
     elif isinstance(e, Obstacle):
         goal = _next_to_cells(e.cells_xy if len(e.cells_xy) else np.array([e.centroid]), ctx, pose, comp)
     elif isinstance(e, UnexploredArea):
@@ -900,6 +919,7 @@ def _facing_the_frontier(f: FloatArray, ctx: GroundingContext, pose: Pose, comp:
     with nothing but free floor between the spot and the edge. None when no such spot is free."""
     near = f[np.argmin(np.hypot(f[:, 0] - pose.x_m, f[:, 1] - pose.y_m))]
     piece = f[np.hypot(f[:, 0] - near[0], f[:, 1] - near[1]) <= FRONTIER_PIECE_M]
+    piece = _face_towards(piece, (float(near[0]), float(near[1])), ctx, pose)
     centre = piece.mean(axis=0)
     edge = piece[np.argmin(np.hypot(piece[:, 0] - centre[0], piece[:, 1] - centre[1]))]
     p = (float(edge[0]), float(edge[1]))
@@ -911,6 +931,58 @@ def _facing_the_frontier(f: FloatArray, ctx: GroundingContext, pose: Pose, comp:
     if g is None or not ctx.space.segment_clear(p, g, 0.0)[0]:
         return None
     return g
+
+
+def _face_towards(piece: FloatArray, near: Point, ctx: GroundingContext, pose: Pose) -> FloatArray:
+    """Of a piece of an unexplored area's edge that goes round a corner (an unscanned block in a
+    room's corner, seen on two sides), the side that faces the robot most squarely: a person walking
+    up to look at it stops in front of the side they see, not off its corner. The sides run with the
+    walls of the room the edge is in. The piece itself when it is no such corner (a straight edge, a
+    ragged one, a room with no wall direction)."""
+    if len(piece) < 3:
+        return piece
+    room = space_of(ctx.analysis, near)
+    theta = None if room is None else _wall_run(room, ctx)
+    if theta is None:
+        return piece
+    view = _arriving_from(ctx, pose, near)
+    back = unit((view[0] - near[0], view[1] - near[1]))
+    rel = piece - piece.mean(axis=0)
+    faces: list[tuple[float, BoolArray]] = []
+    for k in range(4):
+        n = (math.cos(theta + k * math.pi / 2), math.sin(theta + k * math.pi / 2))
+        proj = rel @ np.asarray(n)
+        on = proj >= proj.max() - FRONTIER_STRAIGHT_TOL_M
+        along = rel[on] @ np.asarray((-n[1], n[0]))
+        if float(along.max() - along.min()) >= FRONTIER_FACE_MIN_M:
+            faces.append((n[0] * back[0] + n[1] * back[1], on))
+    if len(faces) < 2:
+        return piece
+    faces.sort(key=lambda fo: -fo[0])
+    # a corner: its two sides nearest to facing the robot hold nearly all of the piece (a ragged
+    # edge does not); the robot sees the first of them
+    if faces[0][0] <= 0.0 or float(np.mean(faces[0][1] | faces[1][1])) < FRONTIER_CORNER_MIN_SHARE:
+        return piece
+    return piece[faces[0][1]]
+
+
+def _arriving_from(ctx: GroundingContext, pose: Pose, target: Point) -> Point:
+    """Where the robot is as it comes up to ``target``: the point of its walk there
+    ``FRONTIER_ARRIVAL_M`` before the end (the robot's own spot when it is nearer, or when no walk
+    is known). A person sees the side of a thing they walk up to from the way they arrive, which
+    need not be the straight line from where they set off (that may run through a wall)."""
+    walk = walk_from(ctx.space, pose.xy)
+    if walk is None:
+        return pose.xy
+    path = walk.path_to(target)
+    left = FRONTIER_ARRIVAL_M
+    for a, b in zip(path[::-1], path[-2::-1], strict=False):
+        step = math.dist(a, b)
+        if step >= left:
+            t = left / step
+            return (a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t)
+        left -= step
+    return pose.xy
 
 
 def _square_to_the_edge(piece: FloatArray, back: Point) -> Point:
@@ -1048,7 +1120,11 @@ def _opposite_side(room: Room, mask: BoolArray, ctx: GroundingContext, pose: Pos
         return None
     v = (room.centroid[0] - pose.x_m, room.centroid[1] - pose.y_m)
     d = unit(v) if math.hypot(*v) > 0.5 else pose.heading()
-    if xs.size >= 3:
+    theta = _wall_run(room, ctx)
+    if theta is not None:
+        axes = [(math.cos(theta + k * math.pi / 2), math.sin(theta + k * math.pi / 2)) for k in range(4)]
+        d = max(axes, key=lambda a: a[0] * d[0] + a[1] * d[1])
+    elif xs.size >= 3:
         _, vec = np.linalg.eigh(np.cov(np.vstack([xs - xs.mean(), ys - ys.mean()])))
         axes = [(float(vec[0, k]) * sgn, float(vec[1, k]) * sgn) for k in range(2) for sgn in (1.0, -1.0)]
         d = max(axes, key=lambda a: a[0] * d[0] + a[1] * d[1])
@@ -1059,6 +1135,27 @@ def _opposite_side(room: Room, mask: BoolArray, ctx: GroundingContext, pose: Pos
     depth = max(float(t.max()) - OPPOSITE_WALL_STANDOFF_M, float(cut))
     prefer = (pose.x_m + d[0] * depth, pose.y_m + d[1] * depth)
     return ctx.space.best_in_mask(far, comp, prefer)
+
+
+def _wall_run(room: Room, ctx: GroundingContext) -> float | None:
+    """The direction (rad, modulo a quarter turn) the room's walls run in: the length-weighted
+    mean of its walls' directions, read modulo 90 degrees (walls meet square). A person's "across
+    the room" is square to its walls; the spread of its floor (its principal axes) is no guide in
+    a room about as wide as long or with furniture in it. None when the room has no walls of its
+    own, or they agree on no direction (a round room)."""
+    sx = sy = total_m = 0.0
+    for wall in ctx.analysis.walls:
+        if wall.room != room.id:
+            continue
+        dx, dy = wall.end[0] - wall.start[0], wall.end[1] - wall.start[1]
+        length = math.hypot(dx, dy)
+        angle = 4.0 * math.atan2(dy, dx)
+        sx += length * math.cos(angle)
+        sy += length * math.sin(angle)
+        total_m += length
+    if total_m == 0.0 or math.hypot(sx, sy) < WALL_RUN_MIN_AGREEMENT * total_m:
+        return None
+    return math.atan2(sy, sx) / 4.0
 
 
 def _between(step: Step, ref: ElementRef, ctx: GroundingContext, pose: Pose, comp: int, index: int) -> GroundedStep:
