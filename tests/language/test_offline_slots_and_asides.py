@@ -246,3 +246,13 @@ def test_a_boats_sides_name_the_side_of_a_place(prompt: str, side: str) -> None:
 def test_learners_and_notes_around_places(prompt: str, details: list[str]) -> None:
     steps = translate_offline(prompt).steps
     assert [s.detail.value if s.detail else None for s in steps] == details
+
+
+@pytest.mark.parametrize(("prompt", "asks"), [
+    ("Go to the room of the babies.", True), ("go to the door of the kitchen", True),
+    ("go to the room for the staff", True), ("Go to the entrance of the building.", False),
+    ("go to the corner of the room", False), ("go to the end of the hallway", False),
+])
+def test_a_place_named_by_whom_it_belongs_to_asks(prompt: str, asks: bool) -> None:
+    """"The room of the babies": the map holds no names of who uses a room, so which one is meant is a guess."""
+    assert _asks(prompt) == asks

@@ -181,7 +181,8 @@ yes ("oot the way" says why, not where); "take left" -> rotate left; "back out" 
 (French) -> rotate left, "advance of four meters" -> move forward 4, "and after" = then ("go to the door and \
 after through it" -> to it, then through it); "the door on your starboard side" -> side right ("port" left); "o'" of; "an eighth of a turn" \
 -> 45 degrees; "do a slow three sixty" -> rotate 360; "five feet, wait, metres" -> five metres; "I want to see \
-the hallway" after a motion is a picture (no camera), no trip; "so the group can see you" is a purpose.
+the hallway" after a motion is a picture (no camera), no trip; "so the group can see you" is a purpose; "the \
+room of the babies" / "for the staff" (who it belongs to) -> ask.
 - Talk not meant for the robot gives no steps: notes and remarks before "okay" / "noted" / "robot," ("water \
 line about eighteen inches on this wall, okay, go forward three feet" -> only the move), statements about \
 others ("..., she's asking about the robot"), a person named and what is said to them ("no, jack, sit \

@@ -26,8 +26,8 @@ def unknown_destination(masked: str) -> str | None:
     """The unknown word(s) after 'to the' in a clause with no element: a place name."""
     for m in _DESTINATION_RE.finditer(masked):
         words = m.group("name").split()
-        if words[0] in KNOWN_WORDS:
-            continue
+        if words[0] in KNOWN_WORDS or words[0] in lx.EXPLORE_SCOPE_WORDS:
+            continue  # (a word of the map's elements, or of the whole place: "the entrance of the building")
         if len(words) > 1 and words[1] in KNOWN_WORDS:
             words = words[:1]
         return " ".join(words)
@@ -38,8 +38,11 @@ def unknown_destination(masked: str) -> str | None:
 #: from THE BATHROOM", "the door by THE FRIDGE". The word after the determiner is the landmark's name.
 #: A place may also be named by a thing it holds: "the room WITH THE SOFA", "the room that has a piano in it",
 #: "the room where the printer is": the grid shows no furniture by name, so which room is meant is a guess.
+#: So is a place named by whom it belongs to or serves: "the room OF THE BABIES", "the room FOR THE STAFF".
 _LANDMARK_RE: Final = re.compile(
     r"\b(?:(?:next\s+to|beside|near|by|from|opposite|behind|past|beyond)\s+(?:the|my|our|your)"
+    # a place named by whom or what it belongs to or serves ("the room of the babies", "the room for the staff")
+    r"|(?:of|for|belonging\s+to)\s+(?:the|my|our|your)"
     r"|(?:with|containing|(?:that|which)\s+(?:has|have|holds|contains)|where)\s+(?:the|my|our|your|a|an|some))\s+"
     r"(?P<name>[a-z][\w']*(?:\s+[a-z][\w']*)?)")
 
@@ -51,8 +54,8 @@ def unknown_landmark(masked: str, known_names: Sequence[str] = ()) -> str | None
     known = {place_key(n) for n in known_names}
     for m in _LANDMARK_RE.finditer(masked):
         words = m.group("name").split()
-        if words[0] in KNOWN_WORDS:
-            continue
+        if words[0] in KNOWN_WORDS or words[0] in lx.EXPLORE_SCOPE_WORDS:
+            continue  # (a word of the map's elements, or of the whole place: "the entrance of the building")
         if len(words) > 1 and words[1] in KNOWN_WORDS:
             words = words[:1]
         if any(place_key(" ".join(words[:k])) in known for k in range(1, len(words) + 1)):
