@@ -40,7 +40,6 @@ from typing import Final
 import numpy as np
 import numpy.typing as npt
 from scipy import ndimage as ndi
-from skimage.morphology import convex_hull_image
 from skimage.segmentation import watershed
 
 from langnav.analysis.params import AnalysisParams
@@ -70,16 +69,6 @@ WALL_LINE_PIECE_MAX_THICKNESS_M: Final = 0.3
 #: Wall cells within this many cells across a piece's own line are in line with it (scanned
 #: walls wobble a cell, and a rotated wall's staircase another half).
 WALL_LINE_BAND_CELLS: Final = 1.5
-#: A wall is at most this thick (m): twice the thickest interior wall
-#: (WALL_LINE_PIECE_MAX_THICKNESS_M), as a SLAM map whose loop closure is a few centimetres off
-#: draws one wall twice. A piece of non-floor standing free of the building's walls that is deeper
-#: than this where a gap meets it is a solid thing standing in a space (a vehicle, a lab bench, a
-#: table, a kitchen island, a block of shelving), not a wall however big it is: no doorway is cut
-#: between it and a wall, since a person sees one space around it, not two rooms.
-FREE_BLOCK_MIN_THICKNESS_M: Final = 2 * WALL_LINE_PIECE_MAX_THICKNESS_M
-#: ... and a solid thing fills at least this share of its convex hull (a rectangle, a rounded
-#: vehicle: nearly all of it); walls round the floor of a block of rooms fill far less.
-FREE_BLOCK_MIN_SOLIDITY: Final = 0.8
 #: 3x3 neighbourhood: 8-connectivity for components of cells.
 EIGHT: Final = np.ones((3, 3), dtype=bool)
 
@@ -347,14 +336,6 @@ class JambJudge:
         if wall_pieces is not None and wall_pieces.any():
             self.in_wall_line[self.comp[wall_pieces & self.obstacle]] = True
             self.in_wall_line[0] = False
-        # Pieces reaching the grid's border are the building's shell and the unknown world
-        # around it; the others stand free of it (an inner wall between two doorways, furniture).
-        self.free_standing = np.ones(int(self.comp.max()) + 1, dtype=bool)
-        self.free_standing[np.unique(np.concatenate(
-            [self.comp[0], self.comp[-1], self.comp[:, 0], self.comp[:, -1]]))] = False
-        self.free_standing[0] = False
-        self._depth: FloatArray | None = None
-        self._solidity: dict[int, float] = {}
 
     def _stub(self, k: int) -> float:
         """The length of the small piece ``k`` if it is a wall stub, else 0."""
@@ -379,16 +360,10 @@ class JambJudge:
         self._axes[k] = out
         return out
 
-    def structural(self, jamb: tuple[int, int], tangent: tuple[float, float], apart: bool = True) -> bool:
-        """Is the non-floor at ``jamb`` a wall that a doorway along ``tangent`` can be cut in?
-        ``apart``: the opening's other jamb is another piece (an opening cut in one piece, a door
-        in the walls round a closed block of rooms, is judged as before)."""
+    def structural(self, jamb: tuple[int, int], tangent: tuple[float, float]) -> bool:
+        """Is the non-floor at ``jamb`` a wall that a doorway along ``tangent`` can be cut in?"""
         k = int(self.comp[jamb])
-        if self.in_wall_line[k]:
-            return True
-        if apart and self.free_standing[k] and self._solid_block_at(jamb) and self._solid(k):
-            return False
-        if self.sizes[k] >= self.params.seg_wall_network_min_area_m2:
+        if self.sizes[k] >= self.params.seg_wall_network_min_area_m2 or self.in_wall_line[k]:
             return True
         length = self._stub(k)
         if length <= 0:
@@ -399,32 +374,6 @@ class JambJudge:
         if ar == 0.0 and ac == 0.0:
             return True  # a compact stub: no direction to contradict the doorway
         return abs(ar * tangent[0] + ac * tangent[1]) >= STUB_ACROSS_MAX_COS
-
-    def _solid(self, k: int) -> bool:
-        """Is the piece ``k`` a solid thing, nearly filling its convex hull (a vehicle, a bench, a
-        table, seen whole or as an outline round an unscanned inside), rather than walls round
-        floor (a block of rooms, a station in the middle of a ward)?"""
-        if k not in self._solidity:
-            sl = self.objs[k - 1]
-            solidity = 0.0
-            if sl is not None:
-                piece = (self.comp[sl] == k) & self.obstacle[sl]
-                hull = convex_hull_image(piece)
-                solidity = float(piece.sum()) / max(float(hull.sum()), 1.0)
-            self._solidity[k] = solidity
-        return self._solidity[k] >= FREE_BLOCK_MIN_SOLIDITY
-
-    def _solid_block_at(self, jamb: tuple[int, int]) -> bool:
-        """Is the piece of non-floor at ``jamb`` deeper than a wall is thick within a wall's
-        thickness of it (a solid block, not the end of a thin wall standing on it)?"""
-        if self._depth is None:
-            self._depth = ndi.distance_transform_edt(self.obstacle, sampling=self.res)
-        rad = math.ceil(FREE_BLOCK_MIN_THICKNESS_M / self.res)
-        r, c = jamb
-        h, w = self.obstacle.shape
-        win = (slice(max(0, r - rad), min(h, r + rad + 1)), slice(max(0, c - rad), min(w, c + rad + 1)))
-        own = self.comp[win] == self.comp[jamb]
-        return 2.0 * float(self._depth[win][own].max(initial=0.0)) > FREE_BLOCK_MIN_THICKNESS_M
 
     def jambs(self, row: int, col: int, clearance_m: float) -> tuple[tuple[int, int], tuple[int, int]] | None:
         """The two jamb cells of the crossing at (row, col), or None if there is no opposite one."""
@@ -476,8 +425,7 @@ class JambJudge:
         (r1, c1), (r2, c2) = jj
         n = math.hypot(r2 - r1, c2 - c1) or 1.0
         tangent = ((r2 - r1) / n, (c2 - c1) / n)
-        apart = bool(self.comp[jj[0]] != self.comp[jj[1]])
-        return all(self.structural(j, tangent, apart) for j in jj)
+        return all(self.structural(j, tangent) for j in jj)
 
 
 #: An opening whose jambs lie within 30 degrees of a corridor piece's long axis is in its side
