@@ -42,6 +42,7 @@ YAML_DIRS = (
     ROOT / "benchmarks" / "blind" / "maps-4" / "maps",
     ROOT / "benchmarks" / "blind" / "maps-5" / "maps",
     ROOT / "benchmarks" / "blind" / "maps-6" / "maps",
+    ROOT / "benchmarks" / "blind" / "maps-7" / "maps",
     ROOT.parent / "blind5-maps-dev",
 )
 BENCH_MAPS = ("env1", "env2")
