@@ -2,12 +2,21 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 
 from langnav.analysis.elements import MapAnalysis
 from langnav.grounding.errors import GroundingError
 from langnav.grounding.geometry import Pose
-from langnav.grounding.selection import describe_ref, select, select_wall, wall_lines
+from langnav.grounding.selection import (
+    describe_ref,
+    gap_joined,
+    round_a_thing,
+    select,
+    select_wall,
+    wall_lines,
+)
 from langnav.language.intent import Element, ElementRef, Side, Superlative
 
 AT_A = Pose.from_deg(3.0, 2.0, 0.0)  # in room A, facing east (towards door_1)
@@ -99,3 +108,24 @@ def test_two_sides_narrow_to_a_quarter(two_rooms: MapAnalysis) -> None:
     assert select(ref(kind="door", side="behind", also_side="left"), two_rooms, in_b).id == "door_2"
     assert select(ref(kind="door", side="behind", also_side="right"), two_rooms, in_b).id == "door_1"
     assert describe_ref(ref(kind="door", side="behind", also_side="left")) == "the door behind you on your left"
+
+
+def test_a_thing_on_your_side_is_one_in_sight(two_rooms: MapAnalysis) -> None:
+    # from room A the box is ahead and in sight
+    assert select(ref(kind="obstacle", side="ahead"), two_rooms, Pose.from_deg(4.0, 5.3, 180.0)).id == "obstacle_1"
+    # from room B, with the wall between the doors in the way, "the obstacle ahead" is no thing it sees
+    with pytest.raises(GroundingError, match="from here"):
+        select(ref(kind="obstacle", side="ahead"), two_rooms, Pose.from_deg(8.0, 3.5, 180.0))
+    # seen through a door it is
+    assert select(ref(kind="obstacle", side="ahead"), two_rooms, Pose.from_deg(8.0, 5.0, 180.0)).id == "obstacle_1"
+
+
+def test_two_wide_openings_between_two_spaces_make_one_room(two_rooms: MapAnalysis) -> None:
+    d1, d2 = two_rooms.doors
+    both = replace(two_rooms, doors=(), openings=(d1, d2))
+    assert [r.id for r in gap_joined(both, both.rooms[0])] == ["room_a", "room_b"]
+    assert round_a_thing(both) == [d1, d2]
+    # one wide opening is a way between two rooms, as before
+    one = replace(two_rooms, doors=(d2,), openings=(d1,))
+    assert [r.id for r in gap_joined(one, one.rooms[0])] == ["room_a"]
+    assert round_a_thing(one) == []

@@ -76,6 +76,13 @@ IN_SPACE_M: Final = 0.5
 #: the box" finds a door across a small room from the box but not one in another part of the floor.
 NEAR_MAX_M: Final = 4.0
 
+#: "The obstacle on your right" is a thing the robot can see: one whose cells a straight line from the
+#: robot reaches without crossing a wall. A line stops this short of the cell it looks at (the thing's own
+#: face and a cell of scan noise in front of it are not walls in the way).
+SIGHT_END_SLACK_M: Final = 0.15
+#: Cells of a thing tried for a line of sight, nearest first (its face towards the robot).
+SIGHT_CELLS_TRIED: Final = 60
+
 #: Building codes ask at least 0.8 m of clear width of a door people walk through (ADA 32 in =
 #: 0.81 m; most European codes 0.8 m). An opening measured narrower than that less one map cell of
 #: error at a jamb is no door anyone builds: it is a gap between pieces of furniture, shelves or a
@@ -243,8 +250,9 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
     """The space with the spaces narrow gaps join to it (``is_gap``), one after the other. A gap
     narrower than any door does not end a room: a corridor narrowed by a cart goes on past it, and a
     room parted by a row of shelves with a gap in it is one room, whose doors are the doors of both
-    parts."""
-    gaps = [d for d in analysis.doors if is_gap(d, analysis)]
+    parts. Nor do two wide openings between the same two spaces (``round_a_thing``): a long table
+    parting a room leaves a way round each of its ends, and a person walks round it in one room."""
+    gaps = [d for d in analysis.doors if is_gap(d, analysis)] + round_a_thing(analysis)
     by_id = {r.id: r for r in analysis.rooms}
     group = [space]
     seen = {space.id}
@@ -259,6 +267,18 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
                         group.append(by_id[other])
         k += 1
     return group
+
+
+def round_a_thing(analysis: MapAnalysis) -> list[Door]:
+    """The wide openings (wider than a door, no door in them) that join two spaces which another
+    opening or narrow gap joins too. A wall has doors in it; two open ways between the same two
+    spaces are the two ends of a thing standing free between them (a long table, a shelf block, a
+    counter), which a person walks round within one room, not a wall between two rooms."""
+    links: list[Door] = [*analysis.openings, *(d for d in analysis.doors if is_gap(d, analysis))]
+    pairs: dict[frozenset[str], int] = {}
+    for o in links:
+        pairs[frozenset(o.connects)] = pairs.get(frozenset(o.connects), 0) + 1
+    return [o for o in analysis.openings if len(set(o.connects)) == 2 and pairs[frozenset(o.connects)] >= 2]
 
 
 def mostly_hallway(group: Sequence[Room]) -> bool:
@@ -481,6 +501,30 @@ def select(ref: ElementRef, analysis: MapAnalysis, pose: Pose, words: str = "",
     return select_many(ref, analysis, pose, 1, words, came_through)[0]
 
 
+def in_sight(analysis: MapAnalysis, xy: Point, o: Obstacle) -> bool:
+    """Whether a straight line from ``xy`` reaches one of the thing's cells (``SIGHT_CELLS_TRIED``
+    nearest) without crossing an occupied cell of the map before it (``SIGHT_END_SLACK_M``)."""
+    cells = np.asarray(o.cells_xy, dtype=float).reshape(-1, 2)
+    if not len(cells):
+        return False
+    grid = analysis.grid
+    d = np.hypot(cells[:, 0] - xy[0], cells[:, 1] - xy[1])
+    occupied = grid.occupied
+    step_m = grid.resolution_m / 2
+    for k in np.argsort(d)[:SIGHT_CELLS_TRIED]:
+        length = float(d[k]) - SIGHT_END_SLACK_M
+        if length <= 0:
+            return True
+        t = np.arange(0.0, length, step_m) / float(d[k])
+        xs = xy[0] + t * (cells[k, 0] - xy[0])
+        ys = xy[1] + t * (cells[k, 1] - xy[1])
+        r, c = grid.world_to_index(xs, ys)
+        inside = grid.in_bounds(r, c)
+        if not occupied[r[inside], c[inside]].any():
+            return True
+    return False
+
+
 def aspect_ratio(o: Obstacle) -> float:
     lo, hi = sorted(o.extent_m)
     return hi / lo if lo > 0 else math.inf
@@ -573,6 +617,14 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         pool = [e for e in pool if matches_side(e, pose, ref.also_side)]  # "behind you on the left": both hold
     if ref.kind == Kind.OBSTACLE and words:
         pool = shape_filter(pool, words)
+    if ref.kind == Kind.OBSTACLE and ref.side is not None and space is None and ref.near is None:
+        # "the obstacle on your right" places a thing by where the robot sees it: one behind a wall, in
+        # another room, is not on its right to a person standing there (ask rather than drive to it)
+        seen: list[Element] = [e for e in pool if isinstance(e, Obstacle) and in_sight(analysis, pose.xy, e)]
+        if not seen and pool:
+            raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]}{_where(ref)} from here: the nearest such "
+                                 "thing is behind a wall. Which one do you mean?")
+        pool = seen
     by_landmark: dict[int, float] | None = None
     if ref.near is not None and not (ref.near.kind in (Kind.ROOM, Kind.HALLWAY) and space is not None):
         pool, by_landmark = _near_landmark(ref, pool, analysis, pose)
