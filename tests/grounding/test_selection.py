@@ -11,6 +11,7 @@ from langnav.grounding.errors import GroundingError
 from langnav.grounding.geometry import Pose
 from langnav.grounding.selection import (
     describe_ref,
+    doors_of,
     gap_joined,
     round_a_thing,
     select,
@@ -125,7 +126,12 @@ def test_two_wide_openings_between_two_spaces_make_one_room(two_rooms: MapAnalys
     both = replace(two_rooms, doors=(), openings=(d1, d2))
     assert [r.id for r in gap_joined(both, both.rooms[0])] == ["room_a", "room_b"]
     assert round_a_thing(both) == [d1, d2]
-    # one wide opening is a way between two rooms, as before
-    one = replace(two_rooms, doors=(d2,), openings=(d1,))
+    # a wide opening and a door between the same two spaces: the two ends of one thing, no door of a room
+    mixed = replace(two_rooms, doors=(d2,), openings=(d1,))
+    assert [r.id for r in gap_joined(mixed, mixed.rooms[0])] == ["room_a", "room_b"]
+    assert round_a_thing(mixed) == [d1, d2] and doors_of(mixed) == []
+    # one wide opening is a way between two rooms, as before; two doors are two doors
+    one = replace(two_rooms, doors=(), openings=(d1,))
     assert [r.id for r in gap_joined(one, one.rooms[0])] == ["room_a"]
-    assert round_a_thing(one) == []
+    assert round_a_thing(one) == [] and round_a_thing(two_rooms) == []
+    assert doors_of(two_rooms) == [d1, d2]

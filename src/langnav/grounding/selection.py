@@ -252,7 +252,8 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
     room parted by a row of shelves with a gap in it is one room, whose doors are the doors of both
     parts. Nor do two wide openings between the same two spaces (``round_a_thing``): a long table
     parting a room leaves a way round each of its ends, and a person walks round it in one room."""
-    gaps = [d for d in analysis.doors if is_gap(d, analysis)] + round_a_thing(analysis)
+    round_ends = round_a_thing(analysis)
+    gaps = [d for d in analysis.doors if is_gap(d, analysis) and d not in round_ends] + round_ends
     by_id = {r.id: r for r in analysis.rooms}
     group = [space]
     seen = {space.id}
@@ -270,15 +271,18 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
 
 
 def round_a_thing(analysis: MapAnalysis) -> list[Door]:
-    """The wide openings (wider than a door, no door in them) that join two spaces which another
-    opening or narrow gap joins too. A wall has doors in it; two open ways between the same two
-    spaces are the two ends of a thing standing free between them (a long table, a shelf block, a
-    counter), which a person walks round within one room, not a wall between two rooms."""
-    links: list[Door] = [*analysis.openings, *(d for d in analysis.doors if is_gap(d, analysis))]
-    pairs: dict[frozenset[str], int] = {}
+    """The ways between two spaces that a thing standing free between them leaves round its ends: all
+    the openings, narrow gaps and doors joining two spaces that are joined by at least one wide
+    opening (wider than a door, no door in it) and one more way. A wall has doors in it; an open way
+    and a second way between the same two spaces are the two ends of a long table, a desk block or a
+    shelf block, which a person walks round within one room, not a wall between two rooms."""
+    links: list[Door] = [*analysis.openings, *analysis.doors]
+    pairs: dict[frozenset[str], list[Door]] = {}
     for o in links:
-        pairs[frozenset(o.connects)] = pairs.get(frozenset(o.connects), 0) + 1
-    return [o for o in analysis.openings if len(set(o.connects)) == 2 and pairs[frozenset(o.connects)] >= 2]
+        if len(set(o.connects)) == 2:
+            pairs.setdefault(frozenset(o.connects), []).append(o)
+    wide = {id(o) for o in analysis.openings}
+    return [o for ways in pairs.values() if len(ways) >= 2 and any(id(w) in wide for w in ways) for o in ways]
 
 
 def mostly_hallway(group: Sequence[Room]) -> bool:
@@ -460,8 +464,10 @@ def only_way_in(d: Door, analysis: MapAnalysis) -> bool:
 
 
 def doors_of(analysis: MapAnalysis) -> list[Door]:
-    """The doors a person counts: the analysis's doors without the narrow gaps."""
-    return [d for d in analysis.doors if not is_gap(d, analysis)]
+    """The doors a person counts: the analysis's doors without the narrow gaps and the ways round a
+    thing standing in a room (``round_a_thing``)."""
+    round_ends = {id(d) for d in round_a_thing(analysis)}
+    return [d for d in analysis.doors if not is_gap(d, analysis) and id(d) not in round_ends]
 
 
 def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
