@@ -209,7 +209,11 @@ class _LineTable:
 
     def __init__(self, degs: FloatArray) -> None:
         self.degs = degs.copy()
-        self.numbers = np.empty((LINE_TABLE_SIDE * LINE_TABLE_SIDE, 2 * len(degs)), dtype=np.int64)
+        # The smallest integer type that holds every shifted number (fewer bytes to read per
+        # cell, and less memory kept): below 2 * len(degs) * _TABLE_SPAN.
+        top = 2 * len(degs) * _TABLE_SPAN
+        dtype = np.int16 if top <= np.iinfo(np.int16).max else np.int32
+        self.numbers = np.empty((LINE_TABLE_SIDE * LINE_TABLE_SIDE, 2 * len(degs)), dtype=dtype)
         self.known = np.zeros(LINE_TABLE_SIDE * LINE_TABLE_SIDE, dtype=bool)
 
     def scores(self, rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp]) -> FloatArray:
@@ -242,8 +246,16 @@ class _LineTable:
 
 _COARSE_DEGS: Final = np.arange(0.0, 90.0, DIRECTION_BIN_DEG)
 _COARSE_DEGS.flags.writeable = False
-#: The coarse directions' table, made on first use (24 MB once filled), and its lock.
+#: The directions a peak at coarse direction p is refined over: p plus these (a tenth of a bin).
+_FINE_STEPS: Final = np.linspace(-DIRECTION_BIN_DEG, DIRECTION_BIN_DEG, 21)
+_FINE_STEPS.flags.writeable = False
+#: Tables of refined directions kept, one per coarse peak (1.4 MB each once filled): a building
+#: has a few wall directions, and the doors of one map are refined about the same peaks.
+FINE_TABLES_KEPT: Final = 4
+#: The coarse directions' table, made on first use (12 MB once filled), the tables of the
+#: refinements about the latest coarse peaks (most recent last), and their lock.
 _coarse_table: list[_LineTable] = []
+_fine_tables: dict[int, _LineTable] = {}
 _coarse_lock = threading.Lock()
 
 
@@ -254,6 +266,19 @@ def _coarse_scores(rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp]) -> FloatA
         if not _coarse_table:
             _coarse_table.append(_LineTable(_COARSE_DEGS))
         return _coarse_table[0].scores(rr, cc)
+
+
+def _fine_scores(peak: int, rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp]) -> FloatArray:
+    """``_line_scores(rr, -cc, _COARSE_DEGS[peak] + _FINE_STEPS)`` for cells (rr, cc) of a mask
+    within LINE_TABLE_SIDE, from that peak's table."""
+    with _coarse_lock:
+        table = _fine_tables.pop(peak, None)
+        if table is None:
+            table = _LineTable(_COARSE_DEGS[peak] + _FINE_STEPS)
+            while len(_fine_tables) >= FINE_TABLES_KEPT:
+                del _fine_tables[next(iter(_fine_tables))]  # the least recently used
+        _fine_tables[peak] = table
+        return table.scores(rr, cc)
 
 
 def dominant_directions(wall: BoolArray) -> list[float]:
@@ -286,8 +311,9 @@ def dominant_directions(wall: BoolArray) -> list[float]:
         if taken and score[p] - base < SECOND_DIRECTION_MIN_SHARE * (score[peaks[0]] - base):
             break
         # Refined to a tenth of a bin around the peak.
-        fine = grid_deg[p] + np.linspace(-DIRECTION_BIN_DEG, DIRECTION_BIN_DEG, 21)
-        deg = float(fine[int(np.argmax(_line_scores(rows, neg_cols, fine)))] % 90.0)
+        fine = grid_deg[p] + _FINE_STEPS
+        fine_score = _fine_scores(p, rr, cc) if small else _line_scores(rows, neg_cols, fine)
+        deg = float(fine[int(np.argmax(fine_score))] % 90.0)
         if all(min(abs(deg - t) % 90.0, 90.0 - abs(deg - t) % 90.0) >= DIRECTION_MIN_SEPARATION_DEG
                for t in taken):
             taken.append(deg)

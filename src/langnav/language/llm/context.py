@@ -141,7 +141,11 @@ metre, actually forward" -> forward 1 m). "scratch that" takes back the instruct
 everything said before it. A turn said again with what it missed is one turn ("fifteen degrees turn, turn \
 to your left" -> left 15; "turn left, turn left 270 degrees" -> left 270; "turn around, face south" -> face \
 south). A "stop" between instructions takes back the motion before it when that motion had no amount \
-("turn right, stop, turn left" -> only the left turn).
+("turn right, stop, turn left" -> only the left turn). An exclamation of dismay ("aiya", "argh", "ugh", "oh \
+no", "whoops", "damn", "eish") after an instruction marks it as a slip, like "sorry" ("turn left, argh, turn \
+right thirty" -> right 30). A bare turn taken back at once by a turn to the other side, with only pauses \
+between, is a false start ("turn right, turn left, uh, turn right sixty" -> right 60; "turn left, then turn \
+right" keeps both).
 - No camera: leave out "take a picture", "send me a photo", "what do you see?". Alone: no steps and a \
 clarification saying there is no camera. With motions: the motions, and a clarification saying no picture \
 was taken. "take a picture to your left" -> rotate left (the turn is the part the robot can do).

@@ -26,9 +26,15 @@ from langnav.language.offline.numbers import find_quantities
 from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE, STOP_RE, rx
 from langnav.language.offline.vocabulary import VOCABULARY
 
-#: Words that open a correction of the instruction before ("actually", "no wait", "i'm sorry").
+#: Exclamations of dismay ("aiya", "argh", "oh no", "damn"): said right after an instruction, they mark it as
+#: a slip, which the words that follow put right, as "sorry" does ("turn left, aiya, turn right sixty": the
+#: right turn). English and its varieties: Singapore / Malaysia "aiya", "aiyo", "alamak"; South Africa "eish".
+DISMAY: Final = (r"oops|oopsie|whoops|whoopsie|ar+gh+|ugh+|aiy(?:a+h?|o+h?)|alamak|eish|uh\s+oh|oh\s+dear|"
+                 r"dam(?:n|mit)(?:\s+it)?|darn(?:\s+it)?|drat|dang(?:\s+it)?")
+#: Words that open a correction of the instruction before ("actually", "no wait", "i'm sorry", "aiya").
 CORRECTION_START_RE: Final = re.compile(
-    r"^(?:(?:(?:oh|ah|uh|um)\s*,?\s+(?=sorry|no\b|i\s+mean)|actually|no\s+wait|no(?!\s+(?:further|longer|more|need)\b)|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
+    rf"^(?:(?:{DISMAY})\b[\s,!.]*|"
+    r"(?:(?:oh|ah|uh|um)\s*,?\s+(?=sorry|no\b|i\s+mean)|actually|no\s+wait|no(?!\s+(?:further|longer|more|need)\b)|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
     r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|my\s+(?:bad|mistake)|or\s+rather|rather|make\s+that|make\s+it|correction|"
     r"oops)\b[\s,]*)+", re.IGNORECASE)
 #: Words that take back what was said before ("never mind", "scratch that").

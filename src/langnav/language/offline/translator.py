@@ -26,6 +26,7 @@ from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_cl
 from langnav.language.offline.photos import without_photo
 from langnav.language.offline.reading import ASK_AMOUNT, ASK_CONFIDENCE, ASK_SIDE
 from langnav.language.offline.restarts import (
+    drop_false_start_turns,
     drop_insisted_amounts,
     drop_stopped,
     merge_restated_turns,
@@ -234,7 +235,8 @@ def _clauses(text: str) -> tuple[list[str], bool]:
     # meters, I mean five feet, forward" is corrected first, then completed
     kept = drop_insisted_amounts(read_stated_amounts(kept))  # before joining: "..., only a little"
     joined = join_fragments(apply_corrections(join_fragments(kept, _is_open)), _is_open)
-    return merge_restated_turns(drop_stopped(drop_insisted_amounts(joined), _read), _read), photo
+    said_once = drop_false_start_turns(drop_stopped(drop_insisted_amounts(joined), _read), text, _read)
+    return merge_restated_turns(said_once, _read), photo
 
 
 def _answered_by(question: str, steps: list[Step]) -> bool:
