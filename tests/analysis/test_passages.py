@@ -863,3 +863,25 @@ def test_an_aisle_whose_middle_line_jogs_on_coarse_cells_is_one_passage() -> Non
     assert p.length_m == pytest.approx(5.0, abs=0.15)
     assert p.width_m == pytest.approx(0.8, abs=0.051)
     assert p.center == pytest.approx((4.2, 1.32), abs=0.1)
+
+
+def test_a_door_read_across_a_long_aisle_between_lockers_is_no_door() -> None:
+    """A 10 x 5 m locker room: wall lockers 0.5 m deep along its north wall (x 1 to 8) and a
+    0.6 m deep locker island (x 2 to 7) 0.85 m south of them, outlines scanned, insides unknown.
+    A door read across the aisle's middle (as on a turned map, where the stair-stepped faces
+    read as jambs) is no door: no wall stands between two things deeper than any wall along a
+    way as long as a corridor. The aisle is one passage, the island's length."""
+    b = MapBuilder(12.0, 7.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 10.0, 5.0)
+    b.box(1.0, 4.5, 8.0, 5.0).unknown(1.05, 4.55, 7.95, 4.95)
+    b.box(2.0, 3.05, 7.0, 3.65).unknown(2.05, 3.1, 6.95, 3.6)
+    grid = b.build(source="locker_room")
+    labels, n = labels_for_free_components(grid)
+    layers = GridLayers(grid)
+    door = Door(id="door_1", center=(4.5, 4.075), width_m=0.85, jambs=((4.5, 3.65), (4.5, 4.5)),
+                normal=(1.0, 0.0), connects=("space_1", "space_1"))
+    (p,) = find_passages(grid, P, labels, {k: f"space_{k}" for k in range(1, n + 1)}, [door],
+                         layers.occupied | layers.unknown, layers=layers)
+    assert p.center == pytest.approx((4.5, 4.075), abs=0.06)
+    assert p.width_m == pytest.approx(0.85, abs=0.051)
+    assert p.length_m == pytest.approx(5.0, abs=0.2)

@@ -462,6 +462,15 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             # is wide (a housekeeping cart in a corridor): a doorway is shorter than it is wide
             # (walls are thinner than door_max_depth_m, doors wider than door_min_width_m).
             no_door = squeeze and _parallel(sides[bounded], res) and (thing is None or length_m >= width_m)
+            # So is one across an aisle as elongated as a corridor between two things deeper than
+            # any wall with parallel faces (lockers and a locker island, two shelf rows): no wall
+            # stands there for a door to be in (on a turned map the stair-stepped faces read as
+            # jambs). A short way through a wall mass between two rooms keeps its door.
+            if not no_door and corridor_like and any(_is_the_door(d, centre, axis_w, length_m, width_m, params)
+                                                 for d in doors):
+                no_door = _parallel(sides[bounded], res) and all(
+                    _deep(sub, pts[bounded], normal * (2 * j - 1), sides[bounded, j], params.door_max_depth_m / res, res)
+                    for j in (0, 1))
             if not no_door and (
                     any(_is_the_door(d, centre, axis_w, length_m, width_m, params) for d in doors)
                     or (not elongated and any(math.dist(d.center, centre) <= length_m / 2 + params.door_max_depth_m

@@ -17,7 +17,7 @@ The stand-ins give *exactly* what the numpy / scipy call they replace gives (pro
 - :func:`truncated_sq_edt`: ``distance_transform_edt`` squared, exact up to a bound (what a
   test of short clearances needs), in small integers; :func:`far_from_outside`: its test
   against a distance, as the outside grown by the disc of the offsets that fail it
-  (:func:`grow_by_disc`);
+  (:func:`grow_by_disc`, the binary dilation by a disc, :func:`disc`);
 - :func:`median`, :func:`cov2`: ``np.median`` and ``np.cov`` without their overhead;
 - :func:`edt_scaled`: ``ndi.distance_transform_edt(mask, sampling=step)`` for a 2-D mask and one
   step for both axes, the distances read from a table of the few (|drow|, |dcol|) offsets;
@@ -255,6 +255,19 @@ def far_from_outside(mask: BoolArray, min_m: float, resolution_m: float) -> Bool
     a = np.arange(bound + 1)
     near = ~(np.sqrt((a[:, None] ** 2 + a[None, :] ** 2).astype(np.float64)) * resolution_m >= min_m)
     return ~grow_by_disc(~np.asarray(mask, dtype=bool), near)
+
+
+def disc(radius_cells: float) -> BoolArray:
+    """The disc of this radius (cells, centre to centre) as :func:`grow_by_disc` takes it: the
+    offsets (|rows|, |columns|) = (dy, dx) with dx² + dy² ≤ radius², a square table of
+    ``floor(radius) + 1`` each way (each row's run: the largest dx for its dy, worked out as a
+    square root)."""
+    r2 = radius_cells * radius_cells + 1e-9  # a cell exactly on the circle is inside
+    top = math.floor(math.sqrt(r2))
+    near = np.zeros((top + 1, top + 1), dtype=bool)
+    for dy in range(top + 1):
+        near[dy, :math.floor(math.sqrt(r2 - dy * dy)) + 1] = True
+    return near
 
 
 def grow_by_disc(mask: BoolArray, near: BoolArray) -> BoolArray:

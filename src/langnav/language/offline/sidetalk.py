@@ -75,10 +75,11 @@ _YOU_RE: Final = re.compile(r"\b(?:you|your|yourself|u|ur)\b", re.IGNORECASE)
 _LEAD_RE: Final = re.compile(r"^\s*(?:sorry|no|oh|oops|(?:one|a|just\s+a)\s+(?:second|sec|moment|minute))\s*$",
                              re.IGNORECASE)
 _NUMBER_VALUES: Final = {**ONES, **TENS}
-#: Sounds said while thinking ("um", "uhh", "hmm", "erm", "ah", "oh"): no name.
-_SOUND_RE: Final = re.compile(r"u+[hm]+|h+m+|e+r+m*|a+h+|o+h+|m+h?m+|e+h+|huh|phew|hmph|oops|whoops|wow|ooh|aw+")
+#: Sounds said while thinking or in surprise ("um", "uhh", "hmm", "erm", "ah", "oh"): no name.
+_SOUND_RE: Final = re.compile(lx.HESITATION_SOUNDS + r"|u+[hm]+|h+m+|e+r+m*|a+h+|o+h+|m+h?m+|e+h+|huh|phew|hmph|oops|whoops"
+                              r"|wow|ooh|aw+")
 #: What people call the robot (and radio call words): the robot addressed, not someone else.
-_ROBOT_NAMES: Final = frozenset({"robot", "rover", "bot", "robo", "unit", "base", "scout", "buddy", "mate", "pal"})
+_ROBOT_NAMES: Final = frozenset({*lx.ROBOT_NAMES, "rover", "bot", "unit", "base", "scout", "pal"})
 #: A count-in has at least this many numbers (two may be an amount said again: "four, four metres").
 MIN_COUNT_IN: Final = 3
 
