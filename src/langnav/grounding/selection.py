@@ -83,7 +83,7 @@ NEAR_MAX_M: Final = 4.0
 #: face and a cell of scan noise in front of it are not walls in the way).
 SIGHT_END_SLACK_M: Final = 0.15
 #: Cells of a thing tried for a line of sight, nearest first (its face towards the robot).
-SIGHT_CELLS_TRIED: Final = 60
+SIGHT_CELLS_TRIED: Final = 24
 
 #: A block this thick between two doorways is a piece of furniture (a counter, a desk block: 0.6-0.9 m
 #: deep), not a wall: inner walls are 0.1-0.3 m thick, and even a thick one with two doors in it stays
@@ -685,7 +685,15 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
     if ref.kind == Kind.OBSTACLE and ref.side is not None and space is None and ref.near is None:
         # "the obstacle on your right" places a thing by where the robot sees it: one behind a wall, in
         # another room, is not on its right to a person standing there (ask rather than drive to it)
-        seen: list[Element] = [e for e in pool if isinstance(e, Obstacle) and in_sight(analysis, pose.xy, e)]
+        seen: list[Element] = []
+        # nearest first; when only the nearest ones can be meant, the farther ones need no look
+        wanted = ((ref.ordinal or 1) + count - 1 if ref.superlative in (None, Superlative.NEAREST)
+                  else len(pool))
+        for e in sorted(pool, key=lambda e: distance_to(e, pose.xy)):
+            if len(seen) >= wanted:
+                break
+            if isinstance(e, Obstacle) and in_sight(analysis, pose.xy, e):
+                seen.append(e)
         if not seen and pool:
             raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]}{_where(ref)} from here: the nearest such "
                                  "thing is behind a wall. Which one do you mean?")
