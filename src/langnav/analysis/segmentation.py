@@ -37,6 +37,7 @@ from langnav.analysis.precompute import (
     GridLayers,
     approximate_polygons,
     dilate8,
+    dilate_box,
     edt_scaled,
     fill_holes,
     longest_contour,
@@ -424,7 +425,7 @@ def _close_unknown_gaps(labels: npt.NDArray[np.int32], unknown: npt.NDArray[np.b
     todo = unknown & (labels == 0)
     # Only cells with a space within r (in the chessboard metric) can be filled: look out from
     # those alone, through a copy of the labels padded with r cells of wall.
-    todo &= ndi.maximum_filter(labels > 0, size=2 * r + 1)
+    todo &= dilate_box(labels > 0, 2 * r + 1)
     rows, cols = nonzero2(todo)
     if rows.size == 0:
         return labels
