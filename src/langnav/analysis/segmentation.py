@@ -55,7 +55,7 @@ from langnav.analysis.seg_core import (
     merge_basins,
 )
 from langnav.analysis.seg_doors import RawDoor, doors_between, label_max, openings_to_unknown
-from langnav.analysis.wall_lines import closure_mask, dominant_directions, wall_gaps
+from langnav.analysis.wall_lines import closure_mask, dominant_directions, leaf_mask, wall_gaps
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
 log = logging.getLogger(__name__)
@@ -261,7 +261,10 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
                                      fl.clearance_m, res, params, peaks, known=between, directions=directions)
     # Only openings cut in a wall are doors (door_judge); the others between two spaces are
     # still ways between them.
-    raw_doors, not_doors = judge_doors(raw_doors, fl.free, occupied & ~fl.floor, res, params, unknown=unknown)
+    # (The open leaves of double doors found in the wall lines are no wall there.)
+    leaves = leaf_mask(gaps, occupied.shape)
+    raw_doors, not_doors = judge_doors(raw_doors, fl.free | leaves, occupied & ~fl.floor & ~leaves, res, params,
+                                       unknown=unknown)
     raw_wide += [d for d in not_doors if d.b != 0]
     openings = np.bincount(np.array([x for d in raw_doors + raw_wide for x in (d.a, d.b) if x > 0], dtype=np.int64),
                            minlength=int(labels.max()) + 1)
