@@ -322,6 +322,9 @@ QUERY_POSE_PATTERNS: Final = (
     # "where you at?" (the copula dropped, as many English dialects do); "where do you stand now?" (where
     # one stands is where one is, as learners and formal speakers ask it)
     r"^\s*where\s+(?:you|u|ya|y'all)\s+at\b",
+    # ("where you now?", "where you right now": the copula dropped before "now", as learners and many
+    # varieties ask it)
+    r"^\s*where\s+(?:you|u|ya)\s+(?:right\s+)?now\b",
     r"\bwhere\s+(?:do|does)\s+(?:you|u|the\s+robot|it)\s+(?:stand|find\s+(?:yourself|itself)|sit|stay)\b"
     r"(?!\s+(?:on|with)\b)",
 )
@@ -422,7 +425,7 @@ LITTLE_PHRASES: Final = (
     *(f"{pre}{size}{noun}" for pre in ("a ", "just a ", "only a ", "") for size in (
         "", "little ", "tiny ", "teeny ", "teeny tiny ", "teensy ", "teensy weensy ", "teeny weeny ", "wee ",
         "itsy bitsy ", "small ", "very small ", "very little ", "tiny little ", "little tiny ")
-      for noun in ("bit", "touch", "tad", "smidge", "nudge", "amount")),
+      for noun in ("bit", "touch", "tad", "smidge", "nudge", "amount", "skosh")),
 )
 
 #: Amounts said only to be large ("a fair bit", "quite a way", "a good distance", "a lot"): unlike "a
