@@ -17,6 +17,7 @@ your left" in a hallway means the hallway's doors, not one seen through a wall.
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from collections.abc import Sequence
@@ -24,6 +25,7 @@ from dataclasses import dataclass
 from typing import Final
 
 import numpy as np
+from scipy import ndimage
 from scipy.spatial import cKDTree
 
 from langnav.analysis.elements import (
@@ -81,7 +83,17 @@ NEAR_MAX_M: Final = 4.0
 #: face and a cell of scan noise in front of it are not walls in the way).
 SIGHT_END_SLACK_M: Final = 0.15
 #: Cells of a thing tried for a line of sight, nearest first (its face towards the robot).
-SIGHT_CELLS_TRIED: Final = 60
+SIGHT_CELLS_TRIED: Final = 24
+
+#: A block this thick between two doorways is a piece of furniture (a counter, a desk block: 0.6-0.9 m
+#: deep), not a wall: inner walls are 0.1-0.3 m thick, and even a thick one with two doors in it stays
+#: under 0.5 m.
+FURNITURE_MIN_THICKNESS_M: Final = 0.5
+#: The line between the jambs is read this close to the thing (a cell of scan noise either side).
+FURNITURE_LINE_SLACK_M: Final = 0.1
+#: A thing standing free has floor round it: a window this much bigger than the way between its two
+#: doorways holds it whole (a wall runs on out of it).
+FURNITURE_FREE_MARGIN_M: Final = 1.0
 
 #: Building codes ask at least 0.8 m of clear width of a door people walk through (ADA 32 in =
 #: 0.81 m; most European codes 0.8 m). An opening measured narrower than that less one map cell of
@@ -252,7 +264,8 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
     room parted by a row of shelves with a gap in it is one room, whose doors are the doors of both
     parts. Nor do two wide openings between the same two spaces (``round_a_thing``): a long table
     parting a room leaves a way round each of its ends, and a person walks round it in one room."""
-    gaps = [d for d in analysis.doors if is_gap(d, analysis)] + round_a_thing(analysis)
+    round_ends = round_a_thing(analysis)
+    gaps = [d for d in analysis.doors if is_gap(d, analysis) and d not in round_ends] + round_ends
     by_id = {r.id: r for r in analysis.rooms}
     group = [space]
     seen = {space.id}
@@ -270,15 +283,65 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
 
 
 def round_a_thing(analysis: MapAnalysis) -> list[Door]:
-    """The wide openings (wider than a door, no door in them) that join two spaces which another
-    opening or narrow gap joins too. A wall has doors in it; two open ways between the same two
-    spaces are the two ends of a thing standing free between them (a long table, a shelf block, a
-    counter), which a person walks round within one room, not a wall between two rooms."""
-    links: list[Door] = [*analysis.openings, *(d for d in analysis.doors if is_gap(d, analysis))]
-    pairs: dict[frozenset[str], int] = {}
+    """The ways between two spaces that a thing standing free between them leaves round its ends: all
+    the openings, narrow gaps and doors joining two spaces that are joined by at least one wide
+    opening (wider than a door, no door in it) and one more way. A wall has doors in it; an open way
+    and a second way between the same two spaces are the two ends of a long table, a desk block or a
+    shelf block, which a person walks round within one room, not a wall between two rooms."""
+    links: list[Door] = [*analysis.openings, *analysis.doors]
+    spaces = {r.id for r in analysis.rooms}
+    pairs: dict[frozenset[str], list[Door]] = {}
     for o in links:
-        pairs[frozenset(o.connects)] = pairs.get(frozenset(o.connects), 0) + 1
-    return [o for o in analysis.openings if len(set(o.connects)) == 2 and pairs[frozenset(o.connects)] >= 2]
+        # (two doors out to the unscanned world are two ways out, whatever stands between them)
+        if len(set(o.connects)) == 2 and set(o.connects) <= spaces:
+            pairs.setdefault(frozenset(o.connects), []).append(o)
+    wide = {id(o) for o in analysis.openings}
+    return [o for ways in pairs.values() if len(ways) >= 2 and (
+        any(id(w) in wide for w in ways) or any(_block_between(analysis, a, b) for a, b in itertools.combinations(ways, 2)))
+        for o in ways]
+
+
+def _block_between(analysis: MapAnalysis, a: Door, b: Door) -> bool:
+    """Whether what stands between two doorways joining the same two spaces is a thing, not a wall: a
+    solid block (``FURNITURE_MIN_THICKNESS_M`` thick or more, as a counter or a desk block is, and no
+    inner wall) standing free, no longer than the way between the two doorways. A room with two doors
+    onto a corridor has a thin wall between them."""
+    grid = analysis.grid
+    res = grid.resolution_m
+    # the thing's two ends are the doorways' jambs nearest each other; the line between them runs
+    # along it (through it or along its face)
+    (ax, ay), (bx, by) = min(((p, q) for p in a.jambs for q in b.jambs), key=lambda pq: math.dist(*pq))
+    length = math.hypot(bx - ax, by - ay)
+    if length < res:
+        return False
+    n = max(2, int(length / (res / 2)))
+    xs, ys = np.linspace(ax, bx, n), np.linspace(ay, by, n)
+    r_line, c_line = grid.world_to_index(xs, ys)
+    reach = math.ceil(FURNITURE_LINE_SLACK_M / res)
+    offsets = np.arange(-reach, reach + 1)
+    rr = (r_line[:, None, None] + offsets[None, :, None]).repeat(len(offsets), axis=2).reshape(-1)
+    cc = (c_line[:, None, None] + offsets[None, None, :]).repeat(len(offsets), axis=1).reshape(-1)
+    ok = grid.in_bounds(rr, cc)
+    occupied = grid.occupied
+    hit = ok.copy()
+    hit[ok] = occupied[rr[ok], cc[ok]]
+    if not hit.any():
+        return False
+    # the block: the occupied cells joined to those on the line, in a window a little bigger than the way
+    pad = math.ceil(FURNITURE_FREE_MARGIN_M / res)
+    r0, r1 = max(int(rr[ok].min()) - pad, 0), min(int(rr[ok].max()) + pad + 1, grid.height)
+    c0, c1 = max(int(cc[ok].min()) - pad, 0), min(int(cc[ok].max()) + pad + 1, grid.width)
+    window = occupied[r0:r1, c0:c1]
+    labels, _ = ndimage.label(window, structure=np.ones((3, 3), dtype=bool))
+    on_line = set(np.unique(labels[rr[hit] - r0, cc[hit] - c0]).tolist()) - {0}
+    # a lidar sees only a solid thing's faces: its inside, never scanned, is part of it
+    block = ndimage.binary_fill_holes(np.isin(labels, list(on_line)))
+    edge = np.zeros_like(block)
+    edge[0, :] = edge[-1, :] = edge[:, 0] = edge[:, -1] = True
+    if (block & edge).any():
+        return False  # it runs on out of the window: part of the walls, not a thing standing free
+    thickness_m = 2.0 * float(ndimage.distance_transform_edt(block).max()) * res
+    return thickness_m >= FURNITURE_MIN_THICKNESS_M
 
 
 def mostly_hallway(group: Sequence[Room]) -> bool:
@@ -460,8 +523,10 @@ def only_way_in(d: Door, analysis: MapAnalysis) -> bool:
 
 
 def doors_of(analysis: MapAnalysis) -> list[Door]:
-    """The doors a person counts: the analysis's doors without the narrow gaps."""
-    return [d for d in analysis.doors if not is_gap(d, analysis)]
+    """The doors a person counts: the analysis's doors without the narrow gaps and the ways round a
+    thing standing in a room (``round_a_thing``)."""
+    round_ends = {id(d) for d in round_a_thing(analysis)}
+    return [d for d in analysis.doors if not is_gap(d, analysis) and id(d) not in round_ends]
 
 
 def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
@@ -620,7 +685,15 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
     if ref.kind == Kind.OBSTACLE and ref.side is not None and space is None and ref.near is None:
         # "the obstacle on your right" places a thing by where the robot sees it: one behind a wall, in
         # another room, is not on its right to a person standing there (ask rather than drive to it)
-        seen: list[Element] = [e for e in pool if isinstance(e, Obstacle) and in_sight(analysis, pose.xy, e)]
+        seen: list[Element] = []
+        # nearest first; when only the nearest ones can be meant, the farther ones need no look
+        wanted = ((ref.ordinal or 1) + count - 1 if ref.superlative in (None, Superlative.NEAREST)
+                  else len(pool))
+        for e in sorted(pool, key=lambda e: distance_to(e, pose.xy)):
+            if len(seen) >= wanted:
+                break
+            if isinstance(e, Obstacle) and in_sight(analysis, pose.xy, e):
+                seen.append(e)
         if not seen and pool:
             raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]}{_where(ref)} from here: the nearest such "
                                  "thing is behind a wall. Which one do you mean?")
