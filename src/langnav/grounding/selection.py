@@ -285,8 +285,8 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
 
 def round_a_thing(analysis: MapAnalysis) -> list[Door]:
     """The ways between two spaces that a thing standing free between them leaves round its ends: all
-    the openings, narrow gaps and doors joining two spaces that are joined by at least one wide
-    opening (wider than a door, no door in it) and one more way, or by two doorways with a thick
+    the openings, narrow gaps and doors joining two spaces that are joined by at least one of the
+    analysis's openings (an open way in a wall line, no door in it) and one more way, or by two doorways with a thick
     block standing free between them (``_block_between``). A wall has doors in it; an open way and a
     second way between the same two spaces, or two ways round a counter, are the two ends of a long
     table, a desk block, a shelf block or a counter, which a person walks round within one room, not
