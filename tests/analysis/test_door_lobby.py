@@ -6,10 +6,13 @@ alike that is no door, a narrow way running on for a corridor's length, stays a 
 
 from __future__ import annotations
 
+import math
+
 import pytest
 from analysis_maps import POS_TOL_M, door_near, space_at
 
 from langnav.analysis.segmentation import segment_spaces
+from langnav.eval.transforms import PointsAnnotation, map_centre, rotate, rotate_point
 from langnav.maps.draw import MapBuilder
 from langnav.maps.grid import OccupancyGrid
 
@@ -64,3 +67,18 @@ def test_a_narrow_way_a_corridor_long_is_no_door() -> None:
     far_room = space_at(seg, grid, 9.5, 7.0)
     assert not [d for d in seg.doors if far_room.id in d.connects]
     assert all(abs(d.center[0] - WAY_XY[0]) > 1.0 for d in seg.doors)
+
+
+@pytest.mark.parametrize("angle_deg", [17.0, 33.0])
+def test_the_lobby_door_is_found_whatever_the_maps_rotation(angle_deg: float) -> None:
+    """Turned about the map's centre (a slam_toolbox map's frame is at any angle to the
+    building): still the one door between the corridor and the room, at the corridor's wall."""
+    grid0 = rooms_off_corridor()
+    grid, _ = rotate(grid0, PointsAnnotation(), angle_deg)
+    turn = math.radians(angle_deg)
+    seg = segment_spaces(grid)
+    corridor = space_at(seg, grid, *rotate_point((2.0, 1.5), map_centre(grid0), turn))
+    room = space_at(seg, grid, *rotate_point((3.0, 6.0), map_centre(grid0), turn))
+    door = door_near(seg.doors, *rotate_point(LOBBY_DOOR_XY, map_centre(grid0), turn), tol=2 * POS_TOL_M)
+    assert set(door.connects) == {corridor.id, room.id}
+    assert [d for d in seg.doors if room.id in d.connects] == [door]
