@@ -24,6 +24,7 @@ from langnav.analysis.precompute import (
     cov2,
     dilate4,
     dilate8,
+    dilate_box,
     disc,
     edt_scaled,
     far_from_outside,
@@ -104,6 +105,14 @@ def test_grow_by_disc_is_a_binary_dilation_by_the_disc(m: npt.NDArray[np.bool_],
     full = np.arange(-reach, reach + 1)
     disc = full[:, None] ** 2 + full[None, :] ** 2 <= r2
     assert np.array_equal(grow_by_disc(m, near), ndi.binary_dilation(m, structure=disc))
+
+
+@settings(max_examples=200, deadline=None)
+@given(masks(), st.integers(1, 70))
+def test_dilate_box_is_the_maximum_filter(m: npt.NDArray[np.bool_], size: int) -> None:
+    got = dilate_box(m, size)
+    assert got.dtype == np.bool_ and np.array_equal(got, ndi.maximum_filter(m, size=size))
+    assert np.array_equal(got, ndi.maximum_filter(m, size=size, mode="constant", cval=False))
 
 
 @settings(max_examples=150, deadline=None)

@@ -209,25 +209,27 @@ def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np
             outside: bool) -> BoolArray:
     """``mask`` at continuous (row, col) positions in cell-corner coordinates (cell i spans
     [i, i + 1)); ``outside`` where they leave the grid."""
-    h, w = mask.shape[0], mask.shape[1]
-    if rows.size and rows.min() >= 0 and rows.max() < h and cols.min() >= 0 and cols.max() < w:
-        # Every position on the grid (a candidate away from the map's edge): no clamping, and
-        # truncation is the floor of a non-negative position.
-        return np.asarray(take2(mask, rows.astype(np.intp), cols.astype(np.intp)), dtype=bool)
     r, c, inside = _cells(mask.shape, rows, cols)
     got = np.asarray(take2(mask, r, c), dtype=bool)
+    if inside is None:
+        return got
     return got | ~inside if outside else got & inside
 
 
 def _cells(shape: tuple[int, ...], rows: npt.NDArray[np.float64], cols: npt.NDArray[np.float64]
-           ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64], BoolArray]:
+           ) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]:
     """The cells :func:`_sample` reads at (row, col) positions, clamped onto a grid of ``shape``,
-    and whether each position is on the grid (several masks are read at the same positions)."""
-    r = np.floor(rows).astype(np.int64)
-    c = np.floor(cols).astype(np.int64)
+    and whether each position is on the grid (None: all are; several masks are read at the same
+    positions)."""
     h, w = shape[0], shape[1]
+    if rows.size and rows.min() >= 0 and rows.max() < h and cols.min() >= 0 and cols.max() < w:
+        # Every position on the grid (a candidate away from the map's edge): no clamping, and
+        # truncation is the floor of a non-negative position.
+        return rows.astype(np.intp), cols.astype(np.intp), None
+    r = np.floor(rows).astype(np.intp)
+    c = np.floor(cols).astype(np.intp)
     # On the grid: 0 <= r < h and 0 <= c < w (a negative index read unsigned is past the end).
-    inside = (r.view(np.uint64) < h) & (c.view(np.uint64) < w)
+    inside = (r.view(np.uintp) < h) & (c.view(np.uintp) < w)
     # Read every sample (clamped onto the grid), then set those off it: no masked indexing.
     # (np.maximum / np.minimum: np.clip's checks of its bounds cost more than clamping small arrays.)
     np.maximum(r, 0, out=r)
@@ -663,7 +665,9 @@ def floor_beyond(free: BoolArray, far_from_unknown: BoolArray, center_rc: tuple[
     rows = center_rc[0] + side * t[:, None] * nr + sv[None, :] * tr
     cols = center_rc[1] + side * t[:, None] * nc + sv[None, :] * tc
     r, c, inside = _cells(free.shape, rows, cols)
-    f = np.asarray(take2(free, r, c), dtype=bool) & inside
+    f = np.asarray(take2(free, r, c), dtype=bool)
+    if inside is not None:
+        f &= inside
     if not f.any():
         return 0.0
     return float(np.asarray(take2(far_from_unknown, r, c), dtype=bool)[f].mean())

@@ -10,7 +10,8 @@ The stand-ins give *exactly* what the numpy / scipy call they replace gives (pro
 ``tests/analysis/test_precompute.py``), several times faster on large maps:
 
 - :func:`dilate8`, :func:`dilate4`: ``ndi.binary_dilation`` with a 3x3 / cross structure;
-- :func:`maximum3`: ``ndi.maximum_filter(a, size=3)``;
+- :func:`maximum3`: ``ndi.maximum_filter(a, size=3)``; :func:`dilate_box`: the same of a mask
+  with any size;
 - :func:`nonzero2`: ``np.nonzero`` of a 2-D array;
 - :func:`label8_cells`: ``ndi.label(..., EIGHT)`` of a sparse set of cells (a skeleton);
 - :func:`component_boxes`: ``ndi.find_objects`` for chosen components, from their cells;
@@ -81,6 +82,33 @@ def dilate4(mask: BoolArray) -> BoolArray:
     out[:, 1:] |= m[:, :-1]
     out[:, :-1] |= m[:, 1:]
     return out
+
+
+def dilate_box(mask: BoolArray, size: int) -> BoolArray:
+    """``ndi.maximum_filter(mask, size=size)`` for a 2-D boolean mask (its default "reflect"
+    edges, or "constant" ones with ``cval=False``: the same result, as the cells mirrored in
+    from beyond the edge lie in the window already), several times faster: along each axis the
+    OR of each window (cells i - size // 2 to i + (size - 1) // 2, as scipy places an even
+    window) is the OR of two runs of the largest power of two within it, and those runs are
+    made by doubling (a few shifted ORs) instead of scipy's pass over every window."""
+    m = np.asarray(mask, dtype=bool)
+    if size <= 1:
+        return m.copy()
+    lo = size // 2
+    p = 1 << (size.bit_length() - 1)  # the largest power of two <= size
+    out = m
+    for axis in (0, 1):
+        x = np.moveaxis(out, axis, 0)
+        n = x.shape[0]
+        # The cells beyond the edges as False, so that every window lies inside.
+        run = np.zeros((n + size - 1, *x.shape[1:]), dtype=bool)
+        run[lo:lo + n] = x
+        k = 1
+        while k < p:  # run[j]: the OR of the k cells from j on
+            run[:-k] |= run[k:]
+            k *= 2
+        out = np.moveaxis(run[:n] | run[size - p:size - p + n], 0, axis)
+    return np.ascontiguousarray(out)
 
 
 def maximum3(a: npt.NDArray[_S]) -> npt.NDArray[_S]:

@@ -43,7 +43,14 @@ from scipy import ndimage as ndi
 from skimage.segmentation import watershed
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import Components, GridLayers, dilate8, edt_scaled, maximum3
+from langnav.analysis.precompute import (
+    Components,
+    GridLayers,
+    dilate8,
+    dilate_box,
+    edt_scaled,
+    maximum3,
+)
 from langnav.analysis.wall_lines import WallDirections, dominant_directions
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN
 
@@ -166,8 +173,7 @@ def _furniture(floor: BoolArray, resolution_m: float, params: AnalysisParams,
     if not solid.any():
         return none, none, None
     # The non-floor grown by join_cells (a square): the cells within that chessboard distance.
-    grouped = dilate8(solid) if join_cells == 1 else \
-        ndi.maximum_filter(solid, size=2 * join_cells + 1, mode="constant", cval=False)
+    grouped = dilate8(solid) if join_cells == 1 else dilate_box(solid, 2 * join_cells + 1)
     comp, n = ndi.label(grouped, structure=EIGHT)
     if n == 0:
         return none, none, None
