@@ -1,23 +1,24 @@
 """Narrow passages: tight ways through between two free areas that are not doors.
 
-On the skeleton of the navigable space, the clear width at a skeleton cell is twice its distance
-to the nearest blocking cell (occupied, or unknown beyond a noise speck; isolated occupied scan
-specks do not block). Skeleton cells whose width is between the robot's diameter and
+On the skeleton of the navigable space, the clear width at a skeleton cell is twice its distance to
+the nearest blocking cell (occupied, or unknown beyond a noise speck; isolated occupied scan specks
+do not block). Skeleton cells whose width is between the robot's diameter and
 ``params.passage_max_width_m`` form candidate chains. A chain's *core* is where the width stays
 close to its typical width (the stretch over which the way stays tight, between two near-parallel
-sides, without the flaring mouths; one pinch point does not shorten it). A core is a passage when
-it is longer than a doorway could be deep in this building (``params.door_max_depth_m`` and
+sides, without the flaring mouths; one pinch point does not shorten it, nor, on coarse cells, a jog
+of its middle line where a side's outline steps a cell, ``JOG_WIDTH_CELLS``). A core is a passage
+when it is longer than a doorway could be deep in this building (``params.door_max_depth_m`` and
 ``WALL_LENGTHS`` of its typical wall thickness, :func:`typical_wall_thickness_m`; up to
 ``params.passage_min_length_m``), wide enough for the robot with a margin
 (``PASSAGE_MIN_MARGIN_M``: 0.1 m a side, across its axis and by the distance to its sides), has
 sides along most of its length (or a wall along one side and a single doorway in the other: a
 passage with a door off it), solid ones (walls, furniture, a shelf's unscanned inside: not
 laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
-unexplored area), leads somewhere (both mouths open into free space wider than any passage, or,
-for an aisle, into another narrow way that reaches such space within ``MOUTH_LEADS_ON_M``: a
-dead-end slot does not), is not a door's own gap (a door across its middle; a door at one of its
-mouths is how it is entered; a door found in a squeeze between two things with parallel faces,
-deeper than any wall, is no door), and is
+unexplored area), leads somewhere (both mouths open into free space wider than any passage, or, for
+an aisle, into another narrow way that reaches such space within ``MOUTH_LEADS_ON_M``: a dead-end
+slot does not), is not a door's own gap (a door across its middle; a door at one of its mouths is
+how it is entered; a door found in a squeeze between two things with parallel faces, deeper than
+any wall, or across an aisle as long as a corridor between two such things, is no door), and is
 
 * clearly longer than wide (``PASSAGE_MIN_ELONGATION``: an aisle, a checkout lane, a corridor),
   except a strip between a wall and a thing one can walk round (a pallet), which is one only when

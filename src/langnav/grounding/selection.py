@@ -20,6 +20,7 @@ from __future__ import annotations
 import itertools
 import math
 import re
+import weakref
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Final
@@ -284,10 +285,25 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
 
 def round_a_thing(analysis: MapAnalysis) -> list[Door]:
     """The ways between two spaces that a thing standing free between them leaves round its ends: all
-    the openings, narrow gaps and doors joining two spaces that are joined by at least one wide
-    opening (wider than a door, no door in it) and one more way. A wall has doors in it; an open way
-    and a second way between the same two spaces are the two ends of a long table, a desk block or a
-    shelf block, which a person walks round within one room, not a wall between two rooms."""
+    the openings, narrow gaps and doors joining two spaces that are joined by at least one of the
+    analysis's openings (an open way in a wall line, no door in it) and one more way, or by two doorways with a thick
+    block standing free between them (``_block_between``). A wall has doors in it; an open way and a
+    second way between the same two spaces, or two ways round a counter, are the two ends of a long
+    table, a desk block, a shelf block or a counter, which a person walks round within one room, not
+    a wall between two rooms. Found
+    once per analysis (the analysis is immutable; the blocks are looked at in the grid)."""
+    known = _ROUND_A_THING.get(analysis)
+    if known is None:
+        known = _round_a_thing(analysis)
+        _ROUND_A_THING[analysis] = known
+    return list(known)
+
+
+#: round_a_thing's answer for each analysis still in use (a memo, dropped with the analysis).
+_ROUND_A_THING: weakref.WeakKeyDictionary[MapAnalysis, tuple[Door, ...]] = weakref.WeakKeyDictionary()
+
+
+def _round_a_thing(analysis: MapAnalysis) -> tuple[Door, ...]:
     links: list[Door] = [*analysis.openings, *analysis.doors]
     spaces = {r.id for r in analysis.rooms}
     pairs: dict[frozenset[str], list[Door]] = {}
@@ -296,9 +312,9 @@ def round_a_thing(analysis: MapAnalysis) -> list[Door]:
         if len(set(o.connects)) == 2 and set(o.connects) <= spaces:
             pairs.setdefault(frozenset(o.connects), []).append(o)
     wide = {id(o) for o in analysis.openings}
-    return [o for ways in pairs.values() if len(ways) >= 2 and (
+    return tuple(o for ways in pairs.values() if len(ways) >= 2 and (
         any(id(w) in wide for w in ways) or any(_block_between(analysis, a, b) for a, b in itertools.combinations(ways, 2)))
-        for o in ways]
+        for o in ways)
 
 
 def _block_between(analysis: MapAnalysis, a: Door, b: Door) -> bool:
