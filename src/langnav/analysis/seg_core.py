@@ -46,6 +46,7 @@ from langnav.analysis.params import AnalysisParams
 from langnav.analysis.precompute import (
     Components,
     GridLayers,
+    border_labels,
     dilate8,
     dilate_box,
     edt_scaled,
@@ -110,8 +111,7 @@ def _small_components(mask: BoolArray, max_cells: float, *, exclude_border: bool
     keep = sizes <= max_cells
     keep[0] = False
     if exclude_border:
-        border = np.unique(np.concatenate([lab[0], lab[-1], lab[:, 0], lab[:, -1]]))
-        keep[border] = False
+        keep[border_labels(lab)] = False
     return keep[lab]
 
 
@@ -180,8 +180,7 @@ def _furniture(floor: BoolArray, resolution_m: float, params: AnalysisParams,
     area = np.bincount(comp[solid], minlength=n + 1) * cell_area
     small = area <= params.seg_island_max_area_m2
     small[0] = False
-    border = np.unique(np.concatenate([comp[0], comp[-1], comp[:, 0], comp[:, -1]]))
-    small[border] = False
+    small[border_labels(comp)] = False
     # Thin, long pieces are wall stubs (between two doorways), not furniture.
     objs = ndi.find_objects(comp)
     min_cells = params.seg_wall_min_length_m / resolution_m

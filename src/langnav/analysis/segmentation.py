@@ -36,6 +36,7 @@ from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
 from langnav.analysis.precompute import (
     GridLayers,
     approximate_polygons,
+    border_labels,
     dilate8,
     dilate_box,
     edt_scaled,
@@ -363,7 +364,7 @@ def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor, grid: Occ
     lab, n = ndi.label(ext)
     if n == 0:
         return labels, ext
-    border = np.unique(np.concatenate([lab[0], lab[-1], lab[:, 0], lab[:, -1]]))
+    border = border_labels(lab)
     ring = dilate8(ext) & ~ext
     rr, cc = nonzero2(ring)
     # Which unknown region each ring cell touches (the largest label among its 8 neighbours).

@@ -43,7 +43,7 @@ import numpy.typing as npt
 from scipy import ndimage as ndi
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import take2
+from langnav.analysis.precompute import EIGHT, take2
 
 BoolArray = npt.NDArray[np.bool_]
 FloatArray = npt.NDArray[np.float64]
@@ -713,7 +713,7 @@ def _gap_candidates(key: IntArray, line: IntArray, pos: IntArray, span: int, sid
 def _not_specks(wall: BoolArray, min_cells: float) -> BoolArray:
     """The cells of ``wall`` in 8-connected pieces whose bounding box reaches at least
     ``min_cells`` along its longer side."""
-    lab, n = ndi.label(wall, structure=np.ones((3, 3), dtype=bool))
+    lab, n = ndi.label(wall, structure=EIGHT)
     if n == 0:
         return np.zeros_like(wall)
     big = np.zeros(n + 1, dtype=bool)
