@@ -57,6 +57,9 @@ def _plan(prompt: str) -> Plan:
     ("turn right innit", [("rotate", "right", None, None, "default")]),
     ("go forward a little eh", [("move", "forward", None, None, "little")]),
     ("turn around real quick, dude", [("rotate", "around", None, 180.0, None)]),
+    # a first syllable dropped in writing, as said
+    ("spin 'round", [("rotate", "around", None, 180.0, None)]),
+    ("'bout face", [("rotate", "around", None, 180.0, None)]),
 ])
 def test_words_of_varieties_and_settings(prompt: str, expected: Plan) -> None:
     assert _plan(prompt) == expected
