@@ -34,6 +34,11 @@ def _plan(prompt: str) -> list[tuple[str, str | None, float | None, float | None
     ("go forward two metres, damn it, go back one metre", [("move", "backward", 1.0, None)]),
     ("turn left twenty degrees, whoops, thirty", [("rotate", "left", None, 30.0)]),
     ("turn left, eish, right", [("rotate", "right", None, None)]),
+    # an oath the reading does not know is no instruction between them either
+    ("turn left, oh blimey, right, sixty", [("rotate", "right", None, 60.0)]),
+    ("turn right, heck, turn left", [("rotate", "left", None, None)]),
+    # a stop said between them is no pause ("turn right, stop, turn left" is read by drop_stopped)
+    ("turn right ninety, no hang on, sixty", [("rotate", "right", None, 60.0)]),
 ])
 def test_the_last_version_counts(prompt: str, expected: list[tuple[str, str | None, float | None, float | None]]) -> None:
     assert _plan(prompt) == expected
@@ -43,6 +48,8 @@ def test_the_last_version_counts(prompt: str, expected: list[tuple[str, str | No
     # a word that puts them in order: both turns are meant (a look around)
     ("turn left, then turn right", [("rotate", "left", None, None), ("rotate", "right", None, None)]),
     ("turn left and turn right", [("rotate", "left", None, None), ("rotate", "right", None, None)]),
+    # something else said between them: both are meant
+    ("turn left, take a picture, turn right", [("rotate", "left", None, None), ("rotate", "right", None, None)]),
     # a turn with its amount said is no false start
     ("turn right forty, turn left", [("rotate", "right", None, 40.0), ("rotate", "left", None, None)]),
     # an exclamation with nothing before it corrects nothing
@@ -53,7 +60,7 @@ def test_ordered_or_complete_turns_are_all_kept(
     assert _plan(prompt) == expected
 
 
-_PAUSES = [", ", ", uh, ", ", um, ", ", aiya, ", ", argh, ", ", oh no, ", ", ugh, ", " ... "]
+_PAUSES = [", ", ", uh, ", ", um, ", ", aiya, ", ", argh, ", ", oh no, ", ", ugh, ", " ... ", ", oh bugger, ", ", jeez, "]
 
 
 @given(st.lists(st.sampled_from(sorted(_SIDES)), min_size=1, max_size=5),

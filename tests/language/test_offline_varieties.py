@@ -52,6 +52,14 @@ def _plan(prompt: str) -> Plan:
     ("scooch forward a skosh", [("move", "forward", None, None, "little")]),
     ("drop back one metre", [("move", "backward", 1.0, None, None)]),
     ("10-4, turn right", [("rotate", "right", None, None, "default")]),
+    # greetings, addresses and tags at the edges of an instruction; how fast it is said to go
+    ("yo, back up one metre", [("move", "backward", 1.0, None, None)]),
+    ("turn right innit", [("rotate", "right", None, None, "default")]),
+    ("go forward a little eh", [("move", "forward", None, None, "little")]),
+    ("turn around real quick, dude", [("rotate", "around", None, 180.0, None)]),
+    # a first syllable dropped in writing, as said
+    ("spin 'round", [("rotate", "around", None, 180.0, None)]),
+    ("'bout face", [("rotate", "around", None, 180.0, None)]),
 ])
 def test_words_of_varieties_and_settings(prompt: str, expected: Plan) -> None:
     assert _plan(prompt) == expected
@@ -62,6 +70,7 @@ def test_words_of_varieties_and_settings(prompt: str, expected: Plan) -> None:
     "go up two rows",                # a row is no unit the robot knows
     "right then, turn",              # the opener is no side: which way?
     "turn, forward",                 # nothing says how far or which way
+    "turn left blah",                # an unknown word next to a default turn: never a guess
 ])
 def test_what_they_leave_unsaid_is_asked(prompt: str) -> None:
     intent = translate_offline(prompt)

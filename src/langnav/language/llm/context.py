@@ -196,7 +196,9 @@ orders: "right face" / "left, face" -> rotate 90 that way; "right face, forward 
 the move. "go up / down the row / aisle / lane" (a line of the speaker's setting) -> move forward, how far \
 said or asked. "give it a little turn to the left" -> rotate left, little; "scooch up a skosh" -> move forward \
 a little; "drop back three feet" -> move backward; "go on ahead there two metres" ("there" points at \
-nothing) -> move forward 2; "ten-four" = roger; "lovely," / "brilliant," before a request is praise.
+nothing) -> move forward 2; "ten-four" = roger; "lovely," / "brilliant," before a request is praise; \
+greetings and tags at the edges ("yo", "oi", "bro", "innit", "eh", "ya", "mate") and how fast ("real quick") \
+mean nothing; "turn 'round" / "'bout face" -> turn around.
 - Talk not meant for the robot gives no steps: notes and remarks before "okay" / "noted" / "robot," ("water \
 line about eighteen inches on this wall, okay, go forward three feet" -> only the move), statements about \
 others ("..., she's asking about the robot"), a person named and what is said to them ("no, jack, sit \

@@ -484,6 +484,14 @@ FILLER_PATTERNS: Final = (
     r"\bfrom\s+(?:here|there|where\s+you\s+are(?:\s+now)?)\b", r"\bstarting\s+from\s+here\b",
     # a name for the robot said in passing ("turn around, silly")
     r"\b(?:you\s+)?(?:silly|sweetie|dummy|little\s+guy|little\s+buddy)(?:\s+(?:robot|thing|billy))?\s*$",
+    # a greeting or address opening the instruction ("yo turn left", "oi, stop", "bro go forward 3 feet") and a
+    # tag or address closing it ("turn left innit", "turn right ya", "back up a bit eh", "go on, man"): they
+    # address the listener or ask agreement, never a way, an amount or a place (only at the edges, where they
+    # cannot be part of the instruction)
+    r"^\s*(?:yo|ay|ey|oi|oy|bro|dude|fam|boss|chief|guv|mate)\b(?!\s*(?:'s|is|are)\b)",
+    r"\b(?:innit|init|eh|ya|yah|yeah|yep|bro|dude|fam|man|boss|chief|guv|mate|hey|aye)\s*[?!.]*\s*$",
+    # how fast, said of the motion ("real quick", "nice and quick"): the robot keeps its safe speed
+    r"\b(?:real|really|very|nice\s+and|super)\s+(?:quick|quickly|fast|slow|slowly)\b",
 )
 
 #: Phrases that mention walls or obstacles only to avoid them: removed before the safety check.

@@ -31,6 +31,7 @@ from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import NUMBER, Quantity, QuantityKind, find_quantities
 from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE
 from langnav.language.offline.reading import ASK_SIDE, Reading
+from langnav.language.offline.vocabulary import VOCABULARY
 
 #: Words that give a turn its side.
 _TURN_SIDE_RE: Final = re.compile(r"\b(?:left|right|clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw)\b")
@@ -243,18 +244,23 @@ def _spans(text: str, clauses: list[str]) -> list[tuple[int, int] | None]:
     cursor = 0
     spans: list[tuple[int, int] | None] = []
     for clause in clauses:
-        start = lowered.find(clause.lower(), cursor)
-        if start < 0:
+        # the clause's words with any pauses between them ("right sixty" was said "right, sixty")
+        words = re.findall(r"[^\s,.;!?]+", clause.lower())
+        found = re.compile(r"[\s,.;!?]+".join(map(re.escape, words))).search(lowered, cursor) if words else None
+        if found is None:
             spans.append(None)
             continue
-        cursor = start + len(clause)
-        spans.append((start, cursor))
+        cursor = found.end()
+        spans.append((found.start(), cursor))
     return spans
 
 
 def _only_pauses(between: str) -> bool:
-    """Nothing but pauses, fillers and exclamations (see _PAUSE_WORDS)."""
-    return all(w in _PAUSE_WORDS for w in re.findall(r"[a-z']+", DISMAY_RE.sub(" ", between.lower())))
+    """Nothing but pauses, fillers and exclamations (see _PAUSE_WORDS), or words the reading does not know at
+    all ("turn left, oh bugger, right"; "turn right, jeez, turn left"): an oath or a name, which asks for no
+    motion of its own (a word that orders, "then", or an instruction, "take a picture", is known)."""
+    words = re.findall(r"[a-z']+", DISMAY_RE.sub(" ", between.lower()))
+    return all(w in _PAUSE_WORDS or w not in VOCABULARY for w in words)
 
 
 def drop_false_start_turns(clauses: list[str], text: str, read: ClauseReader) -> list[str]:
@@ -265,11 +271,19 @@ def drop_false_start_turns(clauses: list[str], text: str, read: ClauseReader) ->
     for i, clause in enumerate(clauses):
         turn = _only_turn(read(clause))
         if turn is not None and turn.direction in _SIDES and not _facing(turn) and not _ONCE_MORE_RE.search(clause):
-            while kept and (first := _bare_side_turn(read(clauses[kept[-1]]))) is not None \
-                    and first.direction != turn.direction and _taken_back(text, spans, kept[-1], i):
-                kept.pop()  # "turn right, turn left, ...": the turn started and taken back at once
+            while kept:
+                said = [k for k in kept if not _interjection(clauses[k], read)]  # "oh bugger": no instruction
+                first = _bare_side_turn(read(clauses[said[-1]])) if said else None
+                if first is None or first.direction == turn.direction or not _taken_back(text, spans, said[-1], i):
+                    break
+                del kept[kept.index(said[-1]):]  # "turn right, turn left, ...": the turn started and taken back at once
         kept.append(i)
     return [clauses[i] for i in kept]
+
+
+def _interjection(clause: str, read: ClauseReader) -> bool:
+    """A clause of pauses, exclamations or words the reading does not know, that it reads as nothing."""
+    return not read(clause).steps and _only_pauses(clause)
 
 
 def _taken_back(text: str, spans: list[tuple[int, int] | None], first: int, second: int) -> bool:

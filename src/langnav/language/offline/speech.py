@@ -62,6 +62,13 @@ PIDGIN: Final = (
     (re.compile(r"\s+make\s+(?P<who>you|u)\s+(?=(?:face|see|look|dey|fit|no|reach)\b)", re.IGNORECASE),
      r", so that \g<who> "),
 )
+#: Words written with their first syllable dropped, as said ("turn 'round", "'bout face", "go 'til the wall"):
+#: the whole word.
+ELIDED: Final = (
+    (re.compile(r"(?<![\w'])'(?P<w>round|bout|til|till|cause|em)\b", re.IGNORECASE),
+     lambda m: {"round": "around", "bout": "about", "til": "until", "till": "until", "cause": "because",
+                "em": "them"}[m.group("w").lower()]),
+)
 #: A stammered word: its first sound said and said again before the whole word ("g-g-go", "b-b-back", "t-turn"):
 #: the word.
 STAMMER: Final = re.compile(r"\b(?P<s>[a-z]{1,3})(?:-(?P=s))*-(?P<w>(?P=s)[a-z]+)\b", re.IGNORECASE)
@@ -367,6 +374,8 @@ def plain_speech(prompt: str) -> str:
     """``prompt`` with hesitations, hedges, cut-off words, stutters and noise tokens removed, a comma
     before each self-correction marker, the words speech recognition mistook put right, and polite
     frames and side remarks taken out."""
+    for pattern, spelled in ELIDED:
+        prompt = pattern.sub(spelled, prompt)
     text = without_discourse_markers(without_side_talk(STAMMER.sub(r"\g<w>", prompt)))
     text = REPORTED.sub(" ", text)
     for pattern, repl in PIDGIN:
