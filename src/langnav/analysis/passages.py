@@ -81,7 +81,9 @@ CORE_WIDTH_TOL_M: Final = 0.15
 #: across it.
 JOG_WIDTH_CELLS: Final = 2.0
 JOG_MAX_CELLS: Final = 4
-#: ... when the stretches on either side of it run in line: their axes within this (degrees).
+#: ... when the stretches on either side of it run in line: their axes within this (degrees). A
+#: cell's step sideways over a few cells turns a line's direction by at most atan(1/3) ~ 18 deg; a
+#: way that really bends (an aisle turning a corner) turns by far more.
 JOG_MAX_TURN_DEG: Final = 20.0
 #: A passage has sides: at this share of its core, blocking cells lie close on both sides (a
 #: strip along a wall whose other side is a row of separate objects is not a passage).

@@ -83,7 +83,9 @@ NEAR_MAX_M: Final = 4.0
 #: robot reaches without crossing a wall. A line stops this short of the cell it looks at (the thing's own
 #: face and a cell of scan noise in front of it are not walls in the way).
 SIGHT_END_SLACK_M: Final = 0.15
-#: Cells of a thing tried for a line of sight, nearest first (its face towards the robot).
+#: Cells of a thing tried for a line of sight, nearest first (its face towards the robot). A cap for
+#: speed (each try walks a line over the grid): the nearest cells are the face the robot would see, so
+#: a thing whose nearest 24 cells are all hidden is taken as out of sight (the robot then asks).
 SIGHT_CELLS_TRIED: Final = 24
 
 #: A block this thick between two doorways is a piece of furniture (a counter, a desk block: 0.6-0.9 m
