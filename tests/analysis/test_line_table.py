@@ -1,4 +1,5 @@
-"""The coarse line-number table of wall_lines gives exactly the scores it stands in for."""
+"""The line-number tables of wall_lines (the coarse directions, and the refinements about a peak)
+give exactly the scores they stand in for."""
 
 from __future__ import annotations
 
@@ -28,6 +29,24 @@ def test_table_scores_match_line_scores(m: npt.NDArray[np.bool_], keep_one_in: i
                                        np.arange(0.0, 90.0, wall_lines.DIRECTION_BIN_DEG))
     got = wall_lines._coarse_scores(rr, cc)
     assert got.dtype == expected.dtype and np.array_equal(got, expected)
+
+
+@settings(max_examples=60, deadline=None)
+@given(SHAPES.flatmap(lambda s: arrays(np.bool_, s, elements=st.booleans())), st.integers(1, 12),
+       st.lists(st.integers(0, 89), min_size=1, max_size=2 * wall_lines.FINE_TABLES_KEPT))
+def test_fine_table_scores_match_line_scores(m: npt.NDArray[np.bool_], keep_one_in: int, peaks: list[int]) -> None:
+    # More peaks than tables are kept: tables are dropped and made again on the way.
+    m = m & (np.arange(m.size).reshape(m.shape) % keep_one_in == 0)
+    rr, cc = np.nonzero(m)
+    if rr.size < 2:
+        return
+    for p in peaks:
+        fine = np.arange(0.0, 90.0, wall_lines.DIRECTION_BIN_DEG)[p] + np.linspace(
+            -wall_lines.DIRECTION_BIN_DEG, wall_lines.DIRECTION_BIN_DEG, 21)
+        expected = wall_lines._line_scores(rr.astype(np.float64), -cc.astype(np.float64), fine)
+        got = wall_lines._fine_scores(p, rr, cc)
+        assert got.dtype == expected.dtype and np.array_equal(got, expected)
+    assert len(wall_lines._fine_tables) <= wall_lines.FINE_TABLES_KEPT
 
 
 def test_directions_of_a_rotated_room_match_with_and_without_the_table() -> None:

@@ -88,6 +88,21 @@ def test_aisles_of_a_rotated_warehouse_are_passages(degrees: float) -> None:
         assert p.length_m == pytest.approx(SHELF_X[1] - SHELF_X[0], abs=0.15)
 
 
+def test_an_aisle_on_coarse_cells_whose_side_steps_a_cell_is_found_whole() -> None:
+    """0.1 m cells (a large floor's map): a 4 m aisle, 0.8 m wide, between two shelf rows whose
+    scanned outlines are a cell off for their last metre (both a cell north). Its middle line
+    steps a cell sideways there, where the width read from whole cells jumps by 0.2 m: that is
+    no flaring mouth, and the aisle is one passage the length of the shelves."""
+    b = MapBuilder(11.0, 9.0, resolution_m=0.1, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 9.0, 7.0)
+    b.box(2.0, 1.4, 5.0, 2.0).box(5.0, 1.5, 6.0, 2.1)
+    b.box(2.0, 2.8, 5.0, 3.4).box(5.0, 2.9, 6.0, 3.5)
+    (p,) = passages_of(b.build(source="stepped_aisle_coarse"))
+    assert p.center == pytest.approx((4.0, 2.42), abs=0.06)
+    assert p.length_m == pytest.approx(4.0, abs=0.1)
+    assert p.width_m == pytest.approx(0.8, abs=0.051)
+
+
 def test_warehouse_end_to_end_aisles_are_passages_not_doors() -> None:
     a = analyze(warehouse(4))
     centres = sorted(p.center for p in a.narrow_passages)
@@ -778,3 +793,95 @@ def test_the_lanes_of_a_grid_of_bikes_are_no_passages(resolution_m: float) -> No
 
 def test_the_lanes_of_a_rotated_grid_of_bikes_are_no_passages() -> None:
     assert passages_of(rotated(bike_grid(), 23.0)) == ()
+
+
+def test_a_door_read_in_a_gap_between_two_deep_things_keeps_the_gap_a_passage() -> None:
+    """A 10 x 7 m lounge: a 2.6 x 0.8 m sofa and a 1.6 x 0.8 m block of armchairs stand end to
+    end in its middle (outlines scanned, insides unknown), 0.8 m apart; open floor leads round
+    both. A door read in that gap (the segmentation's, as on a real map) is no door: its sides
+    are things with parallel faces deeper than any wall, so the gap is judged as a squeeze (tight
+    for a person: a passage) and not as a doorway one could go round."""
+    b = MapBuilder(12.0, 9.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 10.0, 7.0)
+    b.box(2.0, 3.0, 4.6, 3.8).unknown(2.05, 3.05, 4.55, 3.75)
+    b.box(5.4, 3.0, 7.0, 3.8).unknown(5.45, 3.05, 6.95, 3.75)
+    grid = b.build(source="lounge_gap")
+    labels, n = labels_for_free_components(grid)
+    layers = GridLayers(grid)
+    door = Door(id="door_1", center=(5.0, 3.4), width_m=0.8, jambs=((4.6, 3.4), (5.4, 3.4)), normal=(0.0, 1.0),
+                connects=("space_1", "space_1"))
+    for doors in ([], [door]):
+        (p,) = find_passages(grid, P, labels, {k: f"space_{k}" for k in range(1, n + 1)}, doors,
+                             layers.occupied | layers.unknown, layers=layers)
+        assert p.center == pytest.approx((5.0, 3.4), abs=0.05)
+        assert p.width_m == pytest.approx(0.8, abs=0.051)
+        assert p.length_m == pytest.approx(0.8, abs=0.1)
+
+
+#: A 0.1 m map's locker room (a crop of a simulated-SLAM map, '#' occupied, '?' unknown, '.'
+#: free): an 0.85 m aisle between a row of wall lockers and a locker island, both scanned as
+#: outlines with unknown insides. Each side's outline steps a cell at a different place, so the
+#: aisle is a cell wider for a few cells, where its middle line jogs sideways.
+LOCKER_AISLE_0_1 = (
+    ".##................................................................................",
+    ".##................................................................................",
+    ".##................................................................................",
+    ".##..............##################################################................",
+    ".##..............#????????????????????#############################................",
+    ".##..............#????????????????????????????????????????????????#................",
+    ".##.............##????????????????????????????????????????????????#................",
+    ".##..............#????????????????????????????????????????????????#................",
+    ".##..............##################################################................",
+    ".##...............######??.#?#?#.###.##.##?#####...................................",
+    ".##................................................................................",
+    ".##................................................................................",
+    ".##................................................................................",
+    ".##................................................................................",
+    ".##................................................................................",
+    ".##................................................................................",
+    ".##................................................................................",
+    ".##.....................................................#?.################........",
+    ".##....######################################################################......",
+    ".##....?????????????????????????????????????????????????????????????????????#......",
+    ".##....?????????????????????????????????????????????????????????????????????#......",
+    ".##...??????????????????????????????????????????????????????????????????????#......",
+    ".##...??????????????????????????????????????????????????????????????????????#......",
+    ".#####?????????????????##?#?#?????????#?#?#??##?#####?#?#####??####################",
+    ".##################################################################################",
+    ".##................................................................................",
+    ".##................................................................................",
+    ".##................................................................................",
+)
+
+
+def test_an_aisle_whose_middle_line_jogs_on_coarse_cells_is_one_passage() -> None:
+    # The jog (the width read there 0.2 m over the aisle's) cut the aisle at 3.3 m, its centre
+    # off the lockers' middle; it is one 5 m passage (the island's length).
+    cells = np.array([[{"#": OCCUPIED, "?": UNKNOWN}.get(ch, 0) for ch in row] for row in LOCKER_AISLE_0_1],
+                     dtype=np.int8)
+    (p,) = passages_of(OccupancyGrid(cells, 0.1, source="locker_aisle_0.1"))
+    assert p.length_m == pytest.approx(5.0, abs=0.15)
+    assert p.width_m == pytest.approx(0.8, abs=0.051)
+    assert p.center == pytest.approx((4.2, 1.32), abs=0.1)
+
+
+def test_a_door_read_across_a_long_aisle_between_lockers_is_no_door() -> None:
+    """A 10 x 5 m locker room: wall lockers 0.5 m deep along its north wall (x 1 to 8) and a
+    0.6 m deep locker island (x 2 to 7) 0.85 m south of them, outlines scanned, insides unknown.
+    A door read across the aisle's middle (as on a turned map, where the stair-stepped faces
+    read as jambs) is no door: no wall stands between two things deeper than any wall along a
+    way as long as a corridor. The aisle is one passage, the island's length."""
+    b = MapBuilder(12.0, 7.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 10.0, 5.0)
+    b.box(1.0, 4.5, 8.0, 5.0).unknown(1.05, 4.55, 7.95, 4.95)
+    b.box(2.0, 3.05, 7.0, 3.65).unknown(2.05, 3.1, 6.95, 3.6)
+    grid = b.build(source="locker_room")
+    labels, n = labels_for_free_components(grid)
+    layers = GridLayers(grid)
+    door = Door(id="door_1", center=(4.5, 4.075), width_m=0.85, jambs=((4.5, 3.65), (4.5, 4.5)),
+                normal=(1.0, 0.0), connects=("space_1", "space_1"))
+    (p,) = find_passages(grid, P, labels, {k: f"space_{k}" for k in range(1, n + 1)}, [door],
+                         layers.occupied | layers.unknown, layers=layers)
+    assert p.center == pytest.approx((4.5, 4.075), abs=0.06)
+    assert p.width_m == pytest.approx(0.85, abs=0.051)
+    assert p.length_m == pytest.approx(5.0, abs=0.2)

@@ -24,6 +24,8 @@ from langnav.analysis.precompute import (
     cov2,
     dilate4,
     dilate8,
+    dilate_box,
+    disc,
     edt_scaled,
     far_from_outside,
     fill_holes,
@@ -103,6 +105,33 @@ def test_grow_by_disc_is_a_binary_dilation_by_the_disc(m: npt.NDArray[np.bool_],
     full = np.arange(-reach, reach + 1)
     disc = full[:, None] ** 2 + full[None, :] ** 2 <= r2
     assert np.array_equal(grow_by_disc(m, near), ndi.binary_dilation(m, structure=disc))
+
+
+@settings(max_examples=200, deadline=None)
+@given(masks(), st.integers(1, 70))
+def test_dilate_box_is_the_maximum_filter(m: npt.NDArray[np.bool_], size: int) -> None:
+    got = dilate_box(m, size)
+    assert got.dtype == np.bool_ and np.array_equal(got, ndi.maximum_filter(m, size=size))
+    assert np.array_equal(got, ndi.maximum_filter(m, size=size, mode="constant", cval=False))
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.floats(0.0, 25.0), st.sampled_from([0.025, 0.05, 0.1]))
+def test_disc_holds_the_offsets_within_its_radius(radius_m: float, res: float) -> None:
+    # A robot's body in cells of a map: radius in metres over the resolution, as the callers make it.
+    r = radius_m / 10.0 / res
+    near = disc(r)
+    top = near.shape[0] - 1
+    dy, dx = np.meshgrid(np.arange(top + 2), np.arange(top + 2), indexing="ij")
+    inside = dx * dx + dy * dy <= r * r + 1e-9
+    assert not inside[top + 1].any() and not inside[:, top + 1].any()  # the table holds the whole disc
+    assert np.array_equal(near, inside[:top + 1, :top + 1])
+
+
+def test_disc_of_a_robot_body() -> None:
+    # 0.2 m at 5 cm: four cells each way, the corner cells (3, 3) outside (18 > 16).
+    assert disc(0.2 / 0.05).astype(int).tolist() == [[1, 1, 1, 1, 1], [1, 1, 1, 1, 0], [1, 1, 1, 1, 0],
+                                                      [1, 1, 1, 0, 0], [1, 0, 0, 0, 0]]
 
 
 def test_truncated_sq_edt_known_values() -> None:

@@ -2,13 +2,24 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 
-from langnav.analysis.elements import MapAnalysis
+from langnav.analysis.elements import Door, MapAnalysis
 from langnav.grounding.errors import GroundingError
 from langnav.grounding.geometry import Pose
-from langnav.grounding.selection import describe_ref, select, select_wall, wall_lines
+from langnav.grounding.selection import (
+    describe_ref,
+    doors_of,
+    gap_joined,
+    round_a_thing,
+    select,
+    select_wall,
+    wall_lines,
+)
 from langnav.language.intent import Element, ElementRef, Side, Superlative
+from langnav.maps.draw import MapBuilder
 
 AT_A = Pose.from_deg(3.0, 2.0, 0.0)  # in room A, facing east (towards door_1)
 
@@ -99,3 +110,49 @@ def test_two_sides_narrow_to_a_quarter(two_rooms: MapAnalysis) -> None:
     assert select(ref(kind="door", side="behind", also_side="left"), two_rooms, in_b).id == "door_2"
     assert select(ref(kind="door", side="behind", also_side="right"), two_rooms, in_b).id == "door_1"
     assert describe_ref(ref(kind="door", side="behind", also_side="left")) == "the door behind you on your left"
+
+
+def test_a_thing_on_your_side_is_one_in_sight(two_rooms: MapAnalysis) -> None:
+    # from room A the box is ahead and in sight
+    assert select(ref(kind="obstacle", side="ahead"), two_rooms, Pose.from_deg(4.0, 5.3, 180.0)).id == "obstacle_1"
+    # from room B, with the wall between the doors in the way, "the obstacle ahead" is no thing it sees
+    with pytest.raises(GroundingError, match="from here"):
+        select(ref(kind="obstacle", side="ahead"), two_rooms, Pose.from_deg(8.0, 3.5, 180.0))
+    # seen through a door it is
+    assert select(ref(kind="obstacle", side="ahead"), two_rooms, Pose.from_deg(8.0, 5.0, 180.0)).id == "obstacle_1"
+
+
+def test_two_wide_openings_between_two_spaces_make_one_room(two_rooms: MapAnalysis) -> None:
+    d1, d2 = two_rooms.doors
+    both = replace(two_rooms, doors=(), openings=(d1, d2))
+    assert [r.id for r in gap_joined(both, both.rooms[0])] == ["room_a", "room_b"]
+    assert round_a_thing(both) == [d1, d2]
+    # a wide opening and a door between the same two spaces: the two ends of one thing, no door of a room
+    mixed = replace(two_rooms, doors=(d2,), openings=(d1,))
+    assert [r.id for r in gap_joined(mixed, mixed.rooms[0])] == ["room_a", "room_b"]
+    assert round_a_thing(mixed) == [d1, d2] and doors_of(mixed) == []
+    # one wide opening is a way between two rooms, as before; two doors are two doors
+    one = replace(two_rooms, doors=(), openings=(d1,))
+    assert [r.id for r in gap_joined(one, one.rooms[0])] == ["room_a"]
+    assert round_a_thing(one) == [] and round_a_thing(two_rooms) == []
+    assert doors_of(two_rooms) == [d1, d2]
+
+
+def test_a_thick_block_standing_free_between_two_doorways_is_a_thing(two_rooms: MapAnalysis) -> None:
+    # a counter 0.8 m deep standing free across the room, ways round both its ends: one room
+    b = MapBuilder(12.0, 8.0)
+    b.room(1.0, 1.0, 11.0, 7.0)
+    b.box(5.6, 2.2, 6.4, 5.8)
+    grid = b.build("counter")
+    ends = (Door("door_1", (6.0, 1.6), 1.1, ((6.0, 1.05), (6.0, 2.15)), (1.0, 0.0), ("room_a", "room_b")),
+            Door("door_2", (6.0, 6.4), 1.1, ((6.0, 5.85), (6.0, 6.95)), (1.0, 0.0), ("room_a", "room_b")))
+    counter = replace(two_rooms, grid=grid, doors=ends)
+    assert round_a_thing(counter) == list(ends) and doors_of(counter) == []
+    assert [r.id for r in gap_joined(counter, counter.rooms[0])] == ["room_a", "room_b"]
+    # the same line as a thin wall with two doors in it (the fixture): two doors of two rooms
+    b = MapBuilder(12.0, 8.0)
+    b.room(1.0, 1.0, 11.0, 7.0)
+    b.box(5.95, 2.2, 6.15, 5.8)
+    thin = replace(two_rooms, grid=b.build("thin"), doors=ends)
+    assert round_a_thing(thin) == [] and doors_of(thin) == list(ends)
+    assert round_a_thing(two_rooms) == []

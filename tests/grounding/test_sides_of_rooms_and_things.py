@@ -5,11 +5,13 @@ Room A is x 1-6, y 1-7 (free cells from about x 1.05 to 5.95); the box is x 2.0-
 
 from __future__ import annotations
 
+import math
+from dataclasses import replace
 from typing import Any
 
 from langnav.analysis.elements import MapAnalysis
 from langnav.grounding import ground
-from langnav.grounding.ground import OPPOSITE_WALL_STANDOFF_M
+from langnav.grounding.ground import MIDDLE_GOAL_MAX_M, OPPOSITE_WALL_STANDOFF_M
 from langnav.language.intent import Intent, Step
 
 
@@ -39,3 +41,19 @@ def test_next_to_a_box_is_beside_its_side_facing_the_robot(two_rooms: MapAnalysi
     # from the east, level with the box: its east side
     x, y = goal(two_rooms, (5.0, 5.3, 180.0), movement="navigate", detail="next_to", target={"kind": "obstacle"})
     assert 2.6 < x <= 3.3 and 5.0 + 0.2 <= y <= 5.6 - 0.2
+
+
+def test_the_middle_of_a_room_parted_by_a_thing_is_the_middle_of_the_whole(two_rooms: MapAnalysis) -> None:
+    # the wall between the doors read as a thing standing in one room (a wide opening and a way round it)
+    d1, d2 = two_rooms.doors
+    one_room = replace(two_rooms, doors=(d2,), openings=(d1,))
+    a, b = (len(r.cells_xy) for r in two_rooms.rooms)
+    cx = (a * two_rooms.rooms[0].centroid[0] + b * two_rooms.rooms[1].centroid[0]) / (a + b)
+    cy = (a * two_rooms.rooms[0].centroid[1] + b * two_rooms.rooms[1].centroid[1]) / (a + b)
+    x, y = goal(one_room, (3.0, 3.0, 0.0), movement="navigate", detail="middle",
+                target={"kind": "room", "in_current_room": True})
+    assert math.dist((x, y), (cx, cy)) <= MIDDLE_GOAL_MAX_M
+    # two rooms a wall with two doors parts: the middle of the robot's room
+    x, y = goal(two_rooms, (3.0, 3.0, 0.0), movement="navigate", detail="middle",
+                target={"kind": "room", "in_current_room": True})
+    assert math.dist((x, y), two_rooms.rooms[0].centroid) <= MIDDLE_GOAL_MAX_M

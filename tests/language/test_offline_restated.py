@@ -49,5 +49,7 @@ def test_an_instruction_said_again_with_its_amount_is_done_once(
 
 
 def test_a_bare_turn_then_another_side_is_kept() -> None:
-    assert [s.direction.value for s in translate_offline("turn left. turn right 30 degrees").steps
+    """_completes joins only a turn to the same side; with nothing between them but a pause, a bare turn and a
+    turn to the other side are a false start (test_offline_false_starts), so here the two are put in order."""
+    assert [s.direction.value for s in translate_offline("turn left. then turn right 30 degrees").steps
             if s.direction] == ["left", "right"]

@@ -312,15 +312,18 @@ def _window(grid: OccupancyGrid, params: AnalysisParams, point: tuple[float, flo
     # Clearance in a window grown by the clearance itself: exact up to that distance, which is
     # all the test needs (cells beyond the grid count as unknown).
     m = _approach_margin_cells(grid, params)
-    padded = np.zeros((r1 - r0 + 2 * m, c1 - c0 + 2 * m), dtype=bool)
     pr0, pc0 = max(0, r0 - m), max(0, c0 - m)
     pr1, pc1 = min(grid.height, r1 + m), min(grid.width, c1 + m)
-    padded[pr0 - (r0 - m):pr1 - (r0 - m), pc0 - (c0 - m):pc1 - (c0 - m)] = (grid.free if free is None else free)[pr0:pr1, pc0:pc1]
-    if clear_sq is not None and not padded.all():
+    seen = (grid.free if free is None else free)[pr0:pr1, pc0:pc1]
+    # The window grown by m is all free only when the grid's edge does not cut it.
+    all_free = (pr0, pc0, pr1, pc1) == (r0 - m, c0 - m, r1 + m, c1 + m) and bool(seen.all())
+    if clear_sq is not None and not all_free:
         # The same values up to m cells (what the tests below compare exactly), and above m
         # beyond that, as in the window (sqrt of integer squares: bit for bit the transform's).
         edt = np.sqrt(clear_sq[r0:r1, c0:c1].astype(np.float64))
     else:
+        padded = np.zeros((r1 - r0 + 2 * m, c1 - c0 + 2 * m), dtype=bool)
+        padded[pr0 - (r0 - m):pr1 - (r0 - m), pc0 - (c0 - m):pc1 - (c0 - m)] = seen
         edt = np.asarray(ndi.distance_transform_edt(padded), dtype=np.float64)[m:-m, m:-m]
     clear = np.maximum(edt * res - res / 2, 0.0)
     xs, ys = grid.cell_to_world(np.arange(r0, r1)[:, None], np.arange(c0, c1)[None, :])

@@ -74,6 +74,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Final
 
@@ -210,18 +211,25 @@ def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np
     [i, i + 1)); ``outside`` where they leave the grid."""
     r, c, inside = _cells(mask.shape, rows, cols)
     got = np.asarray(take2(mask, r, c), dtype=bool)
+    if inside is None:
+        return got
     return got | ~inside if outside else got & inside
 
 
 def _cells(shape: tuple[int, ...], rows: npt.NDArray[np.float64], cols: npt.NDArray[np.float64]
-           ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64], BoolArray]:
+           ) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]:
     """The cells :func:`_sample` reads at (row, col) positions, clamped onto a grid of ``shape``,
-    and whether each position is on the grid (several masks are read at the same positions)."""
-    r = np.floor(rows).astype(np.int64)
-    c = np.floor(cols).astype(np.int64)
+    and whether each position is on the grid (None: all are; several masks are read at the same
+    positions)."""
     h, w = shape[0], shape[1]
+    if rows.size and rows.min() >= 0 and rows.max() < h and cols.min() >= 0 and cols.max() < w:
+        # Every position on the grid (a candidate away from the map's edge): no clamping, and
+        # truncation is the floor of a non-negative position.
+        return rows.astype(np.intp), cols.astype(np.intp), None
+    r = np.floor(rows).astype(np.intp)
+    c = np.floor(cols).astype(np.intp)
     # On the grid: 0 <= r < h and 0 <= c < w (a negative index read unsigned is past the end).
-    inside = (r.view(np.uint64) < h) & (c.view(np.uint64) < w)
+    inside = (r.view(np.uintp) < h) & (c.view(np.uintp) < w)
     # Read every sample (clamped onto the grid), then set those off it: no masked indexing.
     # (np.maximum / np.minimum: np.clip's checks of its bounds cost more than clamping small arrays.)
     np.maximum(r, 0, out=r)
@@ -235,33 +243,74 @@ def free_widths(free: BoolArray, center_rc: tuple[float, float], normal_rc: tupl
                 resolution_m: float, look_m: float) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """Offsets t (m) along the normal through ``center_rc`` and, at each, the free width (m)
     along the tangent of the run of ``free`` cells through that point (0 where it is not free)."""
+    t_m, widths = free_widths_each(free, [center_rc], [normal_rc], resolution_m, look_m)
+    return t_m, widths[0]
+
+
+def free_widths_each(free: BoolArray, centers_rc: Sequence[tuple[float, float]],
+                     normals_rc: Sequence[tuple[float, float]], resolution_m: float, look_m: float
+                     ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+    """:func:`free_widths` of several candidates at once (one look ``look_m`` for all): the
+    offsets t (m) and, per candidate (a row each), the free width (m) at each of them."""
     k = math.ceil(look_m / resolution_m / _STEP_CELLS)
     t = np.arange(-k, k + 1) * _STEP_CELLS
     s_max = math.ceil(2.0 * look_m / resolution_m / _STEP_CELLS)
     s = np.arange(-s_max, s_max + 1) * _STEP_CELLS
+    rays = _Rays.of(centers_rc, normals_rc, t)
     # The run through s = 0: up to the first blocked sample on each side. Most runs end near the
     # line (in a wall's thickness); only the rows whose run leaves a first, narrow strip of
     # samples are sampled across the whole look.
     near = min(s_max, FIRST_LOOK_SAMPLES)
-    n_right, n_left, on = _runs_through_zero(free, center_rc, t, s[s_max - near:s_max + near + 1], normal_rc)
+    n_right, n_left, on = _runs_through_zero(free, rays, s[s_max - near:s_max + near + 1])
     # A half that ran through that strip runs on: it is looked along further, in stretches that
     # double, for its rows only (the samples a look across the whole width reads, up to the first
     # blocked one).
-    _run_on(free, center_rc, t, s[s_max:], normal_rc, n_right, n_left, near + 1)
+    _run_on(free, rays, s[s_max:], n_right, n_left, near + 1)
     width = np.where(on, (n_right + n_left - 1) * _STEP_CELLS * resolution_m, 0.0)
-    return np.asarray(t * resolution_m, dtype=np.float64), np.asarray(width, dtype=np.float64)
+    return (np.asarray(t * resolution_m, dtype=np.float64),
+            np.asarray(width, dtype=np.float64).reshape(len(centers_rc), t.size))
 
 
-def _run_on(free: BoolArray, center_rc: tuple[float, float], t: npt.NDArray[np.floating],
-            half: npt.NDArray[np.floating], normal_rc: tuple[float, float], n_right: npt.NDArray[np.int64],
+@dataclass(frozen=True)
+class _Rays:
+    """Lines across candidates, one per (candidate, offset t along its normal), candidates one
+    after the other: each line's candidate centre (row, col), its offset t (cells) and the
+    candidate's unit normal (row, col). A line's samples lie at ``centre + t * normal + s *
+    tangent`` (the tangent is the normal turned a right angle: (-normal col, normal row))."""
+
+    center_r: npt.NDArray[np.float64]
+    center_c: npt.NDArray[np.float64]
+    t: npt.NDArray[np.float64]
+    normal_r: npt.NDArray[np.float64]
+    normal_c: npt.NDArray[np.float64]
+
+    @staticmethod
+    def of(centers_rc: Sequence[tuple[float, float]], normals_rc: Sequence[tuple[float, float]],
+           t: npt.NDArray[np.floating]) -> _Rays:
+        c = np.asarray(centers_rc, dtype=np.float64).reshape(-1, 2)
+        n = np.asarray(normals_rc, dtype=np.float64).reshape(-1, 2)
+        k = t.size
+        return _Rays(np.repeat(c[:, 0], k), np.repeat(c[:, 1], k), np.tile(np.asarray(t, dtype=np.float64), len(c)),
+                     np.repeat(n[:, 0], k), np.repeat(n[:, 1], k))
+
+    def at(self, lines: npt.NDArray[np.intp] | slice, s: npt.NDArray[np.floating]
+           ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+        """The (row, col) positions of the samples at tangent offsets ``s`` (one row of offsets per
+        line, or one for all) on ``lines``."""
+        tt, nr, nc = self.t[lines], self.normal_r[lines], self.normal_c[lines]
+        # The tangent (tr, tc) = (-nc, nr); each position is (centre + t * normal) + s * tangent.
+        rows = self.center_r[lines][:, None] + (tt * nr)[:, None] + s * (-nc)[:, None]
+        cols = self.center_c[lines][:, None] + (tt * nc)[:, None] + s * nr[:, None]
+        return rows, cols
+
+
+def _run_on(free: BoolArray, rays: _Rays, half: npt.NDArray[np.floating], n_right: npt.NDArray[np.int64],
             n_left: npt.NDArray[np.int64], looked: int) -> None:
     """Carry on the free runs that reached ``looked`` samples along the tangent (``half``: its
     offsets from 0 outwards; the left half's are their negatives): ``n_right`` / ``n_left`` (per
-    offset ``t``) become the index of the first blocked sample, or the length of ``half`` when
+    line of ``rays``) become the index of the first blocked sample, or the length of ``half`` when
     there is none (as :func:`_runs_through_zero` counts over the whole of each half). Both halves
     are looked along together."""
-    nr, nc = normal_rc
-    tr, tc = -nc, nr
     right, left = np.flatnonzero(n_right >= looked), np.flatnonzero(n_left >= looked)
     rows_on = np.concatenate([right, left])
     sign = np.concatenate([np.ones(right.size), -np.ones(left.size)])
@@ -269,9 +318,7 @@ def _run_on(free: BoolArray, center_rc: tuple[float, float], t: npt.NDArray[np.f
     a = looked
     while rows_on.size and a < half.size:
         b = min(half.size, 2 * a)
-        tt, ss = t[rows_on], sign[:, None] * half[None, a:b]
-        rows = center_rc[0] + tt[:, None] * nr + ss * tr
-        cols = center_rc[1] + tt[:, None] * nc + ss * tc
+        rows, cols = rays.at(rows_on, sign[:, None] * half[None, a:b])
         ok = _sample(free, rows, cols, outside=False)
         through = ok.all(axis=1)
         got = np.where(through, b, a + np.argmin(ok, axis=1))
@@ -281,17 +328,12 @@ def _run_on(free: BoolArray, center_rc: tuple[float, float], t: npt.NDArray[np.f
         a = b
 
 
-def _runs_through_zero(free: BoolArray, center_rc: tuple[float, float], t: npt.NDArray[np.floating],
-                       s: npt.NDArray[np.floating], normal_rc: tuple[float, float]
+def _runs_through_zero(free: BoolArray, rays: _Rays, s: npt.NDArray[np.floating]
                        ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64], BoolArray]:
-    """For each offset ``t`` along the normal: the free samples from s = 0 (the middle of the
-    symmetric ``s``) on along the tangent and back (the free run's two halves, each counting
-    s = 0; a half that reaches the end of ``s`` counts one more than its samples), and whether
-    s = 0 is free."""
-    nr, nc = normal_rc
-    tr, tc = -nc, nr
-    rows = center_rc[0] + t[:, None] * nr + s[None, :] * tr
-    cols = center_rc[1] + t[:, None] * nc + s[None, :] * tc
+    """For each line of ``rays``: the free samples from s = 0 (the middle of the symmetric
+    ``s``) on along the tangent and back (the free run's two halves, each counting s = 0; a half
+    that reaches the end of ``s`` counts one more than its samples), and whether s = 0 is free."""
+    rows, cols = rays.at(slice(None), s[None, :])
     ok = _sample(free, rows, cols, outside=False)
     mid = (s.size - 1) // 2
     right = ok[:, mid:]
@@ -379,6 +421,11 @@ def wall_hits(occupied: BoolArray, start_rc: tuple[float, float], directions_rc:
     return np.asarray(_sample(occupied, rows, cols, outside=False).any(axis=2), dtype=bool)
 
 
+def evidence_look_m() -> float:
+    """How far (m, each side) :func:`evidence` follows the free width along a candidate's normal."""
+    return max(THROUGH_LOOK_M, MOUTH_LOOK_M)
+
+
 def _turned(dr: float, dc: float, angle: float) -> tuple[float, float]:
     """(dr, dc) turned by ``angle`` radians."""
     ca, sa = math.cos(angle), math.sin(angle)
@@ -392,15 +439,17 @@ _ALONG_ANGLES: Final = tuple(math.radians(a) for a in
 
 def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float],
              normal_rc: tuple[float, float], width_m: float, resolution_m: float,
-             params: AnalysisParams, unknown: BoolArray | None = None, into_unknown: bool = False) -> DoorEvidence:
+             params: AnalysisParams, unknown: BoolArray | None = None, into_unknown: bool = False,
+             widths: tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]] | None = None) -> DoorEvidence:
     """The evidence of one candidate (``center_rc`` in cell-corner coordinates, unit normal;
     ``unknown``: the unscanned cells, to tell furniture at a jamb; ``into_unknown``: the
-    normal points into unexplored territory, whose seen strip is judged)."""
+    normal points into unexplored territory, whose seen strip is judged; ``widths``: its
+    :func:`free_widths` over :func:`evidence_look_m`, when the caller has them)."""
     # A wall's length: the shortest wall stub that is a jamb; a scanned wall's cells scatter
     # about its line by a few cells (JAMB_BAND_M).
     wall_m = params.seg_wall_min_length_m
     band_m = JAMB_BAND_M
-    t_all, w_all = free_widths(free, center_rc, normal_rc, resolution_m, max(THROUGH_LOOK_M, MOUTH_LOOK_M))
+    t_all, w_all = free_widths(free, center_rc, normal_rc, resolution_m, evidence_look_m()) if widths is None else widths
     through = np.abs(t_all) <= THROUGH_LOOK_M + 1e-9
     t, w = t_all[through], w_all[through]
     depth = constriction_depth(t, w, width_m)
@@ -458,7 +507,7 @@ def walled_strip_share(free: BoolArray, occupied: BoolArray, center_rc: tuple[fl
     t = np.arange(params.door_max_depth_m, MOUTH_LOOK_M + 1e-9, resolution_m * _STEP_CELLS) / resolution_m
     s_max = math.ceil(limit / resolution_m / _STEP_CELLS) + 1
     s = np.arange(-s_max, s_max + 1) * _STEP_CELLS
-    n_right, n_left, on = _runs_through_zero(free, center_rc, t, s, normal_rc)
+    n_right, n_left, on = _runs_through_zero(free, _Rays.of([center_rc], [normal_rc], t), s)
     if not on.any():
         return 0.0
     narrow = on & ((n_right + n_left - 1) * _STEP_CELLS * resolution_m <= limit)
@@ -616,7 +665,9 @@ def floor_beyond(free: BoolArray, far_from_unknown: BoolArray, center_rc: tuple[
     rows = center_rc[0] + side * t[:, None] * nr + sv[None, :] * tr
     cols = center_rc[1] + side * t[:, None] * nc + sv[None, :] * tc
     r, c, inside = _cells(free.shape, rows, cols)
-    f = np.asarray(take2(free, r, c), dtype=bool) & inside
+    f = np.asarray(take2(free, r, c), dtype=bool)
+    if inside is not None:
+        f &= inside
     if not f.any():
         return 0.0
     return float(np.asarray(take2(far_from_unknown, r, c), dtype=bool)[f].mean())
@@ -626,14 +677,27 @@ def on_wall_line(free: BoolArray, door: RawDoor, resolution_m: float) -> RawDoor
     """``door`` moved along its normal onto its narrowest free crossing within
     WALL_LINE_SEARCH_M (the nearest such crossing to where it was; unchanged when no crossing
     there is free)."""
-    t_m, w_m = free_widths(free, door.center_rc, door.normal_rc, resolution_m, WALL_LINE_SEARCH_M)
-    ok = (np.abs(t_m) <= WALL_LINE_SEARCH_M + 1e-9) & (w_m > 0)
-    if not ok.any():
-        return door
-    narrowest = np.flatnonzero(ok & (w_m <= w_m[ok].min() + 1e-9))
-    step = float(t_m[narrowest[np.argmin(np.abs(t_m[narrowest]))]]) / resolution_m
-    nr, nc = door.normal_rc
-    return dataclasses.replace(door, center_rc=(door.center_rc[0] + step * nr, door.center_rc[1] + step * nc))
+    return on_wall_lines(free, [door], resolution_m)[0]
+
+
+def on_wall_lines(free: BoolArray, doors: Sequence[RawDoor], resolution_m: float) -> list[RawDoor]:
+    """:func:`on_wall_line` of each of ``doors``, their free widths read all at once."""
+    if not doors:
+        return []
+    t_m, widths = free_widths_each(free, [d.center_rc for d in doors], [d.normal_rc for d in doors],
+                                   resolution_m, WALL_LINE_SEARCH_M)
+    out: list[RawDoor] = []
+    for door, w_m in zip(doors, widths, strict=True):
+        ok = (np.abs(t_m) <= WALL_LINE_SEARCH_M + 1e-9) & (w_m > 0)
+        if not ok.any():
+            out.append(door)
+            continue
+        narrowest = np.flatnonzero(ok & (w_m <= w_m[ok].min() + 1e-9))
+        step = float(t_m[narrowest[np.argmin(np.abs(t_m[narrowest]))]]) / resolution_m
+        nr, nc = door.normal_rc
+        out.append(dataclasses.replace(door, center_rc=(door.center_rc[0] + step * nr,
+                                                        door.center_rc[1] + step * nc)))
+    return out
 
 
 def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray, resolution_m: float,
@@ -647,12 +711,16 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
         # Only distances up to SEEN_FLOOR_MIN_M matter: the exact truncated transform (bit for
         # bit the full one's distances up to its bound; farther cells read farther).
         far = far_from_outside(~unknown, SEEN_FLOOR_MIN_M, resolution_m)
-    for d in candidates:
-        # Between two spaces, judged on the wall line (into the unexplored, the rays beyond
-        # would read as the narrowest crossing).
-        at = d if d.b == 0 else on_wall_line(free, d, resolution_m)
+    # Between two spaces, judged on the wall line (into the unexplored, the rays beyond would
+    # read as the narrowest crossing). The free widths of all candidates are read at once.
+    between = [d for d in candidates if d.b != 0]
+    moved = iter(on_wall_lines(free, between, resolution_m))
+    at_line = [d if d.b == 0 else next(moved) for d in candidates]
+    t_m, widths = free_widths_each(free, [a.center_rc for a in at_line], [a.normal_rc for a in at_line],
+                                   resolution_m, evidence_look_m())
+    for d, at, w_m in zip(candidates, at_line, widths, strict=True):
         ev = evidence(free, occupied, at.center_rc, at.normal_rc, d.width_m, resolution_m, params, unknown,
-                      into_unknown=d.b == 0)
+                      into_unknown=d.b == 0, widths=(t_m, w_m))
         ok = is_door(ev, params, into_unknown=d.b == 0, in_wall_line=d.in_wall_line, width_m=d.width_m)
         if ok and far is not None:
             # A place on each side that is a space: its floor was seen, not only rays through
@@ -676,13 +744,16 @@ __all__ = [
     "clear_width",
     "constriction_depth",
     "evidence",
+    "evidence_look_m",
     "floor_beyond",
     "free_widths",
+    "free_widths_each",
     "is_door",
     "is_furniture",
     "judge_doors",
     "line_turn_deg",
     "on_wall_line",
+    "on_wall_lines",
     "opens_wider",
     "scanned_across",
     "typical_width",

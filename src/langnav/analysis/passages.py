@@ -1,23 +1,24 @@
 """Narrow passages: tight ways through between two free areas that are not doors.
 
-On the skeleton of the navigable space, the clear width at a skeleton cell is twice its distance
-to the nearest blocking cell (occupied, or unknown beyond a noise speck; isolated occupied scan
-specks do not block). Skeleton cells whose width is between the robot's diameter and
+On the skeleton of the navigable space, the clear width at a skeleton cell is twice its distance to
+the nearest blocking cell (occupied, or unknown beyond a noise speck; isolated occupied scan specks
+do not block). Skeleton cells whose width is between the robot's diameter and
 ``params.passage_max_width_m`` form candidate chains. A chain's *core* is where the width stays
 close to its typical width (the stretch over which the way stays tight, between two near-parallel
-sides, without the flaring mouths; one pinch point does not shorten it). A core is a passage when
-it is longer than a doorway could be deep in this building (``params.door_max_depth_m`` and
+sides, without the flaring mouths; one pinch point does not shorten it, nor, on coarse cells, a jog
+of its middle line where a side's outline steps a cell, ``JOG_WIDTH_CELLS``). A core is a passage
+when it is longer than a doorway could be deep in this building (``params.door_max_depth_m`` and
 ``WALL_LENGTHS`` of its typical wall thickness, :func:`typical_wall_thickness_m`; up to
 ``params.passage_min_length_m``), wide enough for the robot with a margin
 (``PASSAGE_MIN_MARGIN_M``: 0.1 m a side, across its axis and by the distance to its sides), has
 sides along most of its length (or a wall along one side and a single doorway in the other: a
 passage with a door off it), solid ones (walls, furniture, a shelf's unscanned inside: not
 laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
-unexplored area), leads somewhere (both mouths open into free space wider than any passage, or,
-for an aisle, into another narrow way that reaches such space within ``MOUTH_LEADS_ON_M``: a
-dead-end slot does not), is not a door's own gap (a door across its middle; a door at one of its
-mouths is how it is entered; a door found in a squeeze between two things with parallel faces,
-deeper than any wall, is no door), and is
+unexplored area), leads somewhere (both mouths open into free space wider than any passage, or, for
+an aisle, into another narrow way that reaches such space within ``MOUTH_LEADS_ON_M``: a dead-end
+slot does not), is not a door's own gap (a door across its middle; a door at one of its mouths is
+how it is entered; a door found in a squeeze between two things with parallel faces, deeper than
+any wall, or across an aisle as long as a corridor between two such things, is no door), and is
 
 * clearly longer than wide (``PASSAGE_MIN_ELONGATION``: an aisle, a checkout lane, a corridor),
   except a strip between a wall and a thing one can walk round (a pallet), which is one only when
@@ -70,6 +71,18 @@ PASSAGE_MIN_ELONGATION: Final = 2.0
 #: (a door leaf, a bump of clutter) does not shorten it to the pinch.
 CORE_REF_QUANTILE: Final = 0.5
 CORE_WIDTH_TOL_M: Final = 0.15
+#: A middle-line cell's width is read from its whole cells of distance to a side: where a side
+#: jogs by a cell (a scanned outline a cell off), the line steps sideways and the width read
+#: there jumps by up to two cells (one a side; 0.2 m on a 0.1 m map, more than the tolerance).
+#: A stretch of the line no more than that jump over the tolerance and a few cells long
+#: (JOG_MAX_CELLS: the line steps a cell sideways over about as many cells as the way is wide in
+#: cells at 0.1 m, never over the length of a thing beside it), between two stretches of one core, is
+#: such a jog, not a flaring mouth nor the open side of a gap between things: the way goes on
+#: across it.
+JOG_WIDTH_CELLS: Final = 2.0
+JOG_MAX_CELLS: Final = 4
+#: ... when the stretches on either side of it run in line: their axes within this (degrees).
+JOG_MAX_TURN_DEG: Final = 20.0
 #: A passage has sides: at this share of its core, blocking cells lie close on both sides (a
 #: strip along a wall whose other side is a row of separate objects is not a passage).
 MIN_BOUNDED_FRACTION: Final = 0.7
@@ -238,7 +251,12 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     starts = np.searchsorted(cid_s, np.arange(1, n + 1))
     counts = np.bincount(cid, minlength=n + 1)[1:]
     ref = w_s[starts + (counts * CORE_REF_QUANTILE).astype(int)]
-    core_idx = idx[w <= ref[cid - 1] + CORE_WIDTH_TOL_M]
+    in_core = w <= ref[cid - 1] + CORE_WIDTH_TOL_M
+    if JOG_WIDTH_CELLS * res > CORE_WIDTH_TOL_M:
+        # (On finer cells the tolerance already spans a jog's jump.)
+        in_core |= _jogs(idx, in_core, w <= ref[cid - 1] + CORE_WIDTH_TOL_M + JOG_WIDTH_CELLS * res,
+                         ref[cid - 1] / res, skel.shape)
+    core_idx = idx[in_core]
     core_id, m = label8_cells(core_idx, skel.shape)
     passages: list[NarrowPassage] = []
     # Where the robot's centre fits with its margin (the distance table is exact that far).
@@ -405,8 +423,11 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                 # ends). A tight strip between a wall and a lone thing that open floor, wider
                 # than any passage, leads round nearby is walked round too (a pallet by a wall).
                 cw = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
-                door_at = any(math.dist(d.center, (float(cw[0]), float(cw[1])))
-                              <= length_m / 2 + params.door_max_depth_m for d in doors)
+                # (A door found in a squeeze between two things with parallel faces is no door:
+                # see below.)
+                door_at = not (squeeze and thing is None and _parallel(sides[bounded], res)) and any(
+                    math.dist(d.center, (float(cw[0]), float(cw[1]))) <= length_m / 2 + params.door_max_depth_m
+                    for d in doors)
                 round_reach = WAY_ROUND_M / res if thing is None and not door_at else math.inf
                 if (thing is not None or squeeze) and (door_at or width_m > TIGHT_WIDTH_M) and _way_round(
                         fits, fits, centre_g, axis, half_len, width_m / res, round_reach):
@@ -442,6 +463,15 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             # is wide (a housekeeping cart in a corridor): a doorway is shorter than it is wide
             # (walls are thinner than door_max_depth_m, doors wider than door_min_width_m).
             no_door = squeeze and _parallel(sides[bounded], res) and (thing is None or length_m >= width_m)
+            # So is one across an aisle as elongated as a corridor between two things deeper than
+            # any wall with parallel faces (lockers and a locker island, two shelf rows): no wall
+            # stands there for a door to be in (on a turned map the stair-stepped faces read as
+            # jambs). A short way through a wall mass between two rooms keeps its door.
+            if not no_door and corridor_like and any(_is_the_door(d, centre, axis_w, length_m, width_m, params)
+                                                 for d in doors):
+                no_door = _parallel(sides[bounded], res) and all(
+                    _deep(sub, pts[bounded], normal * (2 * j - 1), sides[bounded, j], params.door_max_depth_m / res, res)
+                    for j in (0, 1))
             if not no_door and (
                     any(_is_the_door(d, centre, axis_w, length_m, width_m, params) for d in doors)
                     or (not elongated and any(math.dist(d.center, centre) <= length_m / 2 + params.door_max_depth_m
@@ -469,6 +499,66 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
             two_r, two_c = _two_sided(sub, long_r, long_c, dist_of[d2[long_r, long_c]] / res, SIDE_TOL_M / res)
             pieces = [(pr, pc, None) for pr, pc in _pieces(two_r, two_c, sub.shape, min_cells)]
     return tuple(passages)
+
+
+def _jogs(idx: npt.NDArray[np.intp], core: BoolArray, near: BoolArray,
+          width_cells: npt.NDArray[np.float64], shape: tuple[int, int]) -> BoolArray:
+    """Per middle-line cell (sorted flat indices ``idx``): is it in a jog between two stretches
+    of the ``core`` cells (see ``JOG_WIDTH_CELLS``): not in the core, ``near`` its chain's width,
+    in a run of such cells at most ``JOG_MAX_CELLS`` long that touches two stretches of the core
+    running in line, each passing within half the way's width (``width_cells``) of the run?"""
+    out = np.zeros(len(idx), dtype=bool)
+    cand = near & ~core
+    if not cand.any() or not core.any():
+        return out
+    core_flat = idx[core]
+    stretch, _n = label8_cells(core_flat, shape)
+    run_flat = idx[cand]
+    run, n_runs = label8_cells(run_flat, shape)
+    h, w = shape
+    r, c = np.divmod(run_flat, w)
+    # Each run's cells' core neighbours: the stretches each run touches.
+    pairs: list[npt.NDArray[np.int64]] = []
+    for dr in (-1, 0, 1):
+        for dc in (-1, 0, 1):
+            if dr == 0 and dc == 0:
+                continue
+            ok = (r + dr >= 0) & (r + dr < h) & (c + dc >= 0) & (c + dc < w)
+            nb = run_flat + dr * w + dc
+            pos = np.minimum(np.searchsorted(core_flat, nb), len(core_flat) - 1)
+            hit = ok & (core_flat[pos] == nb)
+            pairs.append(np.stack([run[hit].astype(np.int64), stretch[pos[hit]].astype(np.int64)], axis=1))
+    touch = np.unique(np.concatenate(pairs), axis=0)
+    n_touched = np.bincount(touch[:, 0], minlength=n_runs + 1)
+    size = np.bincount(run, minlength=n_runs + 1)
+    ok = (n_touched == 2) & (size <= JOG_MAX_CELLS)
+    if not ok.any():
+        return out
+    # ... and the two stretches are one way on either side of it: in line (their axes within
+    # JOG_MAX_TURN_DEG, each passing within half the way's width of the run), not two ways
+    # meeting at a corner (the gaps on either side of a locker block, joined round its end).
+    sr, sc = np.divmod(core_flat, w)
+    cnt = np.bincount(stretch, minlength=_n + 1).astype(float)
+    cnt[0] = 1.0
+    mx, my = np.bincount(stretch, weights=sc, minlength=_n + 1) / cnt, np.bincount(stretch, weights=sr, minlength=_n + 1) / cnt
+    dx, dy = sc - mx[stretch], sr - my[stretch]
+    sxx = np.bincount(stretch, weights=dx * dx, minlength=_n + 1)
+    syy = np.bincount(stretch, weights=dy * dy, minlength=_n + 1)
+    sxy = np.bincount(stretch, weights=dx * dy, minlength=_n + 1)
+    ang = 0.5 * np.arctan2(2.0 * sxy, sxx - syy)
+    ux, uy = np.cos(ang), np.sin(ang)
+    rx = np.bincount(run, weights=c.astype(float), minlength=n_runs + 1) / np.maximum(size, 1)
+    ry = np.bincount(run, weights=r.astype(float), minlength=n_runs + 1) / np.maximum(size, 1)
+    half = np.bincount(run, weights=width_cells[cand], minlength=n_runs + 1) / np.maximum(size, 1) / 2.0
+    for k in np.flatnonzero(ok).tolist():
+        a, b = touch[touch[:, 0] == k, 1].tolist()
+        in_line = abs(ux[a] * ux[b] + uy[a] * uy[b]) >= math.cos(math.radians(JOG_MAX_TURN_DEG))
+        for s_ in (a, b):
+            off = abs(-(rx[k] - mx[s_]) * uy[s_] + (ry[k] - my[s_]) * ux[s_])
+            in_line = in_line and off <= max(half[k], 1.0)
+        ok[k] = in_line
+    out[np.flatnonzero(cand)] = ok[run]
+    return out
 
 
 def typical_wall_thickness_m(occupied: BoolArray, free: BoolArray, res: float) -> float:

@@ -10,14 +10,15 @@ The stand-ins give *exactly* what the numpy / scipy call they replace gives (pro
 ``tests/analysis/test_precompute.py``), several times faster on large maps:
 
 - :func:`dilate8`, :func:`dilate4`: ``ndi.binary_dilation`` with a 3x3 / cross structure;
-- :func:`maximum3`: ``ndi.maximum_filter(a, size=3)``;
+- :func:`maximum3`: ``ndi.maximum_filter(a, size=3)``; :func:`dilate_box`: the same of a mask
+  with any size;
 - :func:`nonzero2`: ``np.nonzero`` of a 2-D array;
 - :func:`label8_cells`: ``ndi.label(..., EIGHT)`` of a sparse set of cells (a skeleton);
 - :func:`component_boxes`: ``ndi.find_objects`` for chosen components, from their cells;
 - :func:`truncated_sq_edt`: ``distance_transform_edt`` squared, exact up to a bound (what a
   test of short clearances needs), in small integers; :func:`far_from_outside`: its test
   against a distance, as the outside grown by the disc of the offsets that fail it
-  (:func:`grow_by_disc`);
+  (:func:`grow_by_disc`, the binary dilation by a disc, :func:`disc`);
 - :func:`median`, :func:`cov2`: ``np.median`` and ``np.cov`` without their overhead;
 - :func:`edt_scaled`: ``ndi.distance_transform_edt(mask, sampling=step)`` for a 2-D mask and one
   step for both axes, the distances read from a table of the few (|drow|, |dcol|) offsets;
@@ -81,6 +82,33 @@ def dilate4(mask: BoolArray) -> BoolArray:
     out[:, 1:] |= m[:, :-1]
     out[:, :-1] |= m[:, 1:]
     return out
+
+
+def dilate_box(mask: BoolArray, size: int) -> BoolArray:
+    """``ndi.maximum_filter(mask, size=size)`` for a 2-D boolean mask (its default "reflect"
+    edges, or "constant" ones with ``cval=False``: the same result, as the cells mirrored in
+    from beyond the edge lie in the window already), several times faster: along each axis the
+    OR of each window (cells i - size // 2 to i + (size - 1) // 2, as scipy places an even
+    window) is the OR of two runs of the largest power of two within it, and those runs are
+    made by doubling (a few shifted ORs) instead of scipy's pass over every window."""
+    m = np.asarray(mask, dtype=bool)
+    if size <= 1:
+        return m.copy()
+    lo = size // 2
+    p = 1 << (size.bit_length() - 1)  # the largest power of two <= size
+    out = m
+    for axis in (0, 1):
+        x = np.moveaxis(out, axis, 0)
+        n = x.shape[0]
+        # The cells beyond the edges as False, so that every window lies inside.
+        run = np.zeros((n + size - 1, *x.shape[1:]), dtype=bool)
+        run[lo:lo + n] = x
+        k = 1
+        while k < p:  # run[j]: the OR of the k cells from j on
+            run[:-k] |= run[k:]
+            k *= 2
+        out = np.moveaxis(run[:n] | run[size - p:size - p + n], 0, axis)
+    return np.ascontiguousarray(out)
 
 
 def maximum3(a: npt.NDArray[_S]) -> npt.NDArray[_S]:
@@ -255,6 +283,19 @@ def far_from_outside(mask: BoolArray, min_m: float, resolution_m: float) -> Bool
     a = np.arange(bound + 1)
     near = ~(np.sqrt((a[:, None] ** 2 + a[None, :] ** 2).astype(np.float64)) * resolution_m >= min_m)
     return ~grow_by_disc(~np.asarray(mask, dtype=bool), near)
+
+
+def disc(radius_cells: float) -> BoolArray:
+    """The disc of this radius (cells, centre to centre) as :func:`grow_by_disc` takes it: the
+    offsets (|rows|, |columns|) = (dy, dx) with dx² + dy² ≤ radius², a square table of
+    ``floor(radius) + 1`` each way (each row's run: the largest dx for its dy, worked out as a
+    square root)."""
+    r2 = radius_cells * radius_cells + 1e-9  # a cell exactly on the circle is inside
+    top = math.floor(math.sqrt(r2))
+    near = np.zeros((top + 1, top + 1), dtype=bool)
+    for dy in range(top + 1):
+        near[dy, :math.floor(math.sqrt(r2 - dy * dy)) + 1] = True
+    return near
 
 
 def grow_by_disc(mask: BoolArray, near: BoolArray) -> BoolArray:

@@ -43,7 +43,15 @@ from scipy import ndimage as ndi
 from skimage.segmentation import watershed
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import Components, GridLayers, dilate8, edt_scaled, maximum3
+from langnav.analysis.precompute import (
+    Components,
+    GridLayers,
+    border_labels,
+    dilate8,
+    dilate_box,
+    edt_scaled,
+    maximum3,
+)
 from langnav.analysis.wall_lines import WallDirections, dominant_directions
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN
 
@@ -103,8 +111,7 @@ def _small_components(mask: BoolArray, max_cells: float, *, exclude_border: bool
     keep = sizes <= max_cells
     keep[0] = False
     if exclude_border:
-        border = np.unique(np.concatenate([lab[0], lab[-1], lab[:, 0], lab[:, -1]]))
-        keep[border] = False
+        keep[border_labels(lab)] = False
     return keep[lab]
 
 
@@ -166,16 +173,14 @@ def _furniture(floor: BoolArray, resolution_m: float, params: AnalysisParams,
     if not solid.any():
         return none, none, None
     # The non-floor grown by join_cells (a square): the cells within that chessboard distance.
-    grouped = dilate8(solid) if join_cells == 1 else \
-        ndi.maximum_filter(solid, size=2 * join_cells + 1, mode="constant", cval=False)
+    grouped = dilate8(solid) if join_cells == 1 else dilate_box(solid, 2 * join_cells + 1)
     comp, n = ndi.label(grouped, structure=EIGHT)
     if n == 0:
         return none, none, None
     area = np.bincount(comp[solid], minlength=n + 1) * cell_area
     small = area <= params.seg_island_max_area_m2
     small[0] = False
-    border = np.unique(np.concatenate([comp[0], comp[-1], comp[:, 0], comp[:, -1]]))
-    small[border] = False
+    small[border_labels(comp)] = False
     # Thin, long pieces are wall stubs (between two doorways), not furniture.
     objs = ndi.find_objects(comp)
     min_cells = params.seg_wall_min_length_m / resolution_m

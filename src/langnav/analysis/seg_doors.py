@@ -26,7 +26,7 @@ from scipy import ndimage as ndi
 from skimage.segmentation import watershed
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import far_from_outside, maximum3
+from langnav.analysis.precompute import dilate_box, far_from_outside, maximum3
 from langnav.analysis.seg_core import EIGHT, BoolArray, FloatArray, IntArray
 from langnav.analysis.wall_lines import outer_gaps
 
@@ -173,7 +173,7 @@ def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
     door_clear_max = (widest + resolution_m) / 2
     # Frontier cells closer than a door width belong to one opening candidate.
     join = max(1, round(widest / resolution_m))
-    groups, _ = ndi.label(ndi.maximum_filter(frontier, size=join), structure=EIGHT)
+    groups, _ = ndi.label(dilate_box(frontier, join), structure=EIGHT)
     groups[~frontier] = 0
     margin = math.ceil(OPENING_BAND_M / resolution_m)
     if peak is None:

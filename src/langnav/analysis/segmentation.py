@@ -36,7 +36,9 @@ from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
 from langnav.analysis.precompute import (
     GridLayers,
     approximate_polygons,
+    border_labels,
     dilate8,
+    dilate_box,
     edt_scaled,
     fill_holes,
     longest_contour,
@@ -53,7 +55,7 @@ from langnav.analysis.seg_core import (
     merge_basins,
 )
 from langnav.analysis.seg_doors import RawDoor, doors_between, label_max, openings_to_unknown
-from langnav.analysis.wall_lines import closure_mask, dominant_directions, wall_gaps
+from langnav.analysis.wall_lines import closure_mask, dominant_directions, leaf_mask, wall_gaps
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
 log = logging.getLogger(__name__)
@@ -265,7 +267,10 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
                                      fl.clearance_m, res, params, peaks, known=between, directions=directions)
     # Only openings cut in a wall are doors (door_judge); the others between two spaces are
     # still ways between them.
-    raw_doors, not_doors = judge_doors(raw_doors, fl.free, occupied & ~fl.floor, res, params, unknown=unknown)
+    # (The open leaves of double doors found in the wall lines are no wall there.)
+    leaves = leaf_mask(gaps, occupied.shape)
+    raw_doors, not_doors = judge_doors(raw_doors, fl.free | leaves, occupied & ~fl.floor & ~leaves, res, params,
+                                       unknown=unknown)
     raw_wide += [d for d in not_doors if d.b != 0]
     openings = np.bincount(np.array([x for d in raw_doors + raw_wide for x in (d.a, d.b) if x > 0], dtype=np.int64),
                            minlength=int(labels.max()) + 1)
@@ -421,7 +426,7 @@ def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor, grid: Occ
     lab, n = ndi.label(ext)
     if n == 0:
         return labels, ext
-    border = np.unique(np.concatenate([lab[0], lab[-1], lab[:, 0], lab[:, -1]]))
+    border = border_labels(lab)
     ring = dilate8(ext) & ~ext
     rr, cc = nonzero2(ring)
     # Which unknown region each ring cell touches (the largest label among its 8 neighbours).
@@ -483,7 +488,7 @@ def _close_unknown_gaps(labels: npt.NDArray[np.int32], unknown: npt.NDArray[np.b
     todo = unknown & (labels == 0)
     # Only cells with a space within r (in the chessboard metric) can be filled: look out from
     # those alone, through a copy of the labels padded with r cells of wall.
-    todo &= ndi.maximum_filter(labels > 0, size=2 * r + 1)
+    todo &= dilate_box(labels > 0, 2 * r + 1)
     rows, cols = nonzero2(todo)
     if rows.size == 0:
         return labels

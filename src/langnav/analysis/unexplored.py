@@ -39,6 +39,7 @@ from langnav.analysis.precompute import (
     border_labels,
     component_boxes,
     dilate8,
+    disc,
     grow_by_disc,
     label8,
     label8_cells,
@@ -350,11 +351,8 @@ def _seen_all_round(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
             out[k] = True  # too narrow a box to hold the disc
             continue
         own = np.pad(lab[sr, sc] == k, 1)
-        # A square that holds the disc (two separable passes), else the disc itself.
-        square = own
-        for axis in (0, 1):
-            square = ndi.minimum_filter1d(square, side, axis=axis, mode="constant", cval=False)
-        out[k] = not (square.any() or float(ndi.distance_transform_edt(own).max()) >= need)
+        # A square that holds the disc, else the disc itself.
+        out[k] = not (_holds_square(own, side) or float(ndi.distance_transform_edt(own).max()) >= need)
     return out
 
 
@@ -383,18 +381,23 @@ def _wide_enough(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers
         c0, c1 = max(0, sc.start - pad), min(grid.width, sc.stop + pad)
         own = lab[r0:r1, c0:c1] == k
         # The region alone first (a room behind a door is wide by itself): a square that holds
-        # the disc (two separable passes, cheap on a large region), else the disc itself; then
-        # with the free cells about it that the robot's footprint (a free square of its
-        # diameter) never covers.
-        square = own
-        for axis in (0, 1):
-            square = ndi.minimum_filter1d(square, 2 * math.ceil(need) + 1, axis=axis, mode="constant", cval=False)
-        if square.any() or int(truncated_sq_edt(own, reach)[own].max()) >= need * need:
+        # the disc (cheap on a large region), else the disc itself; then with the free cells
+        # about it that the robot's footprint (a free square of its diameter) never covers.
+        if _holds_square(own, 2 * math.ceil(need) + 1) or int(truncated_sq_edt(own, reach)[own].max()) >= need * need:
             out[k] = True
             continue
         region = _unknown_or_too_tight(layers, r0, r1, c0, c1, half)
         out[k] = int(truncated_sq_edt(region, reach)[own].max()) >= need * need
     return out
+
+
+def _holds_square(mask: BoolArray, side: int) -> bool:
+    """Whether ``mask`` holds a square of ``side`` cells: its erosion by that square (two
+    separable passes of a minimum filter; cells beyond the array are outside) is not empty."""
+    square = mask
+    for axis in (0, 1):
+        square = ndi.minimum_filter1d(square, side, axis=axis, mode="constant", cval=False)
+    return bool(square.any())
 
 
 def _edge_adjacent(lab: IntArray, pairs: npt.NDArray[np.int64]) -> BoolArray:
@@ -441,20 +444,19 @@ def reachable_floor(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     rows, cols = nonzero2(layers.free)
     if len(rows) == 0 or len(cells) == 0:
         return out
-    rects = _disc_rectangles(params.robot_radius_m / grid.resolution_m)
+    body = disc(params.robot_radius_m / grid.resolution_m)
+    reach = body.shape[0] - 1  # the body's reach (cells) from its centre
     # Over the free cells' bounding box (a real map's unknown margin is most of it), with room
     # for the body's reach and its neighbours beyond the free cells.
-    pad = max(max(hx, hy) for hx, hy in rects) + 2
+    pad = reach + 2
     r0, r1 = max(0, int(rows.min()) - pad), min(grid.height, int(rows.max()) + pad + 1)
     c0, c1 = max(0, int(cols.min()) - pad), min(grid.width, int(cols.max()) + pad + 1)
     blocking = layers.occupied[r0:r1, c0:c1] | (layers.unknown[r0:r1, c0:c1] & ~specks[r0:r1, c0:c1])
-    # The disc's centre fits where the disc (the union of its rectangles) holds no blocking
-    # cell: where no rectangle does; the grid's edge blocks too. The body covers the cells
-    # some rectangle round a centre of the main region reaches.
-    blocked = _rectangle_counts(blocking, rects, edge=1)
-    centre = ~blocked[0]
-    for more in blocked[1:]:
-        centre &= ~more
+    # The disc's centre fits where the disc round it holds no blocking cell: outside the blocking
+    # cells grown by the disc; the grid's edge blocks too (the cells beyond it, padded as blocking,
+    # grow in). The body covers the cells the disc round a centre of the main region reaches.
+    h, w = blocking.shape
+    centre = ~grow_by_disc(np.pad(blocking, reach, constant_values=True), body)[reach:reach + h, reach:reach + w]
     comps = label8(centre)
     if comps.n == 0:
         return out
@@ -467,47 +469,16 @@ def reachable_floor(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     flat = (rr[inside] - r0 + pad) * main.shape[1] + (cc[inside] - c0 + pad)
     main_flat = main.ravel()
     hit = np.zeros(len(flat), dtype=bool)
-    for dr, dc in _disc_and_neighbours(rects):
+    for dr, dc in _disc_and_neighbours(body):
         hit |= main_flat[flat + (dr * main.shape[1] + dc)]
     out[inside] = hit
     return out
 
 
-def _disc_and_neighbours(rects: list[tuple[int, int]]) -> list[tuple[int, int]]:
-    """The offsets (rows, columns) of the disc given by its rectangles, grown by one cell all
-    round (its cells and their 8-neighbours)."""
-    disc = {(dy, dx) for hx, hy in rects for dy in range(-hy, hy + 1) for dx in range(-hx, hx + 1)}
-    return sorted({(dy + a, dx + b) for dy, dx in disc for a in (-1, 0, 1) for b in (-1, 0, 1)})
-
-
-def _rectangle_counts(mask: BoolArray, rects: list[tuple[int, int]], edge: int) -> list[BoolArray]:
-    """Per centred rectangle (half-widths in columns, rows): does the rectangle round each cell
-    hold a cell of ``mask`` (cells beyond the array count as ``edge``)? From one summed-area
-    table, four lookups per rectangle."""
-    h, w = mask.shape
-    p = max(max(hx, hy) for hx, hy in rects)
-    table = np.zeros((h + 2 * p + 1, w + 2 * p + 1), dtype=np.int32)
-    padded = np.pad(mask, p, constant_values=bool(edge))
-    np.cumsum(padded, axis=0, dtype=np.int32, out=table[1:, 1:])
-    np.cumsum(table[1:, 1:], axis=1, out=table[1:, 1:])
-    out = []
-    total = np.empty((h, w), dtype=np.int32)
-    for hx, hy in rects:
-        top, bottom, left, right = p - hy, p + hy + 1, p - hx, p + hx + 1
-        np.subtract(table[bottom:bottom + h, right:right + w], table[top:top + h, right:right + w], out=total)
-        total -= table[bottom:bottom + h, left:left + w]
-        total += table[top:top + h, left:left + w]
-        out.append(total > 0)
-    return out
-
-
-def _disc_rectangles(radius_cells: float) -> list[tuple[int, int]]:
-    """A disc of this radius (cells, centre to centre) as the union of centred rectangles, each
-    given by its half-widths (columns, rows): the cells (dx, dy) with dx² + dy² ≤ radius², one
-    rectangle per half-height, widest first. Eroding or dilating by each (two separable passes)
-    and combining is eroding or dilating by the disc, at the cost of a few filters."""
-    r2 = radius_cells * radius_cells + 1e-9
-    top = math.floor(math.sqrt(r2))
-    rects = [(math.floor(math.sqrt(r2 - hy * hy)), hy) for hy in range(top + 1)]
-    # A rectangle inside the next taller one (as wide) adds nothing.
-    return [rc for k, rc in enumerate(rects) if k + 1 == len(rects) or rects[k + 1][0] < rc[0]]
+def _disc_and_neighbours(near: BoolArray) -> list[tuple[int, int]]:
+    """The offsets (rows, columns) of the disc ``near`` (as :func:`~langnav.analysis.precompute.disc`
+    gives it), grown by one cell all round (its cells and their 8-neighbours)."""
+    reach = near.shape[0] - 1
+    cells = [(dy, dx) for dy in range(-reach, reach + 1) for dx in range(-reach, reach + 1)
+             if near[abs(dy), abs(dx)]]
+    return sorted({(dy + a, dx + b) for dy, dx in cells for a in (-1, 0, 1) for b in (-1, 0, 1)})

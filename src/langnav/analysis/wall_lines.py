@@ -43,7 +43,7 @@ import numpy.typing as npt
 from scipy import ndimage as ndi
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import take2
+from langnav.analysis.precompute import EIGHT, take2
 
 BoolArray = npt.NDArray[np.bool_]
 FloatArray = npt.NDArray[np.float64]
@@ -130,6 +130,23 @@ OUTER_BEHIND_MIN_UNKNOWN: Final = 0.5
 OUTER_WALLED_MAX_SHARE: Final = 0.5
 
 
+#: An open door leaf (:func:`_jamb_leaves`) is at most this long (m): the widest single leaf
+#: (a wide accessible door; a double door's leaves are half of its opening each) ...
+LEAF_MAX_LENGTH_M: Final = 1.25
+#: ... and no longer than the opening it closes, give or take this much (m: a ragged jamb, the
+#: leaf's hinge standing off the wall's end).
+LEAF_SLACK_M: Final = 0.15
+#: A leaf is a panel a few centimetres thick: across it, its scanned cells span at most this
+#: (m), and a cell of scan spread more.
+LEAF_MAX_THICKNESS_M: Final = 0.1
+#: ... thin with floor on both faces over at least this share of its length (a few cells of
+#: scan noise along it aside) ...
+LEAF_MIN_SHARE: Final = 0.8
+#: ... and floor just past its free edge over this many cells, on at least this share of them.
+LEAF_TIP_CELLS: Final = 2
+LEAF_TIP_MIN_FLOOR_SHARE: Final = 0.6
+
+
 @dataclass(frozen=True)
 class WallGap:
     """A door-wide gap in a wall line, in grid coordinates (row, col; continuous): its two ends
@@ -141,6 +158,8 @@ class WallGap:
     #: A gap of a front (a glass front, a row of windows between piers), not a gap between two
     #: solid stretches of wall: glass the lidar saw through, or the front's door.
     in_front: bool = False
+    #: The (row, col) cells of the open door leaves standing at its jambs (a double door's).
+    leaf_cells: tuple[tuple[int, int], ...] = ()
 
 
 def _line_scores(rows: FloatArray, neg_cols: FloatArray, degs: FloatArray) -> FloatArray:
@@ -209,7 +228,11 @@ class _LineTable:
 
     def __init__(self, degs: FloatArray) -> None:
         self.degs = degs.copy()
-        self.numbers = np.empty((LINE_TABLE_SIDE * LINE_TABLE_SIDE, 2 * len(degs)), dtype=np.int64)
+        # The smallest integer type that holds every shifted number (fewer bytes to read per
+        # cell, and less memory kept): below 2 * len(degs) * _TABLE_SPAN.
+        top = 2 * len(degs) * _TABLE_SPAN
+        dtype = np.int16 if top <= np.iinfo(np.int16).max else np.int32
+        self.numbers = np.empty((LINE_TABLE_SIDE * LINE_TABLE_SIDE, 2 * len(degs)), dtype=dtype)
         self.known = np.zeros(LINE_TABLE_SIDE * LINE_TABLE_SIDE, dtype=bool)
 
     def scores(self, rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp]) -> FloatArray:
@@ -242,8 +265,16 @@ class _LineTable:
 
 _COARSE_DEGS: Final = np.arange(0.0, 90.0, DIRECTION_BIN_DEG)
 _COARSE_DEGS.flags.writeable = False
-#: The coarse directions' table, made on first use (24 MB once filled), and its lock.
+#: The directions a peak at coarse direction p is refined over: p plus these (a tenth of a bin).
+_FINE_STEPS: Final = np.linspace(-DIRECTION_BIN_DEG, DIRECTION_BIN_DEG, 21)
+_FINE_STEPS.flags.writeable = False
+#: Tables of refined directions kept, one per coarse peak (1.4 MB each once filled): a building
+#: has a few wall directions, and the doors of one map are refined about the same peaks.
+FINE_TABLES_KEPT: Final = 4
+#: The coarse directions' table, made on first use (12 MB once filled), the tables of the
+#: refinements about the latest coarse peaks (most recent last), and their lock.
 _coarse_table: list[_LineTable] = []
+_fine_tables: dict[int, _LineTable] = {}
 _coarse_lock = threading.Lock()
 
 
@@ -254,6 +285,19 @@ def _coarse_scores(rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp]) -> FloatA
         if not _coarse_table:
             _coarse_table.append(_LineTable(_COARSE_DEGS))
         return _coarse_table[0].scores(rr, cc)
+
+
+def _fine_scores(peak: int, rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp]) -> FloatArray:
+    """``_line_scores(rr, -cc, _COARSE_DEGS[peak] + _FINE_STEPS)`` for cells (rr, cc) of a mask
+    within LINE_TABLE_SIDE, from that peak's table."""
+    with _coarse_lock:
+        table = _fine_tables.pop(peak, None)
+        if table is None:
+            table = _LineTable(_COARSE_DEGS[peak] + _FINE_STEPS)
+            while len(_fine_tables) >= FINE_TABLES_KEPT:
+                del _fine_tables[next(iter(_fine_tables))]  # the least recently used
+        _fine_tables[peak] = table
+        return table.scores(rr, cc)
 
 
 def dominant_directions(wall: BoolArray) -> list[float]:
@@ -286,8 +330,9 @@ def dominant_directions(wall: BoolArray) -> list[float]:
         if taken and score[p] - base < SECOND_DIRECTION_MIN_SHARE * (score[peaks[0]] - base):
             break
         # Refined to a tenth of a bin around the peak.
-        fine = grid_deg[p] + np.linspace(-DIRECTION_BIN_DEG, DIRECTION_BIN_DEG, 21)
-        deg = float(fine[int(np.argmax(_line_scores(rows, neg_cols, fine)))] % 90.0)
+        fine = grid_deg[p] + _FINE_STEPS
+        fine_score = _fine_scores(p, rr, cc) if small else _line_scores(rows, neg_cols, fine)
+        deg = float(fine[int(np.argmax(fine_score))] % 90.0)
         if all(min(abs(deg - t) % 90.0, 90.0 - abs(deg - t) % 90.0) >= DIRECTION_MIN_SEPARATION_DEG
                for t in taken):
             taken.append(deg)
@@ -376,12 +421,14 @@ def _band_runs(on: BoolArray, reach: int) -> tuple[BoolArray, IntArray, IntArray
 
 
 def _through_depth(wall_at: _LineSampler[np.bool_], ua: FloatArray, ub: FloatArray, v: FloatArray,
-                   reach: int) -> FloatArray:
+                   reach: int, leaves: FloatArray | None = None) -> FloatArray:
     """Per candidate: how deep (cells, across the line at ``v``) the gap between the wall cells
     at ``ua`` and ``ub`` is: on each side of the line, the shorter of the two jambs' reaches
     across it (the wall's own thickness at a doorway; a slot's length between two pieces
     standing in a row). Each jamb's reach is the longest run of wall across the line through
-    its last few cells."""
+    its last few cells. ``leaves``: per candidate, jamb and side (-v, +v), an open door leaf's
+    length there (:func:`_jamb_leaves`; 0: none): a leaf is no wall, its jamb reaches no way
+    across on that side."""
     offs = np.arange(-reach, reach + 1, dtype=np.float64)
     back = np.arange(3, dtype=np.float64)
     u = np.stack([ua[:, None] - back, ub[:, None] + back], axis=1)  # (candidate, jamb, cell)
@@ -389,7 +436,131 @@ def _through_depth(wall_at: _LineSampler[np.bool_], ua: FloatArray, ub: FloatArr
     has, lo, hi = _band_runs(col, reach)
     plus = np.where(has, hi - reach, 0).max(axis=2, initial=0)
     minus = np.where(has, reach - lo, 0).max(axis=2, initial=0)
+    if leaves is not None:
+        minus = np.where(leaves[:, :, 0] > 0, 0, minus)
+        plus = np.where(leaves[:, :, 1] > 0, 0, plus)
     return (plus.min(axis=1) + minus.min(axis=1) + 1).astype(np.float64)
+
+
+def _jamb_leaves(wall_at: _LineSampler[np.bool_], floor_at: _LineSampler[np.bool_], ua: FloatArray,
+                 ub: FloatArray, v: FloatArray, res: float) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Per candidate gap (between the wall cells at ``ua`` and ``ub`` on the line at ``v``), jamb
+    (a, b) and side of the line (-v, +v): the length (cells) of the open door leaf standing there
+    (0: none), its position along the line, and where the wall's face is on that side (cells
+    from the line, beside the jamb: where the leaf begins).
+
+    A door leaf swung open stands across the wall line at a jamb, hinged there: a thin panel
+    (LEAF_MAX_THICKNESS_M) with floor on both of its faces, longer than a wall is thick, no
+    longer than the opening it closes (a double door's two leaves are half of it each) nor than
+    the widest single leaf (LEAF_MAX_LENGTH_M), and its far edge stands free in the floor. The
+    side of a cabinet or a shelf unit in a row has the unit's body behind it; a corridor's wall
+    at a junction runs on for metres; neither is a leaf."""
+    reach = math.ceil(LEAF_MAX_LENGTH_M / res) + LEAF_TIP_CELLS + 1
+    offs = np.arange(-reach, reach + 1, dtype=np.float64)
+    back = np.arange(3, dtype=np.float64)
+    u = np.stack([ua[:, None] - back, ub[:, None] + back], axis=1)  # (candidate, jamb, cell)
+    # Across the line from the jamb's last few cells, wall in any of them (a leaf scanned at an
+    # angle to the grid is a staircase a cell or two wide).
+    col = np.asarray(wall_at(u[..., None], (v[:, None] + offs)[:, None, None, :]).any(axis=2), dtype=bool)
+    has, lo, hi = _band_runs(col, reach)
+    ext = np.stack([np.where(has, reach - lo, 0), np.where(has, hi - reach, 0)], axis=-1)  # (candidate, jamb, side)
+    length = ext.astype(np.float64)
+    u_leaf = np.repeat(u[:, :, 1, None], 2, axis=-1)
+    width = (ub - ua - 1)[:, None, None]
+    # A leaf swings to one side of its wall: on the other, the jamb is the wall's own face (a
+    # desk divider or a partition crossing the line stands out on both sides).
+    face = math.ceil(WALL_MAX_THICKNESS_M / 2 / res) + 1
+    other = ext[:, :, ::-1]
+    maybe = ((length * res > WALL_MAX_THICKNESS_M) & (length * res <= LEAF_MAX_LENGTH_M)
+             & (length <= width / 2 + LEAF_SLACK_M / res) & (length < reach - LEAF_TIP_CELLS)
+             & (other <= face))
+    # The two leaves of a double door stand at its two jambs, on the same side.
+    maybe &= maybe[:, ::-1, :]
+    out = np.zeros(length.shape)
+    # The wall's face on each side, beside the jamb (past where a leaf's hinge could stand).
+    thick = _leaf_thickness_cells(res)
+    u_far = np.stack([ua - (thick + 3), ub + (thick + 3)], axis=1)  # (candidate, jamb)
+    beside = np.asarray(wall_at(u_far[..., None], (v[:, None] + offs)[:, None, :]), dtype=bool)
+    got, lo_f, hi_f = _band_runs(beside, reach)
+    wall_face = np.stack([np.where(got, reach - lo_f, 0), np.where(got, hi_f - reach, 0)], axis=-1) + 1.0
+    if not maybe.any():
+        return out, u_leaf, wall_face
+    i, j, s = np.nonzero(maybe)
+    sign = np.where(s == 1, 1.0, -1.0)
+    n = length[i, j, s]
+    # Thin, with floor on both faces, beyond the wall's own half thickness to the leaf's end.
+    t = np.arange(face, reach + 1, dtype=np.float64)[None, :]
+    valid = t <= (n - 1)[:, None]
+    side = thick + 2
+    across = np.arange(-side, side + 1, dtype=np.float64)
+    uu = u_leaf[i, j, s][:, None, None] + across[None, None, :]
+    vv = (v[i][:, None] + sign[:, None] * t)[:, :, None]
+    w_on = wall_at(uu, vv)
+    f_on = floor_at(uu, vv)
+    got, lo2, hi2 = _band_runs(w_on, side)
+    idx = np.arange(across.size)
+    thin = got & (hi2 - lo2 + 1 <= thick)
+    floor_lo = (f_on & (idx >= (lo2 - 2)[..., None]) & (idx < lo2[..., None])).any(axis=-1)
+    floor_hi = (f_on & (idx > hi2[..., None]) & (idx <= (hi2 + 2)[..., None])).any(axis=-1)
+    ok_at = thin & floor_lo & floor_hi
+    good = (ok_at & valid).sum(axis=1)
+    panel = (valid.sum(axis=1) > 0) & (good >= LEAF_MIN_SHARE * valid.sum(axis=1))
+    # ... up to its very edge: the side of a box (a shelf unit, a pallet) turns into the box's
+    # back face there, a leaf ends on its own.
+    last = np.clip(n.astype(np.int64) - face, 0, t.shape[1] - 1)
+    rows = np.arange(n.size)
+    panel &= ok_at[rows, last] & ok_at[rows, np.maximum(last - 1, 0)]
+    # Its far edge stands free: floor just past it.
+    tip_t = n[:, None] + np.arange(1, LEAF_TIP_CELLS + 1, dtype=np.float64)[None, :]
+    tip_u = u_leaf[i, j, s][:, None, None] + np.arange(-1.0, 2.0)[None, None, :]
+    tip = floor_at(tip_u, (v[i][:, None] + sign[:, None] * tip_t)[:, :, None])
+    free_tip = tip.mean(axis=(1, 2)) >= LEAF_TIP_MIN_FLOOR_SHARE
+    ok = panel & free_tip
+    out[i[ok], j[ok], s[ok]] = n[ok]
+    pair = (out > 0) & (out[:, ::-1, :] > 0)
+    return np.where(pair, out, 0.0), u_leaf, wall_face
+
+
+def _leaf_thickness_cells(res: float) -> int:
+    """The most cells a door leaf spans across it (LEAF_MAX_THICKNESS_M and a cell of spread)."""
+    return math.ceil(LEAF_MAX_THICKNESS_M / res - 1e-9) + 1
+
+
+def _leaf_cells(floor_at: _LineSampler[np.bool_], wall_at: _LineSampler[np.bool_], leaves: FloatArray,
+                u_leaf: FloatArray, wall_face: FloatArray, v: FloatArray, res: float) -> list[tuple[IntArray, IntArray]]:
+    """Per candidate: the (rows, cols) of the wall cells of its door leaves (:func:`_jamb_leaves`;
+    empty where it has none), from the wall's face on (``wall_face``: the jamb stays wall)."""
+    thick = _leaf_thickness_cells(res)
+    h, w = floor_at.mask.shape
+    out: list[tuple[IntArray, IntArray]] = []
+    for k in range(leaves.shape[0]):
+        rows: list[IntArray] = []
+        cols: list[IntArray] = []
+        for j, s in zip(*np.nonzero(leaves[k]), strict=True):
+            n = float(leaves[k, j, s])
+            depth = np.arange(float(wall_face[k, j, s]), n + 1.0)
+            uu = np.repeat(u_leaf[k, j, s] + np.arange(-thick, thick + 1.0), depth.size)
+            vv = np.tile(v[k] + (1.0 if s == 1 else -1.0) * depth, 2 * thick + 1)
+            on = wall_at(uu, vv).astype(bool)
+            r, c = floor_at.rc(uu[on], vv[on])
+            ri, ci = np.rint(r).astype(np.int64), np.rint(c).astype(np.int64)
+            inside = (ri >= 0) & (ri < h) & (ci >= 0) & (ci < w)
+            rows.append(ri[inside])
+            cols.append(ci[inside])
+        empty = np.zeros(0, dtype=np.int64)
+        out.append((np.concatenate(rows) if rows else empty, np.concatenate(cols) if cols else empty))
+    return out
+
+
+def _with_floor(floor_at: _LineSampler[np.bool_], cells: list[tuple[IntArray, IntArray]]) -> _LineSampler[np.bool_]:
+    """``floor_at`` with ``cells`` read as floor (door leaves: an open leaf stands in the room it
+    swings into, whose floor runs on behind it)."""
+    if not any(r.size for r, _ in cells):
+        return floor_at
+    floor = floor_at.mask.copy()
+    for r, c in cells:
+        floor[r, c] = True
+    return _LineSampler(floor, floor_at.cos_t, floor_at.sin_t)
 
 
 def _partition_share(both_at: _LineSampler[np.uint8], u_end: FloatArray, sign: float, v: FloatArray, side: int,
@@ -542,7 +713,7 @@ def _gap_candidates(key: IntArray, line: IntArray, pos: IntArray, span: int, sid
 def _not_specks(wall: BoolArray, min_cells: float) -> BoolArray:
     """The cells of ``wall`` in 8-connected pieces whose bounding box reaches at least
     ``min_cells`` along its longer side."""
-    lab, n = ndi.label(wall, structure=np.ones((3, 3), dtype=bool))
+    lab, n = ndi.label(wall, structure=EIGHT)
     if n == 0:
         return np.zeros_like(wall)
     big = np.zeros(n + 1, dtype=bool)
@@ -639,8 +810,13 @@ def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: i
     keep = (inner == 0) | (floor_share >= GAP_MIN_FLOOR_SHARE)
     # A doorway is as deep as its wall: the slot between two cabinets or desks standing
     # in a row is as deep as they are.
+    # (An open door leaf standing at a jamb is no wall: see :func:`_jamb_leaves`.)
+    leaves = np.zeros((cand.size, 2, 2))
+    u_leaf = np.zeros((cand.size, 2, 2))
+    wall_face = np.zeros((cand.size, 2, 2))
     idx = np.flatnonzero(keep)
-    keep[idx] = _through_depth(wall_at, ua[idx], ub[idx], v_line[idx], k.reach) <= k.max_depth
+    leaves[idx], u_leaf[idx], wall_face[idx] = _jamb_leaves(wall_at, floor_at, ua[idx], ub[idx], v_line[idx], res)
+    keep[idx] = _through_depth(wall_at, ua[idx], ub[idx], v_line[idx], k.reach, leaves[idx]) <= k.max_depth
     # The wall runs on past both ends as a partition between two spaces: thin, floor
     # on both sides (an outer wall has unknown outside it, a shelf row or a counter is
     # thick, a wall with cupboards along it has them on one side only).
@@ -649,8 +825,12 @@ def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: i
         _partition_share(both_at, ua[idx], -1.0, v_line[idx], k.side, k.reach, k.thin),
         _partition_share(both_at, ub[idx], 1.0, v_line[idx], k.side, k.reach, k.thin)) \
         >= PARTITION_MIN_SHARE
-    # On both sides the space runs on along the wall past one of the gap's ends.
+    # On both sides the space runs on along the wall past one of the gap's ends (behind the
+    # door leaves standing open in it).
     idx = np.flatnonzero(keep)
+    leaf_cells = _leaf_cells(floor_at, wall_at, leaves[idx], u_leaf[idx], wall_face[idx], v_line[idx], res)
+    leaf_of = dict(zip(idx.tolist(), leaf_cells, strict=True))
+    floor_at = _with_floor(floor_at, leaf_cells)
     mid = (ua[idx] + ub[idx]) / 2
     for sign in (-1.0, 1.0):
         runs = np.zeros(idx.size, dtype=bool)
@@ -663,8 +843,21 @@ def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: i
     out: list[WallGap] = []
     for i in np.flatnonzero(keep).tolist():
         r2, c2 = floor_at.rc(np.array([ua[i], ub[i]]), np.full(2, v_line[i]))
+        lr, lc_ = leaf_of[i]
         out.append(WallGap((float(r2[0]), float(c2[0])), (float(r2[1]), float(c2[1])),
-                           float((ub[i] - ua[i] - 1) * res), front is not None and bool(front[i])))
+                           float((ub[i] - ua[i] - 1) * res), front is not None and bool(front[i]),
+                           tuple(zip(lr.tolist(), lc_.tolist(), strict=True))))
+    return out
+
+
+def leaf_mask(gaps: list[WallGap], shape: tuple[int, ...]) -> BoolArray:
+    """The cells of the open door leaves standing in ``gaps`` (see :func:`_jamb_leaves`): no
+    wall, whatever the scan made of them, for judging the doorways there."""
+    out = np.zeros(shape[:2], dtype=bool)
+    for g in gaps:
+        if g.leaf_cells:
+            r, c = np.array(g.leaf_cells, dtype=np.int64).T
+            out[r, c] = True
     return out
 
 
@@ -847,5 +1040,5 @@ def closure_mask(gaps: list[WallGap], floor: BoolArray) -> BoolArray:
     return out & floor
 
 
-__all__ = ["OuterGap", "WallDirections", "WallGap", "closure_mask", "dominant_directions", "outer_gaps",
-           "wall_gaps"]
+__all__ = ["OuterGap", "WallDirections", "WallGap", "closure_mask", "dominant_directions", "leaf_mask",
+           "outer_gaps", "wall_gaps"]

@@ -51,8 +51,10 @@ from langnav.grounding.selection import (
     came_through_doors,
     describe_ref,
     doors_of,
+    gap_joined,
     hallway_parts,
     label_of,
+    mostly_hallway,
     select,
     select_pair,
     select_wall,
@@ -1043,14 +1045,25 @@ def _room_goal(step: Step, ref: ElementRef, room: Room, detail: Detail, ctx: Gro
         if goal is None:
             raise GroundingError(f"I cannot reach the far side of {desc}.")
         return _nav_step(step, pose, index, [goal], f"to the opposite side of {desc}", (room.id,))
-    goal = ctx.space.safe_point_near(room.centroid, comp, MIDDLE_GOAL_MAX_M, where=in_room)
+    centre = room.centroid
+    if detail == Detail.MIDDLE:
+        # the middle of a room parted by a thing standing in it (a gap or a way round each end of it,
+        # ``gap_joined``) is the middle of the whole room a person sees, not of the part the robot is in
+        group = gap_joined(ctx.analysis, room)
+        if len(group) > 1 and not mostly_hallway(group):
+            weights = [len(r.cells_xy) for r in group]
+            centre = (sum(w * r.centroid[0] for w, r in zip(weights, group, strict=True)) / sum(weights),
+                      sum(w * r.centroid[1] for w, r in zip(weights, group, strict=True)) / sum(weights))
+            in_room = _in_labels(ctx, tuple(r.label for r in group))
+            mask = np.logical_or.reduce([_room_cells_mask(ctx, r) for r in group])
+    goal = ctx.space.safe_point_near(centre, comp, MIDDLE_GOAL_MAX_M, where=in_room)
     if goal is None:
-        goal = ctx.space.best_in_mask(mask, comp, room.centroid)
+        goal = ctx.space.best_in_mask(mask, comp, centre)
         if goal is None:
             raise GroundingError(f"I cannot get into {desc}: none of its free space is reachable from here.")
         if detail == Detail.MIDDLE:
             messages = (f"The middle of {desc} is taken up; I will stop at the nearest free spot, "
-                        f"{math.dist(goal, room.centroid):.1f} m from it.",)
+                        f"{math.dist(goal, centre):.1f} m from it.",)
     verb = "to the middle of" if detail == Detail.MIDDLE else "into"
     return _nav_step(step, pose, index, [goal], f"{verb} {desc}", (room.id,), messages=messages)
 

@@ -17,13 +17,16 @@ your left" in a hallway means the hallway's doors, not one seen through a wall.
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
+import weakref
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Final
 
 import numpy as np
+from scipy import ndimage
 from scipy.spatial import cKDTree
 
 from langnav.analysis.elements import (
@@ -75,6 +78,23 @@ IN_SPACE_M: Final = 0.5
 #: landmark (its cells for rooms and obstacles): about the width of a room, so "the door next to
 #: the box" finds a door across a small room from the box but not one in another part of the floor.
 NEAR_MAX_M: Final = 4.0
+
+#: "The obstacle on your right" is a thing the robot can see: one whose cells a straight line from the
+#: robot reaches without crossing a wall. A line stops this short of the cell it looks at (the thing's own
+#: face and a cell of scan noise in front of it are not walls in the way).
+SIGHT_END_SLACK_M: Final = 0.15
+#: Cells of a thing tried for a line of sight, nearest first (its face towards the robot).
+SIGHT_CELLS_TRIED: Final = 24
+
+#: A block this thick between two doorways is a piece of furniture (a counter, a desk block: 0.6-0.9 m
+#: deep), not a wall: inner walls are 0.1-0.3 m thick, and even a thick one with two doors in it stays
+#: under 0.5 m.
+FURNITURE_MIN_THICKNESS_M: Final = 0.5
+#: The line between the jambs is read this close to the thing (a cell of scan noise either side).
+FURNITURE_LINE_SLACK_M: Final = 0.1
+#: A thing standing free has floor round it: a window this much bigger than the way between its two
+#: doorways holds it whole (a wall runs on out of it).
+FURNITURE_FREE_MARGIN_M: Final = 1.0
 
 #: Building codes ask at least 0.8 m of clear width of a door people walk through (ADA 32 in =
 #: 0.81 m; most European codes 0.8 m). An opening measured narrower than that less one map cell of
@@ -243,8 +263,10 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
     """The space with the spaces narrow gaps join to it (``is_gap``), one after the other. A gap
     narrower than any door does not end a room: a corridor narrowed by a cart goes on past it, and a
     room parted by a row of shelves with a gap in it is one room, whose doors are the doors of both
-    parts."""
-    gaps = [d for d in analysis.doors if is_gap(d, analysis)]
+    parts. Nor do two wide openings between the same two spaces (``round_a_thing``): a long table
+    parting a room leaves a way round each of its ends, and a person walks round it in one room."""
+    round_ends = round_a_thing(analysis)
+    gaps = [d for d in analysis.doors if is_gap(d, analysis) and d not in round_ends] + round_ends
     by_id = {r.id: r for r in analysis.rooms}
     group = [space]
     seen = {space.id}
@@ -259,6 +281,83 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
                         group.append(by_id[other])
         k += 1
     return group
+
+
+def round_a_thing(analysis: MapAnalysis) -> list[Door]:
+    """The ways between two spaces that a thing standing free between them leaves round its ends: all
+    the openings, narrow gaps and doors joining two spaces that are joined by at least one of the
+    analysis's openings (an open way in a wall line, no door in it) and one more way, or by two doorways with a thick
+    block standing free between them (``_block_between``). A wall has doors in it; an open way and a
+    second way between the same two spaces, or two ways round a counter, are the two ends of a long
+    table, a desk block, a shelf block or a counter, which a person walks round within one room, not
+    a wall between two rooms. Found
+    once per analysis (the analysis is immutable; the blocks are looked at in the grid)."""
+    known = _ROUND_A_THING.get(analysis)
+    if known is None:
+        known = _round_a_thing(analysis)
+        _ROUND_A_THING[analysis] = known
+    return list(known)
+
+
+#: round_a_thing's answer for each analysis still in use (a memo, dropped with the analysis).
+_ROUND_A_THING: weakref.WeakKeyDictionary[MapAnalysis, tuple[Door, ...]] = weakref.WeakKeyDictionary()
+
+
+def _round_a_thing(analysis: MapAnalysis) -> tuple[Door, ...]:
+    links: list[Door] = [*analysis.openings, *analysis.doors]
+    spaces = {r.id for r in analysis.rooms}
+    pairs: dict[frozenset[str], list[Door]] = {}
+    for o in links:
+        # (two doors out to the unscanned world are two ways out, whatever stands between them)
+        if len(set(o.connects)) == 2 and set(o.connects) <= spaces:
+            pairs.setdefault(frozenset(o.connects), []).append(o)
+    wide = {id(o) for o in analysis.openings}
+    return tuple(o for ways in pairs.values() if len(ways) >= 2 and (
+        any(id(w) in wide for w in ways) or any(_block_between(analysis, a, b) for a, b in itertools.combinations(ways, 2)))
+        for o in ways)
+
+
+def _block_between(analysis: MapAnalysis, a: Door, b: Door) -> bool:
+    """Whether what stands between two doorways joining the same two spaces is a thing, not a wall: a
+    solid block (``FURNITURE_MIN_THICKNESS_M`` thick or more, as a counter or a desk block is, and no
+    inner wall) standing free, no longer than the way between the two doorways. A room with two doors
+    onto a corridor has a thin wall between them."""
+    grid = analysis.grid
+    res = grid.resolution_m
+    # the thing's two ends are the doorways' jambs nearest each other; the line between them runs
+    # along it (through it or along its face)
+    (ax, ay), (bx, by) = min(((p, q) for p in a.jambs for q in b.jambs), key=lambda pq: math.dist(*pq))
+    length = math.hypot(bx - ax, by - ay)
+    if length < res:
+        return False
+    n = max(2, int(length / (res / 2)))
+    xs, ys = np.linspace(ax, bx, n), np.linspace(ay, by, n)
+    r_line, c_line = grid.world_to_index(xs, ys)
+    reach = math.ceil(FURNITURE_LINE_SLACK_M / res)
+    offsets = np.arange(-reach, reach + 1)
+    rr = (r_line[:, None, None] + offsets[None, :, None]).repeat(len(offsets), axis=2).reshape(-1)
+    cc = (c_line[:, None, None] + offsets[None, None, :]).repeat(len(offsets), axis=1).reshape(-1)
+    ok = grid.in_bounds(rr, cc)
+    occupied = grid.occupied
+    hit = ok.copy()
+    hit[ok] = occupied[rr[ok], cc[ok]]
+    if not hit.any():
+        return False
+    # the block: the occupied cells joined to those on the line, in a window a little bigger than the way
+    pad = math.ceil(FURNITURE_FREE_MARGIN_M / res)
+    r0, r1 = max(int(rr[ok].min()) - pad, 0), min(int(rr[ok].max()) + pad + 1, grid.height)
+    c0, c1 = max(int(cc[ok].min()) - pad, 0), min(int(cc[ok].max()) + pad + 1, grid.width)
+    window = occupied[r0:r1, c0:c1]
+    labels, _ = ndimage.label(window, structure=np.ones((3, 3), dtype=bool))
+    on_line = set(np.unique(labels[rr[hit] - r0, cc[hit] - c0]).tolist()) - {0}
+    # a lidar sees only a solid thing's faces: its inside, never scanned, is part of it
+    block = ndimage.binary_fill_holes(np.isin(labels, list(on_line)))
+    edge = np.zeros_like(block)
+    edge[0, :] = edge[-1, :] = edge[:, 0] = edge[:, -1] = True
+    if (block & edge).any():
+        return False  # it runs on out of the window: part of the walls, not a thing standing free
+    thickness_m = 2.0 * float(ndimage.distance_transform_edt(block).max()) * res
+    return thickness_m >= FURNITURE_MIN_THICKNESS_M
 
 
 def mostly_hallway(group: Sequence[Room]) -> bool:
@@ -440,8 +539,10 @@ def only_way_in(d: Door, analysis: MapAnalysis) -> bool:
 
 
 def doors_of(analysis: MapAnalysis) -> list[Door]:
-    """The doors a person counts: the analysis's doors without the narrow gaps."""
-    return [d for d in analysis.doors if not is_gap(d, analysis)]
+    """The doors a person counts: the analysis's doors without the narrow gaps and the ways round a
+    thing standing in a room (``round_a_thing``)."""
+    round_ends = {id(d) for d in round_a_thing(analysis)}
+    return [d for d in analysis.doors if not is_gap(d, analysis) and id(d) not in round_ends]
 
 
 def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
@@ -479,6 +580,30 @@ def select(ref: ElementRef, analysis: MapAnalysis, pose: Pose, words: str = "",
     ``came_through``: the doors the robot has just walked through (``came_through_doors``), which
     are behind it, where it came from, not "the first door on your left"."""
     return select_many(ref, analysis, pose, 1, words, came_through)[0]
+
+
+def in_sight(analysis: MapAnalysis, xy: Point, o: Obstacle) -> bool:
+    """Whether a straight line from ``xy`` reaches one of the thing's cells (``SIGHT_CELLS_TRIED``
+    nearest) without crossing an occupied cell of the map before it (``SIGHT_END_SLACK_M``)."""
+    cells = np.asarray(o.cells_xy, dtype=float).reshape(-1, 2)
+    if not len(cells):
+        return False
+    grid = analysis.grid
+    d = np.hypot(cells[:, 0] - xy[0], cells[:, 1] - xy[1])
+    occupied = grid.occupied
+    step_m = grid.resolution_m / 2
+    for k in np.argsort(d)[:SIGHT_CELLS_TRIED]:
+        length = float(d[k]) - SIGHT_END_SLACK_M
+        if length <= 0:
+            return True
+        t = np.arange(0.0, length, step_m) / float(d[k])
+        xs = xy[0] + t * (cells[k, 0] - xy[0])
+        ys = xy[1] + t * (cells[k, 1] - xy[1])
+        r, c = grid.world_to_index(xs, ys)
+        inside = grid.in_bounds(r, c)
+        if not occupied[r[inside], c[inside]].any():
+            return True
+    return False
 
 
 def aspect_ratio(o: Obstacle) -> float:
@@ -573,6 +698,22 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         pool = [e for e in pool if matches_side(e, pose, ref.also_side)]  # "behind you on the left": both hold
     if ref.kind == Kind.OBSTACLE and words:
         pool = shape_filter(pool, words)
+    if ref.kind == Kind.OBSTACLE and ref.side is not None and space is None and ref.near is None:
+        # "the obstacle on your right" places a thing by where the robot sees it: one behind a wall, in
+        # another room, is not on its right to a person standing there (ask rather than drive to it)
+        seen: list[Element] = []
+        # nearest first; when only the nearest ones can be meant, the farther ones need no look
+        wanted = ((ref.ordinal or 1) + count - 1 if ref.superlative in (None, Superlative.NEAREST)
+                  else len(pool))
+        for e in sorted(pool, key=lambda e: distance_to(e, pose.xy)):
+            if len(seen) >= wanted:
+                break
+            if isinstance(e, Obstacle) and in_sight(analysis, pose.xy, e):
+                seen.append(e)
+        if not seen and pool:
+            raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]}{_where(ref)} from here: the nearest such "
+                                 "thing is behind a wall. Which one do you mean?")
+        pool = seen
     by_landmark: dict[int, float] | None = None
     if ref.near is not None and not (ref.near.kind in (Kind.ROOM, Kind.HALLWAY) and space is not None):
         pool, by_landmark = _near_landmark(ref, pool, analysis, pose)

@@ -141,7 +141,11 @@ metre, actually forward" -> forward 1 m). "scratch that" takes back the instruct
 everything said before it. A turn said again with what it missed is one turn ("fifteen degrees turn, turn \
 to your left" -> left 15; "turn left, turn left 270 degrees" -> left 270; "turn around, face south" -> face \
 south). A "stop" between instructions takes back the motion before it when that motion had no amount \
-("turn right, stop, turn left" -> only the left turn).
+("turn right, stop, turn left" -> only the left turn). An exclamation of dismay ("aiya", "argh", "ugh", "oh \
+no", "whoops", "damn", "eish") after an instruction marks it as a slip, like "sorry" ("turn left, argh, turn \
+right thirty" -> right 30). A bare turn taken back at once by a turn to the other side, with only pauses \
+between, is a false start ("turn right, turn left, uh, turn right sixty" -> right 60; "turn left, then turn \
+right" keeps both).
 - No camera: leave out "take a picture", "send me a photo", "what do you see?". Alone: no steps and a \
 clarification saying there is no camera. With motions: the motions, and a clarification saying no picture \
 was taken. "take a picture to your left" -> rotate left (the turn is the part the robot can do).
@@ -182,12 +186,28 @@ yes ("oot the way" says why, not where); "take left" -> rotate left; "back out" 
 after through it" -> to it, then through it); "the door on your starboard side" -> side right ("port" left); "o'" of; "an eighth of a turn" \
 -> 45 degrees; "do a slow three sixty" -> rotate 360; "five feet, wait, metres" -> five metres; "I want to see \
 the hallway" after a motion is a picture (no camera), no trip; "so the group can see you" is a purpose; "the \
-room of the babies" / "for the staff" (who it belongs to) -> ask.
+room of the babies" / "for the staff" (who it belongs to) -> ask. Nigerian English: "reverse small" / "go front \
+small small" -> a little; "where you dey" -> where are you; "na left i talk" = it is left I said; "turn around \
+make you face me" -> turn around (the purpose is no step). Singapore English particles "lah", "leh", "lor", \
+"meh" mean nothing ("u-turn lah" -> turn around). "right then," / "right so," opening an utterance is no side \
+("right then, straight on, thirty feet" -> forward 9.144 m). "nah" / "nope" correct like "no". Reported \
+speech relays a request ("chat says turn left, okay, turn left forty five" -> one turn, left 45). Drill \
+orders: "right face" / "left, face" -> rotate 90 that way; "right face, forward ten metres" -> the turn, then \
+the move. "go up / down the row / aisle / lane" (a line of the speaker's setting) -> move forward, how far \
+said or asked. "give it a little turn to the left" -> rotate left, little; "scooch up a skosh" -> move forward \
+a little; "drop back three feet" -> move backward; "go on ahead there two metres" ("there" points at \
+nothing) -> move forward 2; "ten-four" = roger; "lovely," / "brilliant," before a request is praise; \
+greetings and tags at the edges ("yo", "oi", "bro", "innit", "eh", "ya", "mate") and how fast ("real quick") \
+mean nothing; "turn 'round" / "'bout face" -> turn around.
 - Talk not meant for the robot gives no steps: notes and remarks before "okay" / "noted" / "robot," ("water \
 line about eighteen inches on this wall, okay, go forward three feet" -> only the move), statements about \
 others ("..., she's asking about the robot"), a person named and what is said to them ("no, jack, sit \
 down", "sam, leave it": the "no" is theirs, it corrects nothing), a count-in ("five, six, seven, eight"). \
-Talk with a way, a place, a stop or a question in it is kept.
+Talk with a way, a place, a stop or a question in it is kept, except a note of a thing and where it is \
+("scuff marks all along this wall, fine. go to the third door" -> only the door: no wall-following) and \
+a word shouted before an instruction ("corner! turn right ninety" -> only the turn; "corner!" alone -> \
+ask). A count-in said without pauses ("five six seven eight, turn left") is no number; a stammer \
+("g-g-go", "b-b-back") is the word; "not right, left" -> left; "where you now" -> where are you.
 - Ask, don't guess: when the side of a turn ("rotate 45 degrees"), the unit of a distance ("move forward 3") \
 or any word about where or how far is unclear, give no steps; in clarification say what you understood and \
 ask about the rest."""

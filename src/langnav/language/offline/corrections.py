@@ -26,9 +26,15 @@ from langnav.language.offline.numbers import find_quantities
 from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE, STOP_RE, rx
 from langnav.language.offline.vocabulary import VOCABULARY
 
-#: Words that open a correction of the instruction before ("actually", "no wait", "i'm sorry").
+#: Exclamations of dismay ("aiya", "argh", "oh no", "damn"): said right after an instruction, they mark it as
+#: a slip, which the words that follow put right, as "sorry" does ("turn left, aiya, turn right sixty": the
+#: right turn). English and its varieties: Singapore / Malaysia "aiya", "aiyo", "alamak"; South Africa "eish".
+DISMAY: Final = (r"oops|oopsie|whoops|whoopsie|ar+gh+|ugh+|aiy(?:a+h?|o+h?)|alamak|eish|uh\s+oh|oh\s+dear|"
+                 r"dam(?:n|mit)(?:\s+it)?|darn(?:\s+it)?|drat|dang(?:\s+it)?")
+#: Words that open a correction of the instruction before ("actually", "no wait", "i'm sorry", "aiya").
 CORRECTION_START_RE: Final = re.compile(
-    r"^(?:(?:(?:oh|ah|uh|um)\s*,?\s+(?=sorry|no\b|i\s+mean)|actually|no\s+wait|no(?!\s+(?:further|longer|more|need)\b)|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
+    rf"^(?:(?:{DISMAY})\b[\s,!.]*|"
+    r"(?:(?:oh|ah|uh|um)\s*,?\s+(?=sorry|no\b|i\s+mean)|actually|no\s+(?:wait|hang\s+on|hold\s+on)|no(?!\s+(?:further|longer|more|need)\b)|na+h|naw|nope|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
     r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|my\s+(?:bad|mistake)|or\s+rather|rather|make\s+that|make\s+it|correction|"
     r"oops)\b[\s,]*)+", re.IGNORECASE)
 #: Words that take back what was said before ("never mind", "scratch that").
@@ -84,7 +90,11 @@ _LEAD_IN: Final = re.compile(r"^(?:(?:ok|okay|so|now|alright|robot|please|yeah|y
 #: Words that only soften or acknowledge ("about,", "yeah", "okay so"): a clause of them says nothing.
 _HEDGE_WORDS: Final = frozenset({"about", "like", "roughly", "approximately", "say", "so", "well", "yeah", "yes",
                                  "yep", "okay", "ok", "alright", "sure", "good", "great", "cool",
-                                 "um", "uh", "hmm", "robot", "please", "now", "just"})
+                                 "um", "uh", "hmm", "robot", "please", "now", "just",
+                                 # praise and thanks for what was just done ("lovely, now ..."; "brilliant.")
+                                 "lovely", "brilliant", "perfect", "nice", "excellent", "grand", "cheers", "thanks",
+                                 "ta", "awesome", "sweet", "super", "fantastic", "wonderful", "splendid", "marvellous",
+                                 "champion", "beautiful", "superb", "fine"})
 
 
 def is_hedge(clause: str) -> bool:
@@ -108,6 +118,21 @@ def _whole_move(fragment: str) -> bool:
     return bool(find_quantities(norm)) and SIDE_RE.search(norm) is not None
 
 
+#: The ways of a move that no turn can take ("forward", "back"): a fragment with one and its amount is a move.
+_MOVE_WAY_RE: Final = re.compile(r"\b(?:forwards?|backwards?|back|ahead|straight|astern)\b")
+_TURN_SIDE_RE: Final = re.compile(r"\b(?:left|right|clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw|port|starboard)\b")
+
+
+def _move_after_turn(instruction: str, fragment: str) -> bool:
+    """'turn right, forward ten metres': a way only a move takes, with its amount and no side, after a turn
+    that has its side, is the next instruction with its verb left out (drill orders and radio speech), not
+    the amount of the turn."""
+    norm, frag = normalize(instruction), normalize(fragment)
+    return (ROTATE_VERB_RE.search(norm) is not None and GO_VERB_RE.search(norm) is None
+            and _TURN_SIDE_RE.search(norm) is not None and _whole_move(fragment)
+            and _MOVE_WAY_RE.search(frag) is not None and _TURN_SIDE_RE.search(frag) is None)
+
+
 def join_fragments(clauses: list[str], is_open: IsOpen) -> list[str]:
     """Each fragment joined to the open instruction before it (or, failing that, after it)."""
     out: list[str] = []
@@ -122,7 +147,7 @@ def join_fragments(clauses: list[str], is_open: IsOpen) -> list[str]:
             i += 1  # "face, face east", "turn and face east": a false start of the next instruction
             continue
         if is_fragment(clause):
-            if out and (is_open(out[-1]) or is_bare_verb(out[-1])):
+            if out and (is_open(out[-1]) or is_bare_verb(out[-1])) and not _move_after_turn(out[-1], clause):
                 out[-1] = f"{out[-1]} {clause}"
                 i += 1
                 continue

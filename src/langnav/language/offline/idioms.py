@@ -27,6 +27,17 @@ with its reason; none names a case. The text is lower-case and single-spaced (``
 * **Praise of a turn.** "A proper left turn", "a nice clean one eighty": the adjective says how well the
   turn is done, not which way or how far.
 * **Learner grammar.** The article dropped ("make turn on left"): "make / do / take turn" is a turn.
+* **"Give it a turn".** "Give it a little turn to the left", "give yourself a small bit of a turn": the
+  driver's "it" with a light verb; the turn is the motion, "little / small bit of a" its size.
+* **"Small" as an adverb.** Nigerian and West African English (and Pidgin) say "reverse small", "go front
+  small small" for a little: "small" right after a verb or a way, ending the instruction, is "a little".
+* **Drill orders.** "Right face", "left, face": a quarter turn to that side ("about face" is the lexicon's
+  half turn); "face" after a side with nothing after it is the drill order, not a facing.
+* **The way of the speaker's setting.** "Go up the row", "down the aisle", "along the lane": a row, an aisle,
+  a lane, a track is a line the speaker stands in, which no occupancy grid names; going up or down it is
+  going ahead (how far is said, or asked). A hallway or corridor is a place the map knows, and not this.
+* **Vague "there".** "Go on ahead there two metres", "reverse back there a metre": "there" between a way
+  and an amount points at nothing (the amount says how far).
 """
 
 from __future__ import annotations
@@ -38,7 +49,7 @@ from typing import Final
 from langnav.language.offline.numbers import NUMBER
 
 #: What may follow a verb of going for it to be the robot going: a way, or an amount.
-_AMOUNT: Final = (r"(?:another|a\s+(?:bit|little|tad|touch|few|couple|further|foot|metre|meter|yard|step)|"
+_AMOUNT: Final = (r"(?:another|a\s+(?:bit|little|tad|touch|skosh|few|couple|further|foot|metre|meter|yard|step)|"
                   rf"(?:about\s+|around\s+|roughly\s+|some\s+)?(?:{NUMBER})\b)")
 #: A way said with no object after it ("push back the chair" moves the chair), or "up / on / down /
 #: along" followed by an amount or nothing ("push on", "push up one metre"; not "push on the door").
@@ -50,7 +61,7 @@ _WAY: Final = (r"(?:(?:forwards?|ahead|onwards?|straight|back(?:wards?)?|left|ri
 INFORMAL_GO_VERBS: Final = ("push", "press", "mosey", "trundle", "glide", "drift", "scuttle", "scurry", "crawl",
                             "sneak", "tiptoe", "jog", "amble", "stroll", "march", "trot", "toddle", "pootle",
                             "zoom", "coast", "motor", "wheel", "scoot", "creep", "nudge", "shuffle",
-                            "roll", "zip", "cruise", "hop", "edge", "ease", "bump")
+                            "roll", "zip", "cruise", "hop", "edge", "ease", "bump", "scooch", "scootch", "drop")
 #: Verbs of swinging a vehicle round: followed by a side or "around" they are a turn.
 #: ("Bear left" is no such verb: it means keep to the left, a slight turn of no known amount.)
 INFORMAL_TURN_VERBS: Final = ("swing", "whip", "bank", "hook", "kick", "flip", "crank", "wheel", "cut", "swerve",
@@ -130,6 +141,20 @@ _IDIOMS: Final[tuple[tuple[re.Pattern[str], Replacement], ...]] = (
     # French "de"): the amount of the motion, as "by"
     (re.compile(rf"\b(?P<w>forwards?|backwards?|back|left|right|ahead|advance|move|go|turn|rotate|reverse)\s+of\s+"
                 rf"(?=(?:about\s+|around\s+|roughly\s+)?(?:{NUMBER}|a|an|half)\b)"), r"\g<w> "),
+    # "give it a little turn to the left", "give yourself a small bit of a turn": the turn, of that size
+    (re.compile(r"\bgive\s+(?:it|her|yourself|the\s+robot)\s+(?:a|an)\s+(?P<small>(?:small\s+|little\s+|tiny\s+|wee\s+)?"
+                r"(?:bit|touch|tad)\s+of\s+a\s+|(?:small|little|slight|tiny|wee)\s+)?(?:(?:quick|gentle|nice)\s+)?turn\b"),
+     lambda m: "turn a little" if m.group("small") else "turn"),
+    # "reverse small", "go front small small": "small" after a verb or a way, ending the instruction, is a little
+    (re.compile(r"\b(?P<w>reverse|back|up|move|go|shift|turn|come|forwards?|front|left|right|backwards?|straight|ahead)"
+                r"(?:\s+(?:hand\s+)?side)?\s+small(?:\s+small)?(?=\s*(?:$|[,.;!?]|please\b|abeg\b|o\b))"), r"\g<w> a little"),
+    # drill orders: "right face", "left, face" (nothing after "face": not a facing of something)
+    (re.compile(r"\b(?P<side>left|right)\s*,?\s+face\b(?=\s*(?:$|[,.;!?]))"), r"turn \g<side>"),
+    # "go up the row", "down the aisle": a line of the speaker's setting the map does not name; along it is ahead
+    (re.compile(r"\b(?:up|down|along)\s+(?:the|this|that|your)\s+(?:row|aisle|lane|track|line|bay|run|gangway|racking)\b"
+                r"(?!\s+(?:of|to|towards?|into)\b)"), "forward"),
+    # "go on ahead there two metres": "there" between a way and an amount points at nothing
+    (re.compile(rf"\b(?P<w>ahead|forwards?|back(?:wards?)?|on|over|up|down|left|right)\s+there\s+(?={_AMOUNT})"), r"\g<w> "),
     # learner grammar: "make turn", "do turn" (no article) is a turn
     (re.compile(r"\b(?:make|do|take|perform|give)\s+(?:a\s+)?turn(?=\s+(?:on|in|to|at|towards?)?\s*(?:the\s+)?"
                 r"(?:left|right)\b)"), "turn"),

@@ -322,6 +322,9 @@ QUERY_POSE_PATTERNS: Final = (
     # "where you at?" (the copula dropped, as many English dialects do); "where do you stand now?" (where
     # one stands is where one is, as learners and formal speakers ask it)
     r"^\s*where\s+(?:you|u|ya|y'all)\s+at\b",
+    # ("where you now?", "where you right now": the copula dropped before "now", as learners and many
+    # varieties ask it)
+    r"^\s*where\s+(?:you|u|ya)\s+(?:right\s+)?now\b",
     r"\bwhere\s+(?:do|does)\s+(?:you|u|the\s+robot|it)\s+(?:stand|find\s+(?:yourself|itself)|sit|stay)\b"
     r"(?!\s+(?:on|with)\b)",
 )
@@ -422,7 +425,7 @@ LITTLE_PHRASES: Final = (
     *(f"{pre}{size}{noun}" for pre in ("a ", "just a ", "only a ", "") for size in (
         "", "little ", "tiny ", "teeny ", "teeny tiny ", "teensy ", "teensy weensy ", "teeny weeny ", "wee ",
         "itsy bitsy ", "small ", "very small ", "very little ", "tiny little ", "little tiny ")
-      for noun in ("bit", "touch", "tad", "smidge", "nudge", "amount")),
+      for noun in ("bit", "touch", "tad", "smidge", "nudge", "amount", "skosh")),
 )
 
 #: Amounts said only to be large ("a fair bit", "quite a way", "a good distance", "a lot"): unlike "a
@@ -437,6 +440,13 @@ MUCH_PATTERNS: Final = (
 )
 
 # ------------------------------------------------------------------------------ filler & safety
+#: Sounds said while thinking ("um", "uhh", "erm", "hmm"): filler wherever they stand (the side
+#: talk reader knows more sounds, which are words elsewhere: "oh", "wow").
+HESITATION_SOUNDS: Final = r"um+|uh+|er+m?|hmm+"
+#: What people call the robot when they speak to it ("robot", "buddy"): filler wherever said
+#: ("dear robot" too; the side talk reader adds radio call words, which are words elsewhere).
+ROBOT_NAMES: Final = ("robot", "robo", "buddy", "mate")
+
 #: Politeness and filler, removed before reading (consumed, never "unread").
 FILLER_PATTERNS: Final = (
     r"\b(?:would|do|will)\s+you\s+(?:please\s+)?mind\b",
@@ -448,8 +458,8 @@ FILLER_PATTERNS: Final = (
     # "a distance of two metres", "by an angle of forty-five degrees": the words that announce the amount
     r"\b(?:(?:for|by|over|through)\s+)?a\s+distance\s+of\b", r"\b(?:(?:by|through)\s+)?an\s+angle\s+of\b",
     r"\bbe\s+(?:a\s+(?:dear|love|darling|star|sweetheart|good\s+robot)|so\s+kind)\s+(?:and|as\s+to)\b",
-    r"\bdo\s+me\s+a\s+favou?r(?:\s+and)?\b", r"\b(?:lol|lmao|rofl|haha+|hehe+|omg|btw|tbh)\b", r"\b(?:hey|hi|hello|ok(?:ay)?|alright|all\s+right|right\s+then|so|well|now|um+|uh+|er+m?|hmm+)\b",
-    r"\b(?:dear\s+)?robot\b", r"\brobo\b", r"\bbuddy\b", r"\bmate\b", r"\bfirst\s+of\s+all\b",
+    r"\bdo\s+me\s+a\s+favou?r(?:\s+and)?\b", r"\b(?:lol|lmao|rofl|haha+|hehe+|omg|btw|tbh)\b", r"\b(?:hey|hi|hello|ok(?:ay)?|alright|all\s+right|right\s+then|so|well|now|" + HESITATION_SOUNDS + r")\b",
+    r"\b(?:dear\s+)?" + ROBOT_NAMES[0] + r"\b", *(rf"\b{name}\b" for name in ROBOT_NAMES[1:]), r"\bfirst\s+of\s+all\b",
     r"\bto\s+begin(?:\s+with)?\b", r"\bstart\s+by\b", r"\bbegin\s+by\b", r"\bjust\b", r"\balso\b",
     r"\bfor\s+me\b", r"\bif\s+you\s+(?:can|could|would|do\s+not\s+mind|please)\b", r"\bgo\s+ahead\s+and\b",
     r"\bwhen\s+you\s+(?:are\s+ready|can|get\s+a\s+chance)\b", r"\blet\s+us\b", r"\blets\b",
@@ -474,6 +484,14 @@ FILLER_PATTERNS: Final = (
     r"\bfrom\s+(?:here|there|where\s+you\s+are(?:\s+now)?)\b", r"\bstarting\s+from\s+here\b",
     # a name for the robot said in passing ("turn around, silly")
     r"\b(?:you\s+)?(?:silly|sweetie|dummy|little\s+guy|little\s+buddy)(?:\s+(?:robot|thing|billy))?\s*$",
+    # a greeting or address opening the instruction ("yo turn left", "oi, stop", "bro go forward 3 feet") and a
+    # tag or address closing it ("turn left innit", "turn right ya", "back up a bit eh", "go on, man"): they
+    # address the listener or ask agreement, never a way, an amount or a place (only at the edges, where they
+    # cannot be part of the instruction)
+    r"^\s*(?:yo|ay|ey|oi|oy|bro|dude|fam|boss|chief|guv|mate)\b(?!\s*(?:'s|is|are)\b)",
+    r"\b(?:innit|init|eh|ya|yah|yeah|yep|bro|dude|fam|man|boss|chief|guv|mate|hey|aye)\s*[?!.]*\s*$",
+    # how fast, said of the motion ("real quick", "nice and quick"): the robot keeps its safe speed
+    r"\b(?:real|really|very|nice\s+and|super)\s+(?:quick|quickly|fast|slow|slowly)\b",
 )
 
 #: Phrases that mention walls or obstacles only to avoid them: removed before the safety check.

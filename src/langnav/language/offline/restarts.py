@@ -9,6 +9,10 @@ clauses before the steps are built:
 * a number said again on its own insists on it: "go forward two feet. just two." is one move;
 * an amount stated ("it's about two metres", "that's forty five degrees to your right") says what the
   amount is: it gives the amount an instruction next to it misses, or says again the one it has;
+* a bare turn to one side said right before a turn to the other side ("turn right, turn left, ...") is a
+  fumbled start, not a request: doing both would bring the robot back where it started, which nobody
+  asks for, so the last one said counts (README "Speech": the last version counts). It never turns more
+  than the last turn asks; with a word that puts them in order ("turn left, then turn right") both run;
 * a "stop" between two instructions stops the motion before it when that motion had no amount: the
   speaker let it run and stopped it, and how far it went cannot be known, so it is not run ("turn
   right, stop, turn left" is the left turn). A motion with its amount ends on its own: "go forward
@@ -22,10 +26,12 @@ from collections.abc import Callable
 from typing import Final
 
 from langnav.language.intent import Amount, Direction, Movement, Step
+from langnav.language.offline.corrections import DISMAY
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import NUMBER, Quantity, QuantityKind, find_quantities
 from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE
 from langnav.language.offline.reading import ASK_SIDE, Reading
+from langnav.language.offline.vocabulary import VOCABULARY
 
 #: Words that give a turn its side.
 _TURN_SIDE_RE: Final = re.compile(r"\b(?:left|right|clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw)\b")
@@ -208,3 +214,80 @@ def drop_insisted_amounts(clauses: list[str]) -> list[str]:
             continue  # "go to the right a bit, like a metre, sideways": the way said again
         out.append(clause)
     return out
+
+
+#: What may stand between a turn and the turn to the other side that takes it back: pauses, fillers and
+#: exclamations ("turn right, uh, turn left"). Any other word between them ("then", "and", "take a picture")
+#: says both are meant.
+_PAUSE_WORDS: Final = frozenset({"uh", "um", "er", "erm", "hmm", "ah", "oh", "eh", "like", "so", "well", "okay", "ok",
+                                 "wait", "no", "sorry", "robot", "please", "now", "just", "i", "mean"})
+DISMAY_RE: Final = re.compile(rf"\b(?:{DISMAY})\b")
+#: A bare turn as said ("turn right", "rotate to the left"): between two turns, a false start too.
+_BARE_TURN_RE: Final = re.compile(r"\b(?:turn|rotate|spin|pivot|swing|veer)\s+(?:to\s+(?:the|your)\s+)?(?:left|right)\b")
+_SIDES: Final = frozenset({Direction.LEFT, Direction.RIGHT})
+
+
+def _bare_side_turn(reading: Reading) -> Step | None:
+    """A turn to a side with no amount, no heading and no place said ("turn right")."""
+    turn = _only_turn(reading)
+    if turn is None or turn.direction not in _SIDES or ASK_SIDE in reading.asks:
+        return None
+    if turn.amount != Amount.DEFAULT or turn.angle_deg is not None or _facing(turn):
+        return None
+    return turn
+
+
+def _spans(text: str, clauses: list[str]) -> list[tuple[int, int] | None]:
+    """Where each clause stands in ``text`` (the prompt), found in order; None where it was changed on
+    the way (a correction applied) and cannot be found as said."""
+    lowered = text.lower()
+    cursor = 0
+    spans: list[tuple[int, int] | None] = []
+    for clause in clauses:
+        # the clause's words with any pauses between them ("right sixty" was said "right, sixty")
+        words = re.findall(r"[^\s,.;!?]+", clause.lower())
+        found = re.compile(r"[\s,.;!?]+".join(map(re.escape, words))).search(lowered, cursor) if words else None
+        if found is None:
+            spans.append(None)
+            continue
+        cursor = found.end()
+        spans.append((found.start(), cursor))
+    return spans
+
+
+def _only_pauses(between: str) -> bool:
+    """Nothing but pauses, fillers and exclamations (see _PAUSE_WORDS), or words the reading does not know at
+    all ("turn left, oh bugger, right"; "turn right, jeez, turn left"): an oath or a name, which asks for no
+    motion of its own (a word that orders, "then", or an instruction, "take a picture", is known)."""
+    words = re.findall(r"[a-z']+", DISMAY_RE.sub(" ", between.lower()))
+    return all(w in _PAUSE_WORDS or w not in VOCABULARY for w in words)
+
+
+def drop_false_start_turns(clauses: list[str], text: str, read: ClauseReader) -> list[str]:
+    """The clauses without each bare turn that a turn to the other side follows straight away (see the
+    module docstring): with nothing but pauses, or turns taken back, between them in ``text`` (the prompt)."""
+    spans = _spans(text, clauses)
+    kept: list[int] = []
+    for i, clause in enumerate(clauses):
+        turn = _only_turn(read(clause))
+        if turn is not None and turn.direction in _SIDES and not _facing(turn) and not _ONCE_MORE_RE.search(clause):
+            while kept:
+                said = [k for k in kept if not _interjection(clauses[k], read)]  # "oh bugger": no instruction
+                first = _bare_side_turn(read(clauses[said[-1]])) if said else None
+                if first is None or first.direction == turn.direction or not _taken_back(text, spans, said[-1], i):
+                    break
+                del kept[kept.index(said[-1]):]  # "turn right, turn left, ...": the turn started and taken back at once
+        kept.append(i)
+    return [clauses[i] for i in kept]
+
+
+def _interjection(clause: str, read: ClauseReader) -> bool:
+    """A clause of pauses, exclamations or words the reading does not know, that it reads as nothing."""
+    return not read(clause).steps and _only_pauses(clause)
+
+
+def _taken_back(text: str, spans: list[tuple[int, int] | None], first: int, second: int) -> bool:
+    """Whether clause ``second`` follows clause ``first`` in ``text`` with nothing between them but pauses
+    and other bare turns (false starts too, taken back already or corrected)."""
+    a, b = spans[first], spans[second]
+    return a is not None and b is not None and _only_pauses(_BARE_TURN_RE.sub(" ", text[a[1]:b[0]].lower()))

@@ -16,8 +16,16 @@ eight, step forward"). A person listening would not take any of it as an instruc
 3. **A name said to someone else** ("jack, sit down"; "no, sam, leave it"; "ava, hands off"): a single
    word the reading does not know, set off by pauses, followed by words with no way, no amount, no place
    and no stop, is a person addressed by name and what is said to them.
-4. **A count-in** ("five, six, seven, eight"; "three, two, one"): numbers said one by one in steps of one
-   count time, they measure nothing.
+5. **A note about a place** ("scuff marks all along this wall, fine. go to ..."; "water damage by the door,
+   noted."): a thing of the speaker's own (words the reading does not know) said with where it is, and no
+   verb, no way and no amount, is a verbless statement of what is there, not a trip: before a word that turns
+   back to the robot it is dropped as rule 1 drops talk.
+6. **A shout** ("corner!", "door!" with an instruction after it): a single word called out with an
+   exclamation, as kitchen and workshop staff warn each other where they are, is a warning to the people
+   around, not a place to go to; an instruction after it is the request. Alone, it is asked about (a
+   warning or a place?); one holding a way ("behind!") is kept, as all talk with a way is.
+4. **A count-in** ("five, six, seven, eight"; "three, two, one"; "five six seven eight,"): numbers said one
+   by one in steps of one count time, they measure nothing.
 
 Ask, don't guess, still holds: talk that holds a way, a place or a stop is never dropped (a listener
 could not tell it is not meant for the robot), and an amount is dropped only in talk that opens the
@@ -43,7 +51,7 @@ _SEGMENT_RE: Final = re.compile(r"[^,.;!?]+(?:[,.;!?]+|$)")
 #: Marks that end a sentence (a new sentence may open with a note).
 _SENTENCE_END: Final = frozenset(".;!?")
 #: Words that turn the talk back to the robot.
-_REOPEN_RE: Final = re.compile(r"^\s*(?:ok(?:ay)?|alright|all\s+right|noted|anyway|anyhow|robot|rover)\b", re.IGNORECASE)
+_REOPEN_RE: Final = re.compile(r"^\s*(?:ok(?:ay)?|alright|all\s+right|noted|anyway|anyhow|robot|rover|fine)\b", re.IGNORECASE)
 #: Words that say which way (any of them keeps the talk: it may be meant for the robot).
 _WAY_RE: Final = re.compile(
     r"\b(?:left|right|forwards?|backwards?|back|ahead|straight|around|round|clockwise|counter\s*clockwise|"
@@ -67,10 +75,11 @@ _YOU_RE: Final = re.compile(r"\b(?:you|your|yourself|u|ur)\b", re.IGNORECASE)
 _LEAD_RE: Final = re.compile(r"^\s*(?:sorry|no|oh|oops|(?:one|a|just\s+a)\s+(?:second|sec|moment|minute))\s*$",
                              re.IGNORECASE)
 _NUMBER_VALUES: Final = {**ONES, **TENS}
-#: Sounds said while thinking ("um", "uhh", "hmm", "erm", "ah", "oh"): no name.
-_SOUND_RE: Final = re.compile(r"u+[hm]+|h+m+|e+r+m*|a+h+|o+h+|m+h?m+|e+h+|huh|phew|hmph|oops|whoops|wow|ooh|aw+")
+#: Sounds said while thinking or in surprise ("um", "uhh", "hmm", "erm", "ah", "oh"): no name.
+_SOUND_RE: Final = re.compile(lx.HESITATION_SOUNDS + r"|u+[hm]+|h+m+|e+r+m*|a+h+|o+h+|m+h?m+|e+h+|huh|phew|hmph|oops|whoops"
+                              r"|wow|ooh|aw+")
 #: What people call the robot (and radio call words): the robot addressed, not someone else.
-_ROBOT_NAMES: Final = frozenset({"robot", "rover", "bot", "robo", "unit", "base", "scout", "buddy", "mate", "pal"})
+_ROBOT_NAMES: Final = frozenset({*lx.ROBOT_NAMES, "rover", "bot", "unit", "base", "scout", "pal"})
 #: A count-in has at least this many numbers (two may be an amount said again: "four, four metres").
 MIN_COUNT_IN: Final = 3
 
@@ -82,15 +91,30 @@ def without_side_talk(text: str) -> str:
         return text
     drop = [False] * len(segments)
     bodies = [s.strip().rstrip(",.;!?").strip() for s in segments]
-    instructs = [_instructs(b) for b in bodies]
+    instructs = [_instructs(b) and not _note_about_place(b) for b in bodies]
     _before_reopening(segments, bodies, instructs, drop)
     _statements(bodies, instructs, drop)
     _vocatives(bodies, drop)
     _count_ins(bodies, drop)
+    _shouts(segments, bodies, instructs, drop)
     if all(drop) or not any(drop):
         return text
     kept = [s for s, d in zip(segments, drop, strict=True) if not d]
     return " ".join(" ".join(kept).split())
+
+
+def without_spoken_count_in(text: str) -> str:
+    """``text`` without a count-in said with no pauses between its numbers ("five six seven eight, turn left"),
+    before the numbers are read: read as one number, it would be 5678 (rule 4 finds the others later)."""
+    segments = _SEGMENT_RE.findall(text)
+    kept = [seg for k, seg in enumerate(segments) if k + 1 == len(segments) or not _counted(seg)]
+    return text if len(kept) == len(segments) else " ".join(" ".join(kept).split())
+
+
+def _counted(segment: str) -> bool:
+    words = segment.strip().rstrip(",.;!?").lower().split()
+    said = [_NUMBER_VALUES.get(w) for w in (words[1:] if words[:1] == ["and"] else words)]
+    return len(said) >= MIN_COUNT_IN and all(_counts_on(said, 0, m) for m in range(len(said) - 1))
 
 
 @lru_cache(maxsize=1024)
@@ -108,6 +132,20 @@ def _instructs(body: str) -> bool:
     said = " ".join(lx.TYPOS.get(w, w) for w in body.lower().split())
     return bool(GO_VERB_RE.search(said) or ROTATE_VERB_RE.search(said) or STOP_RE.search(norm)
                 or _WAY_RE.search(norm) or _PLACE_RE.search(norm) or _QUERY_RE.search(norm))
+
+
+def _note_about_place(body: str) -> bool:
+    """Rule 5: words the reading does not know (a thing), then where it is, and nothing that instructs."""
+    norm = normalize(body)
+    place = _PLACE_RE.search(norm)
+    if place is None or place.start() == 0:
+        return False
+    said = " ".join(lx.TYPOS.get(w, w) for w in body.lower().split())
+    if GO_VERB_RE.search(said) or ROTATE_VERB_RE.search(said) or STOP_RE.search(norm) or _WAY_RE.search(norm) \
+            or _QUERY_RE.search(norm) or _has_amount(body):
+        return False
+    thing = [w for w in norm[:place.start()].split() if w not in lx.STOPWORDS and w != "all"]
+    return bool(thing) and not any(_known(w) for w in thing)
 
 
 def _has_amount(body: str) -> bool:
@@ -188,6 +226,22 @@ def _count_ins(bodies: list[str], drop: list[bool]) -> None:
             for k in range(i, j + 1):
                 drop[k] = True  # (a count-in precedes what it counts in: one at the very end is left as said)
         i = j + 1
+
+
+def _shouts(segments: list[str], bodies: list[str], instructs: list[bool], drop: list[bool]) -> None:
+    """Rule 6: one word called out with "!" before an instruction."""
+    for i in range(len(segments) - 1):
+        if any(instructs[i + 1:]) and is_shout(segments[i]):
+            drop[i] = True
+
+
+def is_shout(segment: str) -> bool:
+    """One word called out with "!" that holds no way, no amount and no stop ("corner!"): a warning (rule 6).
+    Alone, a listener cannot tell a warning from a place to go to, so the reading asks."""
+    body = segment.strip().rstrip(",.;!?").strip()
+    norm = normalize(body)
+    return ("!" in segment and len(body.split()) == 1 and not _has_amount(body) and STOP_RE.search(norm) is None
+            and _WAY_RE.search(norm) is None)
 
 
 def _counts_on(values: list[int | None], first: int, last: int) -> bool:

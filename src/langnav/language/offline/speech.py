@@ -37,6 +37,41 @@ _HEDGES: Final = re.compile(
     r"give\s+or\s+take(?:\s+a\s+(?:bit|little|touch|tad))?|more\s+or\s+less|or\s+there\s*abouts|"
     r"(?:or\s+)?so\s+i(?:'?m|\s+am)\s+told|or\s+so\s+i\s+(?:think|hear|believe|reckon))\b",
     re.IGNORECASE)
+#: Discourse particles of Singapore and Malaysian English ("u-turn lah", "go straight lor", "can or not meh"):
+#: they carry the speaker's stance (insisting, resigned, doubting), never a way, an amount or a place.
+PARTICLES: Final = frozenset({"lah", "leh", "lor", "loh", "meh", "hor", "sia", "liao"})
+#: Reported speech before an instruction ("chat says turn left", "my boss said go back two metres", "they want
+#: you to turn around"): the speaker relays what someone else asks; the instruction is the same as if the
+#: speaker said it (and said again right after, "chat says turn left, okay, turn left forty five", it is one).
+REPORTED: Final = re.compile(
+    r"(?:^|(?<=[,.;!?]))\s*(?:(?:the|my|our|your|his|her|their|some|someone|somebody|everyone|everybody|people|"
+    r"they|he|she|chat|boss|[a-z]+'s)\s+)*(?:chat|boss|they|he|she|someone|somebody|everyone|everybody|people|"
+    r"viewers?|folks|guys|team|mum|mom|dad|manager|supervisor|[a-z]+)\s+(?:says?|said|is\s+saying|are\s+saying|"
+    r"wants?\s+(?:you|u)\s+to|want\s+(?:you|u)\s+to|asks?\s+(?:you\s+)?to|asked\s+(?:you\s+)?to|reckons?|thinks?)\s+"
+    r"(?=(?:to\s+)?(?:turn|go|move|rotate|spin|pivot|back|reverse|drive|head|face|stop|come)\b)",
+    re.IGNORECASE)
+#: Nigerian Pidgin and Nigerian English, each only where the word has that job: "dey" after a pronoun is the
+#: copula "are" ("where you dey now"); "na X i talk / say" is "it is X I said" ("na left i talk"), which says
+#: again the way the speaker means; "make you" before a verb is "so that you" ("turn around make you face
+#: me"), a purpose, not a second request.
+PIDGIN: Final = (
+    (re.compile(r"\b(?P<who>you|u|i|we|they|he|she|it)\s+dey\b", re.IGNORECASE), r"\g<who> are"),
+    (re.compile(r"\bna\s+(?P<said>(?:(?:to\s+)?(?:the|your)\s+)?(?:left|right|front|back|forward|backward))"
+                r"(?:\s+(?:side|hand\s+side))?\s+(?:i|we)\s+(?:talk|tok|say|said|tell\s+(?:you|u))(?:\s+am)?\b",
+                re.IGNORECASE), r"i mean \g<said>"),
+    (re.compile(r"\s+make\s+(?P<who>you|u)\s+(?=(?:face|see|look|dey|fit|no|reach)\b)", re.IGNORECASE),
+     r", so that \g<who> "),
+)
+#: Words written with their first syllable dropped, as said ("turn 'round", "'bout face", "go 'til the wall"):
+#: the whole word.
+ELIDED: Final = (
+    (re.compile(r"(?<![\w'])'(?P<w>round|bout|til|till|cause|em)\b", re.IGNORECASE),
+     lambda m: {"round": "around", "bout": "about", "til": "until", "till": "until", "cause": "because",
+                "em": "them"}[m.group("w").lower()]),
+)
+#: A stammered word: its first sound said and said again before the whole word ("g-g-go", "b-b-back", "t-turn"):
+#: the word.
+STAMMER: Final = re.compile(r"\b(?P<s>[a-z]{1,3})(?:-(?P=s))*-(?P<w>(?P=s)[a-z]+)\b", re.IGNORECASE)
 #: A word cut off in the middle: letters and a dash before a space or the end ("nin-", "c-").
 _CUT_OFF: Final = re.compile(r"(?<![\w-])[a-z]+-(?=[\s,.;!?]|$)", re.IGNORECASE)
 #: Short consonant runs are sounds, not words ("ff", "fff", "tsk"); units ("ft", "cm") are words, and a
@@ -135,6 +170,9 @@ REMARKS: Final = re.compile(
     r"|\bso\s+(?:that\s+)?(?!(?:you|u)\b)(?:the\s+|my\s+|our\s+|your\s+|his\s+|her\s+|their\s+)?[a-z]+(?:\s+[a-z]+)?\s+"
     r"(?:can|could|may|might|will|would)\b(?![^,.;!?]*\b(?:behind|left|right|around|round|ahead|north|south|east|west)\b)"
     r"[^,.;!?]*"
+    # "... so that you face me": the speaker's own place, which the map cannot know, given as why the robot
+    # turns (Nigerian English "make you face me" is read as this first); the turn said is the request
+    r"|\bso\s+(?:that\s+)?(?:you|u)\s+(?:can\s+)?(?:face|see|look\s+at)\s+(?:me|us)\b[^,.;!?]*"
     # "please do one thing, ...": announces the request that follows
     r"|(?:^|(?<=[,.;!?]))\s*(?:please\s+)?do\s+one\s+thing\b[^,.;!?]*"
     # thanks said ahead: "..., that would be great", "that'd be awesome"
@@ -243,7 +281,9 @@ RADIO_CALL: Final = re.compile(rf"^\s*(?:{_STATION}\s+to\s+{_STATION}|{_STATION}
                                rf"{_STATION}\s+(?:number\s+)?(?:\d{{1,2}}|one|two|three|four|five|six|seven|eight|nine|ten|"
                                r"alpha|bravo|charlie|delta|echo))\s*(?=[,.;!?]|$)",
                                re.IGNORECASE)
+#: (North American radio's "ten-four", "10-4" is "understood", as "roger" is.)
 RADIO_NOISE: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*(?:affirmative|roger(?:\s+that)?|copy(?:\s+that)?|wilco|that\s+is|i\.?e|"
+                                r"ten\s*-?\s*four|10\s*-\s*4|"
                                 r"over(?:\s+and\s+out)?|out)\s*(?=[,.;!?]|$)", re.IGNORECASE)
 #: A number started and said again whole ("four, four and a half metres", "twenty, twenty feet"): the
 #: first try is no amount of its own.
@@ -259,11 +299,12 @@ _ALTERNATIVE: Final = (rf"(?:(?:to\s+(?:the|your)\s+)?(?:left|right|forwards?|ba
                        rf"feet|foot|inch(?:es)?|yards?|met(?:er|re)s?|centimet(?:er|re)s?|degrees?|\d+(?:\.\d+)?|"
                        rf"{NUMBER_WORDS}))")
 #: A contrast that names what is not meant ("turn left, not right"; "three feet not four"; "not left but
-#: right"): the alternative said with "not" is no instruction, only the other one is (and the clause is
-#: no negation of the whole instruction).
+#: right"; "not right, left", "not right, i mean left"): the alternative said with "not" is no instruction,
+#: only the other one is (and the clause is no negation of the whole instruction).
 CONTRAST_AFTER: Final = re.compile(rf"\b(?P<said>{_ALTERNATIVE})\s*,?\s+(?:and\s+|but\s+)?not\s+{_ALTERNATIVE}\b"
                                    r"(?!\s+(?:but|rather)\b)", re.IGNORECASE)
-CONTRAST_BEFORE: Final = re.compile(rf"\bnot\s+{_ALTERNATIVE}\s*,?\s+(?:but|rather)\s+(?=\S)", re.IGNORECASE)
+CONTRAST_BEFORE: Final = re.compile(rf"\bnot\s+{_ALTERNATIVE}\s*(?:,?\s+(?:but|rather)\s+(?=\S)|,\s*(?:i\s+mean\s+)?"
+                                    rf"(?={_ALTERNATIVE}\s*(?:[,.;!?]|$)))", re.IGNORECASE)
 #: "go forward and stop after two metres": the amount is how far the move goes (a stop after a place,
 #: "stop after the door", is read where places are).
 STOP_AFTER_AMOUNT: Final = re.compile(rf"\s*,?\s+(?:and\s+)?stop\s+after\s+(?=(?:\d|a\b|an\b|half\b|(?:{NUMBER_WORDS})\b))",
@@ -305,6 +346,11 @@ _COMPLETES_A_SIDE: Final = re.compile(
     r"forwards?|backwards?|back|ahead|straight|left|right|around|round|clockwise|counter\s*clockwise|anti\s*clockwise|"
     rf"(?:north|south|east|west)\w*|hand|side|turn\b(?=\s*(?:$|[,.;!?])))\b|\d|(?:{NUMBER_WORDS})\b)", re.IGNORECASE)
 _RIGHT: Final = re.compile(r"\bright\b", re.IGNORECASE)
+#: "Right then," and "right so," with a pause after them open an utterance in British and Irish English ("right
+#: then, straight on, thirty feet"): whatever follows, they are no side (a turn said that way runs on with no
+#: pause: "right then forward two feet").
+_OPENER_PHRASE: Final = re.compile(r"^\s*(?:(?:ok(?:ay)?|well|so|now|oh)\s*,?\s+)*right\s+(?:then|so|now)\s*[,;:!.-]",
+                                   re.IGNORECASE)
 
 
 def without_discourse_markers(text: str) -> str:
@@ -319,7 +365,7 @@ def without_discourse_markers(text: str) -> str:
     if m is None or _RIGHT.search(m.group(0)) is None:
         return text
     rest = text[m.end():]
-    if _COMPLETES_A_SIDE.match(rest):
+    if _COMPLETES_A_SIDE.match(rest) and not _OPENER_PHRASE.match(m.group(0)):
         return text
     return rest.lstrip()
 
@@ -328,7 +374,12 @@ def plain_speech(prompt: str) -> str:
     """``prompt`` with hesitations, hedges, cut-off words, stutters and noise tokens removed, a comma
     before each self-correction marker, the words speech recognition mistook put right, and polite
     frames and side remarks taken out."""
-    text = without_discourse_markers(without_side_talk(prompt))
+    for pattern, spelled in ELIDED:
+        prompt = pattern.sub(spelled, prompt)
+    text = without_discourse_markers(without_side_talk(STAMMER.sub(r"\g<w>", prompt)))
+    text = REPORTED.sub(" ", text)
+    for pattern, repl in PIDGIN:
+        text = pattern.sub(repl, text)
     for pattern, repl in HOMOPHONES:
         text = pattern.sub(repl, text)
     text = LIST_ITEM.sub(". ", ENUMERATION.sub(" ", text))
@@ -354,7 +405,7 @@ def plain_speech(prompt: str) -> str:
         punct = token[len(token.rstrip(",.;:!?")):]
         after_number = bool(kept) and _NUMBER_WORD.match(kept[-1].lower()) is not None
         # chat spellings ("fwd", "rt") are words, not noise
-        if bare in HESITATIONS or (_NOISE.match(bare) and bare not in VOCABULARY and bare not in TYPOS
+        if bare in HESITATIONS or bare in PARTICLES or (_NOISE.match(bare) and bare not in VOCABULARY and bare not in TYPOS
                                    and not _typed_direction(bare)) \
                 or (bare in _UNIT_SOUNDS and not after_number):
             _carry(kept, punct)

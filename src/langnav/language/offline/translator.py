@@ -26,11 +26,13 @@ from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_cl
 from langnav.language.offline.photos import without_photo
 from langnav.language.offline.reading import ASK_AMOUNT, ASK_CONFIDENCE, ASK_SIDE
 from langnav.language.offline.restarts import (
+    drop_false_start_turns,
     drop_insisted_amounts,
     drop_stopped,
     merge_restated_turns,
     read_stated_amounts,
 )
+from langnav.language.offline.sidetalk import is_shout, without_spoken_count_in
 from langnav.language.offline.speech import plain_speech, unfinished_number
 from langnav.language.offline.splitter import split_steps
 from langnav.language.translator import Context, clean_prompt
@@ -66,6 +68,9 @@ NO_CAMERA_MESSAGE: Final = (
 CUT_NUMBER_MESSAGE: Final = (
     "I heard a number cut off ('{said}'), so I don't know how far or how much: say it again, e.g. 'turn left "
     "45 degrees'. Nothing was run.")
+SHOUT_MESSAGE: Final = (
+    "I heard '{said}' called out: is that a warning, or a place to go to? Nothing was run. Tell me what to do, "
+    "e.g. 'go to the nearest corner'.")
 CANCELLED_MESSAGE: Final = "You took that back ('never mind'), so I did nothing. Tell me what to do next."
 PHOTO_LEFT_OUT_MESSAGE: Final = "I did the motion but took no picture: I have no camera."
 TOO_MANY_STEPS_MESSAGE: Final = (
@@ -91,7 +96,9 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     if negative is not None:
         shown = text[negative.start():negative.start() + 12].split()[0]
         return _clarify(NEGATIVE_MESSAGE.format(number=shown), confidence=1.0, unread=[])
-    text = plain_idioms(plain_speech(canonical_numbers(text)))
+    if is_shout(text) and text.strip(" !").lower() in ELEMENT_NOUNS:  # "corner!": a warning, or the place?
+        return _clarify(SHOUT_MESSAGE.format(said=text.strip()), confidence=ASK_CONFIDENCE, unread=[text.strip()])
+    text = plain_idioms(plain_speech(canonical_numbers(without_spoken_count_in(text))))
     clauses, photo = _clauses(text)
     cut = next((c for c in map(unfinished_number, clauses) if c is not None), None)
     if cut is not None:
@@ -234,7 +241,8 @@ def _clauses(text: str) -> tuple[list[str], bool]:
     # meters, I mean five feet, forward" is corrected first, then completed
     kept = drop_insisted_amounts(read_stated_amounts(kept))  # before joining: "..., only a little"
     joined = join_fragments(apply_corrections(join_fragments(kept, _is_open)), _is_open)
-    return merge_restated_turns(drop_stopped(drop_insisted_amounts(joined), _read), _read), photo
+    said_once = drop_false_start_turns(drop_stopped(drop_insisted_amounts(joined), _read), text, _read)
+    return merge_restated_turns(said_once, _read), photo
 
 
 def _answered_by(question: str, steps: list[Step]) -> bool:
