@@ -25,6 +25,15 @@ opening with scanned wall along its side for half of what was seen of it, the op
 mouth of a passage running on (an aisle between two shelf blocks, a slot between lockers, a
 corridor whose far part was not scanned), not a door.
 
+*A door may open onto an entry lobby.* A room's door in a corridor's or a hall's wall often
+opens onto a short lobby about as wide as the door (beside an en-suite bathroom or a wardrobe)
+before the room itself: through the door the free width stays the door's for a wall's thickness
+and a lobby's length. The door is the one in the wall of the place it is cut in: the opening is
+flush with that wall's face (the constriction starts at it, on that side the place is wider than
+the door at once) and the constriction ends within a lobby's length in a place wider than the
+door. A longer narrow way is a passage (a corridor running on), and a way as narrow on both
+sides of its middle is the mouth of one.
+
 *A door lies along its wall.* Walls run along a few directions (the building's, or a wing's
 at an angle), and a door is a gap in one: the line from jamb to jamb runs along a direction of
 the walls around it, give or take the tilt of ragged jambs. A slanted gap, from the end of one
@@ -164,6 +173,9 @@ STRIP_WALLED_MAX_SHARE: Final = 0.5
 #: this distance (m) of the boundary the flood found, along its normal: a wall's thickness and
 #: a door's depth (a room's unscanned shadow beside the door pulls the boundary that far).
 WALL_LINE_SEARCH_M: Final = 0.5
+#: An entry lobby behind a door is at most this long (m) past the wall: room for the door leaf
+#: to swing (a door's width) and a person to stand clear of it; longer is a corridor.
+LOBBY_MAX_M: Final = 1.5
 #: Whether an opening was scanned is read over this share of its width about its centre (its
 #: ends are the ragged jambs).
 OPENING_MIDDLE_SHARE: Final = 0.6
@@ -189,6 +201,9 @@ class DoorEvidence:
     #: space ``a``'s side and on the other, from a wall's thickness to MOUTH_LOOK_M (infinite
     #: where too little of that look is free to tell).
     beyond_width_m: tuple[float, float] = (math.inf, math.inf)
+    #: The same typical width past the constriction's end on each side (where a door onto an
+    #: entry lobby opens into the room: see module doc).
+    past_width_m: tuple[float, float] = (math.inf, math.inf)
     #: Whether either jamb is on a piece of furniture (see module doc; False where the unknown
     #: cells were not given).
     furniture_jamb: bool = False
@@ -457,14 +472,16 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     clear = (clear_width(t_all, w_all, -1.0), clear_width(t_all, w_all, 1.0))
     beyond = (typical_width(t_all, w_all, -1.0, params.door_max_depth_m),
               typical_width(t_all, w_all, 1.0, params.door_max_depth_m))
+    past = (typical_width(t_all, w_all, -1.0, back + resolution_m),
+            typical_width(t_all, w_all, 1.0, depth - back + resolution_m))
     scanned = scanned_across(free, occupied, center_rc, normal_rc, width_m, resolution_m, unknown)
     walled = (walled_strip_share(free, occupied, center_rc, normal_rc, width_m, resolution_m, params)
               if into_unknown else 0.0)
     jj = jamb_cells(occupied, center_rc, width_m, resolution_m)
     if jj is None:
         return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(0.0, 0.0), across=(0.0, 0.0),
-                            beyond_width_m=beyond, scanned_share=scanned, clear_width_m=clear,
-                            walled_beyond_share=walled)
+                            beyond_width_m=beyond, past_width_m=past, scanned_share=scanned,
+                            clear_width_m=clear, walled_beyond_share=walled)
     (r1, c1), (r2, c2) = jj
     # The opening's line runs from jamb to jamb (the candidate's own normal is the mean step
     # across a ragged boundary, often slanted).
@@ -490,7 +507,7 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
         across.append(float(shares[-2:].min()))
     furniture = unknown is not None and any(is_furniture(free, unknown, j, resolution_m) for j in jj)
     return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]),
-                        across=(across[0], across[1]), line_turn_deg=turn, beyond_width_m=beyond,
+                        across=(across[0], across[1]), line_turn_deg=turn, beyond_width_m=beyond, past_width_m=past,
                         furniture_jamb=furniture, scanned_share=scanned, clear_width_m=clear,
                         walled_beyond_share=walled)
 
@@ -606,6 +623,21 @@ def line_turn_deg(occupied: BoolArray, center_rc: tuple[float, float], line_rad:
     return math.degrees(min(abs((line_rad - q + math.pi / 2) % math.pi - math.pi / 2) for q in dirs))
 
 
+def lobby_side(ev: DoorEvidence, params: AnalysisParams, width_m: float) -> int | None:
+    """The side (0: space ``a``'s, 1: the other) of an entry lobby behind an opening ``width_m``
+    wide between two spaces, deeper than a wall (see module doc), or None: the constriction
+    starts within half a wall's thickness of the opening's line on the other side, where the
+    place is wider than the door, and runs on no longer than a wall's thickness and LOBBY_MAX_M
+    into a place wider than the door."""
+    front = ev.constriction_m - ev.constriction_back_m
+    for flush, side, lobby in ((ev.constriction_back_m, 1, front), (front, 0, ev.constriction_back_m)):
+        past = dataclasses.replace(ev, beyond_width_m=ev.past_width_m)
+        if (flush <= params.door_max_depth_m / 2 and opens_wider(ev, width_m, (1 - side,))
+                and lobby <= params.door_max_depth_m + LOBBY_MAX_M and opens_wider(past, width_m, (side,))):
+            return side
+    return None
+
+
 def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wall_line: bool = False,
             width_m: float | None = None) -> bool:
     """The rules of the module doc on one candidate's evidence (``into_unknown``: it opens onto
@@ -624,7 +656,14 @@ def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wal
         if ev.constriction_back_m > params.door_max_depth_m / 2 + params.passage_min_length_m:
             return False
     elif ev.constriction_m > params.door_max_depth_m + params.passage_min_length_m:
-        return False
+        # ... unless it is a door flush with a wall's face onto an entry lobby: the room lies
+        # past the lobby (see module doc).
+        lobby = None if width_m is None else lobby_side(ev, params, width_m)
+        if lobby is None:
+            return False
+        past, beyond = ev.past_width_m, ev.beyond_width_m
+        ev = dataclasses.replace(ev, beyond_width_m=(past[0] if lobby == 0 else beyond[0],
+                                                     past[1] if lobby == 1 else beyond[1]))
     # Between two spaces, it opens onto places wider than itself on both sides: the mouth of a
     # corridor running on at its width is no door. (Into the unexplored only rays through it
     # were seen beyond; a gap in a wall line is an exit whatever leads to it.)
@@ -752,6 +791,7 @@ __all__ = [
     "is_furniture",
     "judge_doors",
     "line_turn_deg",
+    "lobby_side",
     "on_wall_line",
     "on_wall_lines",
     "opens_wider",
