@@ -71,6 +71,8 @@ def test_words_of_varieties_and_settings(prompt: str, expected: Plan) -> None:
     "right then, turn",              # the opener is no side: which way?
     "turn, forward",                 # nothing says how far or which way
     "turn left blah",                # an unknown word next to a default turn: never a guess
+    "go to the break room",          # a room named by what it is for: the map cannot know it (no stop)
+    "head into the rest area",
 ])
 def test_what_they_leave_unsaid_is_asked(prompt: str) -> None:
     intent = translate_offline(prompt)
@@ -82,6 +84,8 @@ def test_what_they_leave_unsaid_is_asked(prompt: str) -> None:
     ("go to the small room", "navigate"),
     # "there" before a place is no filler
     ("go over there to the door", "navigate"),
+    # "there" after the place it points at is no second place
+    ("go to the second door on the right there", "navigate"),
 ])
 def test_the_words_keep_their_meaning_elsewhere(prompt: str, expected: str) -> None:
     steps = translate_offline(prompt).steps

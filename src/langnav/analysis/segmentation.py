@@ -109,6 +109,12 @@ HALL_CORE_MIN_SIDE_M: Final = 2.0
 #: ... a corridor leaves the hall through a mouth at most this many times its own width long
 #: (a cut across it, slanted or curved); a bay of the hall meets it along a longer curve.
 CORRIDOR_MOUTH_MAX_SHARE: Final = 2.0
+#: A space is walled: at least this share of the cells round its outline are wall, even for a
+#: room seen only through its door (the laser's rays end on its far walls: a seventh of its
+#: outline and more on the maps we have). A space whose outline is nearly all unknown is a view
+#: out of the building (a fan of laser rays through a door or a window, ending in the open or at
+#: the sensor's range), not a room or a hallway a person would name.
+SPACE_MIN_WALL_SHARE: Final = 0.1
 #: Id used in ``Door.connects`` for unexplored territory.
 UNKNOWN_ID: Final = "unknown"
 #: Openings between two spaces narrower than the robot can pass (``door_min_width_m``) but at
@@ -271,6 +277,16 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     pairs = [(d.a, d.b) for d in raw_doors + raw_wide]
     rooms = _rooms(grid, labels, fl, params, peaks, openings, _ways_on(openings, pairs, labels),
                    _served(pairs, openings, labels))
+    view = _views_out(labels, occupied)
+    if view.any():
+        # A view out of the building is no space: its cells are no one's, a door into it leads
+        # into unexplored territory (found and judged as any other, so the doors stay as they
+        # were), and an opening into it wider or narrower than a door is none.
+        rooms = [r for r in rooms if not view[r.label]]
+        raw_doors = _into_unexplored(raw_doors, view)
+        raw_narrow = [d for d in raw_narrow if not (view[d.a] or view[d.b])]
+        raw_wide = [d for d in raw_wide if not (view[d.a] or view[d.b])]
+        labels = np.where(view[labels], 0, labels).astype(np.int32)
     ids = {r.label: r.id for r in rooms}
     doors = _doors(grid, raw_doors, ids)
     narrow = _doors(grid, raw_narrow, ids, prefix="narrow_door")
@@ -350,6 +366,52 @@ def _reopen(labels: npt.NDArray[np.int32], closed: npt.NDArray[np.bool_],
     renum = np.zeros(target.size, dtype=np.int32)
     renum[keep] = np.arange(keep.size, dtype=np.int32)  # keep[0] is 0: no space stays 0
     return renum[target][out].astype(np.int32)
+
+
+def _views_out(labels: npt.NDArray[np.int32], occupied: npt.NDArray[np.bool_]) -> npt.NDArray[np.bool_]:
+    """Per label: is that space a view out of the building (``SPACE_MIN_WALL_SHARE``)?"""
+    n = int(labels.max())
+    view = np.zeros(n + 1, dtype=bool)
+    if n <= 1:
+        return view
+    h, w = labels.shape
+    # The cells round each space's outline: (space, cell) pairs, each once, over the 8 neighbours.
+    keys: list[npt.NDArray[np.int64]] = []
+    for dr in (-1, 0, 1):
+        for dc in (-1, 0, 1):
+            if dr == 0 and dc == 0:
+                continue
+            src = labels[max(dr, 0):h + min(dr, 0), max(dc, 0):w + min(dc, 0)]
+            dst = labels[max(-dr, 0):h + min(-dr, 0), max(-dc, 0):w + min(-dc, 0)]
+            rr, cc = np.nonzero((src > 0) & (dst != src))
+            cell = (rr + max(-dr, 0)).astype(np.int64) * w + (cc + max(-dc, 0))
+            keys.append(src[rr, cc].astype(np.int64) * (h * w) + cell)
+    pairs = np.unique(np.concatenate(keys))
+    space, cell = np.divmod(pairs, h * w)
+    ring = np.bincount(space, minlength=n + 1)
+    wall = np.bincount(space[occupied.ravel()[cell]], minlength=n + 1)
+    area = np.bincount(labels.ravel(), minlength=n + 1)
+    view = (wall < SPACE_MIN_WALL_SHARE * ring) & (area > 0)
+    view[0] = False
+    # A view out is a small part of a map that draws its walls: where most of the floor has
+    # little wall round it, its walls were not drawn as walls (an image whose walls read as
+    # unknown, an open yard) and the test tells nothing.
+    if area[view].sum() * 2 > area[1:].sum():
+        view[:] = False
+    return view
+
+
+def _into_unexplored(doors: list[RawDoor], view: npt.NDArray[np.bool_]) -> list[RawDoor]:
+    """``doors`` with the views out (``view``, per label) read as unexplored territory: a door
+    into one leads from its space into the unexplored (``b`` = 0); one between two views, or
+    from a view into the unexplored, is none."""
+    out: list[RawDoor] = []
+    for d in doors:
+        if not view[d.a]:
+            out.append(dataclasses.replace(d, b=0) if d.b > 0 and view[d.b] else d)
+        elif d.b > 0 and not view[d.b]:
+            out.append(dataclasses.replace(d, a=d.b, b=0, normal_rc=(-d.normal_rc[0], -d.normal_rc[1])))
+    return out
 
 
 def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor, grid: OccupancyGrid,

@@ -198,7 +198,8 @@ said or asked. "give it a little turn to the left" -> rotate left, little; "scoo
 a little; "drop back three feet" -> move backward; "go on ahead there two metres" ("there" points at \
 nothing) -> move forward 2; "ten-four" = roger; "lovely," / "brilliant," before a request is praise; \
 greetings and tags at the edges ("yo", "oi", "bro", "innit", "eh", "ya", "mate") and how fast ("real quick") \
-mean nothing; "turn 'round" / "'bout face" -> turn around.
+mean nothing; "turn 'round" / "'bout face" -> turn around; "the door on the left there": "there" points at the \
+door; "the break room", "the rest area" -> ask (a room named by its use).
 - Talk not meant for the robot gives no steps: notes and remarks before "okay" / "noted" / "robot," ("water \
 line about eighteen inches on this wall, okay, go forward three feet" -> only the move), statements about \
 others ("..., she's asking about the robot"), a person named and what is said to them ("no, jack, sit \

@@ -155,6 +155,10 @@ _IDIOMS: Final[tuple[tuple[re.Pattern[str], Replacement], ...]] = (
                 r"(?!\s+(?:of|to|towards?|into)\b)"), "forward"),
     # "go on ahead there two metres": "there" between a way and an amount points at nothing
     (re.compile(rf"\b(?P<w>ahead|forwards?|back(?:wards?)?|on|over|up|down|left|right)\s+there\s+(?={_AMOUNT})"), r"\g<w> "),
+    # "the break room", "the rest area": a word of stopping that names a kind of room is part of the room's name
+    # (one the map cannot know, so it is asked about), not a stop
+    (re.compile(r"\b(?P<a>the|a|an|this|that|our|your|my)\s+(?P<w>break|rest|stop|halt|pause)\s+"
+                r"(?P<n>room|area|space|bay|zone|kitchen)\b"), r"\g<a> \g<w>\g<n>"),
     # learner grammar: "make turn", "do turn" (no article) is a turn
     (re.compile(r"\b(?:make|do|take|perform|give)\s+(?:a\s+)?turn(?=\s+(?:on|in|to|at|towards?)?\s*(?:the\s+)?"
                 r"(?:left|right)\b)"), "turn"),

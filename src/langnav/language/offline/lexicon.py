@@ -490,6 +490,11 @@ FILLER_PATTERNS: Final = (
     # cannot be part of the instruction)
     r"^\s*(?:yo|ay|ey|oi|oy|bro|dude|fam|boss|chief|guv|mate)\b(?!\s*(?:'s|is|are)\b)",
     r"\b(?:innit|init|eh|ya|yah|yeah|yep|bro|dude|fam|man|boss|chief|guv|mate|hey|aye)\s*[?!.]*\s*$",
+    # "there" said after the place it points at ("the fourth door on the left side there"): pointing while
+    # speaking, no second place
+    r"(?:" + "|".join(rf"(?<=\b{w})" for w in ("left", "right", "side", "door", "doorway", "room", "corner", "wall",
+                                              "one", "hallway", "corridor", "obstacle", "area", "gap", "passage"))
+    + r")\s+there\s*$",
     # how fast, said of the motion ("real quick", "nice and quick"): the robot keeps its safe speed
     r"\b(?:real|really|very|nice\s+and|super)\s+(?:quick|quickly|fast|slow|slowly)\b",
 )
