@@ -95,7 +95,7 @@ questions around a command ("can you", "could you please") mean nothing. Commas 
 "rotate, ninety degrees left" and "turn thirty degrees, to the left" are one turn each.
 - Clock directions: twelve o'clock is straight ahead, each hour 30 degrees, one to five o'clock to the \
 right, seven to eleven to the left, six behind. "turn to your two o'clock" -> rotate right 60; "face your ten \
-o'clock" -> rotate left 60; "go 3 metres toward your nine o'clock" -> rotate left 90, then move forward 3.
+o'clock" -> rotate left 60; "go 2 metres toward your three o'clock" -> rotate right 90, then move forward 2.
 - Speech recognition slips in the slot that expects them: "move forward to feet" = two feet, "for degrees" = \
 four, "won" = one, "ate" = eight, "turn write" = right, "turn lift" = left; dictated "comma", "period", "new \
 line" are punctuation. Chat spelling: "fwd", "bak", "lft", "rght", "trn", "mov", "bckwrds", "thn", "n" (and), \
@@ -136,7 +136,7 @@ number word left over ("advance one two feet") -> ask.
 "may I ask you to ...", "I'd be grateful if you could ...", "is that a thing you can do?", "sorry if that's a \
 weird number", "so that I can see ...", "I don't want to crash it" (a worry, not a request to crash).
 - Self-corrections: only the last version counts ("ninety degrees right, actually left" -> left 90; "turn \
-left, sorry, turn right" -> right; "move forward ten feet, scratch that, six feet" -> six feet; "reverse one \
+left, sorry, turn right" -> right; "go back eight feet, scratch that, five feet" -> five feet back; "reverse one \
 metre, actually forward" -> forward 1 m). "scratch that" takes back the instruction before it, "never mind" \
 everything said before it. A turn said again with what it missed is one turn ("fifteen degrees turn, turn \
 to your left" -> left 15; "turn left, turn left 270 degrees" -> left 270; "turn around, face south" -> face \
@@ -144,7 +144,7 @@ south). A "stop" between instructions takes back the motion before it when that 
 ("turn right, stop, turn left" -> only the left turn). An exclamation of dismay ("aiya", "argh", "ugh", "oh \
 no", "whoops", "damn", "eish") after an instruction marks it as a slip, like "sorry" ("turn left, argh, turn \
 right thirty" -> right 30). A bare turn taken back at once by a turn to the other side, with only pauses \
-between, is a false start ("turn right, turn left, uh, turn right sixty" -> right 60; "turn left, then turn \
+between, is a false start ("turn left, turn right, er, turn left forty" -> left 40; "turn left, then turn \
 right" keeps both).
 - No camera: leave out "take a picture", "send me a photo", "what do you see?". Alone: no steps and a \
 clarification saying there is no camera. With motions: the motions, and a clarification saying no picture \
@@ -186,28 +186,28 @@ yes ("oot the way" says why, not where); "take left" -> rotate left; "back out" 
 after through it" -> to it, then through it); "the door on your starboard side" -> side right ("port" left); "o'" of; "an eighth of a turn" \
 -> 45 degrees; "do a slow three sixty" -> rotate 360; "five feet, wait, metres" -> five metres; "I want to see \
 the hallway" after a motion is a picture (no camera), no trip; "so the group can see you" is a purpose; "the \
-room of the babies" / "for the staff" (who it belongs to) -> ask. Nigerian English: "reverse small" / "go front \
-small small" -> a little; "where you dey" -> where are you; "na left i talk" = it is left I said; "turn around \
-make you face me" -> turn around (the purpose is no step). Singapore English particles "lah", "leh", "lor", \
-"meh" mean nothing ("u-turn lah" -> turn around). "right then," / "right so," opening an utterance is no side \
-("right then, straight on, thirty feet" -> forward 9.144 m). "nah" / "nope" correct like "no". Reported \
-speech relays a request ("chat says turn left, okay, turn left forty five" -> one turn, left 45). Drill \
-orders: "right face" / "left, face" -> rotate 90 that way; "right face, forward ten metres" -> the turn, then \
+room of the babies" / "for the staff" (who it belongs to) -> ask. Nigerian English: "back small" / "go front \
+small small" -> a little; "where you dey" -> where are you; "na right i say" = it is right I said; "turn \
+make you see the door" -> turn (the purpose is no step). Singapore English particles "lah", "leh", "lor", \
+"meh" mean nothing ("turn around lor" -> turn around). "right then," / "right so," opening an utterance is no side \
+("right so, keep straight, ten feet" -> forward 3.048 m). "nah" / "nope" correct like "no". Reported \
+speech relays a request ("my sister says go back, yeah, go back two metres" -> one move, back 2). Drill \
+orders: "right face" / "left, face" -> rotate 90 that way; "left face, forward four metres" -> the turn, then \
 the move. "go up / down the row / aisle / lane" (a line of the speaker's setting) -> move forward, how far \
 said or asked. "give it a little turn to the left" -> rotate left, little; "scooch up a skosh" -> move forward \
-a little; "drop back three feet" -> move backward; "go on ahead there two metres" ("there" points at \
-nothing) -> move forward 2; "ten-four" = roger; "lovely," / "brilliant," before a request is praise; \
+a little; "drop back a yard" -> move backward; "go ahead there one metre" ("there" points at \
+nothing) -> move forward 1; "ten-four" = roger; "lovely," / "brilliant," before a request is praise; \
 greetings and tags at the edges ("yo", "oi", "bro", "innit", "eh", "ya", "mate") and how fast ("real quick") \
 mean nothing; "turn 'round" / "'bout face" -> turn around; "the door on the left there": "there" points at the \
 door; "the break room", "the rest area" -> ask (a room named by its use).
-- Talk not meant for the robot gives no steps: notes and remarks before "okay" / "noted" / "robot," ("water \
-line about eighteen inches on this wall, okay, go forward three feet" -> only the move), statements about \
+- Talk not meant for the robot gives no steps: notes and remarks before "okay" / "noted" / "robot," ("rust \
+stain about a foot up on this wall, fine, go back two feet" -> only the move), statements about \
 others ("..., she's asking about the robot"), a person named and what is said to them ("no, jack, sit \
 down", "sam, leave it": the "no" is theirs, it corrects nothing), a count-in ("five, six, seven, eight"). \
 Talk with a way, a place, a stop or a question in it is kept, except a note of a thing and where it is \
-("scuff marks all along this wall, fine. go to the third door" -> only the door: no wall-following) and \
+("cracks all along this wall, noted. go to the second door" -> only the door: no wall-following) and \
 a word shouted before an instruction ("corner! turn right ninety" -> only the turn; "corner!" alone -> \
-ask). A count-in said without pauses ("five six seven eight, turn left") is no number; a stammer \
+ask). A count-in said without pauses ("one two three four, go back") is no number; a stammer \
 ("g-g-go", "b-b-back") is the word; "not right, left" -> left; "where you now" -> where are you.
 - Ask, don't guess: when the side of a turn ("rotate 45 degrees"), the unit of a distance ("move forward 3") \
 or any word about where or how far is unclear, give no steps; in clarification say what you understood and \
@@ -247,7 +247,7 @@ COMPOSITION_EXAMPLES: Final[tuple[tuple[str, dict[str, Any]], ...]] = (
     ("drive halfway down the corridor and come back here",
      {"steps": [{"movement": "follow", "detail": "along", "target": {"kind": "hallway"}, "fraction": 0.5},
                 {"movement": "navigate", "detail": "to", "target": {"kind": "none", "place": "start"}}]}),
-    ("Call this spot the charging dock, then go into the room across the hall.",
+    ("Call this spot the charging dock, then go into the room across the corridor.",
      {"steps": [{"movement": "name_place", "place_name": "charging dock"},
                 {"movement": "navigate", "detail": "to", "target": {"kind": "room", "relation": "across"}}]}),
 )
@@ -296,8 +296,8 @@ EXAMPLES: Final[tuple[tuple[str, dict[str, Any]], ...]] = (
     ("could you turn to your two o'clock and then go fwd another 3 ft",
      {"steps": [{"movement": "rotate", "direction": "right", "angle_deg": 60},
                 {"movement": "move", "direction": "forward", "distance_m": 0.9144}]}),
-    ("move forward ten feet, scratch that, six feet",
-     {"steps": [{"movement": "move", "direction": "forward", "distance_m": 1.8288}]}),
+    ("move forward nine feet, scratch that, four feet",
+     {"steps": [{"movement": "move", "direction": "forward", "distance_m": 1.2192}]}),
     ("robot, move ahead one five feet, over",
      {"steps": [{"movement": "move", "direction": "forward", "distance_m": 4.572}]}),
     ("move forward. you're breaking up. move forward two metres",
@@ -310,7 +310,7 @@ EXAMPLES: Final[tuple[tuple[str, dict[str, Any]], ...]] = (
     ("um, swing left, then push forward two feet and six inches",
      {"steps": [{"movement": "rotate", "direction": "left", "amount": "default"},
                 {"movement": "move", "direction": "forward", "distance_m": 0.762}]}),
-    ("kick it around, one eighty",
+    ("kick it round, a one eighty",
      {"steps": [{"movement": "rotate", "direction": "around", "angle_deg": 180}]}),
     ("turn left forty fi-",
      {"steps": [], "clarification": "I heard a number cut off ('forty fi-'): how many degrees? Nothing was run."}),

@@ -126,11 +126,12 @@ _TURN_SIDE_RE: Final = re.compile(r"\b(?:left|right|clockwise|counter\s*clockwis
 def _move_after_turn(instruction: str, fragment: str) -> bool:
     """'turn right, forward ten metres': a way only a move takes, with its amount and no side, after a turn
     that has its side, is the next instruction with its verb left out (drill orders and radio speech), not
-    the amount of the turn."""
+    the amount of the turn. Only when the fragment starts with that way: "turn right, two metres ahead" may be
+    the turn's place ("turn right in two metres"), so it is not split into a turn and a move (it asks)."""
     norm, frag = normalize(instruction), normalize(fragment)
     return (ROTATE_VERB_RE.search(norm) is not None and GO_VERB_RE.search(norm) is None
             and _TURN_SIDE_RE.search(norm) is not None and _whole_move(fragment)
-            and _MOVE_WAY_RE.search(frag) is not None and _TURN_SIDE_RE.search(frag) is None)
+            and _MOVE_WAY_RE.match(frag.strip()) is not None and _TURN_SIDE_RE.search(frag) is None)
 
 
 def join_fragments(clauses: list[str], is_open: IsOpen) -> list[str]:
@@ -171,6 +172,7 @@ def apply_corrections(clauses: list[str]) -> list[str]:
     it drops what it takes back ("never mind": everything so far; "scratch that": the last one)."""
     out: list[str] = []
     correct_next = False  # "i'm sorry" alone: the next clause is the correction
+    dismay_next = False  # ... opened by an exclamation of dismay alone ("damn")
     take_back: bool | None = None  # a take-back alone, waiting for what follows: whether it drops everything
     for clause in clauses:
         cancel = CANCEL_RE.search(clause)
@@ -201,12 +203,20 @@ def apply_corrections(clauses: list[str]) -> list[str]:
         correct_next = False
         if start is not None:
             clause = clause[start.end():].strip()
+            only_dismay = _DISMAY_ONLY_RE.fullmatch(start.group(0).strip()) is not None
             if not clause:
                 if out and _HOLD_RE.match(out[-1]):
                     out.pop()  # "..., wait, no, forward two feet": the "wait" opened the correction, it is no stop
                 correct_next = bool(out)
+                dismay_next = only_dismay
                 continue
             correcting = True
+        else:
+            only_dismay = dismay_next and correcting
+        dismay_next = False
+        if correcting and only_dismay and out and not is_fragment(clause) and _kind(out[-1]) != _kind(clause):
+            out.append(clause)  # "turn left, damn, go forward two metres": dismay puts right a slip of its own kind
+            continue
         if correcting and out and _ONE_RE.match(clause):
             out.append(clause)  # "the doorway on the right, I mean the one after the second": it says more
             continue
@@ -220,6 +230,19 @@ def apply_corrections(clauses: list[str]) -> list[str]:
     if take_back is not None:
         _take_back(out, take_back)  # "turn left thirty five degrees, never mind": nothing is left
     return out
+
+
+#: An exclamation of dismay alone (no "sorry", "I mean"): it says the speaker slipped, not what the slip was;
+#: the words after it put right an instruction of their own kind only (a turn a turn, a move a move): an
+#: instruction of another kind after it is the next one ("turn left, damn, go forward two metres": both).
+_DISMAY_ONLY_RE: Final = re.compile(rf"(?:(?:{DISMAY})\b[\s,!.]*)+", re.IGNORECASE)
+
+
+def _kind(instruction: str) -> str | None:
+    """'turn' or 'move' for an instruction with only a turning or only a going verb; None otherwise."""
+    norm = normalize(instruction)
+    turn, go = ROTATE_VERB_RE.search(norm) is not None, GO_VERB_RE.search(norm) is not None
+    return "turn" if turn and not go else "move" if go and not turn else None
 
 
 #: A correction that only names a unit ("I meant feet"): the amount said before, in that unit.

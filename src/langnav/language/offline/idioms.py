@@ -153,8 +153,9 @@ _IDIOMS: Final[tuple[tuple[re.Pattern[str], Replacement], ...]] = (
     # "go up the row", "down the aisle": a line of the speaker's setting the map does not name; along it is ahead
     (re.compile(r"\b(?:up|down|along)\s+(?:the|this|that|your)\s+(?:row|aisle|lane|track|line|bay|run|gangway|racking)\b"
                 r"(?!\s+(?:of|to|towards?|into)\b)"), "forward"),
-    # "go on ahead there two metres": "there" between a way and an amount points at nothing
-    (re.compile(rf"\b(?P<w>ahead|forwards?|back(?:wards?)?|on|over|up|down|left|right)\s+there\s+(?={_AMOUNT})"), r"\g<w> "),
+    # "go on ahead there two metres": "there" between a way and an amount points at nothing (only after
+    # ahead / forward / back: "go over there two metres", "go right there" may point at a place: ask)
+    (re.compile(rf"\b(?P<w>ahead|forwards?|back(?:wards?)?)\s+there\s+(?={_AMOUNT})"), r"\g<w> "),
     # "the break room", "the rest area": a word of stopping that names a kind of room is part of the room's name
     # (one the map cannot know, so it is asked about), not a stop
     (re.compile(r"\b(?P<a>the|a|an|this|that|our|your|my)\s+(?P<w>break|rest|stop|halt|pause)\s+"

@@ -27,8 +27,9 @@ eight, step forward"). A person listening would not take any of it as an instruc
 4. **A count-in** ("five, six, seven, eight"; "three, two, one"; "five six seven eight,"): numbers said one
    by one in steps of one count time, they measure nothing.
 
-Ask, don't guess, still holds: talk that holds a way, a place or a stop is never dropped (a listener
-could not tell it is not meant for the robot), and an amount is dropped only in talk that opens the
+Ask, don't guess, still holds: talk that holds a way, a place to go to ("to / into / through the door") or
+a stop is never dropped (a listener could not tell it is not meant for the robot; a note of where a thing
+is, rule 5, and a one-word shout, rule 6, are the only talk with a place that is), and an amount is dropped only in talk that opens the
 utterance before a re-opening word (where nothing before it could take it). What is left is read as
 usual, and anything it leaves unclear is asked about.
 """
@@ -144,8 +145,15 @@ def _note_about_place(body: str) -> bool:
     if GO_VERB_RE.search(said) or ROTATE_VERB_RE.search(said) or STOP_RE.search(norm) or _WAY_RE.search(norm) \
             or _QUERY_RE.search(norm) or _has_amount(body):
         return False
-    thing = [w for w in norm[:place.start()].split() if w not in lx.STOPWORDS and w != "all"]
+    before = norm[:place.start()].split()
+    if place.group(0).split()[0].lower() in _GOING_TO:
+        return False  # "hurry to the door": where something goes is a trip, never a note of where a thing is
+    thing = [w for w in before if w not in lx.STOPWORDS and w != "all"]
     return bool(thing) and not any(_known(w) for w in thing)
+
+
+#: Words that say where something goes ("to", "into", "through"), not where a thing is ("by", "along", "on").
+_GOING_TO: Final = frozenset({"to", "into", "through", "towards", "toward", "past", "from"})
 
 
 def _has_amount(body: str) -> bool:

@@ -43,10 +43,13 @@ PARTICLES: Final = frozenset({"lah", "leh", "lor", "loh", "meh", "hor", "sia", "
 #: Reported speech before an instruction ("chat says turn left", "my boss said go back two metres", "they want
 #: you to turn around"): the speaker relays what someone else asks; the instruction is the same as if the
 #: speaker said it (and said again right after, "chat says turn left, okay, turn left forty five", it is one).
+#: Only someone named as a speaker (not any word: "nobody said turn left", "who said turn around" relay
+#: nothing), and never in a question ("you said turn left?", "he said turn left?": the speaker is asking,
+#: not asking the robot): those stay unread, so the robot asks.
 REPORTED: Final = re.compile(
     r"(?:^|(?<=[,.;!?]))\s*(?:(?:the|my|our|your|his|her|their|some|someone|somebody|everyone|everybody|people|"
     r"they|he|she|chat|boss|[a-z]+'s)\s+)*(?:chat|boss|they|he|she|someone|somebody|everyone|everybody|people|"
-    r"viewers?|folks|guys|team|mum|mom|dad|manager|supervisor|[a-z]+)\s+(?:says?|said|is\s+saying|are\s+saying|"
+    r"viewers?|folks|guys|team|mum|mom|dad|manager|supervisor)\s+(?:says?|said|is\s+saying|are\s+saying|"
     r"wants?\s+(?:you|u)\s+to|want\s+(?:you|u)\s+to|asks?\s+(?:you\s+)?to|asked\s+(?:you\s+)?to|reckons?|thinks?)\s+"
     r"(?=(?:to\s+)?(?:turn|go|move|rotate|spin|pivot|back|reverse|drive|head|face|stop|come)\b)",
     re.IGNORECASE)
@@ -72,6 +75,20 @@ ELIDED: Final = (
 #: A stammered word: its first sound said and said again before the whole word ("g-g-go", "b-b-back", "t-turn"):
 #: the word.
 STAMMER: Final = re.compile(r"\b(?P<s>[a-z]{1,3})(?:-(?P=s))*-(?P<w>(?P=s)[a-z]+)\b", re.IGNORECASE)
+#: ... but a number said whole is no stammered sound: "six-sixteen metres" is a number said twice
+#: differently (a correction or a mishearing), never sixteen on its own: left as said, it asks.
+NUMBER_WORDS_SHORT: Final = frozenset({"one", "two", "six", "ten"})
+
+
+def _unstammer(m: re.Match[str]) -> str:
+    return m.group(0) if m.group("s").lower() in NUMBER_WORDS_SHORT else m.group("w")
+
+
+def _relay(m: re.Match[str]) -> str:
+    """Reported speech relayed as the speaker's own request, unless the clause is a question."""
+    rest = m.string[m.end():]
+    end = re.search(r"[,.;!?]", rest)
+    return m.group(0) if end is not None and end.group(0) == "?" else " "
 #: A word cut off in the middle: letters and a dash before a space or the end ("nin-", "c-").
 _CUT_OFF: Final = re.compile(r"(?<![\w-])[a-z]+-(?=[\s,.;!?]|$)", re.IGNORECASE)
 #: Short consonant runs are sounds, not words ("ff", "fff", "tsk"); units ("ft", "cm") are words, and a
@@ -376,8 +393,8 @@ def plain_speech(prompt: str) -> str:
     frames and side remarks taken out."""
     for pattern, spelled in ELIDED:
         prompt = pattern.sub(spelled, prompt)
-    text = without_discourse_markers(without_side_talk(STAMMER.sub(r"\g<w>", prompt)))
-    text = REPORTED.sub(" ", text)
+    text = without_discourse_markers(without_side_talk(STAMMER.sub(_unstammer, prompt)))
+    text = REPORTED.sub(_relay, text)
     for pattern, repl in PIDGIN:
         text = pattern.sub(repl, text)
     for pattern, repl in HOMOPHONES:
