@@ -236,6 +236,8 @@ def apply_corrections(clauses: list[str]) -> list[str]:
 #: the words after it put right an instruction of their own kind only (a turn a turn, a move a move): an
 #: instruction of another kind after it is the next one ("turn left, damn, go forward two metres": both).
 _DISMAY_ONLY_RE: Final = re.compile(rf"(?:(?:{DISMAY})\b[\s,!.]*)+", re.IGNORECASE)
+#: An exclamation of dismay anywhere in a stretch of speech.
+DISMAY_RE: Final = re.compile(rf"\b(?:{DISMAY})\b")
 
 
 def _kind(instruction: str) -> str | None:

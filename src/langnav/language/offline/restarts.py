@@ -26,7 +26,7 @@ from collections.abc import Callable
 from typing import Final
 
 from langnav.language.intent import Amount, Direction, Movement, Step
-from langnav.language.offline.corrections import DISMAY
+from langnav.language.offline.corrections import DISMAY_RE
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import NUMBER, Quantity, QuantityKind, find_quantities
 from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE
@@ -221,7 +221,6 @@ def drop_insisted_amounts(clauses: list[str]) -> list[str]:
 #: says both are meant.
 _PAUSE_WORDS: Final = frozenset({"uh", "um", "er", "erm", "hmm", "ah", "oh", "eh", "like", "so", "well", "okay", "ok",
                                  "wait", "no", "sorry", "robot", "please", "now", "just", "i", "mean"})
-DISMAY_RE: Final = re.compile(rf"\b(?:{DISMAY})\b")
 #: A bare turn as said ("turn right", "rotate to the left"): between two turns, a false start too.
 _BARE_TURN_RE: Final = re.compile(r"\b(?:turn|rotate|spin|pivot|swing|veer)\s+(?:to\s+(?:the|your)\s+)?(?:left|right)\b")
 _SIDES: Final = frozenset({Direction.LEFT, Direction.RIGHT})

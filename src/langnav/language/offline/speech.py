@@ -12,7 +12,7 @@ import re
 from typing import Final
 
 from langnav.language.offline.lexicon import TYPOS
-from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS
+from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS, ONES, TENS
 from langnav.language.offline.sidetalk import without_side_talk
 from langnav.language.offline.vocabulary import VOCABULARY
 
@@ -75,13 +75,13 @@ ELIDED: Final = (
 #: A stammered word: its first sound said and said again before the whole word ("g-g-go", "b-b-back", "t-turn"):
 #: the word.
 STAMMER: Final = re.compile(r"\b(?P<s>[a-z]{1,3})(?:-(?P=s))*-(?P<w>(?P=s)[a-z]+)\b", re.IGNORECASE)
-#: ... but a number said whole is no stammered sound: "six-sixteen metres" is a number said twice
-#: differently (a correction or a mishearing), never sixteen on its own: left as said, it asks.
-NUMBER_WORDS_SHORT: Final = frozenset({"one", "two", "six", "ten"})
 
 
 def _unstammer(m: re.Match[str]) -> str:
-    return m.group(0) if m.group("s").lower() in NUMBER_WORDS_SHORT else m.group("w")
+    """The stammered word, unless its first sound is a number said whole: "six-sixteen metres" is a number
+    said twice differently (a correction or a mishearing), never sixteen on its own: left as said, it asks."""
+    sound = m.group("s").lower()
+    return m.group(0) if sound in ONES or sound in TENS else m.group("w")
 
 
 def _relay(m: re.Match[str]) -> str:
