@@ -14,7 +14,7 @@ from pathlib import Path
 
 HERE = Path(__file__).parent
 sys.path.insert(0, str(HERE.parent / "prompts-9"))
-from spoken_expand import FT, S, YAWS, check_case, expand, yaw_ok  # noqa: E402
+from spoken_expand import FT, YAWS, S, check_case, expand, yaw_ok  # noqa: E402
 
 CASES = [
     # ---- A  Kev, paramedic at the end of a fourteen-hour night shift: tired, trailing, "yeah", "mate"
