@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy import ndimage as ndi
 
 from langnav.analysis.elements import Door
@@ -885,3 +887,22 @@ def test_a_door_read_across_a_long_aisle_between_lockers_is_no_door() -> None:
     assert p.center == pytest.approx((4.5, 4.075), abs=0.06)
     assert p.width_m == pytest.approx(0.85, abs=0.051)
     assert p.length_m == pytest.approx(5.0, abs=0.2)
+
+
+@settings(max_examples=16, deadline=None, derandomize=True)
+@given(width_m=st.floats(0.6, 0.95), length_m=st.floats(2.5, 6.0), depth_m=st.floats(0.4, 1.0),
+       degrees=st.one_of(st.just(0.0), st.floats(0.0, 90.0)), resolution_m=st.sampled_from([0.025, 0.05, 0.1]))
+def test_an_aisle_between_two_shelf_rows_is_one_passage_of_its_width(width_m: float, length_m: float, depth_m: float,
+                                                                      degrees: float, resolution_m: float) -> None:
+    """Two shelf rows standing free in a hall, whatever their length, depth and the map's angle
+    and cells: the aisle between them is one passage, as wide as it is (up to a cell and a half:
+    a cell on each stair-stepped face of a turned map), and nothing else is."""
+    b = MapBuilder(length_m + 6.0, 2 * depth_m + width_m + 6.0, resolution_m=resolution_m, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, length_m + 4.0, 2 * depth_m + width_m + 4.0)
+    b.box(2.0, 2.0, 2.0 + length_m, 2.0 + depth_m)
+    b.box(2.0, 2.0 + depth_m + width_m, 2.0 + length_m, 2.0 + 2 * depth_m + width_m)
+    grid = b.build(source="two shelf rows")
+    found = passages_of(rotated(grid, degrees) if degrees else grid)
+    assert len(found) == 1
+    assert found[0].width_m == pytest.approx(width_m, abs=1.5 * resolution_m + 0.01)
+    assert found[0].length_m == pytest.approx(length_m, abs=0.1 * length_m + 2 * resolution_m)
