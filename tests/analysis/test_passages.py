@@ -908,3 +908,39 @@ def test_an_aisle_between_two_shelf_rows_is_one_passage_of_its_width(width_m: fl
     assert len(found) == 1
     assert found[0].width_m == pytest.approx(width_m, abs=1.5 * resolution_m + 0.01)
     assert found[0].length_m == pytest.approx(length_m, abs=0.1 * length_m + 2 * resolution_m)
+
+
+def rack_rows(cross_aisle: bool) -> OccupancyGrid:
+    """A 12 x 8 m hall with three rack rows, 0.6 m deep and 8 m long (x from 2 to 10), 0.8 m
+    apart: the middle row has a 0.8 m cross-over gap (x from 5.6 to 6.4); ``cross_aisle``: the
+    outer rows have it too, a cross aisle through all three."""
+    b = MapBuilder(14.0, 10.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 12.0, 8.0)
+    for k, y in enumerate((2.0, 3.4, 4.8)):
+        if k == 1 or cross_aisle:
+            b.box(2.0, y, 5.6, y + 0.6)
+            b.box(6.4, y, 10.0, y + 0.6)
+        else:
+            b.box(2.0, y, 10.0, y + 0.6)
+    return b.build(source="rack_rows")
+
+
+def test_an_aisle_goes_on_past_a_cross_over_gap_in_one_of_its_rows() -> None:
+    """Each aisle runs the racks' whole length: the gap in the middle row beside it is a way off it
+    (as a door off a corridor), not its end; one passage each, not two halves."""
+    found = sorted(passages_of(rack_rows(cross_aisle=False)), key=lambda p: p.center[1])
+    assert len(found) == 2
+    for p, y in zip(found, (3.0, 4.4), strict=True):
+        assert p.center == pytest.approx((6.0, y), abs=0.1)
+        assert p.width_m == pytest.approx(0.8, abs=0.051)
+        assert p.length_m == pytest.approx(8.0, abs=0.3)
+
+
+def test_aisles_either_side_of_a_cross_aisle_stay_two() -> None:
+    """Where the cross-over runs through every row, both sides of each aisle open there: a cross
+    aisle, and the aisle's halves either side of it are two ways."""
+    found = sorted(passages_of(rack_rows(cross_aisle=True)), key=lambda p: (p.center[1], p.center[0]))
+    assert len(found) == 4
+    for p, (x, y) in zip(found, ((3.8, 3.0), (8.2, 3.0), (3.8, 4.4), (8.2, 4.4)), strict=True):
+        assert p.center == pytest.approx((x, y), abs=0.15)
+        assert p.length_m == pytest.approx(3.6, abs=0.3)

@@ -34,7 +34,11 @@ any wall, or across an aisle as long as a corridor between two such things, is n
 
 A passage along a wall (between the wall and a long shelf) shares its skeleton line with the
 one-sided strip along the rest of the room's walls: a core without sides along most of its length
-is split into its two-sided stretches, and each is judged on its own.
+is split into its two-sided stretches, and each is judged on its own. An aisle goes on past an
+opening in one of its sides no wider than a door (a cross-over gap in a rack row, a door off a
+corridor-like squeeze): the two stretches either side of it, in line, as wide as each other and
+each with two sides, are one way, judged whole (its middle line breaks there, where the opening
+widens the floor beyond any passage).
 """
 
 from __future__ import annotations
@@ -63,6 +67,7 @@ from langnav.analysis.passages_lines import (
     typical_wall_thickness_m,
 )
 from langnav.analysis.passages_probe import (
+    DOORWAY_WALL_FRACTION,
     MIN_BOUNDED_FRACTION,
     WALL_RUNS_ON_SHARE,
     beside_a_wall,
@@ -71,6 +76,7 @@ from langnav.analysis.passages_probe import (
     opens_into_space,
     parallel,
     past_mouths,
+    side_distances,
     side_distances_each,
     sides_hold,
     solid_sides,
@@ -97,6 +103,11 @@ PASSAGE_MIN_ELONGATION: Final = 2.0
 #: (a door leaf, a bump of clutter) does not shorten it to the pinch.
 CORE_REF_QUANTILE: Final = 0.5
 CORE_WIDTH_TOL_M: Final = 0.15
+#: The two stretches of one aisle either side of an opening in one of its sides run in line: their
+#: axes, and the way across the opening, within this (degrees) of each other. A straight way's
+#: stretches, each fitted over a metre or more, agree within a few degrees; an aisle that turns a
+#: corner, or two aisles meeting at a cross-over, turn by far more.
+SIDE_OPENING_MAX_TURN_DEG: Final = 20.0
 #: "Close" for a side: within the half-width plus this.
 SIDE_TOL_M: Final = 0.15
 #: A passage axis within this (degrees) of a grid axis is taken as that axis: pixel noise tilts
@@ -252,7 +263,8 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     map, unscanned floor that is no side of a passage (nothing is known to stand there).
 
     The stages: the open floor and its clearances (:func:`_open_floor`); the cores of the middle
-    line where it is narrow (:func:`_core_pieces`); each piece's axis and sides
+    line where it is narrow (:func:`_core_pieces`), those either side of an opening in one side
+    of an aisle joined (:func:`_joined_across_side_openings`); each piece's axis and sides
     (:func:`_measured`); then each is judged (:func:`_judged`). Cores without sides along most of
     their length are split into their two-sided stretches (:func:`_two_sided_pieces`), which are
     judged in a second round.
@@ -261,7 +273,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     if floor is None:
         return ()
     passages: list[NarrowPassage] = []
-    pieces = _core_pieces(floor)
+    pieces = _joined_across_side_openings(floor, _core_pieces(floor))
     while pieces:
         retry: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]] = []
         for piece, sides in _measured(floor, pieces):
@@ -372,6 +384,96 @@ def _core_pieces(floor: _Floor) -> list[tuple[npt.NDArray[np.intp], npt.NDArray[
         cells = by_core[core_start[k]:core_start[k + 1]]
         pieces.append((core_r[cells], core_c[cells], across_core[cells]))
     return pieces
+
+
+def _joined_across_side_openings(
+        floor: _Floor, pieces: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]]
+) -> list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]]:
+    """The pieces, those that are stretches of one aisle either side of an opening in one of its
+    sides joined into one: each with two sides along most of it (``MIN_BOUNDED_FRACTION``), as
+    wide as each other (within ``CORE_WIDTH_TOL_M`` and a cell a side), in line
+    (``SIDE_OPENING_MAX_TURN_DEG``), their facing ends no farther apart than a door is wide
+    (``door_max_width_m``), and across the gap one side going on (blocked along
+    ``DOORWAY_WALL_FRACTION`` of it) while the other opens (along half of it or more): a rack row
+    with a cross-over gap beside the aisle, a door in a corridor's side wall. Where both sides
+    open across the gap (a cross aisle between two aisles in line) they stay two."""
+    res = floor.grid.resolution_m
+    # Each piece's points, axis, extent along it and half width (cells); its sides.
+    pts_of, fits_of = [], []
+    for rr, cc, _across in pieces:
+        pts = np.stack([cc + 0.5, rr + 0.5], axis=1).astype(float)
+        pts_of.append(pts)
+        fits_of.append(len(rr) >= 2)
+    shape: list[tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], float, float, float]] = []
+    for (rr, cc, _across), pts, ok in zip(pieces, pts_of, fits_of, strict=True):
+        if not ok:
+            shape.append((np.zeros(2), np.zeros(2), 0.0, 0.0, 0.0))
+            continue
+        mean = pts.mean(axis=0)
+        evals, evecs = np.linalg.eigh(cov2((pts - mean).T))
+        axis = evecs[:, int(np.argmax(evals))]
+        proj = (pts - mean) @ axis
+        shape.append((mean, axis, float(proj.min()), float(proj.max()),
+                      float(np.median(floor.dist_of[floor.d2[rr, cc]])) / res))
+    idx = [k for k, ok in enumerate(fits_of) if ok]
+    side_sets = side_distances_each(floor.open_, [pts_of[k] for k in idx],
+                                    [floor.dist_of[floor.d2[pieces[k][0], pieces[k][1]]] / res for k in idx],
+                                    [np.array([-shape[k][1][1], shape[k][1][0]]) for k in idx], SIDE_TOL_M / res)
+    two_sided = {k for k, sides in zip(idx, side_sets, strict=True)
+                 if np.isfinite(sides).all(axis=1).mean() >= MIN_BOUNDED_FRACTION}
+    cos_in_line = math.cos(math.radians(SIDE_OPENING_MAX_TURN_DEG))
+    max_gap = floor.params.door_max_width_m / res
+    cand = sorted(two_sided)
+    ends = {k: (shape[k][0] + shape[k][2] * shape[k][1], shape[k][0] + shape[k][3] * shape[k][1]) for k in cand}
+    pairs: list[tuple[float, int, int]] = []
+    for n, i in enumerate(cand):
+        mean_i, axis_i, _lo, _hi, half_i = shape[i]
+        for j in cand[n + 1:]:
+            axis_j, half_j = shape[j][1], shape[j][4]
+            if (abs(float(axis_i @ axis_j)) < cos_in_line
+                    or abs(half_i - half_j) > CORE_WIDTH_TOL_M / res / 2.0 + 1.0):
+                continue
+            gap, a, b = min(((float(np.hypot(*(x - y))), x, y) for x in ends[i] for y in ends[j]),
+                            key=lambda t: t[0])
+            if not 0.5 < gap <= max_gap:
+                continue
+            way = (b - a) / gap
+            # Across the gap in line, and beyond piece i's end (not back over it).
+            if (abs(float(way @ axis_i)) < cos_in_line
+                    or abs(float((b - mean_i) @ axis_i)) <= abs(float((a - mean_i) @ axis_i))):
+                continue
+            t = np.arange(0.5, gap, 0.5)[:, None] / gap
+            across = side_distances(floor.open_, a[None, :] + t * (b - a)[None, :], np.full(len(t), max(half_i, half_j)),
+                                    np.array([-axis_i[1], axis_i[0]]), SIDE_TOL_M / res)
+            held = np.isfinite(across).mean(axis=0)
+            if held.max() >= DOORWAY_WALL_FRACTION and held.min() <= 0.5:
+                pairs.append((gap, i, j))
+    # Join them, the nearest first (a chain of stretches along one aisle becomes one).
+    parent = list(range(len(pieces)))
+
+    def root(k: int) -> int:
+        while parent[k] != k:
+            k = parent[k]
+        return k
+
+    for _gap, i, j in sorted(pairs):
+        ri, rj = root(i), root(j)
+        if ri != rj:
+            parent[max(ri, rj)] = min(ri, rj)
+    groups: dict[int, list[int]] = {}
+    for k in range(len(pieces)):
+        groups.setdefault(root(k), []).append(k)
+    out: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]] = []
+    for k, group in groups.items():
+        if len(group) == 1:
+            out.append(pieces[k])
+            continue
+        across_cells = [pieces[g][2] for g in group]
+        joined_across = (None if any(a_ is None for a_ in across_cells)
+                         else np.concatenate([a_ for a_ in across_cells if a_ is not None]))
+        out.append((np.concatenate([pieces[g][0] for g in group]), np.concatenate([pieces[g][1] for g in group]),
+                    joined_across))
+    return out
 
 
 def _measured(floor: _Floor, pieces: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]]
