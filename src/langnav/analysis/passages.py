@@ -108,6 +108,11 @@ CORE_WIDTH_TOL_M: Final = 0.15
 #: stretches, each fitted over a metre or more, agree within a few degrees; an aisle that turns a
 #: corner, or two aisles meeting at a cross-over, turn by far more.
 SIDE_OPENING_MAX_TURN_DEG: Final = 20.0
+#: ... and the side runs on either side of the opening for at least this many times its width
+#: (a wall or a rack row with one gap in it), where a row of separate things spaced about as far
+#: apart as they are long (bikes, desks) is no side with an opening but a row of gaps: an aisle
+#: has one such opening (as a passage may have one doorway in a side wall, DOORWAY_WALL_FRACTION).
+SIDE_OPENING_MIN_RUN: Final = 2.0
 #: "Close" for a side: within the half-width plus this.
 SIDE_TOL_M: Final = 0.15
 #: A passage axis within this (degrees) of a grid axis is taken as that axis: pixel noise tilts
@@ -394,9 +399,11 @@ def _joined_across_side_openings(
     wide as each other (within ``CORE_WIDTH_TOL_M`` and a cell a side), in line
     (``SIDE_OPENING_MAX_TURN_DEG``), their facing ends no farther apart than a door is wide
     (``door_max_width_m``), and across the gap one side going on (blocked along
-    ``DOORWAY_WALL_FRACTION`` of it) while the other opens (along half of it or more): a rack row
+    ``DOORWAY_WALL_FRACTION`` of it) while the other opens (along half of it or more) and runs on
+    beside the opening for ``SIDE_OPENING_MIN_RUN`` times its width either side: a rack row
     with a cross-over gap beside the aisle, a door in a corridor's side wall. Where both sides
-    open across the gap (a cross aisle between two aisles in line) they stay two."""
+    open across the gap (a cross aisle between two aisles in line) they stay two; one opening
+    per aisle (a row of separate things beside a strip is a row of gaps)."""
     res = floor.grid.resolution_m
     # Each piece's points, axis, extent along it and half width (cells); its sides.
     pts_of, fits_of = [], []
@@ -442,32 +449,46 @@ def _joined_across_side_openings(
             if (abs(float(way @ axis_i)) < cos_in_line
                     or abs(float((b - mean_i) @ axis_i)) <= abs(float((a - mean_i) @ axis_i))):
                 continue
-            t = np.arange(0.5, gap, 0.5)[:, None] / gap
-            across = side_distances(floor.open_, a[None, :] + t * (b - a)[None, :], np.full(len(t), max(half_i, half_j)),
-                                    np.array([-axis_i[1], axis_i[0]]), SIDE_TOL_M / res)
-            held = np.isfinite(across).mean(axis=0)
-            if held.max() >= DOORWAY_WALL_FRACTION and held.min() <= 0.5:
+            # Along the whole way, from the far end of one stretch to the far end of the other.
+            far_a = ends[i][0] if float(np.hypot(*(ends[i][0] - a))) > float(np.hypot(*(ends[i][1] - a))) else ends[i][1]
+            far_b = ends[j][0] if float(np.hypot(*(ends[j][0] - b))) > float(np.hypot(*(ends[j][1] - b))) else ends[j][1]
+            span = float(np.hypot(*(far_b - far_a)))
+            pos = np.arange(0.0, span + 0.25, 0.5)
+            line = far_a[None, :] + (pos / max(span, 1e-9))[:, None] * (far_b - far_a)[None, :]
+            sides = np.isfinite(side_distances(floor.open_, line, np.full(len(pos), max(half_i, half_j)),
+                                               np.array([-axis_i[1], axis_i[0]]), SIDE_TOL_M / res))
+            in_gap = ((pos >= float(np.hypot(*(a - far_a))) + 0.5) & (pos <= float(np.hypot(*(b - far_a))) - 0.5))
+            if not in_gap.any():
+                continue
+            held = sides[in_gap].mean(axis=0)
+            if held.max() < DOORWAY_WALL_FRACTION or held.min() > 0.5:
+                continue
+            # The opening: the open run of the other side round the gap's middle; the side runs on
+            # beside it, blocked along SIDE_OPENING_MIN_RUN times its width before and after it.
+            other = sides[:, int(np.argmin(held))]
+            mid_k = int(np.flatnonzero(in_gap)[len(np.flatnonzero(in_gap)) // 2])
+            lo_k = mid_k
+            while lo_k > 0 and not other[lo_k - 1]:
+                lo_k -= 1
+            hi_k = mid_k
+            while hi_k < len(other) - 1 and not other[hi_k + 1]:
+                hi_k += 1
+            opening = (hi_k - lo_k + 1) * 0.5
+            if min(other[:lo_k].sum(), other[hi_k + 1:].sum()) * 0.5 >= SIDE_OPENING_MIN_RUN * opening:
                 pairs.append((gap, i, j))
-    # Join them, the nearest first (a chain of stretches along one aisle becomes one).
-    parent = list(range(len(pieces)))
-
-    def root(k: int) -> int:
-        while parent[k] != k:
-            k = parent[k]
-        return k
-
+    # Join them in pairs, the nearest first: an aisle with one opening in a side.
+    partner: dict[int, int] = {}
     for _gap, i, j in sorted(pairs):
-        ri, rj = root(i), root(j)
-        if ri != rj:
-            parent[max(ri, rj)] = min(ri, rj)
-    groups: dict[int, list[int]] = {}
-    for k in range(len(pieces)):
-        groups.setdefault(root(k), []).append(k)
+        if i not in partner and j not in partner:
+            partner[i], partner[j] = j, i
     out: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]] = []
-    for k, group in groups.items():
-        if len(group) == 1:
+    for k in range(len(pieces)):
+        if k not in partner:
             out.append(pieces[k])
             continue
+        if partner[k] < k:
+            continue
+        group = [k, partner[k]]
         across_cells = [pieces[g][2] for g in group]
         joined_across = (None if any(a_ is None for a_ in across_cells)
                          else np.concatenate([a_ for a_ in across_cells if a_ is not None]))
