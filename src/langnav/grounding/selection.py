@@ -912,8 +912,16 @@ def gaps_between_things(analysis: MapAnalysis) -> list[NarrowPassage]:
     lo, hi = 2 * params.robot_radius_m, params.passage_max_width_m
     things = [o for o in [*analysis.obstacles, *things_standing_free(analysis)] if len(o.cells_xy)]
     trees = [cKDTree(np.asarray(o.cells_xy, dtype=float).reshape(-1, 2)) for o in things]
+    # only pairs whose bounding boxes come within a passage's width can have a gap between them (a
+    # real map has hundreds of things: the boxes keep the look-up to the few that stand close)
+    boxes = np.array([[*t.mins, *t.maxes] for t in trees]).reshape(-1, 4)
+    gx = np.maximum(0.0, np.maximum(boxes[:, None, 0] - boxes[None, :, 2], boxes[None, :, 0] - boxes[:, None, 2]))
+    gy = np.maximum(0.0, np.maximum(boxes[:, None, 1] - boxes[None, :, 3], boxes[None, :, 1] - boxes[:, None, 3]))
+    near = np.hypot(gx, gy) <= hi + analysis.grid.resolution_m
     out: list[NarrowPassage] = []
-    for (_, a), (j, b) in itertools.combinations(enumerate(things), 2):
+    for (i, a), (j, b) in itertools.combinations(enumerate(things), 2):
+        if not near[i, j]:
+            continue
         ca = np.asarray(a.cells_xy, dtype=float).reshape(-1, 2)
         d, k = trees[j].query(ca, distance_upper_bound=hi + analysis.grid.resolution_m)
         if not np.isfinite(d).any():
