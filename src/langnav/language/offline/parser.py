@@ -75,6 +75,7 @@ from langnav.language.offline.queries import (
     read_return,
 )
 from langnav.language.offline.reading import (
+    BEARING_RE,
     ELLIPSIS_FACTOR,
     MIN_CONFIDENCE,
     NOTHING_READ_CONFIDENCE,
@@ -112,6 +113,8 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
     query = read_query(c)
     if query is not None:
         return query
+    if BEARING_RE.search(norm):
+        return Reading(unread=(text,), confidence=NOTHING_READ_CONFIDENCE, problem=Problem.BEARING)
     if OTHER_FLOOR_RE.search(norm):
         return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.OTHER_FLOOR)
     if is_negated(norm):

@@ -268,8 +268,12 @@ def drop_false_start_turns(clauses: list[str], text: str, read: ClauseReader) ->
     spans = _spans(text, clauses)
     kept: list[int] = []
     for i, clause in enumerate(clauses):
-        turn = _only_turn(read(clause))
-        if turn is not None and turn.direction in _SIDES and not _facing(turn) and not _ONCE_MORE_RE.search(clause):
+        reading = read(clause)
+        turn = _only_turn(reading)
+        # (a turn whose side was not said, "thirty degrees" in "turn right, em, thirty degrees", takes nothing
+        # back: its side is only the reading's placeholder, and the turn said before it is the side meant)
+        if turn is not None and turn.direction in _SIDES and ASK_SIDE not in reading.asks and not _facing(turn) \
+                and not _ONCE_MORE_RE.search(clause):
             while kept:
                 said = [k for k in kept if not _interjection(clauses[k], read)]  # "oh bugger": no instruction
                 first = _bare_side_turn(read(clauses[said[-1]])) if said else None

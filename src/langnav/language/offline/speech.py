@@ -16,10 +16,11 @@ from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS, ONE
 from langnav.language.offline.sidetalk import without_side_talk
 from langnav.language.offline.vocabulary import VOCABULARY
 
-#: Hesitation sounds: no meaning in any position.
+#: Hesitation sounds: no meaning in any position. ("em" is how Irish and Scottish speech is written for "um"; the
+#: pronoun "'em" keeps its apostrophe and is read as "them" first, see ELIDED.)
 HESITATIONS: Final = frozenset({
     "uh", "uhh", "uhhh", "uhhhh", "um", "umm", "ummm", "uhm", "uhmm", "hmm", "hmmm", "hm", "er", "erm", "err",
-    "ah", "ahh", "eh", "mmm", "mhm", "huh", "ehm", "ooh", "oooh", "ohh", "aah", "phew", "hmph",
+    "ah", "ahh", "eh", "mmm", "mhm", "huh", "ehm", "ooh", "oooh", "ohh", "aah", "phew", "hmph", "em", "emm",
 })
 #: Hedges a speaker puts before an amount or a direction ("uh maybe forty five degrees"): they soften
 #: the words, they never change the amount or the side.
@@ -357,10 +358,12 @@ _OPENING_MARKERS: Final = re.compile(
     rf"(?:(?:{_MARKER_WORD}|then)(?:\s*(?:[,;:!-]+|\.+))|(?<=\s)(?:so|now)\s+(?=\S))", re.IGNORECASE)
 #: What "right" completes when it is a direction: an amount, a unit, a way, or a sequence going on from
 #: it ("right, ninety degrees", "right, a little", "right, then forward two feet", "right. forward").
+#: ("Back up / off / out / away" is a verb of its own, an instruction: "right, back up a metre" opens with the
+#: marker, as "right, stop there" does.)
 _COMPLETES_A_SIDE: Final = re.compile(
     rf"^\s*(?:$|(?:about|around|roughly|approximately|maybe|like|just|only|some|by|another|and|then|after|to\s+(?:the|your)|"
     r"a\s+(?:little|bit|tad|touch|quarter|half|few|couple|hundred)|half|quarter|full|degrees?|deg|feet|foot|met(?:er|re)s?|"
-    r"forwards?|backwards?|back|ahead|straight|left|right|around|round|clockwise|counter\s*clockwise|anti\s*clockwise|"
+    r"forwards?|backwards?|back(?!\s+(?:up|off|out|away)\b)|ahead|straight|left|right|around|round|clockwise|counter\s*clockwise|anti\s*clockwise|"
     rf"(?:north|south|east|west)\w*|hand|side|turn\b(?=\s*(?:$|[,.;!?])))\b|\d|(?:{NUMBER_WORDS})\b)", re.IGNORECASE)
 _RIGHT: Final = re.compile(r"\bright\b", re.IGNORECASE)
 #: "Right then," and "right so," with a pause after them open an utterance in British and Irish English ("right
