@@ -152,3 +152,40 @@ def test_a_made_up_word_after_a_whole_command_changes_nothing(command: str, word
                                            "go through the {w}", "turn left ninety, sorry, {w}"]))
 def test_a_made_up_word_where_a_place_unit_or_correction_goes_never_moves(word: str, slot: str) -> None:
     assert translate_offline(slot.format(w=word)).steps == []
+
+
+# ---------------------------------------------------------------- words of English and of radio procedure
+@pytest.mark.parametrize(("prompt", "expected"), [
+    # "there" ending a turn on the spot or a move with its amount names no place
+    ("turn around there", [("rotate", "around", 180.0)]),
+    ("go forward, em, four feet there", [("move", "forward", 1.2192)]),
+    ("back up a bit there", [("move", "backward", None)]),
+    # "straight" before the way a backward verb says is "directly"
+    ("withdraw fifteen metres, straight back", [("move", "backward", 15.0)]),
+    # "backpedal": to step backwards
+    ("back pedal five yards", [("move", "backward", 4.572)]),
+    ("backpedal two metres", [("move", "backward", 2.0)]),
+    # "whereabouts" asks where; radio's "say" asks to be told
+    ("whereabouts are you to now", [("query", None, None)]),
+    ("say position", [("query", None, None)]),
+    # "go along" with no object is onward
+    ("now go along five feet and turn left", [("move", "forward", 1.524), ("rotate", "left", None)]),
+    # the radiotelephony digits, where a number goes
+    ("go forward fife metres", [("move", "forward", 5.0)]),
+    ("turn right niner zero degrees", [("rotate", "right", 90.0)]),
+    ("go back tree metres", [("move", "backward", 3.0)]),
+])
+def test_english_and_radio_words(prompt: str, expected: list[tuple[str, str | None, float | None]]) -> None:
+    assert _steps(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "go there",                           # "there" as the place: which?
+    "go back there",                      # back to a place said before: none was
+    "go forward two metres over there",   # "over there" points at a place
+    "go to the tree",                     # a tree is a place the map cannot know, not three
+    "move along",                         # onward, but how far?
+    "inch it forward",                    # the driver's "it"; how far is not said
+])
+def test_neighbours_still_ask(prompt: str) -> None:
+    assert _asks(prompt)

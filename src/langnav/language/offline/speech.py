@@ -133,6 +133,11 @@ HOMOPHONES: Final = (
     (re.compile(rf"\b(?:to|too)\s+(?={_UNIT_WORD}\b)", re.IGNORECASE), "two "),
     (re.compile(rf"\bfor\s+(?={_UNIT_WORD}\b)", re.IGNORECASE), "four "),
     (re.compile(r"\bwon\b", re.IGNORECASE), "one"),
+    # the radiotelephony digits pilots, air traffic and many radio users say (ICAO: "tree", "fower", "fife",
+    # "niner"), where a number goes: before a unit or another number ("niner" is nothing else anywhere)
+    (re.compile(r"\bniner\b", re.IGNORECASE), "nine"),
+    *((re.compile(rf"\b{said}\s+(?=(?:{_UNIT_WORD}|zero|{NUMBER_WORDS})\b)", re.IGNORECASE), f"{digit} ")
+      for said, digit in (("tree", "three"), ("fower", "four"), ("fife", "five"))),
     (re.compile(r"\bate\b", re.IGNORECASE), "eight"),
     (re.compile(rf"\b(?P<slot>{_SIDE_SLOT}|go|move|head|drive|slide|step|to\s+the|on\s+the|a)\s+(?:write|rite|wright)\b",
                 re.IGNORECASE), r"\g<slot> right"),
