@@ -96,7 +96,8 @@ def test_heading_without_a_bearing_is_read_as_before(prompt: str,
     ("go forward, ano, one and a half meters", [("move", "forward", 1.5)]),  # a filler before the amount
     ("go forward, eto, two metres", [("move", "forward", 2.0)]),
     ("forward a little bit more po", [("move", "forward", None)]),
-    ("go forward three meters then turn right po", [("move", "forward", 3.0), ("rotate", "right", None)]),
+    ("go forward two metres yalla", [("move", "forward", 2.0)]),
+    ("stop po", [("stop", None, None)]),
     ("ay sorry, turn left, no, right pala, thirty degrees", [("rotate", "right", 30.0)]),
 ])
 def test_a_particle_of_another_language_changes_nothing(
@@ -113,6 +114,10 @@ def test_a_particle_of_another_language_changes_nothing(
     "turn left ri",                       # two letters of "right": a word cut short
     "go forward zwei metres",             # where the number goes
     "go back konti",                      # no amount said: how far?
+    "turn right cuarenta grados",         # where the amount goes: maybe the amount, in another language
+    "go forward three meters then turn right po",
+    "get konti",                          # right after a verb: its place or its object
+    "come konti",
 ])
 def test_a_word_that_may_say_where_or_how_far_still_asks(prompt: str) -> None:
     assert _asks(prompt)
@@ -132,7 +137,7 @@ def test_a_named_place_is_no_particle() -> None:
 
 
 _COMMANDS = st.sampled_from(["turn around", "turn left ninety degrees", "go forward two metres", "stop",
-                             "back up one metre", "face north", "turn right", "move left half a metre"])
+                             "back up one metre", "face north", "move left half a metre", "go back a little"])
 #: Made-up words of two to six letters: consonant-vowel pairs ("pi" is left out: it is the number, 180 degrees
 #: as radians); the test keeps those that are no English word and no slip of a word of way or amount.
 _MADE_UP = st.lists(st.sampled_from(["ka", "po", "mu", "zi", "yo", "ku", "zo", "gu", "ji"]), min_size=1,
@@ -189,3 +194,10 @@ def test_english_and_radio_words(prompt: str, expected: list[tuple[str, str | No
 ])
 def test_neighbours_still_ask(prompt: str) -> None:
     assert _asks(prompt)
+
+
+@settings(max_examples=60, deadline=None, derandomize=True)
+@given(command=st.sampled_from(["turn right", "turn left", "go forward", "back up", "move left"]), word=_MADE_UP)
+def test_a_made_up_word_where_the_amount_goes_never_moves(command: str, word: str) -> None:
+    """"turn right cuarenta": a word after a move or turn with no amount may be the amount in another language."""
+    assert translate_offline(f"{command} {word}").steps == []

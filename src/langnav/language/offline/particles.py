@@ -6,19 +6,20 @@ Malay and Singapore "lah", "lor"; Korean "yo"; Hindi "na"; Japanese "ne"), and f
 speaker says "um" (Tagalog "ano", Japanese "eto", Arabic "yani"). Such a word asks for nothing: it does not
 change where or how far the robot goes. A person listening to "turn around po" hears "turn around".
 
-The rule, stated for any language: a word that is neither a word the reading knows nor an English word
+The rule, stated for any language: a word said (it has a vowel) that is neither a word the reading knows nor an English word
 (``english``), nor a slip of one (a typo, a word with one letter changed, a word cut short), nor a compass
 abbreviation, is a particle
 
-1. when it ends a clause (one or two of them) whose other words read as a whole instruction, with nothing
-   left unread and nothing to ask ("turn around po", "turn left lang, ninety", "go back konti, a little":
-   the amount said next completes the move), and it does not stand where a place, a unit or a corrected
-   word goes: after "the", "to", "your", a number, or a correction ("no", "sorry", "I mean"); or
+1. when it ends a clause (one or two of them) whose other words read as a whole instruction, with its
+   amount said, nothing left unread and nothing to ask ("turn around po", "go forward two metres yalla";
+   "go back konti, a little": the amount said next completes the move; "turn right cuarenta" asks, as the
+   word stands where the amount goes), and it does not stand where a place, an object, a unit or a corrected word goes:
+   right after a verb ("get konti"), "the", "to", "your", a number, or a correction ("no", "sorry"); or
 2. when it is said alone between an instruction and its amount ("go forward, ano, one and a half metres"),
    as a filler is.
 
 Anything else stays, and is read, or asked about, as before: a word standing where the place or the unit goes
-("go to the konti", "go forward three konti"), a word after a correction ("turn left, no, derecha"), a word
+("go to the konti", "take konti", "go forward three konti"), a word after a correction ("turn left, no, derecha"), a word
 said alone ("basta"), an English word the reading does not know ("go forward two metres diagonally").
 """
 
@@ -28,6 +29,7 @@ import re
 from collections.abc import Callable, Sequence
 from typing import Final
 
+from langnav.language.intent import Amount
 from langnav.language.offline import lexicon as lx
 from langnav.language.offline.ask import SPATIAL_WORDS
 from langnav.language.offline.english import is_english
@@ -67,14 +69,18 @@ _WAYS_AND_AMOUNTS: Final = frozenset(
 #: How the question "how far?" of a move with no amount begins.
 _ASK_DISTANCE_START: Final = ASK_DISTANCE.split("{", 1)[0]
 _LETTERS: Final = re.compile(r"[a-z]+")
+_VOWELS: Final = re.compile(r"[aeiouy]")
+#: Verbs of going and turning, said as one word: the word right after one is where its place, its object or its
+#: way goes ("go konti", "take konti", "get konti"), never a particle.
+_VERBS: Final = frozenset(w for verb in (*lx.GO_VERBS, *lx.ROTATE_VERBS) if " " not in verb for w in (verb,))
 _MARKS: Final = ",.;:!?\"'"
 
 
 def is_particle_word(word: str, known_names: Sequence[str] = ()) -> bool:
     """Whether ``word`` may be a particle of another language (the first half of the rule: what the word is)."""
     bare = word.lower().strip(_MARKS)
-    if not _LETTERS.fullmatch(bare) or len(bare) < MIN_PARTICLE_LEN:
-        return False
+    if not _LETTERS.fullmatch(bare) or len(bare) < MIN_PARTICLE_LEN or not _VOWELS.search(bare):
+        return False  # (a word said has a vowel: "bbbbb", "xkcd" are noise or typing, not speech)
     if bare in VOCABULARY or bare in lx.STOPWORDS or bare in lx.TYPOS or bare in COMPASS_ABBREVIATIONS:
         return False
     if any(bare == name.lower() or bare in name.lower().split() for name in known_names):
@@ -134,7 +140,7 @@ def without_particles(clauses: list[str], read: ClauseReader, known_names: Seque
 def _particle_slot(before: str) -> bool:
     """The word before is no word after which a place, a unit or a corrected word comes."""
     bare = before.lower().strip(_MARKS)
-    return bare not in _SLOT_WORDS and not bare.isdigit() and bare not in NUMBER_WORD_LIST \
+    return bare not in _SLOT_WORDS and bare not in _VERBS and bare not in NUMBER_WORD_LIST \
         and not any(ch.isdigit() for ch in bare)
 
 
@@ -144,10 +150,13 @@ def _whole(rest: str, following: str | None, read: ClauseReader) -> bool:
     reading = read(rest)
     if not reading.steps or reading.problem is not None or reading.unread:
         return False
-    # ("turn right" alone is a whole turn, 90 degrees by the contract; "go back" alone asks how far, and is whole
-    # only with the amount said next)
-    return not reading.asks or (following is not None and _amount_only(following)
-                                and all(q.startswith(_ASK_DISTANCE_START) for q in reading.asks))
+    if any(s.amount == Amount.DEFAULT for s in reading.steps) or reading.asks:
+        # a move or turn with no amount said ("turn right", "go back"): the word after it stands where the amount
+        # goes, and may be it in the speaker's other language ("turn right cuarenta"); only with the amount said
+        # next ("go back konti, a little") is the instruction whole without it
+        return following is not None and _amount_only(following) \
+            and all(q.startswith(_ASK_DISTANCE_START) for q in reading.asks)
+    return True
 
 
 def _amount_only(clause: str) -> bool:
