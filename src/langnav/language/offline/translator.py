@@ -176,6 +176,8 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
                 # question ("how far?") is answered by the move said again with its amount
                 if question in questions and question not in reading.asks:
                     questions.remove(question)
+        if steps and len(new_steps) == 1 and not sequenced and _side_said_again(steps[-1], clause):
+            continue  # "go to the left corner, left": the place's side said again, no turn of its own
         while steps and new_steps and _asked_again(steps[-1], new_steps[0]):
             new_steps.pop(0)  # "hold it, hold it"; "where are you? can you tell me where you are?"
         steps.extend(new_steps)
@@ -414,6 +416,23 @@ def _asked_again(previous: Step, step: Step) -> bool:
         return True
     return (step.movement in _NO_MOTION and step.movement == previous.movement and step.query == previous.query
             and step.target == previous.target)
+
+
+#: A side said alone ("left", "to the left", "your left").
+_SIDE_ALONE_RE: Final = re.compile(r"^\s*(?:(?:to|on)\s+(?:the|your)\s+|your\s+)?(?P<side>left|right)\s*[.!]*\s*$",
+                                   re.IGNORECASE)
+
+
+def _side_said_again(previous: Step, clause: str) -> bool:
+    """A side said alone right after a trip to a place on that side ("go to the left corner, left"; "the door on
+    your right, right"): the speaker insists on the side of the place, as one repeats a word to be heard; a turn
+    that way would be a motion nobody asked for (a turn is said with a verb, "..., turn left", or in sequence,
+    "..., then left")."""
+    m = _SIDE_ALONE_RE.match(clause)
+    if m is None or previous.movement != Movement.NAVIGATE or previous.target is None:
+        return False
+    side = m.group("side").lower()
+    return side in (getattr(previous.target.side, "value", None), getattr(previous.target.also_side, "value", None))
 
 
 def _amendable(previous: Step, fragment: Step) -> bool:
