@@ -202,17 +202,3 @@ def test_a_made_up_word_where_the_amount_goes_never_moves(command: str, word: st
     """"turn right cuarenta": a word after a move or turn with no amount may be the amount in another language."""
     assert translate_offline(f"{command} {word}").steps == []
 
-
-# ---------------------------------------------------------------- a place's side said again
-def test_a_side_said_again_after_a_place_on_that_side_is_no_turn() -> None:
-    intent = translate_offline("go to the left corner, left")
-    assert [s.movement for s in intent.steps] == [Movement.NAVIGATE]
-
-
-@pytest.mark.parametrize(("prompt", "turn"), [
-    ("go to the left corner, right", "right"),       # the other side: a turn of its own
-    ("go to the left corner, then left", "left"),    # in sequence: a turn
-    ("go to the left corner. turn left", "left"),    # with its verb: a turn
-])
-def test_a_side_with_its_own_job_is_still_a_turn(prompt: str, turn: str) -> None:
-    assert _steps(prompt)[-1] == ("rotate", turn, None)

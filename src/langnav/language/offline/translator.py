@@ -7,7 +7,16 @@ import re
 from collections.abc import Sequence
 from typing import Final
 
-from langnav.language.intent import Amount, Detail, Direction, ElementRef, Intent, Movement, Step
+from langnav.language.intent import (
+    Amount,
+    Detail,
+    Direction,
+    ElementRef,
+    Intent,
+    Movement,
+    Side,
+    Step,
+)
 from langnav.language.offline.amounts import said_again, same_way_again, with_unit_said_before
 from langnav.language.offline.ask import ask_message, spatial
 from langnav.language.offline.composition import read_composed
@@ -176,8 +185,13 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
                 # question ("how far?") is answered by the move said again with its amount
                 if question in questions and question not in reading.asks:
                     questions.remove(question)
-        if steps and len(new_steps) == 1 and not sequenced and _side_said_again(steps[-1], clause):
-            continue  # "go to the left corner, left": the place's side said again, no turn of its own
+        if steps and new_steps and not sequenced and _side_word_after_place(steps[-1], new_steps[0], clause):
+            # "go to the left corner, left": the place's side said again, not a turn after it; another side
+            # ("go to the left corner, right") may put the place right or add a turn: ask, don't guess
+            echoed = new_steps.pop(0)
+            side = echoed.direction.value if echoed.direction is not None else "that way"
+            if steps[-1].target is None or echoed.direction is None or steps[-1].target.side != Side(side):
+                questions.append(ASK_SIDE_OR_TURN.format(side=side))
         while steps and new_steps and _asked_again(steps[-1], new_steps[0]):
             new_steps.pop(0)  # "hold it, hold it"; "where are you? can you tell me where you are?"
         steps.extend(new_steps)
@@ -362,6 +376,21 @@ def _completes(previous: Step, step: Step, clause: str) -> bool:
     return previous.angle_deg is None and step.angle_deg is not None
 
 
+#: What a clause of only a side word may hold besides the side ("left", "to the left", "on your left").
+_SIDE_ONLY_RE: Final = re.compile(r"^\W*(?:to\s+|on\s+)?(?:the\s+|your\s+)?(left|right)\W*$", re.IGNORECASE)
+#: Asked when a side word follows a place it could describe or follow as a turn.
+ASK_SIDE_OR_TURN: Final = "Did you mean the one on the {side}, or to turn {side} once there?"
+
+
+def _side_word_after_place(previous: Step, step: Step, clause: str) -> bool:
+    """A side word said on its own ("left") straight after an instruction to go to a place: a person
+    saying it there names, or repeats for stress, which place ("the left corner, left"); it could also be a
+    turn once there ("go to the door, left"), so only the same side as the place's is taken as said again."""
+    return (previous.movement == Movement.NAVIGATE and previous.target is not None
+            and step.movement == Movement.ROTATE and step.amount == Amount.DEFAULT and step.angle_deg is None
+            and step.heading_deg is None and step.target is None and _SIDE_ONLY_RE.match(clause) is not None)
+
+
 def _confirms(previous: Step, step: Step, clause: str) -> bool:
     """The same move or turn said first with its amount and right after again with none ("turn to your
     left, about ninety degrees, just a proper left turn"; "go forward two metres, forward"), with no word
@@ -416,23 +445,6 @@ def _asked_again(previous: Step, step: Step) -> bool:
         return True
     return (step.movement in _NO_MOTION and step.movement == previous.movement and step.query == previous.query
             and step.target == previous.target)
-
-
-#: A side said alone ("left", "to the left", "your left").
-_SIDE_ALONE_RE: Final = re.compile(r"^\s*(?:(?:to|on)\s+(?:the|your)\s+|your\s+)?(?P<side>left|right)\s*[.!]*\s*$",
-                                   re.IGNORECASE)
-
-
-def _side_said_again(previous: Step, clause: str) -> bool:
-    """A side said alone right after a trip to a place on that side ("go to the left corner, left"; "the door on
-    your right, right"): the speaker insists on the side of the place, as one repeats a word to be heard; a turn
-    that way would be a motion nobody asked for (a turn is said with a verb, "..., turn left", or in sequence,
-    "..., then left")."""
-    m = _SIDE_ALONE_RE.match(clause)
-    if m is None or previous.movement != Movement.NAVIGATE or previous.target is None:
-        return False
-    side = m.group("side").lower()
-    return side in (getattr(previous.target.side, "value", None), getattr(previous.target.also_side, "value", None))
 
 
 def _amendable(previous: Step, fragment: Step) -> bool:
