@@ -58,12 +58,14 @@ from langnav.language.offline.navigation import navigate_steps, stop_steps
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS, find_quantities
 from langnav.language.offline.patterns import (
+    BOAT_SIDE_WORDS,
     EXPLORE_RE,
     FILLER_RE,
     GO_VERB_RE,
     LATE_FILLER_RE,
     MOVE_DIR_RE,
     STOP_RE,
+    TURN_SIDE_WORDS,
 )
 from langnav.language.offline.phrases import Phrase, find_phrases
 from langnav.language.offline.queries import (
@@ -256,7 +258,7 @@ _SIDE_WORD_RE: Final = re.compile(r"\b(?:left|right|forwards?|ahead|straight|bac
                                   r"clockwise|counter\s*clockwise|anti\s*clockwise|sideways)\b")
 
 
-_TURN_SIDE_RE: Final = re.compile(r"\b(?:left|right|port|starboard|around|round|clockwise|counter\s*clockwise|anti\s*clockwise)\b")
+_TURN_SIDE_RE: Final = re.compile(rf"\b(?:{TURN_SIDE_WORDS}|{BOAT_SIDE_WORDS}|around|round)\b")
 
 
 def _is_open(steps: list[Step], norm: str) -> bool:

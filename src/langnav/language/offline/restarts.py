@@ -29,12 +29,12 @@ from langnav.language.intent import Amount, Direction, Movement, Step
 from langnav.language.offline.corrections import DISMAY_RE
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import NUMBER, Quantity, QuantityKind, find_quantities
-from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE
+from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE, TURN_SIDE_WORDS
 from langnav.language.offline.reading import ASK_SIDE, Reading
 from langnav.language.offline.vocabulary import VOCABULARY
 
 #: Words that give a turn its side.
-_TURN_SIDE_RE: Final = re.compile(r"\b(?:left|right|clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw)\b")
+_TURN_SIDE_RE: Final = re.compile(rf"\b(?:{TURN_SIDE_WORDS})\b")
 #: Reads one clause on its own (the parser's ``read_clause``).
 ClauseReader = Callable[[str], Reading]
 

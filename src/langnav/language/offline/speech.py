@@ -13,6 +13,7 @@ from typing import Final
 
 from langnav.language.offline.lexicon import TYPOS
 from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS, ONES, TENS
+from langnav.language.offline.patterns import TURN_SIDE_WORDS
 from langnav.language.offline.sidetalk import without_side_talk
 from langnav.language.offline.vocabulary import VOCABULARY
 
@@ -317,8 +318,7 @@ NUMBER_RESTART: Final = re.compile(
     r"(?:\s*(?:,|\.{2,}|…))*\s+(?=(?P=num)\b(?![/.]\d))", re.IGNORECASE)
 #: Words that name one of several alternatives a speaker may set against each other: sides, ways, compass
 #: points, units and numbers.
-_ALTERNATIVE: Final = (rf"(?:(?:to\s+(?:the|your)\s+)?(?:left|right|forwards?|backwards?|back|clockwise|counter\s*clockwise|"
-                       rf"anti\s*clockwise|north|south|east|west|north\s*east|north\s*west|south\s*east|south\s*west|"
+_ALTERNATIVE: Final = (rf"(?:(?:to\s+(?:the|your)\s+)?(?:{TURN_SIDE_WORDS}|forwards?|backwards?|back|north|south|east|west|north\s*east|north\s*west|south\s*east|south\s*west|"
                        rf"feet|foot|inch(?:es)?|yards?|met(?:er|re)s?|centimet(?:er|re)s?|degrees?|\d+(?:\.\d+)?|"
                        rf"{NUMBER_WORDS}))")
 #: A contrast that names what is not meant ("turn left, not right"; "three feet not four"; "not left but
