@@ -229,3 +229,47 @@ def test_many_openings_into_one_place_do_not_make_a_room_a_hallway() -> None:
     assert kind(1) == ElementKind.ROOM
     assert kind(4) == ElementKind.HALLWAY
     assert kind(None) == ElementKind.HALLWAY  # counted by openings alone
+
+
+def store_with_a_shelf_row() -> OccupancyGrid:
+    """A 2.6 m x 10 m store room (an evidence store, an archive) entered through a 0.9 m door
+    from a 1.8 m corridor, with two 0.6 m x 4 m shelf units in a row 0.5 m off its west wall;
+    and, for contrast, a dead-end corridor 1.6 m wide and 12 m long off the same corridor."""
+    b = MapBuilder(14.0, 17.0)
+    b.room(1.0, 1.0, 13.0, 2.8)  # the corridor
+    b.room(2.0, 2.8, 4.6, 12.8).door_h(3.3, 2.8, 0.9)  # the store
+    b.box(2.5, 3.55, 3.1, 7.55).box(2.5, 8.15, 3.1, 12.15)  # the shelf row
+    b.room(8.0, 2.8, 9.6, 14.8).door_h(8.8, 2.8, 0.9)  # the dead-end corridor
+    return b.build("store with a shelf row")
+
+
+def test_a_dead_end_store_narrowed_by_its_shelves_is_a_room() -> None:
+    """Beside its shelves the store's aisle is 1.5 m wide, and its floor is long for that
+    width: a dead-end corridor by its clearance. Wall to wall it is 2.6 m wide, long for that
+    width (nearly four times) but not five times as long, and it is entered through one door:
+    a room. The dead-end corridor, as
+    narrow wall to wall, is longer than a room is."""
+    grid = store_with_a_shelf_row()
+    seg = segment_spaces(grid)
+    store = space_at(seg, grid, 4.0, 7.0)
+    assert store.kind == ElementKind.ROOM
+    assert store.width_m == pytest.approx(2.6, abs=0.2)  # wall to wall
+    corridor = space_at(seg, grid, 5.0, 1.9)
+    dead_end = space_at(seg, grid, 8.8, 9.0)
+    assert len({store.id, corridor.id, dead_end.id}) == 3
+    assert dead_end.kind == ElementKind.HALLWAY
+    assert set(door_near(seg.doors, 3.3, 2.8).connects) == {store.id, corridor.id}
+
+
+@pytest.mark.parametrize(("peak_m", "whole_width_m", "kind"), [
+    (0.8, 2.6, ElementKind.ROOM),  # shelves narrow it to 1.55 m; 2.6 m wall to wall, 9.4 m long
+    (0.8, 1.6, ElementKind.HALLWAY),  # 1.6 m wall to wall and 9.4 m long: a dead-end corridor
+])
+def test_a_dead_end_is_judged_on_its_width_wall_to_wall(peak_m: float, whole_width_m: float,
+                                                        kind: ElementKind) -> None:
+    from langnav.analysis.segmentation import _kind_and_size
+
+    got = _kind_and_size(24.0, peak_m, 1.5, 0.0, 1, lambda: whole_width_m, 0.05, DEFAULT_PARAMS,
+                         whole_wide_share=lambda: 0.0, whole_typical=lambda: whole_width_m,
+                         ways_on=1, extent_m=9.4, served=1)[0]
+    assert got == kind
