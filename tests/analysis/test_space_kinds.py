@@ -273,3 +273,56 @@ def test_a_dead_end_is_judged_on_its_width_wall_to_wall(peak_m: float, whole_wid
                          whole_wide_share=lambda: 0.0, whole_typical=lambda: whole_width_m,
                          ways_on=1, extent_m=9.4, served=1)[0]
     assert got == kind
+
+
+def bedroom_with_an_en_suite_door_open(leaf: bool = True) -> OccupancyGrid:
+    """A 3 m x 5.5 m bedroom with a 1.3 m x 2.2 m en-suite in its north-west corner, as a scan
+    of a care home's room draws it: the en-suite's south wall is scanned only as a short stub
+    beside its east wall, and its door stands open into the bedroom, the leaf (0.85 m, 0.1 m as
+    scanned) hinged 0.3 m from the outer wall; a room east of the bedroom leads on."""
+    b = MapBuilder(10.0, 9.0)
+    b.room(1.0, 1.0, 4.0, 6.5)  # the bedroom
+    b.room(4.0, 1.0, 8.0, 6.5).door_v(4.0, 2.0, 0.9)
+    b.wall(2.3, 4.3, 2.3, 6.5)  # the en-suite's east wall
+    b.wall(2.15, 4.3, 2.3, 4.3)  # the stub of its south wall
+    if leaf:
+        b.wall(1.35, 3.45, 1.35, 4.3, thickness_m=0.1)  # the door, standing open
+    return b.build("bedroom with an en-suite, its door open")
+
+
+def test_an_en_suite_whose_door_stands_open_is_a_room_of_its_own() -> None:
+    """The en-suite is as narrow as its doorway is wide, and its south wall was hardly scanned:
+    by clearance alone it is a bay of the bedroom. Its open door, a thin leaf as long as a door
+    is wide hinged at the doorway's end, marks the doorway: two rooms and a door between them.
+    Without the leaf the 1.15 m gap is an open bay."""
+    grid = bedroom_with_an_en_suite_door_open()
+    seg = segment_spaces(grid)
+    bedroom = space_at(seg, grid, 2.5, 2.5)
+    en_suite = space_at(seg, grid, 1.65, 5.4)
+    assert bedroom.id != en_suite.id
+    assert len(seg.rooms) == 3
+    assert en_suite.area_m2 == pytest.approx(1.3 * 2.2, abs=0.5)
+    door = door_near(seg.doors, 1.75, 4.3)
+    assert set(door.connects) == {bedroom.id, en_suite.id}
+    assert door.width_m == pytest.approx(0.75, abs=0.15)  # from the leaf to the stub
+    grid = bedroom_with_an_en_suite_door_open(leaf=False)
+    seg = segment_spaces(grid)
+    assert space_at(seg, grid, 2.5, 2.5) is space_at(seg, grid, 1.65, 5.4)
+    assert len(seg.rooms) == 2
+
+
+def test_a_small_hall_many_doors_open_onto_is_judged_on_its_width_within_its_walls() -> None:
+    """A 6.7 m2 hall and the 0.8 m corridor leading off it, with four doorways into four
+    places: within its walls its typical width is 0.8 m, but the floor's clearance reaches out
+    through the doorways lining it and reads 1.6 m. Judged on its own width it is walked
+    through: a hallway. Were it 1.6 m wide within its walls too, it would be a room (a small
+    lobby no longer than wide)."""
+    from langnav.analysis.segmentation import _kind_and_size
+
+    def kind(own_typical_m: float) -> ElementKind:
+        return _kind_and_size(6.7, 0.94, 1.61, 0.0, 4, lambda: 1.83, 0.05, DEFAULT_PARAMS,
+                              whole_wide_share=lambda: 0.0, whole_typical=lambda: own_typical_m,
+                              ways_on=4, extent_m=5.4, served=4)[0]
+
+    assert kind(0.8) == ElementKind.HALLWAY
+    assert kind(1.61) == ElementKind.ROOM

@@ -45,6 +45,7 @@ from langnav.analysis.elements import (
 from langnav.grounding.errors import GroundingError
 from langnav.grounding.geometry import (
     AHEAD_HALF_ANGLE_DEG,
+    BoolArray,
     Point,
     Pose,
     bearing_rad,
@@ -56,10 +57,11 @@ from langnav.grounding.geometry import (
     lateral_offset,
     nearest_point,
     to_robot_frame,
+    unit,
 )
 from langnav.language.intent import Element as Kind
 from langnav.language.intent import ElementRef, Landmark, Place, Relation, Side, Superlative
-from langnav.maps.grid import UNKNOWN
+from langnav.maps.grid import FREE, UNKNOWN
 
 #: A robot standing in a doorway belongs to the nearest space within this distance.
 SPACE_SNAP_M: Final = 0.6
@@ -104,6 +106,23 @@ FURNITURE_FREE_MARGIN_M: Final = 1.0
 #: partition (a 0.7 m gap between two benches). A person calls it "the narrow gap" or "the narrow
 #: passage", and does not count it among "the doors" of a room.
 NARROW_GAP_MAX_M: Final = 0.75
+
+#: "The narrow gap" between two things standing free (two acoustic screens end to end, two parked cars):
+#: the analysis's passages are constrictions longer than a door is deep, but a person calls any way
+#: between two things that is wider than the robot and narrower than a passage (the analysis's
+#: ``passage_max_width_m``) a narrow gap, however thin the things are. Its sides are the faces of the two
+#: things within GAP_FACE_M of their nearest points; a gap with no depth gets GAP_MIN_HALF_DEPTH_M a side.
+GAP_FACE_M: Final = 0.15
+GAP_MIN_HALF_DEPTH_M: Final = 0.1
+
+#: A thing standing free has scanned floor all round it: at least this share of the cells round it
+#: free (a speck of scan noise may touch it; a wall runs into unscanned space or other walls).
+THING_RING_FREE_MIN: Final = 0.95
+#: Its inside is never scanned (a lidar sees its faces): more free cells inside it than a speck of scan
+#: noise are a floor, and it is walls round a room, not a thing.
+THING_FLOOR_INSIDE_MAX: Final = 4
+#: The share of a thing that is furniture-thick (``FURNITURE_MIN_THICKNESS_M``) all through.
+THING_THICK_SHARE: Final = 0.8
 
 #: Nouns for obstacles of a compact footprint ("the box") and of a long one ("the shelf"). When the
 #: words use one, obstacles of that shape are chosen before the others.
@@ -550,6 +569,76 @@ def doors_of(analysis: MapAnalysis) -> list[Door]:
     return [d for d in analysis.doors if not is_gap(d, analysis) and id(d) not in round_ends]
 
 
+def things_standing_free(analysis: MapAnalysis) -> list[Obstacle]:
+    """Things standing free on the floor that the analysis counted as wall structure because spaces
+    meet round them (a desk block or a parked car between two parts of an open room): an occupied
+    cluster that no wall runs into (scanned free floor all round it, THING_RING_FREE_MIN of its ring),
+    solid (no floor inside it), as thick as furniture all through (``FURNITURE_MIN_THICKNESS_M``,
+    ``THING_THICK_SHARE``; an inner wall is thinner) and not one of
+    the analysis's obstacles. To a person in the room it is a thing in it, "the obstacle on the left",
+    whatever line the analysis drew through it. Ids are ``thing_N``; the room is the one most of its
+    ring lies in. Found once per analysis."""
+    known = _THINGS.get(analysis)
+    if known is not None:
+        return list(known)
+    grid = analysis.grid
+    occupied = grid.occupied
+    comp, n = ndimage.label(occupied, structure=np.ones((3, 3), dtype=bool))
+    taken = np.zeros(n + 1, dtype=bool)
+    for o in analysis.obstacles:
+        pts = np.asarray(o.cells_xy, dtype=float).reshape(-1, 2)
+        rr, cc = grid.world_to_index(pts[:, 0], pts[:, 1])
+        ok = grid.in_bounds(rr, cc)
+        taken[comp[rr[ok], cc[ok]]] = True
+    sizes = np.bincount(comp.ravel(), minlength=n + 1)
+    sizes[0] = 0
+    if n:
+        taken[int(np.argmax(sizes))] = True  # the building's walls
+    by_label = {r.label: r.id for r in analysis.rooms}
+    res = grid.resolution_m
+    out: list[Obstacle] = []
+    for k, sl in enumerate(ndimage.find_objects(comp), start=1):
+        if sl is None or taken[k] or sizes[k] * grid.cell_area_m2 < analysis.params.obstacle_min_area_m2:
+            continue
+        r0, r1 = max(sl[0].start - 2, 0), min(sl[0].stop + 2, grid.height)
+        c0, c1 = max(sl[1].start - 2, 0), min(sl[1].stop + 2, grid.width)
+        if r0 == 0 or c0 == 0 or r1 == grid.height or c1 == grid.width:
+            continue
+        own = comp[r0:r1, c0:c1] == k
+        block = ndimage.binary_fill_holes(own)
+        if np.count_nonzero(block & ~own & (grid.cells[r0:r1, c0:c1] == FREE)) > THING_FLOOR_INSIDE_MAX:
+            continue  # walls round a floor (a room inside a room, its door gaps parting it from the rest)
+        ring = ndimage.binary_dilation(block, structure=np.ones((3, 3), dtype=bool)) & ~block
+        free_ring = grid.cells[r0:r1, c0:c1][ring] == FREE
+        if free_ring.mean() < THING_RING_FREE_MIN:
+            continue
+        # thick all through, as a desk or a car is: most of it stays when a disc as wide as furniture
+        # is thick is rolled inside it (a run of thin walls, even with the unscanned inside of a thick
+        # junction or two, does not)
+        k_cells = max(1, round(FURNITURE_MIN_THICKNESS_M / 2 / res))
+        yy, xx = np.ogrid[-k_cells:k_cells + 1, -k_cells:k_cells + 1]
+        disc = xx * xx + yy * yy <= k_cells * k_cells
+        thick = ndimage.binary_opening(np.pad(block, k_cells + 1), structure=disc)
+        if np.count_nonzero(thick) < THING_THICK_SHARE * np.count_nonzero(block):
+            continue
+        rr, cc = np.nonzero(own)
+        oxs, oys = grid.cell_to_world(rr + r0, cc + c0)
+        br, bc = np.nonzero(block)
+        bxs, bys = grid.cell_to_world(br + r0, bc + c0)
+        ring_labels = analysis.labels[r0:r1, c0:c1][ring]
+        ring_labels = ring_labels[ring_labels > 0]
+        room = by_label.get(int(np.bincount(ring_labels).argmax())) if ring_labels.size else None
+        out.append(Obstacle(f"thing_{len(out) + 1}", (float(bxs.mean()), float(bys.mean())),
+                            float(len(bxs) * grid.cell_area_m2),
+                            (float(bxs.max() - bxs.min()) + res, float(bys.max() - bys.min()) + res), room,
+                            np.stack([oxs, oys], axis=1)))
+    _THINGS[analysis] = tuple(out)
+    return out
+
+
+_THINGS: weakref.WeakKeyDictionary[MapAnalysis, tuple[Obstacle, ...]] = weakref.WeakKeyDictionary()
+
+
 def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
     """The elements the noun of ``kind`` names: "doors" are the doors without the gaps narrower than
     any door, which are "narrow passages" (gaps) with the analysis's passages. A room's only way in
@@ -569,7 +658,7 @@ def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
     if kind == Kind.HALLWAY:
         return [r for r in analysis.rooms if r.kind == ElementKind.HALLWAY]
     if kind == Kind.OBSTACLE:
-        return list(analysis.obstacles)
+        return [*analysis.obstacles, *things_standing_free(analysis)]
     if kind == Kind.CORNER:
         return list(analysis.corners)
     if kind == Kind.UNEXPLORED_AREA:
@@ -589,15 +678,17 @@ def select(ref: ElementRef, analysis: MapAnalysis, pose: Pose, words: str = "",
     return select_many(ref, analysis, pose, 1, words, came_through)[0]
 
 
-def in_sight(analysis: MapAnalysis, xy: Point, o: Obstacle) -> bool:
+def in_sight(analysis: MapAnalysis, xy: Point, o: Obstacle, *, past_things: bool = False) -> bool:
     """Whether a straight line from ``xy`` reaches one of the thing's cells (``SIGHT_CELLS_TRIED``
-    nearest) without crossing an occupied cell of the map before it (``SIGHT_END_SLACK_M``)."""
+    nearest) without crossing an occupied cell of the map before it (``SIGHT_END_SLACK_M``);
+    ``past_things``: only walls hide it (a person sees a thing beyond another thing in the same room:
+    over it, round it as they step aside), ``walls_only``."""
     cells = np.asarray(o.cells_xy, dtype=float).reshape(-1, 2)
     if not len(cells):
         return False
     grid = analysis.grid
     d = np.hypot(cells[:, 0] - xy[0], cells[:, 1] - xy[1])
-    occupied = grid.occupied
+    occupied = walls_only(analysis) if past_things else grid.occupied
     step_m = grid.resolution_m / 2
     for k in np.argsort(d)[:SIGHT_CELLS_TRIED]:
         length = float(d[k]) - SIGHT_END_SLACK_M
@@ -611,6 +702,25 @@ def in_sight(analysis: MapAnalysis, xy: Point, o: Obstacle) -> bool:
         if not occupied[r[inside], c[inside]].any():
             return True
     return False
+
+
+def walls_only(analysis: MapAnalysis) -> BoolArray:
+    """The occupied cells of the map without those of the obstacles and the things standing free
+    (``things_standing_free``): what hides a thing from a person in a room. Once per analysis."""
+    known = _WALLS_ONLY.get(analysis)
+    if known is None:
+        grid = analysis.grid
+        known = grid.occupied.copy()
+        for o in [*analysis.obstacles, *things_standing_free(analysis)]:
+            pts = np.asarray(o.cells_xy, dtype=float).reshape(-1, 2)
+            rr, cc = grid.world_to_index(pts[:, 0], pts[:, 1])
+            ok = grid.in_bounds(rr, cc)
+            known[rr[ok], cc[ok]] = False
+        _WALLS_ONLY[analysis] = known
+    return known
+
+
+_WALLS_ONLY: weakref.WeakKeyDictionary[MapAnalysis, BoolArray] = weakref.WeakKeyDictionary()
 
 
 def aspect_ratio(o: Obstacle) -> float:
@@ -675,7 +785,7 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
             pass  # no gap matches the words: "the gap" is a doorway
     pool = elements_of_kind(analysis, ref.kind)
     noun_plural = KIND_NOUN[ref.kind][1]
-    if not pool:
+    if not pool and not (ref.kind == Kind.NARROW_PASSAGE and gaps_between_things(analysis)):
         raise GroundingError(f"I see no {noun_plural} in this map.")
     space = _space_for_ref(ref, analysis, pose)
     if space is not None and ref.kind not in (Kind.ROOM, Kind.HALLWAY):
@@ -705,6 +815,19 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         pool = [e for e in pool if matches_side(e, pose, ref.also_side)]  # "behind you on the left": both hold
     if ref.kind == Kind.OBSTACLE and words:
         pool = shape_filter(pool, words)
+    if ref.kind == Kind.OBSTACLE and ref.side is None and ref.superlative == Superlative.NEAREST and space is None \
+            and ref.near is None:
+        # "the two nearest obstacles" are things the robot sees from where it stands, not one nearer
+        # by a straight line through a wall in the next room (when too few are in sight: all of them)
+        wanted = (ref.ordinal or 1) + count - 1
+        seen_near: list[Element] = []
+        for e in sorted(pool, key=lambda e: distance_to(e, pose.xy)):
+            if len(seen_near) >= wanted:
+                break
+            if isinstance(e, Obstacle) and in_sight(analysis, pose.xy, e, past_things=True):
+                seen_near.append(e)
+        if len(seen_near) >= wanted:
+            pool = seen_near
     if ref.kind == Kind.OBSTACLE and ref.side is not None and space is None and ref.near is None:
         # "the obstacle on your right" places a thing by where the robot sees it: one behind a wall, in
         # another room, is not on its right to a person standing there (ask rather than drive to it)
@@ -769,6 +892,13 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
             raise GroundingError(f"I see no door at the end of {label_of(space)}: its doors are along its sides. "
                                  "Which door do you mean? Say e.g. 'the last door on your left'.")
     k = (ref.ordinal or 1) - 1
+    if len(ordered) < k + count and ref.kind == Kind.NARROW_PASSAGE and not ordered and sup is None:
+        # no passage of the analysis's where the words put it: a narrow gap between two things there
+        between = [g for g in gaps_between_things(analysis)
+                   if (space is None or _in_space(g, space, analysis))
+                   and (ref.side is None or matches_side(g, pose, ref.side))
+                   and (ref.also_side is None or matches_side(g, pose, ref.also_side))]
+        ordered = sorted(between, key=lambda e: distance_to(e, pose.xy))
     if len(ordered) < k + count:
         if not ordered:
             raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]}{_where(ref)}, so I cannot find "
@@ -776,6 +906,66 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         raise GroundingError(f"I see only {_count_phrase(len(ordered), ref)}, so I cannot find "
                              f"{describe_ref(ref) if count == 1 else f'{count} of them'}.")
     return ordered[k:k + count]
+
+
+def gaps_between_things(analysis: MapAnalysis) -> list[NarrowPassage]:
+    """The narrow gaps between two things standing free (``GAP_FACE_M``), as passages: the way between
+    the nearest points of the two things, wider than the robot and narrower than a passage, with no
+    occupied or unknown cell on it; its ends are where the two things' facing sides end."""
+    cached = _GAPS.get(analysis)
+    if cached is not None:
+        return list(cached)
+    params = analysis.params
+    lo, hi = 2 * params.robot_radius_m, params.passage_max_width_m
+    things = [o for o in analysis.obstacles if len(o.cells_xy)]
+    trees = [cKDTree(np.asarray(o.cells_xy, dtype=float).reshape(-1, 2)) for o in things]
+    out: list[NarrowPassage] = []
+    for (_, a), (j, b) in itertools.combinations(enumerate(things), 2):
+        if a.room is not None and b.room is not None and a.room != b.room:
+            continue
+        ca = np.asarray(a.cells_xy, dtype=float).reshape(-1, 2)
+        d, k = trees[j].query(ca, distance_upper_bound=hi + analysis.grid.resolution_m)
+        if not np.isfinite(d).any():
+            continue
+        ia = int(np.argmin(d))
+        p, q = ca[ia], np.asarray(b.cells_xy, dtype=float).reshape(-1, 2)[int(k[ia])]
+        # cell centres: the clear width is one cell less than the distance between them
+        width = float(d[ia]) - analysis.grid.resolution_m
+        if not lo <= width <= hi or not _open_between(analysis, (float(p[0]), float(p[1])), (float(q[0]), float(q[1]))):
+            continue
+        across = unit((float(q[0] - p[0]), float(q[1] - p[1])))
+        axis = (-across[1], across[0])
+        centre = ((float(p[0]) + float(q[0])) / 2, (float(p[1]) + float(q[1])) / 2)
+        spans = []
+        for cells, end in ((ca, p), (np.asarray(b.cells_xy, dtype=float).reshape(-1, 2), q)):
+            face = cells[np.abs((cells - end) @ np.asarray(across)) <= GAP_FACE_M]
+            t = (face - np.asarray(centre)) @ np.asarray(axis)
+            spans.append((float(t.min()), float(t.max())))
+        t0, t1 = max(spans[0][0], spans[1][0]), min(spans[0][1], spans[1][1])
+        if t1 - t0 < 2 * GAP_MIN_HALF_DEPTH_M:
+            mid = (t0 + t1) / 2 if t1 >= t0 else 0.0
+            t0, t1 = mid - GAP_MIN_HALF_DEPTH_M, mid + GAP_MIN_HALF_DEPTH_M
+        ends = ((centre[0] + axis[0] * t0, centre[1] + axis[1] * t0), (centre[0] + axis[0] * t1, centre[1] + axis[1] * t1))
+        centre = ((ends[0][0] + ends[1][0]) / 2, (ends[0][1] + ends[1][1]) / 2)
+        rooms = tuple(dict.fromkeys(r for r in (a.room, b.room) if r is not None))
+        out.append(NarrowPassage(f"the gap between {a.id} and {b.id}", centre, width, t1 - t0, ends, rooms))
+    _GAPS[analysis] = tuple(out)
+    return out
+
+
+_GAPS: weakref.WeakKeyDictionary[MapAnalysis, tuple[NarrowPassage, ...]] = weakref.WeakKeyDictionary()
+
+
+def _open_between(analysis: MapAnalysis, p: Point, q: Point) -> bool:
+    """No occupied or unknown cell on the straight way between two things' nearest cells (their own
+    two cells apart): the gap is open floor, not a wall or a third thing."""
+    grid = analysis.grid
+    n = max(2, math.ceil(math.dist(p, q) / (grid.resolution_m / 2)))
+    ts = np.linspace(0.0, 1.0, n + 1)[1:-1]
+    rr, cc = grid.world_to_index(p[0] + (q[0] - p[0]) * ts, p[1] + (q[1] - p[1]) * ts)
+    (pr, pc), (qr, qc) = grid.world_to_index(p[0], p[1]), grid.world_to_index(q[0], q[1])
+    inside = grid.in_bounds(rr, cc) & ~((rr == pr) & (cc == pc)) & ~((rr == qr) & (cc == qc))
+    return bool(inside.any()) and bool(np.all(grid.cells[rr[inside], cc[inside]] == FREE))
 
 
 def _at_the_end(e: Element, hall: Room, pose: Pose) -> bool:
@@ -1023,6 +1213,16 @@ def _select_corner(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Corner
             raise GroundingError(f"No corner of this {room_word} is in front of me; turn towards the "
                                  f"corners you mean, or say 'the nearest corner'.")
         sign = 1.0 if side == Side.LEFT else -1.0
+        # "the left corner" is on the left: of the corners ahead the one farthest that way, but never
+        # one on the other side (a room whose corner that way is not seen, e.g. a wall stub missing)
+        sided = [c for c in ahead if sign * lateral_offset(pose, c.point) > 0.0]
+        if not sided:
+            sided = [c for c in corners if sign * lateral_offset(pose, c.point) > 0.0
+                     and abs(math.degrees(bearing_rad(pose, c.point))) < 90.0]
+        if not sided:
+            raise GroundingError(f"I see no corner of this {room_word} in front of me on your {side.value}; "
+                                 f"which corner do you mean?")
+        ahead = sided
         best_lat = max(sign * lateral_offset(pose, c.point) for c in ahead)
         tied = [c for c in ahead if sign * lateral_offset(pose, c.point) >= best_lat - CORNER_SIDE_TIE_M]
         # among corners equally far to that side, the room's far corner (not a door jamb on the way)

@@ -7,7 +7,16 @@ import re
 from collections.abc import Sequence
 from typing import Final
 
-from langnav.language.intent import Amount, Detail, Direction, ElementRef, Intent, Movement, Side, Step
+from langnav.language.intent import (
+    Amount,
+    Detail,
+    Direction,
+    ElementRef,
+    Intent,
+    Movement,
+    Side,
+    Step,
+)
 from langnav.language.offline.amounts import said_again, same_way_again, with_unit_said_before
 from langnav.language.offline.ask import ask_message, spatial
 from langnav.language.offline.composition import read_composed
@@ -178,9 +187,9 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
         if steps and new_steps and not sequenced and _side_word_after_place(steps[-1], new_steps[0], clause):
             # "go to the left corner, left": the place's side said again, not a turn after it; another side
             # ("go to the left corner, right") may put the place right or add a turn: ask, don't guess
-            echoed = new_steps.pop(0)
-            if steps[-1].target is None or steps[-1].target.side != Side(echoed.direction.value):
-                questions.append(ASK_SIDE_OR_TURN.format(side=echoed.direction.value))
+            side = Side(str(new_steps.pop(0).direction))
+            if steps[-1].target is None or steps[-1].target.side != side:
+                questions.append(ASK_SIDE_OR_TURN.format(side=side.value))
         while steps and new_steps and _asked_again(steps[-1], new_steps[0]):
             new_steps.pop(0)  # "hold it, hold it"; "where are you? can you tell me where you are?"
         steps.extend(new_steps)
@@ -376,7 +385,8 @@ def _side_word_after_place(previous: Step, step: Step, clause: str) -> bool:
     saying it there names, or repeats for stress, which place ("the left corner, left"); it could also be a
     turn once there ("go to the door, left"), so only the same side as the place's is taken as said again."""
     return (previous.movement == Movement.NAVIGATE and previous.target is not None
-            and step.movement == Movement.ROTATE and step.amount == Amount.DEFAULT and step.angle_deg is None
+            and step.movement == Movement.ROTATE and step.direction in (Direction.LEFT, Direction.RIGHT)
+            and step.amount == Amount.DEFAULT and step.angle_deg is None
             and step.heading_deg is None and step.target is None and _SIDE_ONLY_RE.match(clause) is not None)
 
 
