@@ -212,8 +212,12 @@ def fill_holes(mask: BoolArray) -> BoolArray:
     array that is not 4-connected to its edge (what that call's dilation from the edge reaches),
     found by one labelling instead of a dilation run to convergence."""
     m = np.asarray(mask, dtype=bool)
-    rest, _ = ndi.label(~m)
-    return m | ((rest > 0) & ~np.isin(rest, border_labels(rest)))
+    rest, n = ndi.label(~m)
+    # Per label of the rest: enclosed (not background, not touching the edge); read by label.
+    enclosed = np.ones(n + 1, dtype=bool)
+    enclosed[0] = False
+    enclosed[border_labels(rest)] = False
+    return m | enclosed[rest]
 
 
 def truncated_sq_edt(mask: BoolArray, max_cells: int) -> npt.NDArray[np.signedinteger[Any]]:

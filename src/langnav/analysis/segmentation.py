@@ -209,7 +209,7 @@ def _measured_at(grid: OccupancyGrid, labels: npt.NDArray[np.int32], room: Room,
     """``room`` with its areas, centroid and cells measured on ``grid`` (finer than it was found on)."""
     mask = labels[sl] == room.label
     free = mask & (grid.cells[sl] == FREE)
-    rr, cc = np.nonzero(free if free.any() else mask)
+    rr, cc = nonzero2(free if free.any() else mask)
     xs, ys = grid.cell_to_world(rr + sl[0].start, cc + sl[1].start)
     a = grid.cell_area_m2
     return dataclasses.replace(room, area_m2=float(mask.sum()) * a, free_area_m2=float(free.sum()) * a,
@@ -383,7 +383,7 @@ def _views_out(labels: npt.NDArray[np.int32], occupied: npt.NDArray[np.bool_]) -
                 continue
             src = labels[max(dr, 0):h + min(dr, 0), max(dc, 0):w + min(dc, 0)]
             dst = labels[max(-dr, 0):h + min(-dr, 0), max(-dc, 0):w + min(-dc, 0)]
-            rr, cc = np.nonzero((src > 0) & (dst != src))
+            rr, cc = nonzero2((src > 0) & (dst != src))
             cell = (rr + max(-dr, 0)).astype(np.int64) * w + (cc + max(-dc, 0))
             keys.append(src[rr, cc].astype(np.int64) * (h * w) + cell)
     pairs = np.unique(np.concatenate(keys))
@@ -895,7 +895,7 @@ def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
     polygons = _outlines(grid, [(sub, sl) for _, sl, sub in present])
     for (k, sl, sub), polygon in zip(present, polygons, strict=True):
         free_sub = sub & fl.free[sl]
-        rr, cc = np.nonzero(free_sub if free_sub.any() else sub)
+        rr, cc = nonzero2(free_sub if free_sub.any() else sub)
         rr = rr + sl[0].start
         cc = cc + sl[1].start
         xs, ys = grid.cell_to_world(rr, cc)

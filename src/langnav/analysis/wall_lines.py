@@ -43,7 +43,7 @@ import numpy.typing as npt
 from scipy import ndimage as ndi
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import EIGHT, take2
+from langnav.analysis.precompute import EIGHT, nonzero2, take2
 
 BoolArray = npt.NDArray[np.bool_]
 FloatArray = npt.NDArray[np.float64]
@@ -309,7 +309,7 @@ def dominant_directions(wall: BoolArray) -> list[float]:
     peaks nearly as strong (a wing at an angle) are directions too. The edge directions of
     the cells themselves would not do: a wall's pixel staircase turns them towards 45 degrees.
     """
-    rr, cc = np.nonzero(wall)
+    rr, cc = nonzero2(wall)
     if rr.size < 2:
         return []
     if rr.size > DIRECTION_MAX_CELLS:  # a fixed, even sample of the cells is as good
@@ -616,7 +616,7 @@ def _line_candidates(wall: BoolArray, dirs: list[float], resolution_m: float, pa
     fmax = (front_max_width_m + res) / res
     side = max(2, round(params.seg_wall_line_side_m / res))
     share = params.seg_wall_line_side_share * side
-    rr, cc = np.nonzero(wall)
+    rr, cc = nonzero2(wall)
     rr_f, cc_f = rr.astype(np.float64), cc.astype(np.float64)
     # A front's pieces are pieces of wall, not specks (a chair's or a table's legs, the dots a
     # row of posts leaves): small compact pieces play no part in a front.
