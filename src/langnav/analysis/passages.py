@@ -42,6 +42,7 @@ from __future__ import annotations
 import logging
 import math
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 from typing import Final
 
 import numpy as np
@@ -175,19 +176,94 @@ BoolArray = npt.NDArray[np.bool_]
 log = logging.getLogger(__name__)
 
 
-def _rejected(reason: str, grid: OccupancyGrid, r0: int, c0: int, centre_g: npt.NDArray[np.float64],
-              width_m: float = math.nan, length_m: float = math.nan) -> None:
-    """Log (debug) why a candidate (its centre in window cells) is no passage: what a reader of
-    a map asks when a passage they point at is not found."""
-    if log.isEnabledFor(logging.DEBUG):
-        x, y = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
-        log.debug("no passage at (%.2f, %.2f), width %.2f m, length %.2f m: %s", float(x), float(y), width_m,
-                  length_m, reason)
-
-
 def clearance_m(grid: OccupancyGrid, blocking: BoolArray) -> npt.NDArray[np.float64]:
     """Per cell: distance (m) from its centre to the nearest blocking cell centre (0 on those)."""
     return np.asarray(ndi.distance_transform_edt(~blocking), dtype=np.float64) * grid.resolution_m
+
+
+@dataclass(frozen=True)
+class _Floor:
+    """The open floor in a window round the map's open cells (one blocking cell of margin:
+    distances inside it are the same as on the whole grid), and what every candidate is judged
+    against there."""
+
+    grid: OccupancyGrid
+    params: AnalysisParams
+    #: The window's first row and column in the grid.
+    r0: int
+    c0: int
+    #: Open cells (neither blocking nor occupied), the occupied cells (scan specks taken out) and
+    #: the unscanned world that is no side of a passage (outside the map, unexplored areas).
+    open_: BoolArray
+    occupied: BoolArray
+    outside: BoolArray
+    #: Squared distance (cells) to the nearest blocking cell, exact up to a narrow passage's half
+    #: width; ``dist_of[d2]`` is that distance in metres, ``width_of[d2]`` the width across a
+    #: middle-line cell there.
+    d2: npt.NDArray[np.int32]
+    dist_of: npt.NDArray[np.float64]
+    width_of: npt.NDArray[np.float64]
+    #: Where the robot's centre fits with its margin; floor wider than any narrow passage.
+    fits: BoolArray
+    wide: BoolArray
+    #: A piece of middle line spanning fewer cells than this is too short to be a passage, mouths
+    #: included; a two-sided stretch shorter than ``min_len_m`` is no longer than a doorway is deep.
+    min_cells: float
+    min_len_m: float
+
+    def reject(self, reason: str, centre_g: npt.NDArray[np.float64], width_m: float = math.nan,
+               length_m: float = math.nan) -> None:
+        """Log (debug) why a candidate (its centre in window cells) is no passage: what a reader
+        of a map asks when a passage they point at is not found."""
+        if log.isEnabledFor(logging.DEBUG):
+            x, y = self.grid.grid_to_world(centre_g[1] + self.r0, centre_g[0] + self.c0)
+            log.debug("no passage at (%.2f, %.2f), width %.2f m, length %.2f m: %s", float(x), float(y), width_m,
+                      length_m, reason)
+
+    def to_world(self, g: npt.NDArray[np.float64]) -> tuple[float, float]:
+        """A point in window cells (x, y) in world metres."""
+        x, y = self.grid.grid_to_world(g[1] + self.r0, g[0] + self.c0)
+        return float(x), float(y)
+
+
+@dataclass(frozen=True)
+class _Piece:
+    """A piece of middle line: its cells (window rows, cols), whether each is a ridge across (a
+    whole core's cells; None for a two-sided stretch split off one), its points (x, y at cell
+    centres), their mean, the unit axis fitted through them and each point's position along it."""
+
+    rr: npt.NDArray[np.intp]
+    cc: npt.NDArray[np.intp]
+    across: BoolArray | None
+    pts: npt.NDArray[np.float64]
+    mean: npt.NDArray[np.float64]
+    axis: npt.NDArray[np.float64]
+    proj: npt.NDArray[np.float64]
+
+    @property
+    def normal(self) -> npt.NDArray[np.float64]:
+        """The axis turned a quarter anticlockwise."""
+        return np.array([-self.axis[1], self.axis[0]])
+
+
+@dataclass(frozen=True)
+class _Stretch:
+    """Where a piece has two sides: per point, the distances (cells) to either side (``inf``
+    where open), which points have both, its width (m) across them, its extent ``lo``..``hi``
+    along the axis (cells from the piece's mean), its length (m) and its middle (window cells)."""
+
+    sides: npt.NDArray[np.float64]
+    bounded: BoolArray
+    width_m: float
+    lo: float
+    hi: float
+    length_m: float
+    mid: npt.NDArray[np.float64]
+
+    @property
+    def half_len(self) -> float:
+        """Half its length, in cells."""
+        return (self.hi - self.lo + 1.0) / 2.0
 
 
 def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArray[np.int32],
@@ -201,9 +277,34 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     the grid's shared masks (built when not given); ``unexplored`` the unknown cells of the
     unexplored areas worth a look (:mod:`langnav.analysis.unexplored`): like the world outside the
     map, unscanned floor that is no side of a passage (nothing is known to stand there).
+
+    The stages: the open floor and its clearances (:func:`_open_floor`); the cores of the middle
+    line where it is narrow (:func:`_core_pieces`); each piece's axis and sides
+    (:func:`_measured`); then each is judged (:func:`_judged`). Cores without sides along most of
+    their length are split into their two-sided stretches (:func:`_two_sided_pieces`), which are
+    judged in a second round.
     """
+    floor = _open_floor(grid, params, blocking, dist_m, layers or GridLayers(grid), unexplored)
+    if floor is None:
+        return ()
+    passages: list[NarrowPassage] = []
+    pieces = _core_pieces(floor)
+    while pieces:
+        retry: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]] = []
+        for piece, sides in _measured(floor, pieces):
+            found = _judged(floor, piece, sides, doors, labels, room_ids, f"passage_{len(passages) + 1}", retry)
+            if found is not None:
+                passages.append(found)
+        pieces = _two_sided_pieces(floor, retry)
+    return tuple(passages)
+
+
+def _open_floor(grid: OccupancyGrid, params: AnalysisParams, blocking: BoolArray,
+                dist_m: npt.NDArray[np.float64] | None, layers: GridLayers,
+                unexplored: BoolArray | None) -> _Floor | None:
+    """The open floor round the map's open cells and its clearances (:class:`_Floor`); None when
+    nothing is open."""
     res = grid.resolution_m
-    layers = layers or GridLayers(grid)
     exterior = layers.exterior if unexplored is None else layers.exterior | unexplored
     # Scan-noise specks (isolated occupied clusters no bigger than the segmentation's specks,
     # which it reads as floor) neither narrow a passage nor make one of its sides: a person
@@ -217,7 +318,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     rows_any = np.flatnonzero(open_.any(axis=1))
     cols_any = np.flatnonzero(open_.any(axis=0))
     if len(rows_any) == 0:
-        return ()
+        return None
     # Work in the window around the open cells, one blocking cell of margin: distances inside
     # it are the same as on the whole grid (the margin ring separates it from the rest).
     r0, r1 = max(0, int(rows_any[0]) - 1), min(open_.shape[0], int(rows_any[-1]) + 2)
@@ -234,8 +335,26 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     dist_of = np.sqrt(np.arange(int(d2.max()) + 1, dtype=np.float64)) * res
     # Width across the medial axis: the centre-to-centre distance to a side, minus half a cell, twice.
     width_of = 2.0 * dist_of - res
+    # A chain, its flaring mouths included (about a width more than where it has two sides), is
+    # at least passage_min_length_m long; where it has two sides, longer than a doorway could be
+    # deep: deeper than the deepest doorway (door_max_depth_m) and than this building's own walls
+    # (a doorway's way through is as long as its wall is thick), up to passage_min_length_m.
+    min_len_m = min(params.passage_min_length_m, max(params.door_max_depth_m,
+                    WALL_LENGTHS * typical_wall_thickness_m(layers.occupied, layers.free, res) + res))
+    return _Floor(grid=grid, params=params, r0=r0, c0=c0, open_=sub, occupied=occupied[r0:r1, c0:c1],
+                  outside=exterior[r0:r1, c0:c1], d2=d2, dist_of=dist_of, width_of=width_of,
+                  # Where the robot's centre fits with its margin (the distance table is exact that far).
+                  fits=dist_of[d2] > params.robot_radius_m + PASSAGE_SIDE_MARGIN_M,
+                  wide=dist_of[d2] > params.passage_max_width_m / 2.0,
+                  min_cells=params.passage_min_length_m / res - 1.0, min_len_m=min_len_m)
+
+
+def _core_pieces(floor: _Floor) -> list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]]:
+    """The cores of the narrow middle line long enough to be passages: per core its cells (window
+    rows, cols) and which of them are a ridge across (:func:`_across_ridge`)."""
+    params, res, d2, width_of = floor.params, floor.grid.resolution_m, floor.d2, floor.width_of
     band_of = (width_of > 2.0 * params.robot_radius_m) & (width_of <= params.passage_max_width_m)
-    band = sub & band_of[d2]
+    band = floor.open_ & band_of[d2]
     # The medial axis within the band: crest cells of the distance map (clearly higher than the
     # cells two steps away on both sides, across some direction), a cell thicker (to bridge the
     # sideways step of the crest where a side has a bump), thinned to one cell. Cheaper than
@@ -245,7 +364,7 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     idx = np.flatnonzero(skel)
     cid, n = label8_cells(idx, skel.shape)
     if n == 0:
-        return ()
+        return []
     w = width_of[d2.ravel()[idx]]
     # Per chain: its typical width (sort by (chain, width), pick the rank).
     order = np.lexsort((w, cid))
@@ -260,247 +379,302 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
                          ref[cid - 1] / res, skel.shape)
     core_idx = idx[in_core]
     core_id, m = label8_cells(core_idx, skel.shape)
-    passages: list[NarrowPassage] = []
-    # Where the robot's centre fits with its margin (the distance table is exact that far).
-    fits = dist_of[d2] > params.robot_radius_m + PASSAGE_SIDE_MARGIN_M
-    wide = dist_of[d2] > params.passage_max_width_m / 2.0
     # Necessary conditions, vectorised, before the per-core work: a chain of n cells spans at
     # most n * sqrt(2) cells and at most its bounding box's diagonal.
     n_cells = np.bincount(core_id, minlength=m + 1)
-    # A chain, its flaring mouths included (about a width more than where it has two sides), is
-    # at least passage_min_length_m long; where it has two sides, longer than a doorway could be
-    # deep: deeper than the deepest doorway (door_max_depth_m) and than this building's own walls
-    # (a doorway's way through is as long as its wall is thick), up to passage_min_length_m.
-    min_cells = params.passage_min_length_m / res - 1.0
-    min_len_m = min(params.passage_min_length_m, max(params.door_max_depth_m,
-                    WALL_LENGTHS * typical_wall_thickness_m(layers.occupied, layers.free, res) + res))
-    long_enough = np.flatnonzero(n_cells * math.sqrt(2) >= min_cells)
+    long_enough = np.flatnonzero(n_cells * math.sqrt(2) >= floor.min_cells)
     long_enough = long_enough[long_enough > 0]
-    core_r, core_c = np.divmod(core_idx, sub.shape[1])
+    core_r, core_c = np.divmod(core_idx, floor.open_.shape[1])
     boxes = component_boxes(core_id, core_r, core_c, long_enough)
     # Each core's cells, in raster order.
     by_core = np.argsort(core_id, kind="stable")
     core_start = np.searchsorted(core_id[by_core], np.arange(m + 2))
-    # Per piece: its cells, and for a whole core which of them are a ridge across (see
-    # _across_ridge; a per-cell test, made for all the core cells at once).
-    pieces: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]] = []
+    # Which cells are a ridge across: a per-cell test, made for all the core cells at once.
     across_core = _across_ridge(d2, core_r, core_c)
+    pieces: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]] = []
     for k in long_enough.tolist():
         sl = boxes[k]
-        if math.hypot(sl[0].stop - sl[0].start, sl[1].stop - sl[1].start) < min_cells:
+        if math.hypot(sl[0].stop - sl[0].start, sl[1].stop - sl[1].start) < floor.min_cells:
             continue
         cells = by_core[core_start[k]:core_start[k + 1]]
         pieces.append((core_r[cells], core_c[cells], across_core[cells]))
-    # Ridge cells of the cores without sides along most of their length, split after the cores.
-    retry_r: list[npt.NDArray[np.intp]] = []
-    retry_c: list[npt.NDArray[np.intp]] = []
-    # Two rounds: the cores, then the two-sided stretches of those without sides.
-    while pieces:
-        # Each piece's axis and length, and the cheap test first, with the skeleton's width (at
-        # most a cell narrower than the true one); then the sides of all that pass, at once.
-        measured: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None, npt.NDArray[np.float64],
-                             npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64], float]] = []
-        for rr, cc, across in pieces:
-            if len(rr) < 2:
-                continue
-            pts = np.stack([cc + 0.5, rr + 0.5], axis=1).astype(float)
-            mean = pts.mean(axis=0)
-            cov = cov2((pts - mean).T)
-            evals, evecs = np.linalg.eigh(cov)
-            axis = evecs[:, int(np.argmax(evals))]
-            # Snap a nearly axis-aligned passage onto the grid axis (cleaner width sampling).
-            if abs(axis[0]) >= math.cos(math.radians(AXIS_SNAP_DEG)):
-                axis = np.array([math.copysign(1.0, axis[0]), 0.0])
-            elif abs(axis[1]) >= math.cos(math.radians(AXIS_SNAP_DEG)):
-                axis = np.array([0.0, math.copysign(1.0, axis[1])])
-            proj = (pts - mean) @ axis
-            length_m = (float(proj.max() - proj.min()) + 1.0) * res
-            # Short ones too (a squeeze past furniture beside a wall is as deep as the furniture,
-            # its mouths flaring on either side).
-            if length_m < params.passage_min_length_m:
-                continue
-            measured.append((rr, cc, across, pts, mean, axis, proj, length_m))
-        side_sets = _side_distances_each(sub, [m[3] for m in measured],
-                                         [dist_of[d2[m[0], m[1]]] / res for m in measured],
-                                         [np.array([-m[5][1], m[5][0]]) for m in measured], SIDE_TOL_M / res)
-        for (rr, cc, across, pts, mean, axis, proj, length_m), sides in zip(measured, side_sets, strict=True):
-            bounded = np.isfinite(sides).all(axis=1)
-            if not _sides_hold(sides, proj, params.door_max_width_m / res):
-                if across is not None and len(rr) * math.sqrt(2) >= min_cells:
-                    retry_r.append(rr[across])
-                    retry_c.append(cc[across])
-                _rejected('no two sides along it', grid, r0, c0, pts.mean(axis=0))
-                continue
-            # Width: across the passage between its two sides (exact for axis-aligned sides).
-            width_m = (median(sides[bounded].sum(axis=1)) - 0.5) * res
-            # It runs where it has two sides: not on into its flaring mouths.
-            lo, hi = float(proj[bounded].min()), float(proj[bounded].max())
-            length_m = (hi - lo + 1.0) * res
-            mid = mean + 0.5 * (lo + hi) * axis
-            if length_m < min_len_m:
-                _rejected('shorter than a doorway is deep', grid, r0, c0, mid, width_m, length_m)
-                continue
-            # Wide enough for the robot to pass, and narrow (the band's test used the skeleton's
-            # width, up to a cell off).
-            # Across its axis, and by the distance from its middle line to its sides whatever
-            # the direction (twice it, up to a cell over): an axis drawn askew through a strip
-            # (round the corner of a box) measures it wider than it is.
-            min_width_m = 2.0 * (params.robot_radius_m + PASSAGE_MIN_MARGIN_M)
-            if (width_m < min_width_m or width_m > params.passage_max_width_m
-                    or 2.0 * median(dist_of[d2[rr[bounded], cc[bounded]]]) < min_width_m):
-                _rejected('too narrow or too wide', grid, r0, c0, mid, width_m, length_m)
-                continue
-            # Between two things: both sides solid along most of its two-sided length, not
-            # laser-ray stripes.
-            normal = np.array([-axis[1], axis[0]])
-            solid = _solid_sides(sub, occupied[r0:r1, c0:c1], exterior[r0:r1, c0:c1], pts, normal, sides, SOLID_UNKNOWN_DEPTH_M / res)
-            if np.count_nonzero(solid) < MIN_BOUNDED_FRACTION * np.count_nonzero(bounded):
-                _rejected('sides not solid', grid, r0, c0, mid, width_m, length_m)
-                continue
-            ends_g = [mean + lo * axis, mean + hi * axis]
-            # It leads somewhere: both mouths open into free space wider than any passage. A way
-            # as elongated as a corridor leaves through the last cell of its middle line at each
-            # end (where an aisle bends at its end, the end of its straight axis falls in its
-            # side); a short gap's axis across a bend is no way's axis.
-            corridor_like = length_m >= params.hallway_min_elongation * width_m
-            two = pts[bounded]
-            lasts = ([two[int(np.argmin(proj[bounded]))], two[int(np.argmax(proj[bounded]))]] if corridor_like
-                     else [None, None])
-            # An aisle (at least PASSAGE_MIN_ELONGATION times longer than wide) whose mouth opens
-            # into another narrow way leads somewhere when that way goes on to open floor nearby
-            # (aisles round a shelving island meet at its corners; rack aisles end in a narrow
-            # cross aisle). Its own middle line: its two-sided stretch, not the next aisle's.
-            aisle = length_m >= PASSAGE_MIN_ELONGATION * width_m
-            own = (proj >= lo) & (proj <= hi) & (np.abs((pts - mean) @ normal) <= width_m / res / 2.0 + 1.0)
-            if not all(_opens_into_space(sub, e, sign * axis, res, params, last)
-                       or (aisle and _leads_on(fits, wide, e, rr[own], cc[own], width_m / res, MOUTH_LEADS_ON_M / res))
-                       for sign, e, last in zip((-1.0, 1.0), ends_g, lasts, strict=True)):
-                _rejected('a mouth leads nowhere', grid, r0, c0, mid, width_m, length_m)
-                continue
-            centre_g = mid
-            # Short (less than PASSAGE_MIN_ELONGATION times longer than wide), it is a gap: in a
-            # wall line (a door's business), between two objects or beside one (walked round).
-            # Except a squeeze past things deeper than any wall or door leaf (a sofa, a cart, a
-            # wardrobe: not a jamb with its door open along the way), beside a wall that runs on
-            # past both mouths or between two of them, that is the only way from one side to the
-            # other: a person points at that, up to the widest passage (a corridor narrowed to
-            # 0.9 m by a parked bed is a squeeze, however wide a door may be).
-            # Between a wall and a thing one can walk round (a pallet, a cabinet), a strip is a
-            # way of its own only when it is as elongated as a corridor (an aisle along a shelf).
-            elongated = length_m >= PASSAGE_MIN_ELONGATION * width_m
-            squeeze = False
-            thing: int | None = None
-            if not corridor_like:
-                # (A short one needs the wall on past both of its mouths: it is a squeeze along a
-                # wall, not round the end of one.)
-                half_len = (hi - lo + 1.0) / 2.0
-                past = _past_mouths(sub, centre_g, axis, half_len, width_m / res, WALL_RUN_M / res)
-                thing = _beside_a_wall(past, both_mouths=not elongated)
-                if not elongated:
-                    depth = params.door_max_depth_m / res
-                    sides_deep = [_deep(sub, pts[bounded], normal * (2 * j - 1), sides[bounded, j], depth, res)
-                                  for j in (0, 1)]
-                    # A squeeze past a thing deeper than a wall beside a wall that runs on, or
-                    # between two such things (a parked bed and a trolley in a corridor, a
-                    # wardrobe and a desk across a room): longer than a wall is thick
-                    # (passage_min_length_m) with both sides solid, it is no doorway.
-                    # (Between two things, neither side runs on past a mouth in line, as a wall
-                    # does, along WALL_RUNS_ON_SHARE of seg_wall_line_side_m: a wall's corner is
-                    # no thing.)
-                    squeeze = (sides_deep[thing] if thing is not None else all(sides_deep) and bool(
-                        _past_mouths(sub, centre_g, axis, half_len, width_m / res,
-                                     params.seg_wall_line_side_m / res, SIDE_TOL_M / res).max()
-                        < WALL_RUNS_ON_SHARE))
-                    if not squeeze:
-                        _rejected('no squeeze past deep things', grid, r0, c0, mid, width_m, length_m)
-                        continue
-                # A gap where a door was found parts two spaces, and is a passage only when it is
-                # the only way between them (else it is one of their doorways, however thick the
-                # wall looks). Otherwise a squeeze one can go round is still a passage when it is
-                # tight for a person (TIGHT_WIDTH_M: a gap between a column and a planter, between
-                # a bench row's end and a wall, a bed and a wall), and a roomier one is the way
-                # past only when there is no way round: between two things, none near
-                # (WAY_ROUND_M: a corridor narrowed by a trolley and a cart, with the ring's far
-                # side as a detour); between a wall and a thing, none at all (past a row of shelf
-                # ends). A tight strip between a wall and a lone thing that open floor, wider
-                # than any passage, leads round nearby is walked round too (a pallet by a wall).
-                cw = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
-                # (A door found in a squeeze between two things with parallel faces is no door:
-                # see below.)
-                door_at = not (squeeze and thing is None and _parallel(sides[bounded], res)) and any(
-                    math.dist(d.center, (float(cw[0]), float(cw[1]))) <= length_m / 2 + params.door_max_depth_m
-                    for d in doors)
-                round_reach = WAY_ROUND_M / res if thing is None and not door_at else math.inf
-                if (thing is not None or squeeze) and (door_at or width_m > TIGHT_WIDTH_M) and _way_round(
-                        fits, fits, centre_g, axis, half_len, width_m / res, round_reach):
-                    _rejected('a way round it', grid, r0, c0, mid, width_m, length_m)
-                    continue
-                if thing is not None and not door_at and _way_round(wide, fits, centre_g, axis, half_len,
-                                                                   width_m / res, WAY_ROUND_M / res):
-                    _rejected('open floor round the thing', grid, r0, c0, mid, width_m, length_m)
-                    continue
-                # A short gap among equal ones (a grid of bikes, a block of desks, seats) is no
-                # narrow passage: a way round near it is as tight (as wide, a cell of slack), and
-                # none clearly roomier (EQUAL_GAP_ROOMIER_M) leads round it. A person points at the
-                # squeeze that is tighter than the floor around it, not at one of a grid's lanes.
-                if not elongated and (thing is not None or squeeze) and not door_at:
-                    as_wide = d2 >= max(width_m / res / 2.0 - 1.0, 0.0) ** 2
-                    roomier = wide | (d2 >= ((width_m + EQUAL_GAP_ROOMIER_M) / res / 2.0) ** 2)
-                    if (_way_round(as_wide, fits, centre_g, axis, half_len, width_m / res, WAY_ROUND_M / res)
-                            and not _way_round(roomier, fits, centre_g, axis, half_len, width_m / res,
-                                               WAY_ROUND_M / res)):
-                        _rejected('one of equal gaps', grid, r0, c0, mid, width_m, length_m)
-                        continue
-            cx, cy = grid.grid_to_world(centre_g[1] + r0, centre_g[0] + c0)
-            centre = (float(cx), float(cy))
-            ax_w = np.subtract(grid.grid_to_world(r0 + centre_g[1] + axis[1], c0 + centre_g[0] + axis[0]), centre)
-            axis_w = (float(ax_w[0]), float(ax_w[1]))
-            # A door found across or at a squeeze between two things with parallel faces is no door:
-            # its sides are deeper than a wall is thick along and across the way (a gap in a row
-            # of furniture, between a bed and a trolley: not an opening in a wall, and no room
-            # ends there). Otherwise a door across the way is the passage's own gap, and a short
-            # gap with a door at it is that door's opening (a door leaf, open along the way,
-            # lengthens its jamb; a room narrowing to its door is the door's approach).
-            # So is one found along a squeeze past a thing beside a wall, at least as long as it
-            # is wide (a housekeeping cart in a corridor): a doorway is shorter than it is wide
-            # (walls are thinner than door_max_depth_m, doors wider than door_min_width_m).
-            no_door = squeeze and _parallel(sides[bounded], res) and (thing is None or length_m >= width_m)
-            # So is one across an aisle as elongated as a corridor between two things deeper than
-            # any wall with parallel faces (lockers and a locker island, two shelf rows): no wall
-            # stands there for a door to be in (on a turned map the stair-stepped faces read as
-            # jambs). A short way through a wall mass between two rooms keeps its door.
-            if not no_door and corridor_like and any(_is_the_door(d, centre, axis_w, length_m, width_m, params)
-                                                 for d in doors):
-                no_door = _parallel(sides[bounded], res) and all(
-                    _deep(sub, pts[bounded], normal * (2 * j - 1), sides[bounded, j], params.door_max_depth_m / res, res)
-                    for j in (0, 1))
-            if not no_door and (
-                    any(_is_the_door(d, centre, axis_w, length_m, width_m, params) for d in doors)
-                    or (not elongated and any(math.dist(d.center, centre) <= length_m / 2 + params.door_max_depth_m
-                                              for d in doors))):
-                _rejected('a door', grid, r0, c0, mid, width_m, length_m)
-                continue
-            ends_w: list[tuple[float, float]] = []
-            spaces: list[str] = []
-            for sign, e in zip((-1.0, 1.0), ends_g, strict=True):
-                ex, ey = grid.grid_to_world(e[1] + r0, e[0] + c0)
-                ends_w.append((float(ex), float(ey)))
-                sid = _space_beyond(labels, e + np.array([c0, r0]), sign * axis, res, room_ids)
-                if sid is not None and sid not in spaces:
-                    spaces.append(sid)
-            passages.append(NarrowPassage(id=f"passage_{len(passages) + 1}", center=centre, width_m=width_m,
-                                          length_m=length_m, ends=(ends_w[0], ends_w[1]),
-                                          connects=tuple(spaces)))
-        pieces = []
-        if retry_r:
-            # A passage along a wall shares its skeleton line with the strip along the rest of
-            # that wall (the same width from the wall): its two-sided stretches, judged alone.
-            ar, ac = np.concatenate(retry_r), np.concatenate(retry_c)
-            retry_r, retry_c = [], []
-            long_r, long_c = _join(_pieces(ar, ac, sub.shape, min_cells))
-            two_r, two_c = _two_sided(sub, long_r, long_c, dist_of[d2[long_r, long_c]] / res, SIDE_TOL_M / res)
-            pieces = [(pr, pc, None) for pr, pc in _pieces(two_r, two_c, sub.shape, min_cells)]
-    return tuple(passages)
+    return pieces
+
+
+def _measured(floor: _Floor, pieces: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]]
+              ) -> list[tuple[_Piece, npt.NDArray[np.float64]]]:
+    """Each piece's axis and length, and the cheap test first (with the skeleton's width, at most
+    a cell narrower than the true one); then the distances to the sides of all that pass, at
+    once: the pieces at least ``passage_min_length_m`` long, with their sides."""
+    res = floor.grid.resolution_m
+    measured: list[_Piece] = []
+    for rr, cc, across in pieces:
+        if len(rr) < 2:
+            continue
+        pts = np.stack([cc + 0.5, rr + 0.5], axis=1).astype(float)
+        mean = pts.mean(axis=0)
+        cov = cov2((pts - mean).T)
+        evals, evecs = np.linalg.eigh(cov)
+        axis = evecs[:, int(np.argmax(evals))]
+        # Snap a nearly axis-aligned passage onto the grid axis (cleaner width sampling).
+        if abs(axis[0]) >= math.cos(math.radians(AXIS_SNAP_DEG)):
+            axis = np.array([math.copysign(1.0, axis[0]), 0.0])
+        elif abs(axis[1]) >= math.cos(math.radians(AXIS_SNAP_DEG)):
+            axis = np.array([0.0, math.copysign(1.0, axis[1])])
+        proj = (pts - mean) @ axis
+        # Short ones too (a squeeze past furniture beside a wall is as deep as the furniture,
+        # its mouths flaring on either side).
+        if (float(proj.max() - proj.min()) + 1.0) * res < floor.params.passage_min_length_m:
+            continue
+        measured.append(_Piece(rr=rr, cc=cc, across=across, pts=pts, mean=mean, axis=axis, proj=proj))
+    side_sets = _side_distances_each(floor.open_, [p.pts for p in measured],
+                                     [floor.dist_of[floor.d2[p.rr, p.cc]] / res for p in measured],
+                                     [p.normal for p in measured], SIDE_TOL_M / res)
+    return list(zip(measured, side_sets, strict=True))
+
+
+def _judged(floor: _Floor, piece: _Piece, sides: npt.NDArray[np.float64], doors: Sequence[Door],
+            labels: npt.NDArray[np.int32], room_ids: Mapping[int, str], passage_id: str,
+            retry: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]]) -> NarrowPassage | None:
+    """The narrow passage a piece is, or None (the reason logged). A whole core without sides
+    along most of its length adds its ridge cells to ``retry``, to be split into its two-sided
+    stretches."""
+    if not _sides_hold(sides, piece.proj, floor.params.door_max_width_m / floor.grid.resolution_m):
+        if piece.across is not None and len(piece.rr) * math.sqrt(2) >= floor.min_cells:
+            retry.append((piece.rr[piece.across], piece.cc[piece.across]))
+        floor.reject('no two sides along it', piece.pts.mean(axis=0))
+        return None
+    stretch = _two_sided_stretch(floor, piece, sides)
+    if stretch is None:
+        return None
+    if not _leads_somewhere(floor, piece, stretch):
+        floor.reject('a mouth leads nowhere', stretch.mid, stretch.width_m, stretch.length_m)
+        return None
+    squeeze = False
+    if stretch.length_m < floor.params.hallway_min_elongation * stretch.width_m:
+        gap = _short_way(floor, piece, stretch, doors)
+        if gap is None:
+            return None
+        squeeze, thing = gap
+    else:
+        thing = None
+    if _is_a_door(floor, piece, stretch, doors, squeeze, thing):
+        floor.reject('a door', stretch.mid, stretch.width_m, stretch.length_m)
+        return None
+    return _passage(floor, piece, stretch, labels, room_ids, passage_id)
+
+
+def _two_sided_stretch(floor: _Floor, piece: _Piece, sides: npt.NDArray[np.float64]) -> _Stretch | None:
+    """The stretch of a piece that has sides, when it is as long, wide and solid-sided as a
+    passage; None (the reason logged) otherwise."""
+    params, res, d2 = floor.params, floor.grid.resolution_m, floor.d2
+    bounded: BoolArray = np.asarray(np.isfinite(sides).all(axis=1), dtype=bool)
+    # Width: across the passage between its two sides (exact for axis-aligned sides).
+    width_m = (median(sides[bounded].sum(axis=1)) - 0.5) * res
+    # It runs where it has two sides: not on into its flaring mouths.
+    lo, hi = float(piece.proj[bounded].min()), float(piece.proj[bounded].max())
+    length_m = (hi - lo + 1.0) * res
+    mid = piece.mean + 0.5 * (lo + hi) * piece.axis
+    if length_m < floor.min_len_m:
+        floor.reject('shorter than a doorway is deep', mid, width_m, length_m)
+        return None
+    # Wide enough for the robot to pass, and narrow (the band's test used the skeleton's
+    # width, up to a cell off).
+    # Across its axis, and by the distance from its middle line to its sides whatever
+    # the direction (twice it, up to a cell over): an axis drawn askew through a strip
+    # (round the corner of a box) measures it wider than it is.
+    min_width_m = 2.0 * (params.robot_radius_m + PASSAGE_MIN_MARGIN_M)
+    if (width_m < min_width_m or width_m > params.passage_max_width_m
+            or 2.0 * median(floor.dist_of[d2[piece.rr[bounded], piece.cc[bounded]]]) < min_width_m):
+        floor.reject('too narrow or too wide', mid, width_m, length_m)
+        return None
+    # Between two things: both sides solid along most of its two-sided length, not
+    # laser-ray stripes.
+    solid = _solid_sides(floor.open_, floor.occupied, floor.outside, piece.pts, piece.normal, sides,
+                         SOLID_UNKNOWN_DEPTH_M / res)
+    if np.count_nonzero(solid) < MIN_BOUNDED_FRACTION * np.count_nonzero(bounded):
+        floor.reject('sides not solid', mid, width_m, length_m)
+        return None
+    return _Stretch(sides=sides, bounded=bounded, width_m=width_m, lo=lo, hi=hi, length_m=length_m, mid=mid)
+
+
+def _leads_somewhere(floor: _Floor, piece: _Piece, stretch: _Stretch) -> bool:
+    """Does the stretch lead somewhere: both mouths open into free space wider than any passage,
+    or, for an aisle, into another narrow way that goes on to open floor nearby?"""
+    res, params = floor.grid.resolution_m, floor.params
+    pts, proj, axis, bounded = piece.pts, piece.proj, piece.axis, stretch.bounded
+    ends_g = [piece.mean + stretch.lo * axis, piece.mean + stretch.hi * axis]
+    # A way as elongated as a corridor leaves through the last cell of its middle line at each
+    # end (where an aisle bends at its end, the end of its straight axis falls in its side); a
+    # short gap's axis across a bend is no way's axis.
+    two = pts[bounded]
+    lasts = ([two[int(np.argmin(proj[bounded]))], two[int(np.argmax(proj[bounded]))]]
+             if stretch.length_m >= params.hallway_min_elongation * stretch.width_m else [None, None])
+    # An aisle (at least PASSAGE_MIN_ELONGATION times longer than wide) whose mouth opens
+    # into another narrow way leads somewhere when that way goes on to open floor nearby
+    # (aisles round a shelving island meet at its corners; rack aisles end in a narrow
+    # cross aisle). Its own middle line: its two-sided stretch, not the next aisle's.
+    aisle = stretch.length_m >= PASSAGE_MIN_ELONGATION * stretch.width_m
+    own = ((proj >= stretch.lo) & (proj <= stretch.hi)
+           & (np.abs((pts - piece.mean) @ piece.normal) <= stretch.width_m / res / 2.0 + 1.0))
+    return all(_opens_into_space(floor.open_, e, sign * axis, res, params, last)
+               or (aisle and _leads_on(floor.fits, floor.wide, e, piece.rr[own], piece.cc[own], stretch.width_m / res,
+                                       MOUTH_LEADS_ON_M / res))
+               for sign, e, last in zip((-1.0, 1.0), ends_g, lasts, strict=True))
+
+
+def _short_way(floor: _Floor, piece: _Piece, stretch: _Stretch, doors: Sequence[Door]
+               ) -> tuple[bool, int | None] | None:
+    """A way less elongated than a corridor: a gap in a wall line (a door's business), between two
+    objects or beside one (walked round), or a squeeze past things. When it is a passage: whether
+    it is a squeeze past deep things, and the side of the thing beside a wall (None when it is
+    between two things or no wall runs on past it). None (the reason logged) when it is not."""
+    params, res, d2 = floor.params, floor.grid.resolution_m, floor.d2
+    width_m, length_m, mid = stretch.width_m, stretch.length_m, stretch.mid
+    sides, bounded, axis = stretch.sides, stretch.bounded, piece.axis
+    # Short (less than PASSAGE_MIN_ELONGATION times longer than wide), it is a gap: in a
+    # wall line (a door's business), between two objects or beside one (walked round).
+    # Except a squeeze past things deeper than any wall or door leaf (a sofa, a cart, a
+    # wardrobe: not a jamb with its door open along the way), beside a wall that runs on
+    # past both mouths or between two of them, that is the only way from one side to the
+    # other: a person points at that, up to the widest passage (a corridor narrowed to
+    # 0.9 m by a parked bed is a squeeze, however wide a door may be).
+    # Between a wall and a thing one can walk round (a pallet, a cabinet), a strip is a
+    # way of its own only when it is as elongated as a corridor (an aisle along a shelf).
+    elongated = length_m >= PASSAGE_MIN_ELONGATION * width_m
+    squeeze = False
+    # (A short one needs the wall on past both of its mouths: it is a squeeze along a
+    # wall, not round the end of one.)
+    half_len = stretch.half_len
+    past = _past_mouths(floor.open_, mid, axis, half_len, width_m / res, WALL_RUN_M / res)
+    thing = _beside_a_wall(past, both_mouths=not elongated)
+    if not elongated:
+        depth = params.door_max_depth_m / res
+        sides_deep = [_deep(floor.open_, piece.pts[bounded], piece.normal * (2 * j - 1), sides[bounded, j], depth, res)
+                      for j in (0, 1)]
+        # A squeeze past a thing deeper than a wall beside a wall that runs on, or
+        # between two such things (a parked bed and a trolley in a corridor, a
+        # wardrobe and a desk across a room): longer than a wall is thick
+        # (passage_min_length_m) with both sides solid, it is no doorway.
+        # (Between two things, neither side runs on past a mouth in line, as a wall
+        # does, along WALL_RUNS_ON_SHARE of seg_wall_line_side_m: a wall's corner is
+        # no thing.)
+        squeeze = (sides_deep[thing] if thing is not None else all(sides_deep) and bool(
+            _past_mouths(floor.open_, mid, axis, half_len, width_m / res,
+                         params.seg_wall_line_side_m / res, SIDE_TOL_M / res).max()
+            < WALL_RUNS_ON_SHARE))
+        if not squeeze:
+            floor.reject('no squeeze past deep things', mid, width_m, length_m)
+            return None
+    # A gap where a door was found parts two spaces, and is a passage only when it is
+    # the only way between them (else it is one of their doorways, however thick the
+    # wall looks). Otherwise a squeeze one can go round is still a passage when it is
+    # tight for a person (TIGHT_WIDTH_M: a gap between a column and a planter, between
+    # a bench row's end and a wall, a bed and a wall), and a roomier one is the way
+    # past only when there is no way round: between two things, none near
+    # (WAY_ROUND_M: a corridor narrowed by a trolley and a cart, with the ring's far
+    # side as a detour); between a wall and a thing, none at all (past a row of shelf
+    # ends). A tight strip between a wall and a lone thing that open floor, wider
+    # than any passage, leads round nearby is walked round too (a pallet by a wall).
+    cw = floor.to_world(mid)
+    # (A door found in a squeeze between two things with parallel faces is no door:
+    # see _is_a_door.)
+    door_at = not (squeeze and thing is None and _parallel(sides[bounded], res)) and any(
+        math.dist(d.center, cw) <= length_m / 2 + params.door_max_depth_m for d in doors)
+    round_reach = WAY_ROUND_M / res if thing is None and not door_at else math.inf
+    fits, wide = floor.fits, floor.wide
+    if (thing is not None or squeeze) and (door_at or width_m > TIGHT_WIDTH_M) and _way_round(
+            fits, fits, mid, axis, half_len, width_m / res, round_reach):
+        floor.reject('a way round it', mid, width_m, length_m)
+        return None
+    if thing is not None and not door_at and _way_round(wide, fits, mid, axis, half_len,
+                                                       width_m / res, WAY_ROUND_M / res):
+        floor.reject('open floor round the thing', mid, width_m, length_m)
+        return None
+    # A short gap among equal ones (a grid of bikes, a block of desks, seats) is no
+    # narrow passage: a way round near it is as tight (as wide, a cell of slack), and
+    # none clearly roomier (EQUAL_GAP_ROOMIER_M) leads round it. A person points at the
+    # squeeze that is tighter than the floor around it, not at one of a grid's lanes.
+    if not elongated and (thing is not None or squeeze) and not door_at:
+        as_wide = d2 >= max(width_m / res / 2.0 - 1.0, 0.0) ** 2
+        roomier = wide | (d2 >= ((width_m + EQUAL_GAP_ROOMIER_M) / res / 2.0) ** 2)
+        if (_way_round(as_wide, fits, mid, axis, half_len, width_m / res, WAY_ROUND_M / res)
+                and not _way_round(roomier, fits, mid, axis, half_len, width_m / res,
+                                   WAY_ROUND_M / res)):
+            floor.reject('one of equal gaps', mid, width_m, length_m)
+            return None
+    return squeeze, thing
+
+
+def _is_a_door(floor: _Floor, piece: _Piece, stretch: _Stretch, doors: Sequence[Door], squeeze: bool,
+               thing: int | None) -> bool:
+    """Is the stretch a door's own gap: a door across its middle, or, for a short gap, one at it?
+    (A door at one of a passage's mouths is how it is entered.) Not where the door was read in a
+    squeeze between things with parallel faces (``squeeze``, ``thing``: :func:`_short_way`)."""
+    params, res = floor.params, floor.grid.resolution_m
+    width_m, length_m = stretch.width_m, stretch.length_m
+    sides, bounded = stretch.sides, stretch.bounded
+    centre = floor.to_world(stretch.mid)
+    ax_w = np.subtract(floor.grid.grid_to_world(floor.r0 + stretch.mid[1] + piece.axis[1],
+                                                floor.c0 + stretch.mid[0] + piece.axis[0]), centre)
+    axis_w = (float(ax_w[0]), float(ax_w[1]))
+    # A door found across or at a squeeze between two things with parallel faces is no door:
+    # its sides are deeper than a wall is thick along and across the way (a gap in a row
+    # of furniture, between a bed and a trolley: not an opening in a wall, and no room
+    # ends there). Otherwise a door across the way is the passage's own gap, and a short
+    # gap with a door at it is that door's opening (a door leaf, open along the way,
+    # lengthens its jamb; a room narrowing to its door is the door's approach).
+    # So is one found along a squeeze past a thing beside a wall, at least as long as it
+    # is wide (a housekeeping cart in a corridor): a doorway is shorter than it is wide
+    # (walls are thinner than door_max_depth_m, doors wider than door_min_width_m).
+    no_door = squeeze and _parallel(sides[bounded], res) and (thing is None or length_m >= width_m)
+    # So is one across an aisle as elongated as a corridor between two things deeper than
+    # any wall with parallel faces (lockers and a locker island, two shelf rows): no wall
+    # stands there for a door to be in (on a turned map the stair-stepped faces read as
+    # jambs). A short way through a wall mass between two rooms keeps its door.
+    corridor_like = length_m >= params.hallway_min_elongation * width_m
+    if not no_door and corridor_like and any(_is_the_door(d, centre, axis_w, length_m, width_m, params)
+                                             for d in doors):
+        no_door = _parallel(sides[bounded], res) and all(
+            _deep(floor.open_, piece.pts[bounded], piece.normal * (2 * j - 1), sides[bounded, j],
+                  params.door_max_depth_m / res, res)
+            for j in (0, 1))
+    elongated = length_m >= PASSAGE_MIN_ELONGATION * width_m
+    return not no_door and (
+        any(_is_the_door(d, centre, axis_w, length_m, width_m, params) for d in doors)
+        or (not elongated and any(math.dist(d.center, centre) <= length_m / 2 + params.door_max_depth_m
+                                  for d in doors)))
+
+
+def _passage(floor: _Floor, piece: _Piece, stretch: _Stretch, labels: npt.NDArray[np.int32],
+             room_ids: Mapping[int, str], passage_id: str) -> NarrowPassage:
+    """The passage a judged stretch is: its centre, ends and the spaces its mouths open into."""
+    res = floor.grid.resolution_m
+    ends_w: list[tuple[float, float]] = []
+    spaces: list[str] = []
+    for sign, lim in ((-1.0, stretch.lo), (1.0, stretch.hi)):
+        e = piece.mean + lim * piece.axis
+        ends_w.append(floor.to_world(e))
+        sid = _space_beyond(labels, e + np.array([floor.c0, floor.r0]), sign * piece.axis, res, room_ids)
+        if sid is not None and sid not in spaces:
+            spaces.append(sid)
+    return NarrowPassage(id=passage_id, center=floor.to_world(stretch.mid), width_m=stretch.width_m,
+                         length_m=stretch.length_m, ends=(ends_w[0], ends_w[1]), connects=tuple(spaces))
+
+
+def _two_sided_pieces(floor: _Floor, retry: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]]
+                      ) -> list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]]:
+    """A passage along a wall shares its skeleton line with the strip along the rest of that wall
+    (the same width from the wall): the two-sided stretches of the ridge cells of the cores
+    without sides along most of their length (``retry``), each to be judged alone."""
+    if not retry:
+        return []
+    res = floor.grid.resolution_m
+    ar, ac = np.concatenate([r for r, _ in retry]), np.concatenate([c for _, c in retry])
+    long_r, long_c = _join(_pieces(ar, ac, floor.open_.shape, floor.min_cells))
+    two_r, two_c = _two_sided(floor.open_, long_r, long_c, floor.dist_of[floor.d2[long_r, long_c]] / res,
+                              SIDE_TOL_M / res)
+    return [(pr, pc, None) for pr, pc in _pieces(two_r, two_c, floor.open_.shape, floor.min_cells)]
 
 
 def _jogs(idx: npt.NDArray[np.intp], core: BoolArray, near: BoolArray,
