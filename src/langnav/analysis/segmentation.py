@@ -44,6 +44,7 @@ from langnav.analysis.precompute import (
     longest_contour,
     maximum3,
     nonzero2,
+    unique_values,
 )
 from langnav.analysis.seg_core import (
     EIGHT,
@@ -386,7 +387,7 @@ def _views_out(labels: npt.NDArray[np.int32], occupied: npt.NDArray[np.bool_]) -
             rr, cc = nonzero2((src > 0) & (dst != src))
             cell = (rr + max(-dr, 0)).astype(np.int64) * w + (cc + max(-dc, 0))
             keys.append(src[rr, cc].astype(np.int64) * (h * w) + cell)
-    pairs = np.unique(np.concatenate(keys))
+    pairs = unique_values(np.concatenate(keys))
     space, cell = np.divmod(pairs, h * w)
     ring = np.bincount(space, minlength=n + 1)
     wall = np.bincount(space[occupied.ravel()[cell]], minlength=n + 1)
@@ -500,20 +501,23 @@ def _close_unknown_gaps(labels: npt.NDArray[np.int32], unknown: npt.NDArray[np.b
     base = (rows + r) * pw + (cols + r)
     value = np.zeros(rows.size, dtype=np.int32)  # what each cell gets (0: nothing yet)
     steps = np.arange(1, r + 1)
-    every = np.arange(rows.size)
 
-    def first_met(offsets: npt.NDArray[np.intp]) -> npt.NDArray[np.int32]:
-        """Per cell, the first non-zero value met along its line (a space, or -1: a wall, the
-        edge), 0 if none within r."""
-        seq = flat_seen[base[:, None] + offsets[None, :]]
-        return seq[every, np.argmax(seq != 0, axis=1)]
+    def first_met(cells: npt.NDArray[np.intp], offsets: npt.NDArray[np.intp]) -> npt.NDArray[np.int32]:
+        """Per cell (of ``cells``), the first non-zero value met along its line (a space, or -1:
+        a wall, the edge), 0 if none within r."""
+        seq = flat_seen[base[cells, None] + offsets[None, :]]
+        return seq[np.arange(cells.size), np.argmax(seq != 0, axis=1)]
 
+    # Each cell takes the first line with the same space on both sides: a line is looked along
+    # only from the cells still without a space, and behind only where a space lies ahead.
     for dr, dc in ((0, 1), (1, 0), (1, 1), (1, -1)):
         step_off = steps * (dr * pw + dc)
-        ahead = first_met(step_off)
-        behind = first_met(-step_off)
-        fill = (ahead == behind) & (ahead > 0) & (value == 0)
-        value[fill] = ahead[fill]
+        todo_i = np.flatnonzero(value == 0)
+        ahead = first_met(todo_i, step_off)
+        some = ahead > 0
+        todo_i, ahead = todo_i[some], ahead[some]
+        fill = first_met(todo_i, -step_off) == ahead
+        value[todo_i[fill]] = ahead[fill]
     out = labels.copy()
     got = value > 0
     out[rows[got], cols[got]] = value[got]

@@ -831,15 +831,14 @@ def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: i
     leaf_cells = _leaf_cells(floor_at, wall_at, leaves[idx], u_leaf[idx], wall_face[idx], v_line[idx], res)
     leaf_of = dict(zip(idx.tolist(), leaf_cells, strict=True))
     floor_at = _with_floor(floor_at, leaf_cells)
+    # Every (side, end, depth) look of every candidate is read in one pass: (side, end, depth,
+    # candidate) in that order.
     mid = (ua[idx] + ub[idx]) / 2
-    for sign in (-1.0, 1.0):
-        runs = np.zeros(idx.size, dtype=bool)
-        for end in (ua[idx] - k.past, ub[idx] + k.past):
-            all_depths = np.ones(idx.size, dtype=bool)
-            for d in k.depths:
-                all_depths &= _runs_on(floor_at, mid, end, v_line[idx] + sign * d)
-            runs |= all_depths
-        keep[idx] &= runs
+    ends = (ua[idx] - k.past, ub[idx] + k.past)
+    looks = [(mid, end, v_line[idx] + sign * d) for sign in (-1.0, 1.0) for end in ends for d in k.depths]
+    on = _runs_on(floor_at, *(np.concatenate([look[i] for look in looks]) for i in range(3)))
+    on = np.reshape(on, (2, 2, len(k.depths), idx.size))
+    keep[idx] &= np.all(np.any(np.all(on, axis=2), axis=1), axis=0)
     out: list[WallGap] = []
     for i in np.flatnonzero(keep).tolist():
         r2, c2 = floor_at.rc(np.array([ua[i], ub[i]]), np.full(2, v_line[i]))
