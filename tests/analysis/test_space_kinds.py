@@ -229,3 +229,83 @@ def test_many_openings_into_one_place_do_not_make_a_room_a_hallway() -> None:
     assert kind(1) == ElementKind.ROOM
     assert kind(4) == ElementKind.HALLWAY
     assert kind(None) == ElementKind.HALLWAY  # counted by openings alone
+
+
+def store_with_a_shelf_row() -> OccupancyGrid:
+    """A 2.6 m x 10 m store room (an evidence store, an archive) entered through a 0.9 m door
+    from a 1.8 m corridor, with two 0.6 m x 4 m shelf units in a row 0.5 m off its west wall;
+    and, for contrast, a dead-end corridor 1.6 m wide and 12 m long off the same corridor."""
+    b = MapBuilder(14.0, 17.0)
+    b.room(1.0, 1.0, 13.0, 2.8)  # the corridor
+    b.room(2.0, 2.8, 4.6, 12.8).door_h(3.3, 2.8, 0.9)  # the store
+    b.box(2.5, 3.55, 3.1, 7.55).box(2.5, 8.15, 3.1, 12.15)  # the shelf row
+    b.room(8.0, 2.8, 9.6, 14.8).door_h(8.8, 2.8, 0.9)  # the dead-end corridor
+    return b.build("store with a shelf row")
+
+
+def test_a_dead_end_store_narrowed_by_its_shelves_is_a_room() -> None:
+    """Beside its shelves the store's aisle is 1.5 m wide, and its floor is long for that
+    width: a dead-end corridor by its clearance. Wall to wall it is 2.6 m wide, long for that
+    width (nearly four times) but not five times as long, and it is entered through one door:
+    a room. The dead-end corridor, as
+    narrow wall to wall, is longer than a room is."""
+    grid = store_with_a_shelf_row()
+    seg = segment_spaces(grid)
+    store = space_at(seg, grid, 4.0, 7.0)
+    assert store.kind == ElementKind.ROOM
+    assert store.width_m == pytest.approx(2.6, abs=0.2)  # wall to wall
+    corridor = space_at(seg, grid, 5.0, 1.9)
+    dead_end = space_at(seg, grid, 8.8, 9.0)
+    assert len({store.id, corridor.id, dead_end.id}) == 3
+    assert dead_end.kind == ElementKind.HALLWAY
+    assert set(door_near(seg.doors, 3.3, 2.8).connects) == {store.id, corridor.id}
+
+
+@pytest.mark.parametrize(("peak_m", "whole_width_m", "kind"), [
+    (0.8, 2.6, ElementKind.ROOM),  # shelves narrow it to 1.55 m; 2.6 m wall to wall, 9.4 m long
+    (0.8, 1.6, ElementKind.HALLWAY),  # 1.6 m wall to wall and 9.4 m long: a dead-end corridor
+])
+def test_a_dead_end_is_judged_on_its_width_wall_to_wall(peak_m: float, whole_width_m: float,
+                                                        kind: ElementKind) -> None:
+    from langnav.analysis.segmentation import _kind_and_size
+
+    got = _kind_and_size(24.0, peak_m, 1.5, 0.0, 1, lambda: whole_width_m, 0.05, DEFAULT_PARAMS,
+                         whole_wide_share=lambda: 0.0, whole_typical=lambda: whole_width_m,
+                         ways_on=1, extent_m=9.4, served=1)[0]
+    assert got == kind
+
+
+def bedroom_with_an_en_suite_door_open(leaf: bool = True) -> OccupancyGrid:
+    """A 3 m x 5.5 m bedroom with a 1.3 m x 2.2 m en-suite in its north-west corner, as a scan
+    of a care home's room draws it: the en-suite's south wall is scanned only as a short stub
+    beside its east wall, and its door stands open into the bedroom, the leaf (0.85 m, 0.1 m as
+    scanned) hinged 0.3 m from the outer wall; a room east of the bedroom leads on."""
+    b = MapBuilder(10.0, 9.0)
+    b.room(1.0, 1.0, 4.0, 6.5)  # the bedroom
+    b.room(4.0, 1.0, 8.0, 6.5).door_v(4.0, 2.0, 0.9)
+    b.wall(2.3, 4.3, 2.3, 6.5)  # the en-suite's east wall
+    b.wall(2.15, 4.3, 2.3, 4.3)  # the stub of its south wall
+    if leaf:
+        b.wall(1.35, 3.45, 1.35, 4.3, thickness_m=0.1)  # the door, standing open
+    return b.build("bedroom with an en-suite, its door open")
+
+
+def test_an_en_suite_whose_door_stands_open_is_a_room_of_its_own() -> None:
+    """The en-suite is as narrow as its doorway is wide, and its south wall was hardly scanned:
+    by clearance alone it is a bay of the bedroom. Its open door, a thin leaf as long as a door
+    is wide hinged at the doorway's end, marks the doorway: two rooms and a door between them.
+    Without the leaf the 1.15 m gap is an open bay."""
+    grid = bedroom_with_an_en_suite_door_open()
+    seg = segment_spaces(grid)
+    bedroom = space_at(seg, grid, 2.5, 2.5)
+    en_suite = space_at(seg, grid, 1.65, 5.4)
+    assert bedroom.id != en_suite.id
+    assert len(seg.rooms) == 3
+    assert en_suite.area_m2 == pytest.approx(1.3 * 2.2, abs=0.5)
+    door = door_near(seg.doors, 1.75, 4.3)
+    assert set(door.connects) == {bedroom.id, en_suite.id}
+    assert door.width_m == pytest.approx(0.75, abs=0.15)  # from the leaf to the stub
+    grid = bedroom_with_an_en_suite_door_open(leaf=False)
+    seg = segment_spaces(grid)
+    assert space_at(seg, grid, 2.5, 2.5) is space_at(seg, grid, 1.65, 5.4)
+    assert len(seg.rooms) == 2

@@ -82,3 +82,22 @@ def test_false_start_turns_never_turn_more_than_the_last_turn_said(
     if intent.steps:  # when it runs, it is the last turn said
         assert [(s.direction, s.angle_deg, s.amount) for s in turns] == [
             (_SIDES[side], float(degrees) if said else None, None if said else Amount.DEFAULT)], intent
+
+
+_CORRECTIONS = [", correction, ", ", sorry, ", ", I mean, ", ", no, make that ", ", scratch that, "]
+
+
+@given(st.lists(st.sampled_from(sorted(_SIDES)), min_size=1, max_size=3),
+       st.sampled_from(_PAUSES), st.sampled_from(sorted(_SIDES)), st.sampled_from(sorted(_WORDS)),
+       st.sampled_from(sorted(_WORDS)), st.sampled_from(_CORRECTIONS))
+@example(starts=["left"], pause=", uh, ", side="right", first=20, then=20, correction=", correction, ")
+def test_a_false_start_before_a_corrected_turn_never_turns_more_than_the_correction(
+        starts: list[str], pause: str, side: str, first: int, then: int, correction: str) -> None:
+    """"rotate left, uh, rotate right fifteen, correction, twenty" (round 8): the amount corrected on the way
+    does not hide that the bare turn before it was taken back; at most the corrected turn runs."""
+    prompt = "".join(f"rotate {s}{pause}" for s in starts) + f"rotate {side} {_WORDS[first]}{correction}{_WORDS[then]}"
+    intent = translate_offline(prompt)
+    assert all(s.movement == Movement.ROTATE for s in intent.steps), intent
+    assert sum(s.angle_deg if s.angle_deg is not None else 90.0 for s in intent.steps) <= then + 1e-9, intent
+    if intent.steps:
+        assert [(s.direction, s.angle_deg) for s in intent.steps] == [(_SIDES[side], float(then))], intent

@@ -66,6 +66,9 @@ def next_to(o):
 
 
 def next_to_in(o, room):
+    """Within 1.0 m of the thing's edge (the contract), clipped to the room: the four strips beside its
+    sides and, where they stay inside the room, the quarter discs off its corners (added after the first
+    run: prompts-9's helper, copied at first, leaves the corners out, which the contract does not)."""
     X0, Y0, X1, Y1 = room
     out = []
     for s in next_to(o)["any"]:
@@ -73,6 +76,10 @@ def next_to_in(o, room):
         x0, y0, x1, y1 = max(x0, X0), max(y0, Y0), min(x1, X1), min(y1, Y1)
         if x1 - x0 > 0.05 and y1 - y0 > 0.05:
             out.append(poly(x0, y0, x1, y1))
+    for cx in (o[0], o[2]):
+        for cy in (o[1], o[3]):
+            if X0 <= cx - 1.0 and cx + 1.0 <= X1 and Y0 <= cy - 1.0 and cy + 1.0 <= Y1:
+                out.append(circ(cx, cy, 0.99))
     return {"any": out}
 
 

@@ -22,7 +22,9 @@ and merging steps of ROSE², RA-L 2022):
    spaces that rise above it when it is a gap in a wall line: the wall runs on straight past
    both of its jambs (ROSE²'s rooms bounded by the building's wall lines, in local form).
 5. *Jambs*: the widest opening left between two spaces must be cut in a wall: both of its jambs
-   belong to the wall network or to a wall stub running along the gap (:class:`JambJudge`).
+   belong to the wall network or to a wall stub running along the gap (:class:`JambJudge`), or
+   one of them is the door itself standing open (a thin leaf hinged there): an open door
+   marks its doorway, which then parts a small room behind it (an en-suite) from its room.
    A crack narrower than a door (a slit beside a cabinet, a pane of a glass front) is no way
    through: failing the test, it does not join the spaces; their wider openings decide.
 6. A space whose opening is wide for its size (``seg_merge_gap_ratio``: a bay) and pieces
@@ -70,6 +72,12 @@ WALL_MIN_LENGTH_ANY_DIRECTION_M: Final = 2.0
 STUB_MIN_ELONGATION: Final = 1.8
 #: A single door leaf is at most this wide (m; 0.6-0.9 m doors, a 1 m accessible one).
 SINGLE_DOOR_MAX_M: Final = 1.0
+#: A door leaf is at most this thick as scanned (m; a 40-60 mm leaf, blurred to a few cells);
+#: a shelf unit, a bench or a cabinet standing out into a room is deeper.
+LEAF_MAX_THICKNESS_M: Final = 0.15
+#: A leaf standing open is hinged at the doorway's jamb: the jamb is its end, its far end at
+#: least this share of its length away (a point along a piece's side is nearer to all of it).
+LEAF_HINGE_END_SHARE: Final = 0.85
 #: A bay is open across at least this share of its width along the opening; a doorway into a
 #: small room (a bathroom, a store) takes a smaller part of the wall it is cut in.
 BAY_MIN_OPEN_SHARE: Final = 0.6
@@ -379,7 +387,26 @@ class JambJudge:
         ar, ac = self._axis(k)
         if ar == 0.0 and ac == 0.0:
             return True  # a compact stub: no direction to contradict the doorway
-        return abs(ar * tangent[0] + ac * tangent[1]) >= STUB_ACROSS_MAX_COS
+        return abs(ar * tangent[0] + ac * tangent[1]) >= STUB_ACROSS_MAX_COS or self._leaf_at(k, jamb, length)
+
+    def _leaf_at(self, k: int, jamb: tuple[int, int], length_m: float) -> bool:
+        """Is the stub ``k`` (``length_m`` long) a door leaf standing open, hinged at ``jamb``?
+        A leaf is no longer than a single door is wide, as thin as a door, and the doorway's
+        jamb is its end (the hinge), not a point along its side (a shelf end or a bench
+        standing out into the room meets the gap with its side or its thick end)."""
+        if length_m > SINGLE_DOOR_MAX_M + self.res:
+            return False
+        sl = self.objs[k - 1]
+        if sl is None:
+            return False
+        rr, cc = np.nonzero((self.comp[sl] == k) & self.obstacle[sl])
+        if rr.size == 0:
+            return False
+        thick = float(rr.size) * self.res**2 / max(length_m, self.res)
+        if thick > max(LEAF_MAX_THICKNESS_M, 2.0 * self.res):
+            return False
+        far = float(np.hypot(rr + sl[0].start - jamb[0], cc + sl[1].start - jamb[1]).max()) * self.res
+        return far >= LEAF_HINGE_END_SHARE * length_m
 
     def jambs(self, row: int, col: int, clearance_m: float) -> tuple[tuple[int, int], tuple[int, int]] | None:
         """The two jamb cells of the crossing at (row, col), or None if there is no opposite one."""
@@ -423,6 +450,21 @@ class JambJudge:
             if hit.mean() < min_share:
                 return False
         return True
+
+    def leaf_doorway(self, row: int, col: int, clearance_m: float) -> bool:
+        """Is the crossing at (row, col) a doorway with its door standing open at a jamb (a
+        leaf hinged there, :meth:`_leaf_at`)? An open leaf is a door's own mark."""
+        jj = self.jambs(row, col, clearance_m)
+        if jj is None or not self.is_doorway(row, col, clearance_m):
+            return False
+        for j in jj:
+            k = int(self.comp[j])
+            if self.sizes[k] >= self.params.seg_wall_network_min_area_m2 or self.in_wall_line[k]:
+                continue
+            length = self._stub(k)
+            if 0 < length < WALL_MIN_LENGTH_ANY_DIRECTION_M and self._leaf_at(k, j, length):
+                return True
+        return False
 
     def is_doorway(self, row: int, col: int, clearance_m: float) -> bool:
         jj = self.jambs(row, col, clearance_m)
@@ -561,6 +603,13 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
         # narrowed by clutter, not two spaces and a door.
         corridor = max(peak_l[ra], peak_l[rb]) <= hallway_peak_max and \
             low < s * params.seg_hallway_saddle_ratio
+        # ... but a door standing open in the opening (its leaf hinged at a jamb) makes it a
+        # doorway between two spaces (a room and its en-suite), unless it is a door across a
+        # corridor (a piece on either side long for its width: the corridor runs on).
+        if corridor and judge is not None and s <= door_clear_max and \
+                not any(area_l[r] >= params.hallway_min_elongation * (2.0 * peak_l[r]) ** 2 for r in (ra, rb)) and \
+                judge.leaf_doorway(int(loc_arr[i]) // width, int(loc_arr[i]) % width, s):
+            corridor = False
         if params.seg_corridor_saddle_ratio > 0 and not corridor:
             wa, wb = half_width(ra), half_width(rb)
             # At least one of them is long for its width (a corridor piece, not a room whose
@@ -624,6 +673,9 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
             # A single door's width cut in a wall across a small room (a bathroom, a store
             # behind its door) parts it from its neighbour: a bay is open across about its
             # whole width, a doorway across a part of the wall it is cut in.
+            if judge is not None and 2 * s <= SINGLE_DOOR_MAX_M and \
+                    judge.leaf_doorway(loc // width, loc % width, s):
+                continue  # its door stands open in it: a doorway, however small the room
             if judge is not None and 2 * s <= SINGLE_DOOR_MAX_M and \
                     judge.is_doorway(loc // width, loc % width, s):
                 small = ra if area_l[ra] <= area_l[rb] else rb

@@ -639,8 +639,8 @@ def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: 
     """Hallway or room, with (length, width).
 
     A hallway is walked through (not a dead end entered through one doorway, unless it is
-    longer for its width than rooms are; ``ways_on``: its openings less those into a smaller
-    dead end of its own, an en-suite or a closet) and long and narrow: for its widest
+    longer for its width wall to wall than rooms are; ``ways_on``: its openings less those into
+    a smaller dead end of its own, an en-suite or a closet) and long and narrow: for its widest
     inscribed circle (furniture was taken out of the floor's clearance already), or, when a
     junction or an alcove widens it here and there, for its typical width (the median width
     along its centre line) if it has two openings or more, is many times longer than that
@@ -666,12 +666,14 @@ def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: 
         return min(area_m2 / w, extent_m)
 
     leads_on = openings if ways_on is None else ways_on
-    if openings >= 1 and leads_on <= 1 \
-            and length(peak_width) < params.hallway_dead_end_min_elongation * peak_width:
+    if openings >= 1 and leads_on <= 1:
         # Entered through one doorway and leading nowhere else (but into a smaller dead end
         # of its own: an en-suite, a closet): a room (a dead-end corridor with its doors
-        # closed is longer than rooms are).
-        return ElementKind.ROOM, area_m2 / peak_width, peak_width
+        # closed is longer than rooms are). Its width is the one a person sees wall to wall:
+        # shelves or a bed along it narrow its floor, not it.
+        wall_width = max(peak_width, whole_width())
+        if length(wall_width) < params.hallway_dead_end_min_elongation * wall_width:
+            return ElementKind.ROOM, area_m2 / wall_width, wall_width
     def narrow(w: float, long: float) -> bool:
         return w <= params.hallway_max_width_m and long >= params.hallway_min_elongation * w
 

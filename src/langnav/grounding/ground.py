@@ -101,6 +101,16 @@ THROUGH_BEFORE_M: Final = 0.5
 THROUGH_BEYOND_M: Final = 0.8
 THROUGH_MIN_PAST_M: Final = 0.3
 THROUGH_MAX_M: Final = 1.8
+#: A door's opening is as deep as the thing it is cut in: a wall is at most WALL_DEEP_M thick, so an
+#: opening whose sides run on farther (a gap between two parked cars, a cupboard row, a deep reveal)
+#: is passed only past their far end. Its sides are looked for REVEAL_PROBE_M beside the opening's
+#: edges, along the door's normal up to REVEAL_MAX_M from its centre (deeper is a passage, not a door);
+#: a side is there when something blocks within REVEAL_SIDE_M of the probe (a measured width is a
+#: cell or two off on a noisy map, and a thin wall's face is within that of a probe just past it).
+WALL_DEEP_M: Final = 0.35
+REVEAL_PROBE_M: Final = 0.1
+REVEAL_SIDE_M: Final = 0.15
+REVEAL_MAX_M: Final = 1.0
 #: "to the corner": README 1.0 m from the meeting point of the walls.
 CORNER_GOAL_MAX_M: Final = 0.9
 #: "next to X": stand this far from X's edge, never farther than NEXT_TO_MAX_M (README: 1.0 m).
@@ -817,7 +827,9 @@ def _door_near_side(d: Door, ctx: GroundingContext, pose: Pose, comp: int) -> Po
 def _through(e: Door | NarrowPassage, ctx: GroundingContext, pose: Pose, comp: int, desc: str) -> list[Point]:
     if isinstance(e, Door):
         n_near = _robot_side_normal(e.center, _door_normal(e), pose)
-        near_mouth = far_mouth = e.center
+        n_out = (-n_near[0], -n_near[1])
+        near_mouth = _mouth(e, n_near, ctx)
+        far_mouth = _mouth(e, n_out, ctx)
     else:
         a, b = e.ends
         if math.dist(a, b) < 1e-6:
@@ -843,6 +855,41 @@ def _through(e: Door | NarrowPassage, ctx: GroundingContext, pose: Pose, comp: i
             poses.append(mid)
     poses.append(beyond)
     return poses
+
+
+def _mouth(d: Door, n: Point, ctx: GroundingContext) -> Point:
+    """Where the opening of door ``d`` ends on the side ``n`` points to: its centre when it is cut in a
+    wall (its sides end within WALL_DEEP_M), else the end of its sides (``WALL_DEEP_M``): one is through
+    a gap between two cars only past the cars, not halfway along them."""
+    u = _door_normal(d)
+    along = (-u[1], u[0])
+    half = d.width_m / 2 + REVEAL_PROBE_M
+    step = ctx.space.grid.resolution_m / 2
+    depth = 0.0
+    s = 0.0
+    while s <= REVEAL_MAX_M:
+        cx, cy = d.center[0] + n[0] * s, d.center[1] + n[1] * s
+        # both sides: a door flush with a wall running on beside it is no deeper for that wall
+        if all(_occupied_near(ctx, (cx + k * along[0] * half, cy + k * along[1] * half), REVEAL_SIDE_M)
+               for k in (-1, 1)):
+            depth = s
+        elif s > depth + 2 * step:
+            break
+        s += step
+    if depth <= WALL_DEEP_M:
+        return d.center
+    return (d.center[0] + n[0] * depth, d.center[1] + n[1] * depth)
+
+
+def _occupied_near(ctx: GroundingContext, p: Point, r_m: float) -> bool:
+    """An occupied cell (a wall, a thing; not unscanned space, which a doorway to the unexplored
+    opens onto) within ``r_m`` of ``p``."""
+    grid = ctx.analysis.grid
+    r, c = grid.world_to_index(p[0], p[1])
+    k = math.ceil(r_m / grid.resolution_m)
+    rows, cols = grid.cells.shape
+    r0, r1, c0, c1 = max(int(r) - k, 0), min(int(r) + k + 1, rows), max(int(c) - k, 0), min(int(c) + k + 1, cols)
+    return r0 < r1 and c0 < c1 and bool(grid.occupied[r0:r1, c0:c1].any())
 
 
 def _kdtree_where(cells: FloatArray, max_m: float):  # type: ignore[no-untyped-def]
@@ -1104,7 +1151,7 @@ def _opposite_side(room: Room, mask: BoolArray, ctx: GroundingContext, pose: Pos
     across is the room's axis (the run of its walls) nearest to the way from the robot to the room's
     middle; the goal is in the third of the room farthest along it, straight across from the robot,
     ``OPPOSITE_WALL_STANDOFF_M`` short of the far wall (the far side itself, not the middle of the
-    room's far third)."""
+    room's far third), and among the room's cells farthest from the robot (the third of them farthest)."""
     xs, ys = ctx.space.xs[mask], ctx.space.ys[mask]
     if xs.size == 0:
         return None
@@ -1120,8 +1167,14 @@ def _opposite_side(room: Room, mask: BoolArray, ctx: GroundingContext, pose: Pos
         d = max(axes, key=lambda a: a[0] * d[0] + a[1] * d[1])
     t = (xs - pose.x_m) * d[0] + (ys - pose.y_m) * d[1]
     cut = t.min() + OPPOSITE_FRACTION * (t.max() - t.min())
+    # the README's "third of the room farthest from the robot" by distance: with the robot off to one
+    # side, straight across can be nearer than a third of the room (a room seen from near its corner)
+    r = np.hypot(xs - pose.x_m, ys - pose.y_m)
+    far_off = r >= float(np.quantile(r, OPPOSITE_FRACTION))
     far = mask.copy()
-    far[mask] = t >= cut
+    far[mask] = (t >= cut) & far_off
+    if not far.any():
+        far[mask] = far_off
     depth = max(float(t.max()) - OPPOSITE_WALL_STANDOFF_M, float(cut))
     prefer = (pose.x_m + d[0] * depth, pose.y_m + d[1] * depth)
     return ctx.space.best_in_mask(far, comp, prefer)

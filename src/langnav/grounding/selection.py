@@ -56,10 +56,11 @@ from langnav.grounding.geometry import (
     lateral_offset,
     nearest_point,
     to_robot_frame,
+    unit,
 )
 from langnav.language.intent import Element as Kind
 from langnav.language.intent import ElementRef, Landmark, Place, Relation, Side, Superlative
-from langnav.maps.grid import UNKNOWN
+from langnav.maps.grid import FREE, UNKNOWN
 
 #: A robot standing in a doorway belongs to the nearest space within this distance.
 SPACE_SNAP_M: Final = 0.6
@@ -104,6 +105,14 @@ FURNITURE_FREE_MARGIN_M: Final = 1.0
 #: partition (a 0.7 m gap between two benches). A person calls it "the narrow gap" or "the narrow
 #: passage", and does not count it among "the doors" of a room.
 NARROW_GAP_MAX_M: Final = 0.75
+
+#: "The narrow gap" between two things standing free (two acoustic screens end to end, two parked cars):
+#: the analysis's passages are constrictions longer than a door is deep, but a person calls any way
+#: between two things that is wider than the robot and narrower than a passage (the analysis's
+#: ``passage_max_width_m``) a narrow gap, however thin the things are. Its sides are the faces of the two
+#: things within GAP_FACE_M of their nearest points; a gap with no depth gets GAP_MIN_HALF_DEPTH_M a side.
+GAP_FACE_M: Final = 0.15
+GAP_MIN_HALF_DEPTH_M: Final = 0.1
 
 #: Nouns for obstacles of a compact footprint ("the box") and of a long one ("the shelf"). When the
 #: words use one, obstacles of that shape are chosen before the others.
@@ -670,7 +679,7 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
             pass  # no gap matches the words: "the gap" is a doorway
     pool = elements_of_kind(analysis, ref.kind)
     noun_plural = KIND_NOUN[ref.kind][1]
-    if not pool:
+    if not pool and not (ref.kind == Kind.NARROW_PASSAGE and gaps_between_things(analysis)):
         raise GroundingError(f"I see no {noun_plural} in this map.")
     space = _space_for_ref(ref, analysis, pose)
     if space is not None and ref.kind not in (Kind.ROOM, Kind.HALLWAY):
@@ -764,6 +773,13 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
             raise GroundingError(f"I see no door at the end of {label_of(space)}: its doors are along its sides. "
                                  "Which door do you mean? Say e.g. 'the last door on your left'.")
     k = (ref.ordinal or 1) - 1
+    if len(ordered) < k + count and ref.kind == Kind.NARROW_PASSAGE and not ordered and sup is None:
+        # no passage of the analysis's where the words put it: a narrow gap between two things there
+        between = [g for g in gaps_between_things(analysis)
+                   if (space is None or _in_space(g, space, analysis))
+                   and (ref.side is None or matches_side(g, pose, ref.side))
+                   and (ref.also_side is None or matches_side(g, pose, ref.also_side))]
+        ordered = sorted(between, key=lambda e: distance_to(e, pose.xy))
     if len(ordered) < k + count:
         if not ordered:
             raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]}{_where(ref)}, so I cannot find "
@@ -771,6 +787,66 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         raise GroundingError(f"I see only {_count_phrase(len(ordered), ref)}, so I cannot find "
                              f"{describe_ref(ref) if count == 1 else f'{count} of them'}.")
     return ordered[k:k + count]
+
+
+def gaps_between_things(analysis: MapAnalysis) -> list[NarrowPassage]:
+    """The narrow gaps between two things standing free (``GAP_FACE_M``), as passages: the way between
+    the nearest points of the two things, wider than the robot and narrower than a passage, with no
+    occupied or unknown cell on it; its ends are where the two things' facing sides end."""
+    cached = _GAPS.get(analysis)
+    if cached is not None:
+        return list(cached)
+    params = analysis.params
+    lo, hi = 2 * params.robot_radius_m, params.passage_max_width_m
+    things = [o for o in analysis.obstacles if len(o.cells_xy)]
+    trees = [cKDTree(np.asarray(o.cells_xy, dtype=float).reshape(-1, 2)) for o in things]
+    out: list[NarrowPassage] = []
+    for (_, a), (j, b) in itertools.combinations(enumerate(things), 2):
+        if a.room is not None and b.room is not None and a.room != b.room:
+            continue
+        ca = np.asarray(a.cells_xy, dtype=float).reshape(-1, 2)
+        d, k = trees[j].query(ca, distance_upper_bound=hi + analysis.grid.resolution_m)
+        if not np.isfinite(d).any():
+            continue
+        ia = int(np.argmin(d))
+        p, q = ca[ia], np.asarray(b.cells_xy, dtype=float).reshape(-1, 2)[int(k[ia])]
+        # cell centres: the clear width is one cell less than the distance between them
+        width = float(d[ia]) - analysis.grid.resolution_m
+        if not lo <= width <= hi or not _open_between(analysis, (float(p[0]), float(p[1])), (float(q[0]), float(q[1]))):
+            continue
+        across = unit((float(q[0] - p[0]), float(q[1] - p[1])))
+        axis = (-across[1], across[0])
+        centre = ((float(p[0]) + float(q[0])) / 2, (float(p[1]) + float(q[1])) / 2)
+        spans = []
+        for cells, end in ((ca, p), (np.asarray(b.cells_xy, dtype=float).reshape(-1, 2), q)):
+            face = cells[np.abs((cells - end) @ np.asarray(across)) <= GAP_FACE_M]
+            t = (face - np.asarray(centre)) @ np.asarray(axis)
+            spans.append((float(t.min()), float(t.max())))
+        t0, t1 = max(spans[0][0], spans[1][0]), min(spans[0][1], spans[1][1])
+        if t1 - t0 < 2 * GAP_MIN_HALF_DEPTH_M:
+            mid = (t0 + t1) / 2 if t1 >= t0 else 0.0
+            t0, t1 = mid - GAP_MIN_HALF_DEPTH_M, mid + GAP_MIN_HALF_DEPTH_M
+        ends = ((centre[0] + axis[0] * t0, centre[1] + axis[1] * t0), (centre[0] + axis[0] * t1, centre[1] + axis[1] * t1))
+        centre = ((ends[0][0] + ends[1][0]) / 2, (ends[0][1] + ends[1][1]) / 2)
+        rooms = tuple(dict.fromkeys(r for r in (a.room, b.room) if r is not None))
+        out.append(NarrowPassage(f"the gap between {a.id} and {b.id}", centre, width, t1 - t0, ends, rooms))
+    _GAPS[analysis] = tuple(out)
+    return out
+
+
+_GAPS: weakref.WeakKeyDictionary[MapAnalysis, tuple[NarrowPassage, ...]] = weakref.WeakKeyDictionary()
+
+
+def _open_between(analysis: MapAnalysis, p: Point, q: Point) -> bool:
+    """No occupied or unknown cell on the straight way between two things' nearest cells (their own
+    two cells apart): the gap is open floor, not a wall or a third thing."""
+    grid = analysis.grid
+    n = max(2, math.ceil(math.dist(p, q) / (grid.resolution_m / 2)))
+    ts = np.linspace(0.0, 1.0, n + 1)[1:-1]
+    rr, cc = grid.world_to_index(p[0] + (q[0] - p[0]) * ts, p[1] + (q[1] - p[1]) * ts)
+    (pr, pc), (qr, qc) = grid.world_to_index(p[0], p[1]), grid.world_to_index(q[0], q[1])
+    inside = grid.in_bounds(rr, cc) & ~((rr == pr) & (cc == pc)) & ~((rr == qr) & (cc == qc))
+    return bool(inside.any()) and bool(np.all(grid.cells[rr[inside], cc[inside]] == FREE))
 
 
 def _at_the_end(e: Element, hall: Room, pose: Pose) -> bool:
@@ -1018,6 +1094,16 @@ def _select_corner(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> Corner
             raise GroundingError(f"No corner of this {room_word} is in front of me; turn towards the "
                                  f"corners you mean, or say 'the nearest corner'.")
         sign = 1.0 if side == Side.LEFT else -1.0
+        # "the left corner" is on the left: of the corners ahead the one farthest that way, but never
+        # one on the other side (a room whose corner that way is not seen, e.g. a wall stub missing)
+        sided = [c for c in ahead if sign * lateral_offset(pose, c.point) > 0.0]
+        if not sided:
+            sided = [c for c in corners if sign * lateral_offset(pose, c.point) > 0.0
+                     and abs(math.degrees(bearing_rad(pose, c.point))) < 90.0]
+        if not sided:
+            raise GroundingError(f"I see no corner of this {room_word} in front of me on your {side.value}; "
+                                 f"which corner do you mean?")
+        ahead = sided
         best_lat = max(sign * lateral_offset(pose, c.point) for c in ahead)
         tied = [c for c in ahead if sign * lateral_offset(pose, c.point) >= best_lat - CORNER_SIDE_TIE_M]
         # among corners equally far to that side, the room's far corner (not a door jamb on the way)

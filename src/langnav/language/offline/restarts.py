@@ -236,16 +236,28 @@ def _bare_side_turn(reading: Reading) -> Step | None:
     return turn
 
 
+#: A corrected clause is found in the prompt by at least its first two words as said (a verb and its
+#: side: "rotate right"); one word alone ("rotate") could be any other instruction's.
+_SAID_PREFIX_WORDS = 2
+
+
 def _spans(text: str, clauses: list[str]) -> list[tuple[int, int] | None]:
-    """Where each clause stands in ``text`` (the prompt), found in order; None where it was changed on
-    the way (a correction applied) and cannot be found as said."""
+    """Where each clause stands in ``text`` (the prompt), found in order. A clause whose amount was
+    corrected on the way ("rotate right fifteen, correction, twenty" became "rotate right twenty") is
+    found by the words it was said with before the correction ("rotate right"): where it starts is known,
+    and its end is taken as that of those words, so the correction itself stays between it and what
+    follows (which is then no pause). None where not even the first two words are found as said."""
     lowered = text.lower()
     cursor = 0
     spans: list[tuple[int, int] | None] = []
     for clause in clauses:
         # the clause's words with any pauses between them ("right sixty" was said "right, sixty")
         words = re.findall(r"[^\s,.;!?]+", clause.lower())
-        found = re.compile(r"[\s,.;!?]+".join(map(re.escape, words))).search(lowered, cursor) if words else None
+        found = None
+        for n in range(len(words), min(len(words), _SAID_PREFIX_WORDS) - 1, -1):
+            found = re.compile(r"[\s,.;!?]+".join(map(re.escape, words[:n]))).search(lowered, cursor)
+            if found is not None:
+                break
         if found is None:
             spans.append(None)
             continue

@@ -7,7 +7,16 @@ import re
 from collections.abc import Sequence
 from typing import Final
 
-from langnav.language.intent import Amount, Detail, Direction, ElementRef, Intent, Movement, Step
+from langnav.language.intent import (
+    Amount,
+    Detail,
+    Direction,
+    ElementRef,
+    Intent,
+    Movement,
+    Side,
+    Step,
+)
 from langnav.language.offline.amounts import said_again, same_way_again, with_unit_said_before
 from langnav.language.offline.ask import ask_message, spatial
 from langnav.language.offline.composition import read_composed
@@ -175,6 +184,12 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
                 # question ("how far?") is answered by the move said again with its amount
                 if question in questions and question not in reading.asks:
                     questions.remove(question)
+        if steps and new_steps and not sequenced and _side_word_after_place(steps[-1], new_steps[0], clause):
+            # "go to the left corner, left": the place's side said again, not a turn after it; another side
+            # ("go to the left corner, right") may put the place right or add a turn: ask, don't guess
+            side = Side(str(new_steps.pop(0).direction))
+            if steps[-1].target is None or steps[-1].target.side != side:
+                questions.append(ASK_SIDE_OR_TURN.format(side=side.value))
         while steps and new_steps and _asked_again(steps[-1], new_steps[0]):
             new_steps.pop(0)  # "hold it, hold it"; "where are you? can you tell me where you are?"
         steps.extend(new_steps)
@@ -357,6 +372,22 @@ def _completes(previous: Step, step: Step, clause: str) -> bool:
     if step.movement == Movement.MOVE:
         return previous.distance_m is None and step.distance_m is not None
     return previous.angle_deg is None and step.angle_deg is not None
+
+
+#: What a clause of only a side word may hold besides the side ("left", "to the left", "on your left").
+_SIDE_ONLY_RE: Final = re.compile(r"^\W*(?:to\s+|on\s+)?(?:the\s+|your\s+)?(left|right)\W*$", re.IGNORECASE)
+#: Asked when a side word follows a place it could describe or follow as a turn.
+ASK_SIDE_OR_TURN: Final = "Did you mean the one on the {side}, or to turn {side} once there?"
+
+
+def _side_word_after_place(previous: Step, step: Step, clause: str) -> bool:
+    """A side word said on its own ("left") straight after an instruction to go to a place: a person
+    saying it there names, or repeats for stress, which place ("the left corner, left"); it could also be a
+    turn once there ("go to the door, left"), so only the same side as the place's is taken as said again."""
+    return (previous.movement == Movement.NAVIGATE and previous.target is not None
+            and step.movement == Movement.ROTATE and step.direction in (Direction.LEFT, Direction.RIGHT)
+            and step.amount == Amount.DEFAULT and step.angle_deg is None
+            and step.heading_deg is None and step.target is None and _SIDE_ONLY_RE.match(clause) is not None)
 
 
 def _confirms(previous: Step, step: Step, clause: str) -> bool:
