@@ -309,3 +309,20 @@ def test_an_en_suite_whose_door_stands_open_is_a_room_of_its_own() -> None:
     seg = segment_spaces(grid)
     assert space_at(seg, grid, 2.5, 2.5) is space_at(seg, grid, 1.65, 5.4)
     assert len(seg.rooms) == 2
+
+
+def test_a_small_hall_many_doors_open_onto_is_judged_on_its_width_within_its_walls() -> None:
+    """A 6.7 m2 hall and the 0.8 m corridor leading off it, with four doorways into four
+    places: within its walls its typical width is 0.8 m, but the floor's clearance reaches out
+    through the doorways lining it and reads 1.6 m. Judged on its own width it is walked
+    through: a hallway. Were it 1.6 m wide within its walls too, it would be a room (a small
+    lobby no longer than wide)."""
+    from langnav.analysis.segmentation import _kind_and_size
+
+    def kind(own_typical_m: float) -> ElementKind:
+        return _kind_and_size(6.7, 0.94, 1.61, 0.0, 4, lambda: 1.83, 0.05, DEFAULT_PARAMS,
+                              whole_wide_share=lambda: 0.0, whole_typical=lambda: own_typical_m,
+                              ways_on=4, extent_m=5.4, served=4)[0]
+
+    assert kind(0.8) == ElementKind.HALLWAY
+    assert kind(1.61) == ElementKind.ROOM

@@ -21,7 +21,7 @@ from langnav.analysis.pipeline import analyze
 from langnav.grounding import GroundingError, ground
 from langnav.grounding.geometry import Pose
 from langnav.grounding.ground import THROUGH_MIN_PAST_M
-from langnav.grounding.selection import gaps_between_things, select
+from langnav.grounding.selection import gaps_between_things, select, things_standing_free
 from langnav.language.intent import ElementRef, Intent, Step
 from langnav.maps.draw import MapBuilder
 
@@ -127,3 +127,52 @@ def test_the_opposite_side_is_in_the_third_of_the_room_farthest_away(two_rooms: 
     r = np.hypot(cells[:, 0] - pose[0], cells[:, 1] - pose[1])
     assert math.dist((x, y), pose[:2]) >= float(np.quantile(r, 2 / 3)) - 0.1
     assert 1.0 < x < 6.0 and 1.0 < y < 7.0  # in room A
+
+
+@pytest.fixture(scope="module")
+def parked_cars() -> MapAnalysis:
+    """A 12 x 10 m room with two cars 1.8 m deep across it at y 5.0-6.8: one nose to the west wall
+    (x 1.0-5.6), one standing free (x 6.4-11.5) with 0.8 m and 1.5 m of floor at its ends. The
+    analysis parts the room along the cars and counts both as wall structure."""
+    b = MapBuilder(14.0, 12.0)
+    b.room(1.0, 1.0, 13.0, 11.0)
+    b.box(1.0, 5.0, 5.6, 6.8)
+    b.box(6.4, 5.0, 11.5, 6.8)
+    return analyze(b.build("parked_cars"))
+
+
+def test_a_thing_standing_free_is_an_obstacle_whatever_line_the_analysis_draws(parked_cars: MapAnalysis) -> None:
+    assert len(parked_cars.rooms) == 2 and not parked_cars.obstacles  # the analysis: a partition
+    things = things_standing_free(parked_cars)
+    assert len(things) == 1  # the car against the wall is the wall's, to this rule as to the analysis
+    car = things[0]
+    assert abs(car.centroid[0] - 8.95) <= 0.1 and abs(car.centroid[1] - 5.9) <= 0.1
+    assert abs(car.extent_m[0] - 5.1) <= 0.15 and abs(car.extent_m[1] - 1.8) <= 0.15
+    pose = Pose.from_deg(9.0, 3.0, 90.0)
+    assert select(ref(kind="obstacle", side="ahead"), parked_cars, pose).id == car.id
+    x, y = last_pose(parked_cars, (9.0, 3.0, 90.0), movement="navigate", detail="next_to",
+                     target={"kind": "obstacle", "side": "ahead"})
+    assert 6.4 <= x <= 11.5 and 5.0 - 1.0 <= y < 5.0
+
+
+def test_a_wall_stub_is_no_thing_standing_free(two_rooms: MapAnalysis) -> None:
+    # the two-room world's partition runs into the outer walls, and its box is the analysis's obstacle
+    assert things_standing_free(two_rooms) == []
+
+
+def test_the_two_nearest_obstacles_are_those_in_sight_not_one_behind_a_wall() -> None:
+    """Two rooms parted by a wall at x 7 (door at y 7). The robot in the east room at (8, 3) facing
+    east: a box 1 m ahead, a second box 3 m ahead beyond it, and in the west room a box 2 m away by a
+    straight line through the wall."""
+    b = MapBuilder(14.0, 10.0)
+    b.room(1.0, 1.0, 13.0, 9.0)
+    b.wall(7.0, 1.0, 7.0, 9.0, 0.15)
+    b.door_v(7.0, 7.0, 0.9)
+    b.box(9.0, 2.7, 9.6, 3.3)
+    b.box(11.0, 2.7, 11.6, 3.3)
+    b.box(5.0, 2.7, 6.0, 3.3)
+    a = analyze(b.build("behind_a_wall"))
+    assert len(a.obstacles) == 3
+    x, y = last_pose(a, (8.0, 3.0, 0.0), movement="navigate", detail="between",
+                     target={"kind": "obstacle", "superlative": "nearest"})
+    assert math.dist((x, y), (10.3, 3.0)) <= 0.75

@@ -695,8 +695,12 @@ def _kind_and_size(area_m2: float, peak_m: float, typical_m: float, wide_share: 
         # it is wide, as a corridor is (an entrance hall, a ward corridor with a bay).
         # ... into more than one place (``served``): a meeting room's glass front onto an
         # open floor is many openings into one space, and no one walks through it.
-        serves = openings >= HALLWAY_MIN_DOORWAYS and (served is None or served >= 2) \
-            and area_m2 / typical >= params.hallway_min_elongation * typical
+        serves = openings >= HALLWAY_MIN_DOORWAYS and (served is None or served >= 2)
+        if serves:
+            # Its width there is the one within its own walls: the floor's clearance reaches out
+            # through the doorways lining it into the rooms beyond, and widens it at each.
+            own = min(typical, max(whole_typical(), res))
+            serves = area_m2 / own >= params.hallway_min_elongation * own
         if (long or serves) and whole_wide_share() <= params.hallway_max_wide_share \
                 and whole_typical() <= params.hallway_max_width_m:
             return ElementKind.HALLWAY, area_m2 / typical, typical

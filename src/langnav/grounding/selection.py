@@ -45,6 +45,7 @@ from langnav.analysis.elements import (
 from langnav.grounding.errors import GroundingError
 from langnav.grounding.geometry import (
     AHEAD_HALF_ANGLE_DEG,
+    BoolArray,
     Point,
     Pose,
     bearing_rad,
@@ -113,6 +114,15 @@ NARROW_GAP_MAX_M: Final = 0.75
 #: things within GAP_FACE_M of their nearest points; a gap with no depth gets GAP_MIN_HALF_DEPTH_M a side.
 GAP_FACE_M: Final = 0.15
 GAP_MIN_HALF_DEPTH_M: Final = 0.1
+
+#: A thing standing free has scanned floor all round it: at least this share of the cells round it
+#: free (a speck of scan noise may touch it; a wall runs into unscanned space or other walls).
+THING_RING_FREE_MIN: Final = 0.95
+#: Its inside is never scanned (a lidar sees its faces): more free cells inside it than a speck of scan
+#: noise are a floor, and it is walls round a room, not a thing.
+THING_FLOOR_INSIDE_MAX: Final = 4
+#: The share of a thing that is furniture-thick (``FURNITURE_MIN_THICKNESS_M``) all through.
+THING_THICK_SHARE: Final = 0.8
 
 #: Nouns for obstacles of a compact footprint ("the box") and of a long one ("the shelf"). When the
 #: words use one, obstacles of that shape are chosen before the others.
@@ -556,6 +566,76 @@ def doors_of(analysis: MapAnalysis) -> list[Door]:
     return [d for d in analysis.doors if not is_gap(d, analysis) and id(d) not in round_ends]
 
 
+def things_standing_free(analysis: MapAnalysis) -> list[Obstacle]:
+    """Things standing free on the floor that the analysis counted as wall structure because spaces
+    meet round them (a desk block or a parked car between two parts of an open room): an occupied
+    cluster that no wall runs into (scanned free floor all round it, THING_RING_FREE_MIN of its ring),
+    solid (no floor inside it), as thick as furniture all through (``FURNITURE_MIN_THICKNESS_M``,
+    ``THING_THICK_SHARE``; an inner wall is thinner) and not one of
+    the analysis's obstacles. To a person in the room it is a thing in it, "the obstacle on the left",
+    whatever line the analysis drew through it. Ids are ``thing_N``; the room is the one most of its
+    ring lies in. Found once per analysis."""
+    known = _THINGS.get(analysis)
+    if known is not None:
+        return list(known)
+    grid = analysis.grid
+    occupied = grid.occupied
+    comp, n = ndimage.label(occupied, structure=np.ones((3, 3), dtype=bool))
+    taken = np.zeros(n + 1, dtype=bool)
+    for o in analysis.obstacles:
+        pts = np.asarray(o.cells_xy, dtype=float).reshape(-1, 2)
+        rr, cc = grid.world_to_index(pts[:, 0], pts[:, 1])
+        ok = grid.in_bounds(rr, cc)
+        taken[comp[rr[ok], cc[ok]]] = True
+    sizes = np.bincount(comp.ravel(), minlength=n + 1)
+    sizes[0] = 0
+    if n:
+        taken[int(np.argmax(sizes))] = True  # the building's walls
+    by_label = {r.label: r.id for r in analysis.rooms}
+    res = grid.resolution_m
+    out: list[Obstacle] = []
+    for k, sl in enumerate(ndimage.find_objects(comp), start=1):
+        if sl is None or taken[k] or sizes[k] * grid.cell_area_m2 < analysis.params.obstacle_min_area_m2:
+            continue
+        r0, r1 = max(sl[0].start - 2, 0), min(sl[0].stop + 2, grid.height)
+        c0, c1 = max(sl[1].start - 2, 0), min(sl[1].stop + 2, grid.width)
+        if r0 == 0 or c0 == 0 or r1 == grid.height or c1 == grid.width:
+            continue
+        own = comp[r0:r1, c0:c1] == k
+        block = ndimage.binary_fill_holes(own)
+        if np.count_nonzero(block & ~own & (grid.cells[r0:r1, c0:c1] == FREE)) > THING_FLOOR_INSIDE_MAX:
+            continue  # walls round a floor (a room inside a room, its door gaps parting it from the rest)
+        ring = ndimage.binary_dilation(block, structure=np.ones((3, 3), dtype=bool)) & ~block
+        free_ring = grid.cells[r0:r1, c0:c1][ring] == FREE
+        if free_ring.mean() < THING_RING_FREE_MIN:
+            continue
+        # thick all through, as a desk or a car is: most of it stays when a disc as wide as furniture
+        # is thick is rolled inside it (a run of thin walls, even with the unscanned inside of a thick
+        # junction or two, does not)
+        k_cells = max(1, round(FURNITURE_MIN_THICKNESS_M / 2 / res))
+        yy, xx = np.ogrid[-k_cells:k_cells + 1, -k_cells:k_cells + 1]
+        disc = xx * xx + yy * yy <= k_cells * k_cells
+        thick = ndimage.binary_opening(np.pad(block, k_cells + 1), structure=disc)
+        if np.count_nonzero(thick) < THING_THICK_SHARE * np.count_nonzero(block):
+            continue
+        rr, cc = np.nonzero(own)
+        oxs, oys = grid.cell_to_world(rr + r0, cc + c0)
+        br, bc = np.nonzero(block)
+        bxs, bys = grid.cell_to_world(br + r0, bc + c0)
+        ring_labels = analysis.labels[r0:r1, c0:c1][ring]
+        ring_labels = ring_labels[ring_labels > 0]
+        room = by_label.get(int(np.bincount(ring_labels).argmax())) if ring_labels.size else None
+        out.append(Obstacle(f"thing_{len(out) + 1}", (float(bxs.mean()), float(bys.mean())),
+                            float(len(bxs) * grid.cell_area_m2),
+                            (float(bxs.max() - bxs.min()) + res, float(bys.max() - bys.min()) + res), room,
+                            np.stack([oxs, oys], axis=1)))
+    _THINGS[analysis] = tuple(out)
+    return out
+
+
+_THINGS: weakref.WeakKeyDictionary[MapAnalysis, tuple[Obstacle, ...]] = weakref.WeakKeyDictionary()
+
+
 def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
     """The elements the noun of ``kind`` names: "doors" are the doors without the gaps narrower than
     any door, which are "narrow passages" (gaps) with the analysis's passages. A room's only way in
@@ -573,7 +653,7 @@ def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
     if kind == Kind.HALLWAY:
         return [r for r in analysis.rooms if r.kind == ElementKind.HALLWAY]
     if kind == Kind.OBSTACLE:
-        return list(analysis.obstacles)
+        return [*analysis.obstacles, *things_standing_free(analysis)]
     if kind == Kind.CORNER:
         return list(analysis.corners)
     if kind == Kind.UNEXPLORED_AREA:
@@ -593,15 +673,17 @@ def select(ref: ElementRef, analysis: MapAnalysis, pose: Pose, words: str = "",
     return select_many(ref, analysis, pose, 1, words, came_through)[0]
 
 
-def in_sight(analysis: MapAnalysis, xy: Point, o: Obstacle) -> bool:
+def in_sight(analysis: MapAnalysis, xy: Point, o: Obstacle, *, past_things: bool = False) -> bool:
     """Whether a straight line from ``xy`` reaches one of the thing's cells (``SIGHT_CELLS_TRIED``
-    nearest) without crossing an occupied cell of the map before it (``SIGHT_END_SLACK_M``)."""
+    nearest) without crossing an occupied cell of the map before it (``SIGHT_END_SLACK_M``);
+    ``past_things``: only walls hide it (a person sees a thing beyond another thing in the same room:
+    over it, round it as they step aside), ``walls_only``."""
     cells = np.asarray(o.cells_xy, dtype=float).reshape(-1, 2)
     if not len(cells):
         return False
     grid = analysis.grid
     d = np.hypot(cells[:, 0] - xy[0], cells[:, 1] - xy[1])
-    occupied = grid.occupied
+    occupied = walls_only(analysis) if past_things else grid.occupied
     step_m = grid.resolution_m / 2
     for k in np.argsort(d)[:SIGHT_CELLS_TRIED]:
         length = float(d[k]) - SIGHT_END_SLACK_M
@@ -615,6 +697,25 @@ def in_sight(analysis: MapAnalysis, xy: Point, o: Obstacle) -> bool:
         if not occupied[r[inside], c[inside]].any():
             return True
     return False
+
+
+def walls_only(analysis: MapAnalysis) -> BoolArray:
+    """The occupied cells of the map without those of the obstacles and the things standing free
+    (``things_standing_free``): what hides a thing from a person in a room. Once per analysis."""
+    known = _WALLS_ONLY.get(analysis)
+    if known is None:
+        grid = analysis.grid
+        known = grid.occupied.copy()
+        for o in [*analysis.obstacles, *things_standing_free(analysis)]:
+            pts = np.asarray(o.cells_xy, dtype=float).reshape(-1, 2)
+            rr, cc = grid.world_to_index(pts[:, 0], pts[:, 1])
+            ok = grid.in_bounds(rr, cc)
+            known[rr[ok], cc[ok]] = False
+        _WALLS_ONLY[analysis] = known
+    return known
+
+
+_WALLS_ONLY: weakref.WeakKeyDictionary[MapAnalysis, BoolArray] = weakref.WeakKeyDictionary()
 
 
 def aspect_ratio(o: Obstacle) -> float:
@@ -709,6 +810,19 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         pool = [e for e in pool if matches_side(e, pose, ref.also_side)]  # "behind you on the left": both hold
     if ref.kind == Kind.OBSTACLE and words:
         pool = shape_filter(pool, words)
+    if ref.kind == Kind.OBSTACLE and ref.side is None and ref.superlative == Superlative.NEAREST and space is None \
+            and ref.near is None:
+        # "the two nearest obstacles" are things the robot sees from where it stands, not one nearer
+        # by a straight line through a wall in the next room (when too few are in sight: all of them)
+        wanted = (ref.ordinal or 1) + count - 1
+        seen_near: list[Element] = []
+        for e in sorted(pool, key=lambda e: distance_to(e, pose.xy)):
+            if len(seen_near) >= wanted:
+                break
+            if isinstance(e, Obstacle) and in_sight(analysis, pose.xy, e, past_things=True):
+                seen_near.append(e)
+        if len(seen_near) >= wanted:
+            pool = seen_near
     if ref.kind == Kind.OBSTACLE and ref.side is not None and space is None and ref.near is None:
         # "the obstacle on your right" places a thing by where the robot sees it: one behind a wall, in
         # another room, is not on its right to a person standing there (ask rather than drive to it)
