@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy import ndimage as ndi
 
 from langnav.analysis.elements import Door
@@ -885,3 +887,60 @@ def test_a_door_read_across_a_long_aisle_between_lockers_is_no_door() -> None:
     assert p.center == pytest.approx((4.5, 4.075), abs=0.06)
     assert p.width_m == pytest.approx(0.85, abs=0.051)
     assert p.length_m == pytest.approx(5.0, abs=0.2)
+
+
+@settings(max_examples=16, deadline=None, derandomize=True)
+@given(width_m=st.floats(0.6, 0.85), length_m=st.floats(2.5, 6.0), depth_m=st.floats(0.4, 1.0),
+       degrees=st.one_of(st.just(0.0), st.floats(0.0, 90.0)), resolution_m=st.sampled_from([0.025, 0.05, 0.1]))
+def test_an_aisle_between_two_shelf_rows_is_one_passage_of_its_width(width_m: float, length_m: float, depth_m: float,
+                                                                      degrees: float, resolution_m: float) -> None:
+    """Two shelf rows standing free in a hall, whatever their length, depth and the map's angle
+    and cells: the aisle between them is one passage, as wide as it is (up to a cell and a half:
+    drawn on cells its width is rounded to whole cells, and a turned map's stair-stepped faces
+    add one), and nothing else is. (Aisles up to 0.85 m: within that cell and a half of
+    passage_max_width_m, 1.0 m, on 0.1 m cells an aisle may read as wider than a passage.)"""
+    b = MapBuilder(length_m + 6.0, 2 * depth_m + width_m + 6.0, resolution_m=resolution_m, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, length_m + 4.0, 2 * depth_m + width_m + 4.0)
+    b.box(2.0, 2.0, 2.0 + length_m, 2.0 + depth_m)
+    b.box(2.0, 2.0 + depth_m + width_m, 2.0 + length_m, 2.0 + 2 * depth_m + width_m)
+    grid = b.build(source="two shelf rows")
+    found = passages_of(rotated(grid, degrees) if degrees else grid)
+    assert len(found) == 1
+    assert found[0].width_m == pytest.approx(width_m, abs=1.5 * resolution_m + 0.01)
+    assert found[0].length_m == pytest.approx(length_m, abs=0.1 * length_m + 2 * resolution_m)
+
+
+def rack_rows(cross_aisle: bool) -> OccupancyGrid:
+    """A 12 x 8 m hall with three rack rows, 0.6 m deep and 8 m long (x from 2 to 10), 0.8 m
+    apart: the middle row has a 0.8 m cross-over gap (x from 5.6 to 6.4); ``cross_aisle``: the
+    outer rows have it too, a cross aisle through all three."""
+    b = MapBuilder(14.0, 10.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 12.0, 8.0)
+    for k, y in enumerate((2.0, 3.4, 4.8)):
+        if k == 1 or cross_aisle:
+            b.box(2.0, y, 5.6, y + 0.6)
+            b.box(6.4, y, 10.0, y + 0.6)
+        else:
+            b.box(2.0, y, 10.0, y + 0.6)
+    return b.build(source="rack_rows")
+
+
+def test_an_aisle_goes_on_past_a_cross_over_gap_in_one_of_its_rows() -> None:
+    """Each aisle runs the racks' whole length: the gap in the middle row beside it is a way off it
+    (as a door off a corridor), not its end; one passage each, not two halves."""
+    found = sorted(passages_of(rack_rows(cross_aisle=False)), key=lambda p: p.center[1])
+    assert len(found) == 2
+    for p, y in zip(found, (3.0, 4.4), strict=True):
+        assert p.center == pytest.approx((6.0, y), abs=0.1)
+        assert p.width_m == pytest.approx(0.8, abs=0.051)
+        assert p.length_m == pytest.approx(8.0, abs=0.3)
+
+
+def test_aisles_either_side_of_a_cross_aisle_stay_two() -> None:
+    """Where the cross-over runs through every row, both sides of each aisle open there: a cross
+    aisle, and the aisle's halves either side of it are two ways."""
+    found = sorted(passages_of(rack_rows(cross_aisle=True)), key=lambda p: (p.center[1], p.center[0]))
+    assert len(found) == 4
+    for p, (x, y) in zip(found, ((3.8, 3.0), (8.2, 3.0), (3.8, 4.4), (8.2, 4.4)), strict=True):
+        assert p.center == pytest.approx((x, y), abs=0.15)
+        assert p.length_m == pytest.approx(3.6, abs=0.3)

@@ -326,3 +326,19 @@ def test_a_small_hall_many_doors_open_onto_is_judged_on_its_width_within_its_wal
 
     assert kind(0.8) == ElementKind.HALLWAY
     assert kind(1.61) == ElementKind.ROOM
+
+
+@pytest.mark.parametrize("degrees", [7.0, 24.0, 45.0, 66.0])
+def test_an_en_suite_whose_door_stands_open_is_apart_at_any_angle(degrees: float) -> None:
+    """The same rooms turned on the grid (stair-stepped walls, a leaf scanned two or three
+    cells thick): the open leaf still parts the en-suite, and without it the bay stays open."""
+    from test_passages import rotated
+
+    def areas(grid: OccupancyGrid) -> list[float]:
+        return sorted(round(r.area_m2, 1) for r in segment_spaces(grid).rooms)
+
+    with_leaf = areas(rotated(bedroom_with_an_en_suite_door_open(), degrees))
+    assert len(with_leaf) == 3
+    assert with_leaf[0] == pytest.approx(2.6, abs=0.3)  # the en-suite
+    assert with_leaf[1] == pytest.approx(12.6, abs=0.3)  # the bedroom
+    assert len(areas(rotated(bedroom_with_an_en_suite_door_open(leaf=False), degrees))) == 2
