@@ -176,3 +176,20 @@ def test_the_two_nearest_obstacles_are_those_in_sight_not_one_behind_a_wall() ->
     x, y = last_pose(a, (8.0, 3.0, 0.0), movement="navigate", detail="between",
                      target={"kind": "obstacle", "superlative": "nearest"})
     assert math.dist((x, y), (10.3, 3.0)) <= 0.75
+
+
+def test_the_gap_between_a_thing_standing_free_and_a_box_is_a_narrow_passage() -> None:
+    """The parked car standing free of ``parked_cars`` with a box 0.7 m past its east end (the box
+    0.2 m from the east wall: no way there): the narrow passage ahead of a robot south of it is that gap,
+    whatever spaces the analysis cut round the car."""
+    b = MapBuilder(14.0, 12.0)
+    b.room(1.0, 1.0, 13.0, 11.0)
+    b.box(1.0, 5.0, 5.6, 6.8)
+    b.box(6.4, 5.0, 11.5, 6.8)
+    b.box(12.2, 5.5, 12.8, 6.3)
+    a = analyze(b.build("car_and_box"))
+    gaps = [g for g in gaps_between_things(a) if abs(g.center[0] - 11.85) <= 0.15]
+    assert len(gaps) == 1 and abs(gaps[0].width_m - 0.7) <= 0.1
+    x, y = last_pose(a, (11.85, 3.0, 90.0), movement="navigate", detail="through",
+                     target={"kind": "narrow_passage", "side": "ahead"})
+    assert abs(x - 11.85) <= 0.3 and 6.3 + THROUGH_MIN_PAST_M - 0.05 <= y <= 5.9 + 2.0

@@ -107,8 +107,8 @@ FURNITURE_FREE_MARGIN_M: Final = 1.0
 #: passage", and does not count it among "the doors" of a room.
 NARROW_GAP_MAX_M: Final = 0.75
 
-#: "The narrow gap" between two things standing free (two acoustic screens end to end, two parked cars):
-#: the analysis's passages are constrictions longer than a door is deep, but a person calls any way
+#: "The narrow gap" between two things standing free (two acoustic screens end to end, two parked cars)
+#: is a narrow passage: the analysis's are constrictions longer than a door is deep, but a person calls any way
 #: between two things that is wider than the robot and narrower than a passage (the analysis's
 #: ``passage_max_width_m``) a narrow gap, however thin the things are. Its sides are the faces of the two
 #: things within GAP_FACE_M of their nearest points; a gap with no depth gets GAP_MIN_HALF_DEPTH_M a side.
@@ -647,7 +647,11 @@ def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
         # a gap inside a passage the analysis found is that passage's pinch, not a second one
         gaps = [d for d in analysis.doors if d.width_m < NARROW_GAP_MAX_M and not any(
             math.dist(d.center, closest_on_segment(d.center, p.ends[0], p.ends[1])) <= p.width_m for p in passages)]
-        return [*passages, *gaps]
+        # and the gaps between two things standing free, where the analysis has none of its own
+        between = [g for g in gaps_between_things(analysis) if not any(
+            math.dist(g.center, closest_on_segment(g.center, p.ends[0], p.ends[1])) <= max(p.width_m, g.width_m)
+            for p in passages) and not any(math.dist(g.center, d.center) <= max(d.width_m, g.width_m) for d in gaps)]
+        return [*passages, *gaps, *between]
     if kind == Kind.ROOM:
         return [r for r in analysis.rooms if r.kind == ElementKind.ROOM]
     if kind == Kind.HALLWAY:
@@ -780,7 +784,7 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
             pass  # no gap matches the words: "the gap" is a doorway
     pool = elements_of_kind(analysis, ref.kind)
     noun_plural = KIND_NOUN[ref.kind][1]
-    if not pool and not (ref.kind == Kind.NARROW_PASSAGE and gaps_between_things(analysis)):
+    if not pool:
         raise GroundingError(f"I see no {noun_plural} in this map.")
     space = _space_for_ref(ref, analysis, pose)
     if space is not None and ref.kind not in (Kind.ROOM, Kind.HALLWAY):
@@ -887,13 +891,6 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
             raise GroundingError(f"I see no door at the end of {label_of(space)}: its doors are along its sides. "
                                  "Which door do you mean? Say e.g. 'the last door on your left'.")
     k = (ref.ordinal or 1) - 1
-    if len(ordered) < k + count and ref.kind == Kind.NARROW_PASSAGE and not ordered and sup is None:
-        # no passage of the analysis's where the words put it: a narrow gap between two things there
-        between = [g for g in gaps_between_things(analysis)
-                   if (space is None or _in_space(g, space, analysis))
-                   and (ref.side is None or matches_side(g, pose, ref.side))
-                   and (ref.also_side is None or matches_side(g, pose, ref.also_side))]
-        ordered = sorted(between, key=lambda e: distance_to(e, pose.xy))
     if len(ordered) < k + count:
         if not ordered:
             raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]}{_where(ref)}, so I cannot find "
@@ -906,18 +903,17 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
 def gaps_between_things(analysis: MapAnalysis) -> list[NarrowPassage]:
     """The narrow gaps between two things standing free (``GAP_FACE_M``), as passages: the way between
     the nearest points of the two things, wider than the robot and narrower than a passage, with no
-    occupied or unknown cell on it; its ends are where the two things' facing sides end."""
+    occupied or unknown cell on it (so no wall between them, whatever spaces the analysis put them
+    in); its ends are where the two things' facing sides end."""
     cached = _GAPS.get(analysis)
     if cached is not None:
         return list(cached)
     params = analysis.params
     lo, hi = 2 * params.robot_radius_m, params.passage_max_width_m
-    things = [o for o in analysis.obstacles if len(o.cells_xy)]
+    things = [o for o in [*analysis.obstacles, *things_standing_free(analysis)] if len(o.cells_xy)]
     trees = [cKDTree(np.asarray(o.cells_xy, dtype=float).reshape(-1, 2)) for o in things]
     out: list[NarrowPassage] = []
     for (_, a), (j, b) in itertools.combinations(enumerate(things), 2):
-        if a.room is not None and b.room is not None and a.room != b.room:
-            continue
         ca = np.asarray(a.cells_xy, dtype=float).reshape(-1, 2)
         d, k = trees[j].query(ca, distance_upper_bound=hi + analysis.grid.resolution_m)
         if not np.isfinite(d).any():
@@ -1126,6 +1122,8 @@ def _labelled(analysis: MapAnalysis, kind: Kind) -> list[Element]:
         return list(analysis.doors)
     if kind == Kind.NARROW_PASSAGE:
         return list(analysis.narrow_passages)
+    if kind == Kind.OBSTACLE:
+        return list(analysis.obstacles)  # things standing free have no label on the picture
     return elements_of_kind(analysis, kind)
 
 

@@ -23,7 +23,16 @@ from langnav.language.offline.compass import COMPASS_RE
 from langnav.language.offline.idioms import named_turn_alone
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import find_quantities
-from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE, STOP_RE, rx
+from langnav.language.offline.patterns import (
+    BOAT_SIDE_WORDS,
+    GO_VERB_RE,
+    LITTLE_RE,
+    MOVE_WAY_WORDS,
+    ROTATE_VERB_RE,
+    STOP_RE,
+    TURN_SIDE_WORDS,
+    rx,
+)
 from langnav.language.offline.vocabulary import VOCABULARY
 
 #: Exclamations of dismay ("aiya", "argh", "oh no", "damn"): said right after an instruction, they mark it as
@@ -119,8 +128,8 @@ def _whole_move(fragment: str) -> bool:
 
 
 #: The ways of a move that no turn can take ("forward", "back"): a fragment with one and its amount is a move.
-_MOVE_WAY_RE: Final = re.compile(r"\b(?:forwards?|backwards?|back|ahead|straight|astern)\b")
-_TURN_SIDE_RE: Final = re.compile(r"\b(?:left|right|clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw|port|starboard)\b")
+_MOVE_WAY_RE: Final = re.compile(rf"\b(?:{MOVE_WAY_WORDS})\b")
+_TURN_SIDE_RE: Final = re.compile(rf"\b(?:{TURN_SIDE_WORDS}|{BOAT_SIDE_WORDS})\b")
 
 
 def _move_after_turn(instruction: str, fragment: str) -> bool:

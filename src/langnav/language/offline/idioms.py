@@ -67,8 +67,9 @@ INFORMAL_GO_VERBS: Final = ("push", "press", "mosey", "trundle", "glide", "drift
 INFORMAL_TURN_VERBS: Final = ("swing", "whip", "bank", "hook", "kick", "flip", "crank", "wheel", "cut", "swerve",
                               "slew", "bring", "haul", "yank", "jerk")
 #: Verbs after which "it" is the vehicle (the turn verbs the lexicon knows, and the informal ones).
+#: ("inch it forward": "inch" is a verb there, and the unit only after a number)
 _DRIVER_VERBS: Final = (*INFORMAL_GO_VERBS, *INFORMAL_TURN_VERBS, "back", "move", "drive", "pull", "turn", "rotate",
-                        "spin", "swivel", "pivot", "twist", "steer")
+                        "spin", "swivel", "pivot", "twist", "steer", "inch")
 #: A side or "around" after a turn verb.
 _TURN_SIDE: Final = (r"(?:hard\s+|sharp\s+|quickly\s+|slightly\s+|a\s+bit\s+|a\s+little\s+)?(?:to\s+(?:the|your)\s+)?"
                      r"(?:left|right|around|round|about|clockwise|counter\s*clockwise|anti\s*clockwise)\b")
@@ -109,6 +110,9 @@ _IDIOMS: Final[tuple[tuple[re.Pattern[str], Replacement], ...]] = (
     (re.compile(rf"\bgive\s+(?:me|us)\s+(?=(?:another\s+|a\s+further\s+|an\s+extra\s+)?(?:{NUMBER}|a|an|half)\s+"
                 r"(?:(?:more|further|extra)\s+)?(?:and\s+a\s+half\s+)?(?:feet|foot|ft|inch|inches|yards?|met(?:er|re)s?|"
                 r"cm|centimet(?:er|re)s?|degrees?|deg)\b)"), "move "),
+    # "go along five feet", "move along two metres": "along" with no object is onward, the way the robot faces
+    (re.compile(rf"\b(?P<v>go|move|head|drive|walk|come|keep\s+going|carry\s+on)\s+along\s+(?={_AMOUNT})"),
+     r"\g<v> forward "),
     # "push forward", "press on two feet", "mosey ahead": a verb of going with no object
     (re.compile(rf"\b(?:{'|'.join(INFORMAL_GO_VERBS)})(?:\s+(?:on|onwards?|along))?\s+(?={_WAY})"), "move "),
     # "spin yourself right around", "turn right round": "right" before "around" is the intensifier "all the

@@ -275,7 +275,7 @@ GO_VERBS: Final = (
     "squeeze", "wander", "journey", "cruise", "zip", "hop", "nudge", "budge", "position", "get over",
     "come over", "swing by", "pull up", "pull over", "pull", "arrive", "set off", "follow", "hug",
     "trace", "track", "skirt", "take", "stay", "keep", "edge", "shuffle", "ease", "stand", "go stand",
-    "go and stand", "go and", "sit", "wait", "retreat", "withdraw",
+    "go and stand", "go and", "sit", "wait", "retreat", "withdraw", "backpedal", "back pedal", "back-pedal",
 )
 
 ROTATE_VERBS: Final = ("turn", "rotate", "spin", "pivot", "swivel", "swing round", "swing around", "face", "look", "twist", "yaw",
@@ -307,12 +307,14 @@ STOP_PHRASES: Final = (
 
 #: Questions and their answers.
 QUERY_POSE_PATTERNS: Final = (
-    r"\bwhere\s+(?:exactly\s+|now\s+|on\s+earth\s+)?(?:are|r)\s+(?:you|u)\b(?!\s+(?:going|heading|headed|driving|off\s+to))", r"\bwhere\s+am\s+i\b", r"\bwhere\s+is\s+the\s+robot\b",
+    # ("whereabouts" asks where, in every English: "whereabouts are you (to) now?")
+    r"\bwhere(?:abouts)?\s+(?:exactly\s+|now\s+|on\s+earth\s+)?(?:are|r)\s+(?:you|u)\b(?!\s+(?:going|heading|headed|driving|off\s+to))", r"\bwhere\s+am\s+i\b", r"\bwhere\s+is\s+the\s+robot\b",
     # ("hold your position", "keep your heading" ask to stay, not where the robot is)
     r"(?<!\bhold\s)(?<!\bkeep\s)(?<!\bmaintain\s)"
     r"\b(?:your|the\s+robot'?s?|current|robot)\s+(?:current\s+|exact\s+|present\s+|last\s+)?"
     r"(?:position|location|pose|coordinates|whereabouts|heading|orientation|place)\b",
-    r"\b(?:report|send|give|tell)\s+(?:me\s+|us\s+)?(?:your\s+|the\s+)?(?:current\s+|present\s+)?"
+    # ("say position": radio procedure's "say" asks the other station to tell it)
+    r"\b(?:report|send|give|tell|say)\s+(?:me\s+|us\s+)?(?:your\s+|the\s+)?(?:current\s+|present\s+)?"
     r"(?:position|location|pose|coordinates|whereabouts)\b(?!\s+of\b)",
     r"\bwhich\s+(?:way|direction)\s+are\s+you\s+(?:facing|pointing|heading|looking)\b",
     r"\bwhere\s+(?:is\s+it|are\s+we)\b", r"^\s*where\s+(?:you|u)\s+(?:are|r)\b",
@@ -494,6 +496,13 @@ FILLER_PATTERNS: Final = (
     # speaking, no second place
     r"(?:" + "|".join(rf"(?<=\b{w})" for w in ("left", "right", "side", "door", "doorway", "room", "corner", "wall",
                                               "one", "hallway", "corridor", "obstacle", "area", "gap", "passage"))
+    + r")\s+there\s*$",
+    # "there" ending a turn on the spot or a move whose amount is said ("turn around there", "go forward four feet
+    # there", "back up a bit there"): Irish and British speech ends an instruction with it, as "now"; the turn or
+    # the amount already says where the robot ends, so it names no place ("go back there", "go there" still do)
+    r"(?:" + "|".join(rf"(?<=\b{w})" for w in ("around", "round", "feet", "foot", "metres", "meters", "metre", "meter",
+                                              "yards", "yard", "inches", "inch", "degrees", "degree", "bit", "little",
+                                              "touch", "tad"))
     + r")\s+there\s*$",
     # how fast, said of the motion ("real quick", "nice and quick"): the robot keeps its safe speed
     r"\b(?:real|really|very|nice\s+and|super)\s+(?:quick|quickly|fast|slow|slowly)\b",

@@ -31,8 +31,12 @@ from langnav.language.offline.verbs import Verb
 _TURN_ONLY_SIDE_RE: Final = re.compile(r"\b(?:clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw)\b")
 _SIDEWAYS_RE: Final = re.compile(r"\bsideways\b")
 #: ("back out": reversing out of where one stands, as from a parking space or a tank's manhole)
+#: ("backpedal": to step backwards, as a player or a cyclist does)
 _BACKWARD_VERBS: Final = frozenset({"back up", "back out", "reverse", "back off", "go back", "head back", "retreat",
-                                    "withdraw"})
+                                    "withdraw", "backpedal", "back pedal", "back-pedal"})
+#: The way a backward verb already says, said again ("withdraw fifteen metres, straight back"): "straight" right
+#: before a way means "directly" (as in "straight ahead"), never the way forward.
+_BACK_SAID_AGAIN: Final = re.compile(r"\b(?:straight\s+|directly\s+|right\s+)?(?:backwards?|back|in\s+reverse)\b")
 
 
 def move_steps(c: Clause, verb: Verb, vm: re.Match[str] | None) -> list[Step]:
@@ -139,7 +143,7 @@ def _move_directions(c: Clause, vm: re.Match[str] | None) -> list[Direction]:
     """Every direction word of the clause, in order (the first is the move's)."""
     found: list[Direction] = []
     if vm is not None and " ".join(vm.group(0).split()) in _BACKWARD_VERBS:
-        c.s.take_all(re.compile(r"\b(?:backwards?|back|in\s+reverse)\b"))
+        c.s.take_all(_BACK_SAID_AGAIN)
         found.append(Direction.BACKWARD)
     for m in c.s.take_all(MOVE_DIR_RE):
         d = lx.lookup(lx.MOVE_DIRECTIONS, m.group("dir"))

@@ -58,12 +58,14 @@ from langnav.language.offline.navigation import navigate_steps, stop_steps
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS, find_quantities
 from langnav.language.offline.patterns import (
+    BOAT_SIDE_WORDS,
     EXPLORE_RE,
     FILLER_RE,
     GO_VERB_RE,
     LATE_FILLER_RE,
     MOVE_DIR_RE,
     STOP_RE,
+    TURN_SIDE_WORDS,
 )
 from langnav.language.offline.phrases import Phrase, find_phrases
 from langnav.language.offline.queries import (
@@ -75,6 +77,7 @@ from langnav.language.offline.queries import (
     read_return,
 )
 from langnav.language.offline.reading import (
+    BEARING_RE,
     ELLIPSIS_FACTOR,
     MIN_CONFIDENCE,
     NOTHING_READ_CONFIDENCE,
@@ -112,6 +115,8 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
     query = read_query(c)
     if query is not None:
         return query
+    if BEARING_RE.search(norm):
+        return Reading(unread=(text,), confidence=NOTHING_READ_CONFIDENCE, problem=Problem.BEARING)
     if OTHER_FLOOR_RE.search(norm):
         return Reading(unread=(text,), confidence=OUT_OF_SCOPE_CONFIDENCE, problem=Problem.OTHER_FLOOR)
     if is_negated(norm):
@@ -253,7 +258,7 @@ _SIDE_WORD_RE: Final = re.compile(r"\b(?:left|right|forwards?|ahead|straight|bac
                                   r"clockwise|counter\s*clockwise|anti\s*clockwise|sideways)\b")
 
 
-_TURN_SIDE_RE: Final = re.compile(r"\b(?:left|right|port|starboard|around|round|clockwise|counter\s*clockwise|anti\s*clockwise)\b")
+_TURN_SIDE_RE: Final = re.compile(rf"\b(?:{TURN_SIDE_WORDS}|{BOAT_SIDE_WORDS}|around|round)\b")
 
 
 def _is_open(steps: list[Step], norm: str) -> bool:

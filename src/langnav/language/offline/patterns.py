@@ -28,4 +28,11 @@ LITTLE_RE: Final = re.compile(lx.phrase_regex(lx.LITTLE_PHRASES) + r"(?:\s+(?:mo
 #: "a fair bit", "quite a way further": an amount said only to be large (ask how far).
 MUCH_RE: Final = re.compile("(?:" + any_of(lx.MUCH_PATTERNS).pattern + r")(?:\s+(?:more|further|farther|extra|again))?\b")
 MOVE_DIR_RE: Final = rx(lx.MOVE_DIRECTIONS, "dir")
+#: Words that give a turn its side (README "Turns": clockwise is right, counter-clockwise left), as regex
+#: alternatives: the one list every stage asking "is a side said?" builds its pattern from.
+TURN_SIDE_WORDS: Final = r"left|right|clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw"
+#: A boat's sides (port is left, starboard right), said by anyone who has been on one.
+BOAT_SIDE_WORDS: Final = r"port|starboard"
+#: Words that give a straight move its way along the heading (forward or back), which no turn can take.
+MOVE_WAY_WORDS: Final = r"forwards?|backwards?|back|ahead|straight|astern"
 ROTATE_DIR_RE: Final = rx(lx.ROTATE_DIRECTIONS, "dir")

@@ -59,6 +59,7 @@ class Problem(StrEnum):
     UNKNOWABLE = "unknowable"        # "the red door", "the wooden door": no colours or materials in a grid
     DURATION = "duration"            # "move forward for 5 seconds": moves go by distance, turns by angle
     BAD_NUMBER = "bad_number"        # "turn left ninety billion degrees": a number not read in full
+    BEARING = "bearing"              # "turn to heading one eight zero": a direction in degrees whose convention is not said
 
 
 class OutOfRange(Exception):
@@ -72,8 +73,6 @@ def checked_angle(angle: float | None) -> float | None:
 
 
 #: Words left unread that show a number was not read in full: digits, and magnitudes the
-
-
 #: number words do not cover.
 NUMBERISH_RE: Final = re.compile(r"\d|\b(?:thousands?|millions?|billions?|trillions?|zillions?|gazillions?|"
                                   r"dozens?|hundreds|infinity|infinite)\b")
@@ -99,3 +98,13 @@ class Reading:
     open: bool = False
     #: questions for the user: the reading would have to guess a side or a unit (nothing runs)
     asks: tuple[str, ...] = ()
+
+
+#: A direction given as a number of degrees after "heading", "bearing" or "course" ("turn to heading one eight
+#: zero", "come to a bearing of 90"). Pilots, sailors and hikers count such a number clockwise from north (090 is
+#: east); a robot's map counts its heading counter-clockwise from east (90 is north). The two agree only on
+#: nothing the speaker can be assumed to know, so the robot asks instead of turning one way or the other (a turn
+#: "by 180" would be a third reading, turning as far as the number). Lengths after the word are no bearing.
+BEARING_RE: Final = re.compile(
+    r"\b(?:heading|bearing|course)\s+(?:of\s+|to\s+)?\d+(?:\.\d+)?\b"
+    r"(?!\s*(?:m|cm|mm|met(?:er|re)s?|centimet(?:er|re)s?|feet|foot|ft|inch(?:es)?|yards?|yd)\b)")

@@ -30,12 +30,12 @@ from langnav.language.offline.ask import spatial
 from langnav.language.offline.corrections import DISMAY_RE
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import NUMBER, Quantity, QuantityKind, find_quantities
-from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE
+from langnav.language.offline.patterns import GO_VERB_RE, LITTLE_RE, ROTATE_VERB_RE, TURN_SIDE_WORDS
 from langnav.language.offline.reading import ASK_SIDE, Reading
 from langnav.language.offline.vocabulary import VOCABULARY
 
 #: Words that give a turn its side.
-_TURN_SIDE_RE: Final = re.compile(r"\b(?:left|right|clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw)\b")
+_TURN_SIDE_RE: Final = re.compile(rf"\b(?:{TURN_SIDE_WORDS})\b")
 #: Reads one clause on its own (the parser's ``read_clause``).
 ClauseReader = Callable[[str], Reading]
 
@@ -300,8 +300,12 @@ def drop_false_start_turns(clauses: list[str], text: str, read: ClauseReader) ->
     spans = _spans(text, clauses)
     kept: list[int] = []
     for i, clause in enumerate(clauses):
-        turn = _only_turn(read(clause))
-        if turn is not None and turn.direction in _SIDES and not _facing(turn) and not _ONCE_MORE_RE.search(clause):
+        reading = read(clause)
+        turn = _only_turn(reading)
+        # (a turn whose side was not said, "thirty degrees" in "turn right, em, thirty degrees", takes nothing
+        # back: its side is only the reading's placeholder, and the turn said before it is the side meant)
+        if turn is not None and turn.direction in _SIDES and ASK_SIDE not in reading.asks and not _facing(turn) \
+                and not _ONCE_MORE_RE.search(clause):
             while kept:
                 said = [k for k in kept if not _interjection(clauses[k], read)]  # "oh bugger": no instruction
                 first = _bare_side_turn(read(clauses[said[-1]])) if said else None

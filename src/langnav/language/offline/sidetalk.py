@@ -44,7 +44,14 @@ from langnav.language.offline import lexicon as lx
 from langnav.language.offline.corrections import CANCEL_RE, CORRECTION_START_RE
 from langnav.language.offline.normalize import normalize as _normalize
 from langnav.language.offline.numbers import ONES, TENS, find_quantities
-from langnav.language.offline.patterns import GO_VERB_RE, ROTATE_VERB_RE, STOP_RE
+from langnav.language.offline.patterns import (
+    BOAT_SIDE_WORDS,
+    GO_VERB_RE,
+    MOVE_WAY_WORDS,
+    ROTATE_VERB_RE,
+    STOP_RE,
+    TURN_SIDE_WORDS,
+)
 from langnav.language.offline.vocabulary import VOCABULARY
 
 #: One stretch of speech between pauses, with the marks that end it.
@@ -55,9 +62,8 @@ _SENTENCE_END: Final = frozenset(".;!?")
 _REOPEN_RE: Final = re.compile(r"^\s*(?:ok(?:ay)?|alright|all\s+right|noted|anyway|anyhow|robot|rover|fine)\b", re.IGNORECASE)
 #: Words that say which way (any of them keeps the talk: it may be meant for the robot).
 _WAY_RE: Final = re.compile(
-    r"\b(?:left|right|forwards?|backwards?|back|ahead|straight|around|round|clockwise|counter\s*clockwise|"
-    r"anti\s*clockwise|north\w*|south\w*|east|west|astern|port|starboard|sideways|reverse|behind|o'?clock|"
-    r"turn\w*|spin\w*)\b", re.IGNORECASE)
+    rf"\b(?:{TURN_SIDE_WORDS}|{MOVE_WAY_WORDS}|{BOAT_SIDE_WORDS}|around|round|north\w*|south\w*|east|west|sideways|"
+    r"reverse|behind|o'?clock|turn\w*|spin\w*)\b", re.IGNORECASE)
 #: A place named as where to go ("to the door", "through the gap").
 _PLACE_RE: Final = re.compile(
     r"\b(?:to|into|through|towards?|past|along|at|near|by|from)\s+(?:the\s+|a\s+|this\s+|that\s+|your\s+)?"

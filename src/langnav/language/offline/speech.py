@@ -13,13 +13,15 @@ from typing import Final
 
 from langnav.language.offline.lexicon import TYPOS
 from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS, ONES, TENS
+from langnav.language.offline.patterns import TURN_SIDE_WORDS
 from langnav.language.offline.sidetalk import without_side_talk
 from langnav.language.offline.vocabulary import VOCABULARY
 
-#: Hesitation sounds: no meaning in any position.
+#: Hesitation sounds: no meaning in any position. ("em" is how Irish and Scottish speech is written for "um"; the
+#: pronoun "'em" keeps its apostrophe and is read as "them" first, see ELIDED.)
 HESITATIONS: Final = frozenset({
     "uh", "uhh", "uhhh", "uhhhh", "um", "umm", "ummm", "uhm", "uhmm", "hmm", "hmmm", "hm", "er", "erm", "err",
-    "ah", "ahh", "eh", "mmm", "mhm", "huh", "ehm", "ooh", "oooh", "ohh", "aah", "phew", "hmph",
+    "ah", "ahh", "eh", "mmm", "mhm", "huh", "ehm", "ooh", "oooh", "ohh", "aah", "phew", "hmph", "em", "emm",
 })
 #: Hedges a speaker puts before an amount or a direction ("uh maybe forty five degrees"): they soften
 #: the words, they never change the amount or the side.
@@ -132,6 +134,11 @@ HOMOPHONES: Final = (
     (re.compile(rf"\b(?:to|too)\s+(?={_UNIT_WORD}\b)", re.IGNORECASE), "two "),
     (re.compile(rf"\bfor\s+(?={_UNIT_WORD}\b)", re.IGNORECASE), "four "),
     (re.compile(r"\bwon\b", re.IGNORECASE), "one"),
+    # the radiotelephony digits pilots, air traffic and many radio users say (ICAO: "tree", "fower", "fife",
+    # "niner"), where a number goes: before a unit or another number ("niner" is nothing else anywhere)
+    (re.compile(r"\bniner\b", re.IGNORECASE), "nine"),
+    *((re.compile(rf"\b{said}\s+(?=(?:{_UNIT_WORD}|zero|{NUMBER_WORDS})\b)", re.IGNORECASE), f"{digit} ")
+      for said, digit in (("tree", "three"), ("fower", "four"), ("fife", "five"))),
     (re.compile(r"\bate\b", re.IGNORECASE), "eight"),
     (re.compile(rf"\b(?P<slot>{_SIDE_SLOT}|go|move|head|drive|slide|step|to\s+the|on\s+the|a)\s+(?:write|rite|wright)\b",
                 re.IGNORECASE), r"\g<slot> right"),
@@ -311,8 +318,7 @@ NUMBER_RESTART: Final = re.compile(
     r"(?:\s*(?:,|\.{2,}|…))*\s+(?=(?P=num)\b(?![/.]\d))", re.IGNORECASE)
 #: Words that name one of several alternatives a speaker may set against each other: sides, ways, compass
 #: points, units and numbers.
-_ALTERNATIVE: Final = (rf"(?:(?:to\s+(?:the|your)\s+)?(?:left|right|forwards?|backwards?|back|clockwise|counter\s*clockwise|"
-                       rf"anti\s*clockwise|north|south|east|west|north\s*east|north\s*west|south\s*east|south\s*west|"
+_ALTERNATIVE: Final = (rf"(?:(?:to\s+(?:the|your)\s+)?(?:{TURN_SIDE_WORDS}|forwards?|backwards?|back|north|south|east|west|north\s*east|north\s*west|south\s*east|south\s*west|"
                        rf"feet|foot|inch(?:es)?|yards?|met(?:er|re)s?|centimet(?:er|re)s?|degrees?|\d+(?:\.\d+)?|"
                        rf"{NUMBER_WORDS}))")
 #: A contrast that names what is not meant ("turn left, not right"; "three feet not four"; "not left but
@@ -357,10 +363,12 @@ _OPENING_MARKERS: Final = re.compile(
     rf"(?:(?:{_MARKER_WORD}|then)(?:\s*(?:[,;:!-]+|\.+))|(?<=\s)(?:so|now)\s+(?=\S))", re.IGNORECASE)
 #: What "right" completes when it is a direction: an amount, a unit, a way, or a sequence going on from
 #: it ("right, ninety degrees", "right, a little", "right, then forward two feet", "right. forward").
+#: ("Back up / off / out / away" is a verb of its own, an instruction: "right, back up a metre" opens with the
+#: marker, as "right, stop there" does.)
 _COMPLETES_A_SIDE: Final = re.compile(
     rf"^\s*(?:$|(?:about|around|roughly|approximately|maybe|like|just|only|some|by|another|and|then|after|to\s+(?:the|your)|"
     r"a\s+(?:little|bit|tad|touch|quarter|half|few|couple|hundred)|half|quarter|full|degrees?|deg|feet|foot|met(?:er|re)s?|"
-    r"forwards?|backwards?|back|ahead|straight|left|right|around|round|clockwise|counter\s*clockwise|anti\s*clockwise|"
+    r"forwards?|backwards?|back(?!\s+(?:up|off|out|away)\b)|ahead|straight|left|right|around|round|clockwise|counter\s*clockwise|anti\s*clockwise|"
     rf"(?:north|south|east|west)\w*|hand|side|turn\b(?=\s*(?:$|[,.;!?])))\b|\d|(?:{NUMBER_WORDS})\b)", re.IGNORECASE)
 _RIGHT: Final = re.compile(r"\bright\b", re.IGNORECASE)
 #: "Right then," and "right so," with a pause after them open an utterance in British and Irish English ("right

@@ -32,6 +32,7 @@ from langnav.language.offline.idioms import plain_idioms
 from langnav.language.offline.lexicon import ELEMENT_NOUNS
 from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
+from langnav.language.offline.particles import without_particles
 from langnav.language.offline.photos import without_photo
 from langnav.language.offline.reading import ASK_AMOUNT, ASK_CONFIDENCE, ASK_SIDE
 from langnav.language.offline.restarts import (
@@ -57,7 +58,7 @@ CONFIDENT: Final = 0.8
 SURE_REFUSALS: Final = frozenset({Problem.NAME, Problem.OUT_OF_SCOPE, Problem.OUT_OF_RANGE, Problem.QUESTION,
                                   Problem.OTHER_FLOOR, Problem.DURATION, Problem.UNKNOWABLE})
 #: Problems in one step that refuse the whole prompt: a number out of range or not read in full.
-WHOLE_PROMPT_REFUSALS: Final = frozenset({Problem.OUT_OF_RANGE, Problem.BAD_NUMBER})
+WHOLE_PROMPT_REFUSALS: Final = frozenset({Problem.OUT_OF_RANGE, Problem.BAD_NUMBER, Problem.BEARING})
 #: Problems whose words were not understood at all: a spatial word among them blocks the prompt.
 UNREAD_PROBLEMS: Final = frozenset({Problem.UNREADABLE, Problem.NO_ANTECEDENT})
 #: A reading that runs some steps and leaves a whole instruction out is unsure at best.
@@ -108,7 +109,7 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     if is_shout(text) and text.strip(" !").lower() in ELEMENT_NOUNS:  # "corner!": a warning, or the place?
         return _clarify(SHOUT_MESSAGE.format(said=text.strip()), confidence=ASK_CONFIDENCE, unread=[text.strip()])
     text = plain_idioms(plain_speech(canonical_numbers(without_spoken_count_in(text))))
-    clauses, photo = _clauses(text)
+    clauses, photo = _clauses(text, known_names)
     cut = next((c for c in map(unfinished_number, clauses) if c is not None), None)
     if cut is not None:
         return _clarify(CUT_NUMBER_MESSAGE.format(said=cut), confidence=ASK_CONFIDENCE, unread=[cut])
@@ -238,12 +239,12 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
                   clarification=PHOTO_LEFT_OUT_MESSAGE if photo else None)
 
 
-def _clauses(text: str) -> tuple[list[str], bool]:
-    """The instructions of a prompt, each whole: photo requests taken out (and whether there was
-    one), fragments joined to the move or turn they complete, self-corrections applied."""
+def _clauses(text: str, known_names: Sequence[str] = ()) -> tuple[list[str], bool]:
+    """The instructions of a prompt, each whole: particles of other languages and photo requests taken out
+    (and whether there was one), fragments joined to the move or turn they complete, self-corrections applied."""
     kept: list[str] = []
     photo = False
-    for clause in split_steps(text):
+    for clause in without_particles(split_steps(text), _read, known_names):
         without = without_photo(clause)
         photo = photo or without.asked
         if without.asked and is_bare_verb(without.rest):
@@ -496,6 +497,10 @@ PROBLEM_MESSAGES: Final[dict[Problem, str]] = {
                            "turns). Name a place to go to instead, e.g. 'go to the farthest door'."),
     Problem.BAD_NUMBER: ("I could not read the number in \"{quoted}\", so I will not move. Give it in digits or "
                          "words, e.g. 'move forward 2.5 metres', 'turn left 90 degrees' or 'the second door'."),
+    Problem.BEARING: ("I can't tell which way \"{quoted}\" points: on a compass a heading in degrees counts "
+                      "clockwise from north (90 is east), on my map counter-clockwise from east (90 is north). Nothing "
+                      "was run: say it with a compass point, e.g. 'face south', or as a turn, e.g. 'turn right 90 "
+                      "degrees'."),
     Problem.NO_ANTECEDENT: ("In \"{quoted}\" I can't tell what 'it' or 'there' means. Name the place, e.g. "
                             "'the nearest door' or 'the left corner of this room'."),
 }
