@@ -37,6 +37,7 @@ from langnav.analysis.precompute import (
     nonzero2,
     take2,
     truncated_sq_edt,
+    unique_values,
 )
 from langnav.analysis.unexplored import NEIGHBOURS_8, adjacent_pairs
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
@@ -61,6 +62,15 @@ def test_maximum3_matches_maximum_filter(a: npt.NDArray[np.int32]) -> None:
     assert np.array_equal(maximum3(a), ndi.maximum_filter(a, size=3))
     f = a.astype(np.float64) / 7.0
     assert np.array_equal(maximum3(f), ndi.maximum_filter(f, size=3))
+
+
+@settings(max_examples=150, deadline=None)
+@given(arrays(np.int64, st.integers(0, 60), elements=st.integers(-5, 2**40)))
+def test_unique_values_matches_numpy(a: npt.NDArray[np.int64]) -> None:
+    got = unique_values(a)
+    assert got.dtype == np.unique(a).dtype and np.array_equal(got, np.unique(a))
+    runs = np.concatenate([np.sort(a), np.sort(a[::2])])  # keys gathered run by run
+    assert np.array_equal(unique_values(runs), np.unique(runs))
 
 
 @settings(max_examples=100, deadline=None)

@@ -101,3 +101,33 @@ def test_a_false_start_before_a_corrected_turn_never_turns_more_than_the_correct
     assert sum(s.angle_deg if s.angle_deg is not None else 90.0 for s in intent.steps) <= then + 1e-9, intent
     if intent.steps:
         assert [(s.direction, s.angle_deg) for s in intent.steps] == [(_SIDES[side], float(then))], intent
+
+
+@pytest.mark.parametrize("prompt", [
+    # the session-9 review: a first turn that asked something is no false start, its question stays
+    "turn left a lot, turn right ninety, I mean forty five, then go forward two metres",
+    "turn left quite a bit, uh, rotate right fifteen, correction, twenty",
+    "turn left a fair bit, turn right 45, no wait, 30",
+    "turn left a lot, turn right forty five",
+    # a word between them the reading left unread may size or repeat the turn: ask
+    "turn left, twice, turn right ninety, no, forty five, go forward two metres",
+    "turn left, x, turn right ninety, I mean forty five",
+    "turn left, twice, turn right forty five",
+])
+def test_a_turn_that_asked_is_not_taken_back(prompt: str) -> None:
+    intent = translate_offline(prompt)
+    assert intent.steps == [] and intent.clarification, intent
+
+
+@pytest.mark.parametrize("prompt", [
+    # a word that puts the turns in order, known or not, in chat spelling too: both turns were meant
+    "turn left, next, turn right ninety, I mean forty five",
+    "turn left, later, turn right forty five",
+    "turn left, plus, turn right forty five",
+    "turn left, subsequently, turn right forty five",
+    "turn left, n, turn right forty five",
+    "turn left, &, turn right forty five",
+])
+def test_a_word_of_order_keeps_both_turns(prompt: str) -> None:
+    turns = [(s.direction, s.angle_deg) for s in translate_offline(prompt).steps]
+    assert turns[:2] == [(Direction.LEFT, None), (Direction.RIGHT, 45.0)]

@@ -49,7 +49,12 @@ away into a hall, are not: a gap beside them is no door. Nor is the face of a wa
 the opening's line with no return along it: a gap that runs right up to a crossing wall is
 the way round the end of a partition, a bench row, a shelf or a parking bay's wall, not a door
 (builders leave a return beside a door frame at a corner, so that the frame has a wall to
-stand in and the door leaf can open past the corner).
+stand in and the door leaf can open past the corner). However thick the crossing wall, the
+look along the opening's line from its face reads only its thickness and, beyond it, the floor
+of the place behind: an inner wall passing straight by the jamb on both sides is no return.
+The building's outer wall is the exception: a partition stopping short of the facade leaves the
+door between the two rooms it parts (the frame stands on the outer wall, with the unknown
+outside beyond), as a person reads a house's plan.
 
 *A door's jambs are walls, not furniture.* A jamb on a compact body standing free in the floor
 (all of it within a few metres, its inside never scanned: a cabinet, a desk block, a counter
@@ -151,6 +156,12 @@ JAMB_REACH_M: Final = 0.3
 #: the line is shorter than a wall's length) when it is occupied on at least this share of a
 #: wall's length along the normal.
 JAMB_ACROSS_MIN_SHARE: Final = 0.8
+#: Behind a jamb on the face of a wall crossing the opening's line, the other side of that wall
+#: is looked for this far (m): a wall's thickness, thick walls included.
+CROSSING_LOOK_M: Final = 0.6
+#: ... and the place behind it is floor clear for at least this far (m) along the line: room for
+#: the robot (0.34 m) to stand; a hole in a wall, or the slit between two walls, is narrower.
+PLACE_BEHIND_MIN_M: Final = 0.35
 #: A jamb's body is looked at within this distance (m) of it: a piece of furniture lies
 #: wholly inside it, a wall runs on beyond it (to other walls, or along the unknown outside).
 BODY_LOOK_M: Final = 3.0
@@ -494,8 +505,8 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
     for jamb, sign in (((r1, c1), -1.0), ((r2, c2), 1.0)):
         # The wall runs on along (nearly) the opening's line: jamb to jamb is a short baseline
         # across ragged wall ends, so the wall may leave it at a small angle.
-        hits = wall_hits(occupied, jamb, [*(_turned(sign * tr, sign * tc, a) for a in _ALONG_ANGLES),
-                                          (nr, nc), (-nr, -nc)], resolution_m, wall_m, band_m)
+        fan = [_turned(sign * tr, sign * tc, a) for a in _ALONG_ANGLES]
+        hits = wall_hits(occupied, jamb, [*fan, (nr, nc), (-nr, -nc)], resolution_m, wall_m, band_m)
         shares = hits.mean(axis=1)
         # A wall runs on for a wall's length: one that stops short of its last third is a post,
         # a pillar or a speck of clutter, whatever share of the look it fills.
@@ -503,13 +514,43 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
         # ... unless the wall turns there (a door beside a corner: the short return along the
         # opening's line, the wall running on across it).
         turns = shares[-2:].max() >= JAMB_ACROSS_MIN_SHARE
-        along.append(float(np.where(runs_on | turns, shares, 0.0)[:-2].max()))
+        # An inner wall running on across the line to both sides, with a place behind it
+        # whichever way near the line one looks, passes straight by the jamb: the look along the
+        # line reads only its thickness (and, slanted, its length), no return; the opening runs
+        # up to its face (see the module doc).
+        crossing = (shares[-2:].min() >= JAMB_ACROSS_MIN_SHARE
+                    and _floor_behind(free, occupied, jamb, fan, resolution_m))
+        along.append(0.0 if crossing else float(np.where(runs_on | turns, shares, 0.0)[:-2].max()))
         across.append(float(shares[-2:].min()))
     furniture = unknown is not None and any(is_furniture(free, unknown, j, resolution_m) for j in jj)
     return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]),
                         across=(across[0], across[1]), line_turn_deg=turn, beyond_width_m=beyond, past_width_m=past,
                         furniture_jamb=furniture, scanned_share=scanned, clear_width_m=clear,
                         walled_beyond_share=walled)
+
+
+def _floor_behind(free: BoolArray, occupied: BoolArray, start_rc: tuple[float, float],
+                  directions_rc: list[tuple[float, float]], resolution_m: float) -> bool:
+    """Whether, along each of ``directions_rc`` from ``start_rc``, the wall ends within
+    CROSSING_LOOK_M (no occupied cell within JAMB_BAND_M of the line: a wall's cells scatter
+    about it) in free floor clear for PLACE_BEHIND_MIN_M: the wall there is an inner wall with a
+    place behind it, not a wall running on near the line (a T-junction, a partition meeting it,
+    a wall seen again past a hole) nor the building's outer wall with the unknown beyond."""
+    hits = wall_hits(occupied, start_rc, directions_rc, resolution_m, CROSSING_LOOK_M + PLACE_BEHIND_MIN_M,
+                     JAMB_BAND_M)
+    n_wall = math.ceil(CROSSING_LOOK_M / resolution_m / _STEP_CELLS)
+    n_place = math.ceil(PLACE_BEHIND_MIN_M / resolution_m / _STEP_CELLS)
+    ends = np.argmin(hits, axis=1)
+    if (hits[:, :n_wall].all(axis=1)).any():
+        return False
+    steps = np.arange(hits.shape[1])[None, :]
+    after = (steps >= ends[:, None]) & (steps < ends[:, None] + n_place)
+    if (hits & after).any():
+        return False
+    s = (ends + 1) * _STEP_CELLS
+    rows = start_rc[0] + s * np.array([d[0] for d in directions_rc])
+    cols = start_rc[1] + s * np.array([d[1] for d in directions_rc])
+    return bool(_sample(free, rows, cols, outside=False).all())
 
 
 def walled_strip_share(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float],

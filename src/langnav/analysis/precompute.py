@@ -20,6 +20,7 @@ The stand-ins give *exactly* what the numpy / scipy call they replace gives (pro
   against a distance, as the outside grown by the disc of the offsets that fail it
   (:func:`grow_by_disc`, the binary dilation by a disc, :func:`disc`);
 - :func:`median`, :func:`cov2`: ``np.median`` and ``np.cov`` without their overhead;
+- :func:`unique_values`: ``np.unique`` of integer keys, by a stable sort;
 - :func:`edt_scaled`: ``ndi.distance_transform_edt(mask, sampling=step)`` for a 2-D mask and one
   step for both axes, the distances read from a table of the few (|drow|, |dcol|) offsets;
 - :func:`fill_holes`: ``ndi.binary_fill_holes`` of a 2-D mask, by one labelling of the rest;
@@ -212,8 +213,12 @@ def fill_holes(mask: BoolArray) -> BoolArray:
     array that is not 4-connected to its edge (what that call's dilation from the edge reaches),
     found by one labelling instead of a dilation run to convergence."""
     m = np.asarray(mask, dtype=bool)
-    rest, _ = ndi.label(~m)
-    return m | ((rest > 0) & ~np.isin(rest, border_labels(rest)))
+    rest, n = ndi.label(~m)
+    # Per label of the rest: enclosed (not background, not touching the edge); read by label.
+    enclosed = np.ones(n + 1, dtype=bool)
+    enclosed[0] = False
+    enclosed[border_labels(rest)] = False
+    return m | enclosed[rest]
 
 
 def truncated_sq_edt(mask: BoolArray, max_cells: int) -> npt.NDArray[np.signedinteger[Any]]:
@@ -350,6 +355,19 @@ def component_boxes(ids: npt.NDArray[np.integer], rows: npt.NDArray[np.integer],
     np.maximum.at(c1, ids, cols)
     return {int(k): (slice(int(r0[k]), int(r1[k]) + 1), slice(int(c0[k]), int(c1[k]) + 1))
             for k in np.asarray(wanted).tolist()}
+
+
+def unique_values(a: npt.NDArray[np.integer]) -> npt.NDArray[np.integer]:
+    """``np.unique`` of a 1-D integer array: the same sorted distinct values, from one stable
+    sort (timsort, which keys gathered run by run, each run in order, take several times faster
+    than the sort ``np.unique`` uses)."""
+    s = np.sort(a, kind="stable")
+    if s.size < 2:
+        return s
+    first = np.empty(s.size, dtype=bool)
+    first[0] = True
+    np.not_equal(s[1:], s[:-1], out=first[1:])
+    return s[first]
 
 
 def median(v: npt.NDArray[np.floating]) -> float:
@@ -601,6 +619,30 @@ def _ms_offsets(width: int) -> tuple[npt.NDArray[np.int64], ...]:
     return tuple(_frozen(a) for a in out)
 
 
+def _doublings(n: int) -> int:
+    """How many times a stride doubles from 1 to at least ``n`` (ceil(log2(n)), at least 1)."""
+    return max(1, (n - 1).bit_length())
+
+
+def _loop_ranks(nxt: npt.NDArray[np.intp], members: npt.NDArray[np.intp], start: int) -> npt.NDArray[np.intp]:
+    """For the segments ``members`` of one loop of the successor map ``nxt`` (``start`` among
+    them): how many steps along the successors each lies from ``start`` (list ranking: the loop
+    is cut before ``start``, and each segment's distance to the cut is summed over strides that
+    double)."""
+    size = members.size
+    local = np.empty(nxt.size, dtype=np.intp)
+    local[members] = np.arange(size)
+    step = local[nxt[members]]
+    tail = int(np.flatnonzero(step == local[start])[0])  # the segment the loop ends with
+    step[tail] = tail
+    dist = np.ones(size, dtype=np.intp)
+    dist[tail] = 0
+    for _ in range(_doublings(size)):
+        dist += dist[step]
+        step = step[step]
+    return (size - 1) - dist
+
+
 def longest_contour(mask: BoolArray) -> npt.NDArray[np.float64] | None:
     """``max(skimage.measure.find_contours(np.pad(mask, 1).astype(np.uint8), 0.5), key=len)``
     (None where there is no contour): the same points, in the same order, bit for bit.
@@ -636,30 +678,24 @@ def longest_contour(mask: BoolArray) -> npt.NDArray[np.float64] | None:
     by_start = np.argsort(frm)
     nxt = by_start[np.searchsorted(frm[by_start], to)]
     # Each loop's first segment, by pointer jumping: after step k every segment holds the
-    # smallest index among the 2**k segments from it on; once no value changes, each holds its
-    # loop's smallest (the windows of one stride, laid end to end, cover the loop).
+    # smallest index among the 2**k segments from it on; once 2**k reaches the loop's length,
+    # its loop's smallest. No loop is longer than all n segments: ceil(log2(n)) steps.
     loop = np.arange(n, dtype=np.intp)
     jump = nxt
-    while True:
-        nearer = np.minimum(loop, loop[jump])
-        if np.array_equal(nearer, loop):
-            break
-        loop = nearer
+    for _ in range(_doublings(n)):
+        loop = np.minimum(loop, loop[jump])
         jump = jump[jump]
     sizes = np.bincount(loop, minlength=n)
     # The longest loop; of equal ones the first (skimage's list is in the order of their first
     # segments, and ``max`` keeps the first of equals).
     best = int(np.argmax(sizes))
-    last = int(np.flatnonzero(loop == best)[-1])
+    members = np.flatnonzero(loop == best)
+    last = int(members[-1])
     # From the end of the loop's last segment round along the successors, back to it.
-    succ = nxt.tolist()
-    order = [last]
-    j = succ[last]
-    while j != last:
-        order.append(j)
-        j = succ[j]
-    order.append(last)
-    ids = to[np.array(order, dtype=np.intp)]
+    order = np.empty(members.size + 1, dtype=np.intp)
+    order[_loop_ranks(nxt, members, last)] = members
+    order[-1] = last
+    ids = to[order]
     # An id back to its point: a row's edge (even) is (row, col + 0.5), a column's (odd) is
     # (row + 0.5, col).
     vertex, down = np.divmod(ids, 2)

@@ -53,6 +53,7 @@ from langnav.analysis.precompute import (
     dilate_box,
     edt_scaled,
     maximum3,
+    nonzero2,
 )
 from langnav.analysis.wall_lines import WallDirections, dominant_directions
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN
@@ -300,7 +301,7 @@ def adjacent_pairs(labels: IntArray, value: FloatArray) -> tuple[
                        ((slice(None, -1), slice(None)), (slice(1, None), slice(None)))):
         lp, lq = labels[sl_p], labels[sl_q]
         m = (lp != lq) & (lp > 0) & (lq > 0)
-        rr, cc = np.nonzero(m)
+        rr, cc = nonzero2(m)
         locs_l.append(rr.astype(np.int64) * w + cc)
         a = np.minimum(lp[m], lq[m]).astype(np.int64)
         b = np.maximum(lp[m], lq[m]).astype(np.int64)

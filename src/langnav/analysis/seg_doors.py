@@ -26,7 +26,7 @@ from scipy import ndimage as ndi
 from skimage.segmentation import watershed
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import dilate_box, far_from_outside, maximum3
+from langnav.analysis.precompute import dilate_box, far_from_outside, maximum3, nonzero2
 from langnav.analysis.seg_core import EIGHT, BoolArray, FloatArray, IntArray
 from langnav.analysis.wall_lines import outer_gaps
 
@@ -71,7 +71,7 @@ def _boundary_pairs(labels: IntArray) -> tuple[npt.NDArray[np.int64], ...]:
     for dr, dc in ((0, 1), (1, 0)):
         lp = labels[: h - dr, : w - dc]
         lq = labels[dr:, dc:]
-        rr, cc = np.nonzero((lp != lq) & (lp > 0) & (lq > 0))
+        rr, cc = nonzero2((lp != lq) & (lp > 0) & (lq > 0))
         out.append((rr, cc, rr + dr, cc + dc))
     return tuple(np.concatenate([o[i] for o in out]).astype(np.int64) for i in range(4))
 

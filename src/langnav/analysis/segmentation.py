@@ -44,6 +44,7 @@ from langnav.analysis.precompute import (
     longest_contour,
     maximum3,
     nonzero2,
+    unique_values,
 )
 from langnav.analysis.seg_core import (
     EIGHT,
@@ -209,7 +210,7 @@ def _measured_at(grid: OccupancyGrid, labels: npt.NDArray[np.int32], room: Room,
     """``room`` with its areas, centroid and cells measured on ``grid`` (finer than it was found on)."""
     mask = labels[sl] == room.label
     free = mask & (grid.cells[sl] == FREE)
-    rr, cc = np.nonzero(free if free.any() else mask)
+    rr, cc = nonzero2(free if free.any() else mask)
     xs, ys = grid.cell_to_world(rr + sl[0].start, cc + sl[1].start)
     a = grid.cell_area_m2
     return dataclasses.replace(room, area_m2=float(mask.sum()) * a, free_area_m2=float(free.sum()) * a,
@@ -383,10 +384,10 @@ def _views_out(labels: npt.NDArray[np.int32], occupied: npt.NDArray[np.bool_]) -
                 continue
             src = labels[max(dr, 0):h + min(dr, 0), max(dc, 0):w + min(dc, 0)]
             dst = labels[max(-dr, 0):h + min(-dr, 0), max(-dc, 0):w + min(-dc, 0)]
-            rr, cc = np.nonzero((src > 0) & (dst != src))
+            rr, cc = nonzero2((src > 0) & (dst != src))
             cell = (rr + max(-dr, 0)).astype(np.int64) * w + (cc + max(-dc, 0))
             keys.append(src[rr, cc].astype(np.int64) * (h * w) + cell)
-    pairs = np.unique(np.concatenate(keys))
+    pairs = unique_values(np.concatenate(keys))
     space, cell = np.divmod(pairs, h * w)
     ring = np.bincount(space, minlength=n + 1)
     wall = np.bincount(space[occupied.ravel()[cell]], minlength=n + 1)
@@ -500,20 +501,23 @@ def _close_unknown_gaps(labels: npt.NDArray[np.int32], unknown: npt.NDArray[np.b
     base = (rows + r) * pw + (cols + r)
     value = np.zeros(rows.size, dtype=np.int32)  # what each cell gets (0: nothing yet)
     steps = np.arange(1, r + 1)
-    every = np.arange(rows.size)
 
-    def first_met(offsets: npt.NDArray[np.intp]) -> npt.NDArray[np.int32]:
-        """Per cell, the first non-zero value met along its line (a space, or -1: a wall, the
-        edge), 0 if none within r."""
-        seq = flat_seen[base[:, None] + offsets[None, :]]
-        return seq[every, np.argmax(seq != 0, axis=1)]
+    def first_met(cells: npt.NDArray[np.intp], offsets: npt.NDArray[np.intp]) -> npt.NDArray[np.int32]:
+        """Per cell (of ``cells``), the first non-zero value met along its line (a space, or -1:
+        a wall, the edge), 0 if none within r."""
+        seq = flat_seen[base[cells, None] + offsets[None, :]]
+        return seq[np.arange(cells.size), np.argmax(seq != 0, axis=1)]
 
+    # Each cell takes the first line with the same space on both sides: a line is looked along
+    # only from the cells still without a space, and behind only where a space lies ahead.
     for dr, dc in ((0, 1), (1, 0), (1, 1), (1, -1)):
         step_off = steps * (dr * pw + dc)
-        ahead = first_met(step_off)
-        behind = first_met(-step_off)
-        fill = (ahead == behind) & (ahead > 0) & (value == 0)
-        value[fill] = ahead[fill]
+        todo_i = np.flatnonzero(value == 0)
+        ahead = first_met(todo_i, step_off)
+        some = ahead > 0
+        todo_i, ahead = todo_i[some], ahead[some]
+        fill = first_met(todo_i, -step_off) == ahead
+        value[todo_i[fill]] = ahead[fill]
     out = labels.copy()
     got = value > 0
     out[rows[got], cols[got]] = value[got]
@@ -901,7 +905,7 @@ def _rooms(grid: OccupancyGrid, labels: npt.NDArray[np.int32], fl: Floor,
     polygons = _outlines(grid, [(sub, sl) for _, sl, sub in present])
     for (k, sl, sub), polygon in zip(present, polygons, strict=True):
         free_sub = sub & fl.free[sl]
-        rr, cc = np.nonzero(free_sub if free_sub.any() else sub)
+        rr, cc = nonzero2(free_sub if free_sub.any() else sub)
         rr = rr + sl[0].start
         cc = cc + sl[1].start
         xs, ys = grid.cell_to_world(rr, cc)

@@ -43,7 +43,7 @@ import numpy.typing as npt
 from scipy import ndimage as ndi
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import EIGHT, take2
+from langnav.analysis.precompute import EIGHT, nonzero2, take2
 
 BoolArray = npt.NDArray[np.bool_]
 FloatArray = npt.NDArray[np.float64]
@@ -309,7 +309,7 @@ def dominant_directions(wall: BoolArray) -> list[float]:
     peaks nearly as strong (a wing at an angle) are directions too. The edge directions of
     the cells themselves would not do: a wall's pixel staircase turns them towards 45 degrees.
     """
-    rr, cc = np.nonzero(wall)
+    rr, cc = nonzero2(wall)
     if rr.size < 2:
         return []
     if rr.size > DIRECTION_MAX_CELLS:  # a fixed, even sample of the cells is as good
@@ -616,7 +616,7 @@ def _line_candidates(wall: BoolArray, dirs: list[float], resolution_m: float, pa
     fmax = (front_max_width_m + res) / res
     side = max(2, round(params.seg_wall_line_side_m / res))
     share = params.seg_wall_line_side_share * side
-    rr, cc = np.nonzero(wall)
+    rr, cc = nonzero2(wall)
     rr_f, cc_f = rr.astype(np.float64), cc.astype(np.float64)
     # A front's pieces are pieces of wall, not specks (a chair's or a table's legs, the dots a
     # row of posts leaves): small compact pieces play no part in a front.
@@ -831,15 +831,14 @@ def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: i
     leaf_cells = _leaf_cells(floor_at, wall_at, leaves[idx], u_leaf[idx], wall_face[idx], v_line[idx], res)
     leaf_of = dict(zip(idx.tolist(), leaf_cells, strict=True))
     floor_at = _with_floor(floor_at, leaf_cells)
+    # Every (side, end, depth) look of every candidate is read in one pass: (side, end, depth,
+    # candidate) in that order.
     mid = (ua[idx] + ub[idx]) / 2
-    for sign in (-1.0, 1.0):
-        runs = np.zeros(idx.size, dtype=bool)
-        for end in (ua[idx] - k.past, ub[idx] + k.past):
-            all_depths = np.ones(idx.size, dtype=bool)
-            for d in k.depths:
-                all_depths &= _runs_on(floor_at, mid, end, v_line[idx] + sign * d)
-            runs |= all_depths
-        keep[idx] &= runs
+    ends = (ua[idx] - k.past, ub[idx] + k.past)
+    looks = [(mid, end, v_line[idx] + sign * d) for sign in (-1.0, 1.0) for end in ends for d in k.depths]
+    on = _runs_on(floor_at, *(np.concatenate([look[i] for look in looks]) for i in range(3)))
+    on = np.reshape(on, (2, 2, len(k.depths), idx.size))
+    keep[idx] &= np.all(np.any(np.all(on, axis=2), axis=1), axis=0)
     out: list[WallGap] = []
     for i in np.flatnonzero(keep).tolist():
         r2, c2 = floor_at.rc(np.array([ua[i], ub[i]]), np.full(2, v_line[i]))

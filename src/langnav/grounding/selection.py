@@ -287,7 +287,10 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
     parts. Nor do two wide openings between the same two spaces (``round_a_thing``): a long table
     parting a room leaves a way round each of its ends, and a person walks round it in one room."""
     round_ends = round_a_thing(analysis)
-    gaps = [d for d in analysis.doors if is_gap(d, analysis) and d not in round_ends] + round_ends
+    # (A gap the analysis reads as no door at all, an opening, parts no more: the way past a cart
+    # standing against a corridor's wall is the way round its end.)
+    gaps = [d for d in (*analysis.doors, *analysis.openings)
+            if is_gap(d, analysis) and d not in round_ends] + round_ends
     by_id = {r.id: r for r in analysis.rooms}
     group = [space]
     seen = {space.id}
@@ -644,8 +647,10 @@ def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
         return list(doors_of(analysis))
     if kind == Kind.NARROW_PASSAGE:
         passages = list(analysis.narrow_passages)
-        # a gap inside a passage the analysis found is that passage's pinch, not a second one
-        gaps = [d for d in analysis.doors if d.width_m < NARROW_GAP_MAX_M and not any(
+        # a gap inside a passage the analysis found is that passage's pinch, not a second one;
+        # a gap the analysis reads as no door (an opening: the way past a partition's end or a
+        # cart) is squeezed through all the same
+        gaps = [d for d in (*analysis.doors, *analysis.openings) if d.width_m < NARROW_GAP_MAX_M and not any(
             math.dist(d.center, closest_on_segment(d.center, p.ends[0], p.ends[1])) <= p.width_m for p in passages)]
         # and the gaps between two things standing free, where the analysis has none of its own
         between = [g for g in gaps_between_things(analysis) if not any(

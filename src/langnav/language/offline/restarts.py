@@ -26,6 +26,7 @@ from collections.abc import Callable
 from typing import Final
 
 from langnav.language.intent import Amount, Direction, Movement, Step
+from langnav.language.offline.ask import spatial
 from langnav.language.offline.corrections import DISMAY_RE
 from langnav.language.offline.normalize import normalize
 from langnav.language.offline.numbers import NUMBER, Quantity, QuantityKind, find_quantities
@@ -227,9 +228,11 @@ _SIDES: Final = frozenset({Direction.LEFT, Direction.RIGHT})
 
 
 def _bare_side_turn(reading: Reading) -> Step | None:
-    """A turn to a side with no amount, no heading and no place said ("turn right")."""
+    """A turn to a side with no amount, no heading and no place said ("turn right"), and nothing else: a
+    turn that asked something ("turn left a lot": how many degrees?) or left words unread is no bare turn,
+    and taking it back would drop the question with it."""
     turn = _only_turn(reading)
-    if turn is None or turn.direction not in _SIDES or ASK_SIDE in reading.asks:
+    if turn is None or turn.direction not in _SIDES or reading.asks or reading.unread:
         return None
     if turn.amount != Amount.DEFAULT or turn.angle_deg is not None or _facing(turn):
         return None
@@ -270,8 +273,25 @@ def _only_pauses(between: str) -> bool:
     """Nothing but pauses, fillers and exclamations (see _PAUSE_WORDS), or words the reading does not know at
     all ("turn left, oh bugger, right"; "turn right, jeez, turn left"): an oath or a name, which asks for no
     motion of its own (a word that orders, "then", or an instruction, "take a picture", is known)."""
-    words = re.findall(r"[a-z']+", DISMAY_RE.sub(" ", between.lower()))
-    return all(w in _PAUSE_WORDS or w not in VOCABULARY for w in words)
+    words = re.findall(r"[a-z0-9&']+", DISMAY_RE.sub(" ", between.lower()))
+    return all(w in _PAUSE_WORDS or _oath(w) for w in words)
+
+
+#: An unknown word is taken for an oath or a name only when it is a word of some length: a short token
+#: the reading does not know ("x", "n", "den", "&") may be an amount or an ordering word in chat spelling.
+_OATH_MIN_LETTERS: Final = 4
+
+
+#: Words that put instructions in order ("turn left, later, turn right"): what they join was meant, each of it.
+_ORDER_RE: Final = re.compile(r"\b(?:then|next|after|afterwards|later|subsequently|second|secondly|plus|also|too|and|"
+                              r"den|n|&|followed)\b|&", re.IGNORECASE)
+
+
+def _oath(word: str) -> bool:
+    """A word the reading does not know at all, long enough to be an oath or a name, and not one that asks
+    for a motion again or sizes one ("twice", "again")."""
+    return (word.isalpha() and len(word) >= _OATH_MIN_LETTERS and word not in VOCABULARY
+            and not _ONCE_MORE_RE.search(word) and not _ORDER_RE.search(word) and not spatial(word))
 
 
 def drop_false_start_turns(clauses: list[str], text: str, read: ClauseReader) -> list[str]:
@@ -289,11 +309,18 @@ def drop_false_start_turns(clauses: list[str], text: str, read: ClauseReader) ->
             while kept:
                 said = [k for k in kept if not _interjection(clauses[k], read)]  # "oh bugger": no instruction
                 first = _bare_side_turn(read(clauses[said[-1]])) if said else None
-                if first is None or first.direction == turn.direction or not _taken_back(text, spans, said[-1], i):
+                if (first is None or first.direction == turn.direction or not _said_bare(clauses[said[-1]])
+                        or _ORDER_RE.match(clause) or not _taken_back(text, spans, said[-1], i)):
                     break
                 del kept[kept.index(said[-1]):]  # "turn right, turn left, ...": the turn started and taken back at once
         kept.append(i)
     return [clauses[i] for i in kept]
+
+
+def _said_bare(clause: str) -> bool:
+    """The clause as said is a turn and pauses only ("uh, turn left"): a word joined to it that orders
+    ("turn left next") or that the reading left aside makes it more than a start taken back."""
+    return _only_pauses(_BARE_TURN_RE.sub(" ", clause.lower()))
 
 
 def _interjection(clause: str, read: ClauseReader) -> bool:
