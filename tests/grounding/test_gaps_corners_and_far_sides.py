@@ -193,3 +193,32 @@ def test_the_gap_between_a_thing_standing_free_and_a_box_is_a_narrow_passage() -
     x, y = last_pose(a, (11.85, 3.0, 90.0), movement="navigate", detail="through",
                      target={"kind": "narrow_passage", "side": "ahead"})
     assert abs(x - 11.85) <= 0.3 and 6.3 + THROUGH_MIN_PAST_M - 0.05 <= y <= 5.9 + 2.0
+
+
+@pytest.fixture(scope="module")
+def gap_far() -> MapAnalysis:
+    """Two rooms joined by a 0.9 m doorway at x 6, y 4; in the right-hand room two thin screens end to
+    end with a 0.6 m gap between them (x 10-10.6, y 2.5-2.7). (The session-9 review's map.)"""
+    b = MapBuilder(14.0, 8.0)
+    b.room(1.0, 1.0, 13.0, 7.0)
+    b.wall(6.0, 1.0, 6.0, 7.0)
+    b.door_v(6.0, 4.0, 0.9)
+    b.box(8.0, 2.5, 10.0, 2.7)
+    b.box(10.6, 2.5, 12.0, 2.7)
+    return analyze(b.build("gap_far"))
+
+
+def test_a_gap_between_things_behind_a_wall_is_not_the_gap_in_front(gap_far: MapAnalysis) -> None:
+    # the robot in the left room facing the doorway: "the gap" is the doorway, not the screens' gap 7 m
+    # away in the other room; "the narrow passage" sees none from here
+    assert gaps_between_things(gap_far), "the screens' gap exists"
+    x, _ = last_pose(gap_far, (3.0, 4.0, 0.0), movement="navigate", detail="through", target={"kind": "door"},
+                     text="go through the gap")
+    assert 6.0 < x < 8.0
+    with pytest.raises(GroundingError):
+        ground(Intent(steps=[Step.model_validate({"movement": "navigate", "detail": "through",
+                                                  "target": {"kind": "narrow_passage"}})]), gap_far, (3.0, 4.0, 0.0))
+    # from the right-hand room, in sight, the screens' gap is the narrow passage
+    x, y = last_pose(gap_far, (9.0, 4.0, 270.0), movement="navigate", detail="through",
+                     target={"kind": "narrow_passage"})
+    assert 10.0 <= x <= 10.6 and y < 2.5

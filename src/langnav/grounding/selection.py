@@ -788,6 +788,12 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         except GroundingError:
             pass  # no gap matches the words: "the gap" is a doorway
     pool = elements_of_kind(analysis, ref.kind)
+    if ref.kind == Kind.NARROW_PASSAGE:
+        # a gap between two things is the robot's to name only where it sees it: noise and furniture
+        # leave hundreds such gaps on a real map, and one in another room is no "gap" a person in this
+        # one points at (the doorway in front is) -- see _gap_in_sight
+        between = {id(g) for g in gaps_between_things(analysis)}
+        pool = [e for e in pool if id(e) not in between or _gap_in_sight(analysis, pose.xy, e)]
     noun_plural = KIND_NOUN[ref.kind][1]
     if not pool:
         raise GroundingError(f"I see no {noun_plural} in this map.")
@@ -958,6 +964,21 @@ def gaps_between_things(analysis: MapAnalysis) -> list[NarrowPassage]:
 
 
 _GAPS: weakref.WeakKeyDictionary[MapAnalysis, tuple[NarrowPassage, ...]] = weakref.WeakKeyDictionary()
+
+
+def _gap_in_sight(analysis: MapAnalysis, xy: Point, gap: Element) -> bool:
+    """Whether the straight line from the robot to the middle of a gap between two things crosses no
+    wall (``walls_only``: things do not hide it, a person sees past them) and stays on known cells: the
+    gap is in the robot's sight, not behind a wall in another room."""
+    grid = analysis.grid
+    centre = reference_point(gap)
+    n = max(2, math.ceil(math.dist(xy, centre) / (grid.resolution_m / 2)))
+    ts = np.linspace(0.0, 1.0, n + 1)
+    rr, cc = grid.world_to_index(xy[0] + (centre[0] - xy[0]) * ts, xy[1] + (centre[1] - xy[1]) * ts)
+    inside = grid.in_bounds(rr, cc)
+    if not inside.all():
+        return False
+    return not walls_only(analysis)[rr, cc].any() and not np.any(grid.cells[rr, cc] == UNKNOWN)
 
 
 def _open_between(analysis: MapAnalysis, p: Point, q: Point) -> bool:
