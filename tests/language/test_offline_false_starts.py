@@ -39,6 +39,10 @@ def _plan(prompt: str) -> list[tuple[str, str | None, float | None, float | None
     ("turn right, heck, turn left", [("rotate", "left", None, None)]),
     # a stop said between them is no pause ("turn right, stop, turn left" is read by drop_stopped)
     ("turn right ninety, no hang on, sixty", [("rotate", "right", None, 60.0)]),
+    # a side said on its own is a bare turn too (the session-9 review)
+    ("rotate left. left, uh, turn right", [("rotate", "right", None, None)]),
+    ("left. no, right. turn left ninety", [("rotate", "left", None, 90.0)]),
+    ("no, right, uh, turn left ninety, uh, go forward two metres", [("rotate", "left", None, 90.0), ("move", "forward", 2.0, None)]),
 ])
 def test_the_last_version_counts(prompt: str, expected: list[tuple[str, str | None, float | None, float | None]]) -> None:
     assert _plan(prompt) == expected

@@ -16,7 +16,8 @@ abbreviation, is a particle
    word stands where the amount goes), and it does not stand where a place, an object, a unit or a corrected word goes:
    right after a verb ("get konti"), "the", "to", "your", a number, or a correction ("no", "sorry"); or
 2. when it is said alone between an instruction and its amount ("go forward, ano, one and a half metres"),
-   as a filler is.
+   as a filler is -- only a known filler of another language (``FOREIGN_FILLERS``), as also after a move or
+   turn whose amount comes next: an unknown word there may be the way or the amount itself.
 
 Anything else stays, and is read, or asked about, as before: a word standing where the place or the unit goes
 ("go to the konti", "take konti", "go forward three konti"), a word after a correction ("turn left, no, derecha"), a word
@@ -38,6 +39,15 @@ from langnav.language.offline.numbers import NUMBER_WORD_LIST, find_quantities
 from langnav.language.offline.reading import ASK_DISTANCE, Reading
 from langnav.language.offline.vocabulary import VOCABULARY
 
+#: The hesitation words of other languages, where English says "um" (a closed class in each language: Tagalog
+#: "ano", Japanese "eto" / "ano", Arabic "yani", Hindi "matlab", Spanish "este" / "pues", Portuguese "tipo",
+#: Italian "cioe", German "aeh" / "halt", French "euh" / "bah", Polish "znaczy", Russian "nu", Korean "eum" /
+#: "geu"). Only these are taken for a filler where a word stands BETWEEN an instruction and its amount, or
+#: after an instruction with no amount of its own: any other unknown word there may be the way or the amount
+#: said in the speaker's other language ("move, atras, two metres": Spanish "back"; "turn left, migi, forty
+#: five": Japanese "right"; "go back konti, a little"), and the robot asks.
+FOREIGN_FILLERS: Final = frozenset({"ano", "eto", "etto", "ettoo", "yani", "yaani", "matlab", "este", "pues", "tipo",
+                                    "cioe", "aeh", "halt", "euh", "bah", "znaczy", "nu", "eum", "geu", "ehm"})
 #: Reads one clause on its own (the parser's ``read_clause``).
 ClauseReader = Callable[[str], Reading]
 #: At most this many particles end one clause ("turn around sige po"); more unknown words are no particles.
@@ -121,8 +131,8 @@ def without_particles(clauses: list[str], read: ClauseReader, known_names: Seque
         words = clause.split()
         following = clauses[i + 1] if i + 1 < len(clauses) else None
         if len(words) == 1:
-            if out and following is not None and is_particle_word(words[0], known_names) \
-                    and _amount_only(following):
+            if out and following is not None and words[0].lower().strip(_MARKS) in FOREIGN_FILLERS \
+                    and is_particle_word(words[0], known_names) and _amount_only(following):
                 continue  # rule 2: a filler between an instruction and its amount
             out.append(clause)
             continue
@@ -130,7 +140,7 @@ def without_particles(clauses: list[str], read: ClauseReader, known_names: Seque
         while len(words) - keep < MAX_PARTICLES and keep > 1 and is_particle_word(words[keep - 1], known_names):
             keep -= 1
         if keep < len(words) and _particle_slot(words[keep - 1]) \
-                and _whole(" ".join(words[:keep]), following, read):
+                and _whole(" ".join(words[:keep]), following, read, words[keep:]):
             out.append(" ".join(words[:keep]))  # rule 1
             continue
         out.append(clause)
@@ -144,9 +154,10 @@ def _particle_slot(before: str) -> bool:
         and not any(ch.isdigit() for ch in bare)
 
 
-def _whole(rest: str, following: str | None, read: ClauseReader) -> bool:
+def _whole(rest: str, following: str | None, read: ClauseReader, particles: Sequence[str] = ()) -> bool:
     """``rest`` reads as a whole instruction: steps, nothing unread, nothing to ask; a move or turn missing its
-    amount only when the next clause gives an amount ("go back konti, a little")."""
+    amount only when the next clause gives an amount and the words dropped are fillers (``FOREIGN_FILLERS``:
+    "go back, ano, a little")."""
     reading = read(rest)
     if not reading.steps or reading.problem is not None or reading.unread:
         return False
@@ -155,7 +166,8 @@ def _whole(rest: str, following: str | None, read: ClauseReader) -> bool:
         # goes, and may be it in the speaker's other language ("turn right cuarenta"); only with the amount said
         # next ("go back konti, a little") is the instruction whole without it
         return following is not None and _amount_only(following) \
-            and all(q.startswith(_ASK_DISTANCE_START) for q in reading.asks)
+            and all(q.startswith(_ASK_DISTANCE_START) for q in reading.asks) \
+            and all(w.lower().strip(_MARKS) in FOREIGN_FILLERS for w in particles)
     return True
 
 

@@ -320,7 +320,11 @@ def drop_false_start_turns(clauses: list[str], text: str, read: ClauseReader) ->
 def _said_bare(clause: str) -> bool:
     """The clause as said is a turn and pauses only ("uh, turn left"): a word joined to it that orders
     ("turn left next") or that the reading left aside makes it more than a start taken back."""
-    return _only_pauses(_BARE_TURN_RE.sub(" ", clause.lower()))
+    return _only_pauses(_SIDE_WORD_RE.sub(" ", _BARE_TURN_RE.sub(" ", clause.lower())))
+
+
+#: A side said on its own ("left.", "no, right"): a bare turn too, said short.
+_SIDE_WORD_RE: Final = re.compile(r"\b(?:left|right)\b")
 
 
 def _interjection(clause: str, read: ClauseReader) -> bool:
