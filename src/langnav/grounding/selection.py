@@ -26,6 +26,7 @@ from dataclasses import dataclass
 from typing import Final
 
 import numpy as np
+import numpy.typing as npt
 from scipy import ndimage
 from scipy.spatial import cKDTree
 
@@ -61,7 +62,7 @@ from langnav.grounding.geometry import (
 )
 from langnav.language.intent import Element as Kind
 from langnav.language.intent import ElementRef, Landmark, Place, Relation, Side, Superlative
-from langnav.maps.grid import FREE, UNKNOWN
+from langnav.maps.grid import FREE, UNKNOWN, OccupancyGrid
 
 #: A robot standing in a doorway belongs to the nearest space within this distance.
 SPACE_SNAP_M: Final = 0.6
@@ -966,15 +967,20 @@ def gaps_between_things(analysis: MapAnalysis) -> list[NarrowPassage]:
 _GAPS: weakref.WeakKeyDictionary[MapAnalysis, tuple[NarrowPassage, ...]] = weakref.WeakKeyDictionary()
 
 
+def _line_cells(grid: OccupancyGrid, p: Point, q: Point) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]:
+    """The cells under the straight line from ``p`` to ``q``, both ends included, sampled every half cell
+    (so no cell the line crosses is skipped); row and column indices, not checked against the bounds."""
+    n = max(2, math.ceil(math.dist(p, q) / (grid.resolution_m / 2)))
+    ts = np.linspace(0.0, 1.0, n + 1)
+    return grid.world_to_index(p[0] + (q[0] - p[0]) * ts, p[1] + (q[1] - p[1]) * ts)
+
+
 def _gap_in_sight(analysis: MapAnalysis, xy: Point, gap: Element) -> bool:
     """Whether the straight line from the robot to the middle of a gap between two things crosses no
     wall (``walls_only``: things do not hide it, a person sees past them) and stays on known cells: the
     gap is in the robot's sight, not behind a wall in another room."""
     grid = analysis.grid
-    centre = reference_point(gap)
-    n = max(2, math.ceil(math.dist(xy, centre) / (grid.resolution_m / 2)))
-    ts = np.linspace(0.0, 1.0, n + 1)
-    rr, cc = grid.world_to_index(xy[0] + (centre[0] - xy[0]) * ts, xy[1] + (centre[1] - xy[1]) * ts)
+    rr, cc = _line_cells(grid, xy, reference_point(gap))
     inside = grid.in_bounds(rr, cc)
     if not inside.all():
         return False
@@ -985,9 +991,8 @@ def _open_between(analysis: MapAnalysis, p: Point, q: Point) -> bool:
     """No occupied or unknown cell on the straight way between two things' nearest cells (their own
     two cells apart): the gap is open floor, not a wall or a third thing."""
     grid = analysis.grid
-    n = max(2, math.ceil(math.dist(p, q) / (grid.resolution_m / 2)))
-    ts = np.linspace(0.0, 1.0, n + 1)[1:-1]
-    rr, cc = grid.world_to_index(p[0] + (q[0] - p[0]) * ts, p[1] + (q[1] - p[1]) * ts)
+    rr, cc = _line_cells(grid, p, q)
+    rr, cc = rr[1:-1], cc[1:-1]  # the two things' own cells are the ends
     (pr, pc), (qr, qc) = grid.world_to_index(p[0], p[1]), grid.world_to_index(q[0], q[1])
     inside = grid.in_bounds(rr, cc) & ~((rr == pr) & (cc == pc)) & ~((rr == qr) & (cc == qc))
     return bool(inside.any()) and bool(np.all(grid.cells[rr[inside], cc[inside]] == FREE))

@@ -224,6 +224,8 @@ _PAUSE_WORDS: Final = frozenset({"uh", "um", "er", "erm", "hmm", "ah", "oh", "eh
                                  "wait", "no", "sorry", "robot", "please", "now", "just", "i", "mean"})
 #: A bare turn as said ("turn right", "rotate to the left"): between two turns, a false start too.
 _BARE_TURN_RE: Final = re.compile(r"\b(?:turn|rotate|spin|pivot|swing|veer)\s+(?:to\s+(?:the|your)\s+)?(?:left|right)\b")
+#: A side said on its own ("left.", "no, right"): a bare turn too, said short.
+_SIDE_WORD_RE: Final = re.compile(r"\b(?:left|right)\b")
 _SIDES: Final = frozenset({Direction.LEFT, Direction.RIGHT})
 
 
@@ -241,7 +243,7 @@ def _bare_side_turn(reading: Reading) -> Step | None:
 
 #: A corrected clause is found in the prompt by at least its first two words as said (a verb and its
 #: side: "rotate right"); one word alone ("rotate") could be any other instruction's.
-_SAID_PREFIX_WORDS = 2
+_SAID_PREFIX_WORDS: Final = 2
 
 
 def _spans(text: str, clauses: list[str]) -> list[tuple[int, int] | None]:
@@ -284,7 +286,7 @@ _OATH_MIN_LETTERS: Final = 4
 
 #: Words that put instructions in order ("turn left, later, turn right"): what they join was meant, each of it.
 _ORDER_RE: Final = re.compile(r"\b(?:then|next|after|afterwards|later|subsequently|second|secondly|plus|also|too|and|"
-                              r"den|n|&|followed)\b|&", re.IGNORECASE)
+                              r"den|n|followed)\b|&", re.IGNORECASE)
 
 
 def _oath(word: str) -> bool:
@@ -322,9 +324,6 @@ def _said_bare(clause: str) -> bool:
     ("turn left next") or that the reading left aside makes it more than a start taken back."""
     return _only_pauses(_SIDE_WORD_RE.sub(" ", _BARE_TURN_RE.sub(" ", clause.lower())))
 
-
-#: A side said on its own ("left.", "no, right"): a bare turn too, said short.
-_SIDE_WORD_RE: Final = re.compile(r"\b(?:left|right)\b")
 
 
 def _interjection(clause: str, read: ClauseReader) -> bool:
