@@ -37,7 +37,7 @@ from langnav.grounding.ground import (
 from langnav.grounding.history import PoseHistory
 from langnav.language.errors import TranslationError
 from langnav.language.intent import Intent, Step
-from langnav.language.offline.ask import ask_message, spatial
+from langnav.language.offline.ask import ask_message, only_stops, spatial
 from langnav.language.translator import Context, Translator, clean_prompt
 from langnav.maps.grid import OccupancyGrid
 from langnav.places.errors import PlaceError
@@ -204,7 +204,7 @@ class Planner:
             return self._refusal(prompt, intent, "I will not run that: " + "; ".join(exc.reasons) + ".", name)
         except GroundingError as exc:
             return self._refusal(prompt, intent, str(exc), name)
-        doubtful = [u for u in intent.unread if spatial(u)]
+        doubtful = [] if only_stops(intent.steps) else [u for u in intent.unread if spatial(u)]
         if doubtful:
             # ask, don't guess: words not read that could change where or how far the robot goes
             return self._refusal(prompt, intent, unread_question(intent, grounded, doubtful), name)

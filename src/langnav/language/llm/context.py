@@ -209,6 +209,17 @@ Talk with a way, a place, a stop or a question in it is kept, except a note of a
 a word shouted before an instruction ("corner! turn right ninety" -> only the turn; "corner!" alone -> \
 ask). A count-in said without pauses ("one two three four, go back") is no number; a stammer \
 ("g-g-go", "b-b-back") is the word; "not right, left" -> left; "where you now" -> where are you.
+- Radio and relays: "disregard" or "belay" alone takes back the instruction before it, like "scratch that" \
+("go back four feet, disregard, go back one foot" -> back 1 foot only); "what's your twenty" -> where are you; \
+an interpreter or helper relays a request ("he's signing go forward", "she'd like you to back up a metre", "he \
+asks where you are") -> the request itself; "is it okay to turn left? yes, please do" -> rotate left (consent \
+asks for the action just named; the question alone asks nothing of the robot). "even" before an amount is \
+"just" ("go even two metres forward" -> forward 2).
+- Other languages: "yes" words ("ja", "oui", "si", "da", "tak", "hai") and fillers ("yani", "ano", "eto") mean \
+nothing ("reverse, ano, three metres" -> back 3). A way said in another language ("izquierda", "derecha", \
+"links", "rechts", "gauche", "sinistra", "hidari", "migi") or a word you do not know between two instructions \
+("turn left thirty, nein, turn right thirty": it may take the first back) -> ask; never run both, never guess \
+the way. A stop with such a word ("nee, stop") is still a stop.
 - Ask, don't guess: when the side of a turn ("rotate 45 degrees"), the unit of a distance ("move forward 3") \
 or any word about where or how far is unclear, give no steps; in clarification say what you understood and \
 ask about the rest."""

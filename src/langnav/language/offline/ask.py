@@ -5,6 +5,7 @@ was understood (the plan it would run) and asks about the rest.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from typing import Final
 
@@ -12,6 +13,7 @@ from langnav.language.intent import Amount, Direction, Movement, Step
 from langnav.language.offline import lexicon as lx
 from langnav.language.offline.compass import HEADINGS_DEG
 from langnav.language.offline.numbers import ANGLE_UNITS_DEG, FRACTIONS, LENGTH_UNITS_M, ONES, TENS
+from langnav.language.offline.reading import ASK_SIDE
 
 #: Words that say where or how far: sides, directions, places, amounts, units, compass points.
 #: One of them left unread means the plan may not be what was asked.
@@ -29,6 +31,8 @@ SPATIAL_WORDS: Final = frozenset(
                            "x", "y", "+x", "-x", "+y", "-y", "axis"}
     # a superlative picks which place ("the smallest room"): one left unread may pick another
     | {w for w in lx.SUPERLATIVES if w.endswith("est") and " " not in w}
+    # the ways said in another language ("izquierda", "links"): one left unread may be the way meant
+    | lx.FOREIGN_WAY_WORDS
 ) - lx.STOPWORDS - {"a", "an", "the", "of", "to", "in", "on", "at", "up", "one", "way", "port", "positive",
                     "negative", "wall", "turn", "u", "face", "about", "other", "opposite", "direction", "came",
                     "we", "you", "your", "side", "hand", "closer", "nearer"} | {"wall", "walls", "door", "doors"}
@@ -40,12 +44,22 @@ def spatial(words: str) -> list[str]:
     return [w for w in words.lower().split() if w.strip(",.;:!?'\"") in SPATIAL_WORDS]
 
 
+def only_stops(steps: Sequence[Step]) -> bool:
+    """A plan that only stops ("nee nee, stop"; "dur, stop!"): a word left unread next to it cannot make the robot
+    go farther or turn more than stopping does, so it is no reason to hold the stop back and ask."""
+    return bool(steps) and all(s.movement == Movement.STOP for s in steps)
+
+
 def ask_message(steps: Sequence[Step], unread: Sequence[str], questions: Sequence[str], *,
                 plan: str | None = None) -> str:
     """What was understood, what was not, and the question: nothing runs until the user answers.
     ``plan`` is the understood plan in words when the caller has better ones than the steps' (the
     grounded plan's notes: "to the second door on your left")."""
-    plan = describe_steps(steps) if plan is None else plan
+    if plan is None:
+        # a turn whose side is asked about carries a placeholder side: say "which way?", not the placeholder
+        sideless = ASK_SIDE in questions
+        plan = ", then ".join(_describe(s, sideless and s.movement == Movement.ROTATE and not _SIDE_SAID_RE.search(s.text))
+                              for s in steps)
     understood = f"I understood: {plan}." if plan else f"{UNDERSTOOD_NONE}."
     parts = [understood]
     if unread:
@@ -61,7 +75,15 @@ def describe_steps(steps: Sequence[Step]) -> str:
     return ", then ".join(_describe(s) for s in steps)
 
 
-def _describe(step: Step) -> str:
+#: A side said in a turn's words (its placeholder side is not said).
+_SIDE_SAID_RE: Final = re.compile(r"\b(?:left|right|clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw|port|starboard)\b",
+                                  re.IGNORECASE)
+
+
+def _describe(step: Step, side_asked: bool = False) -> str:
+    if step.movement == Movement.ROTATE and side_asked and step.heading_deg is None \
+            and step.direction in (Direction.LEFT, Direction.RIGHT):
+        return f"turn {_amount(step, 'degrees')} (which way?)"
     if step.movement == Movement.ROTATE:
         if step.heading_deg is not None:
             name = next((k for k, v in HEADINGS_DEG.items() if abs(v - step.heading_deg) < 1e-6),

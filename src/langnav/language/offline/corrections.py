@@ -44,11 +44,13 @@ DISMAY: Final = (r"oops|oopsie|whoops|whoopsie|ar+gh+|ugh+|aiy(?:a+h?|o+h?)|alam
 CORRECTION_START_RE: Final = re.compile(
     rf"^(?:(?:{DISMAY})\b[\s,!.]*|"
     r"(?:(?:oh|ah|uh|um)\s*,?\s+(?=sorry|no\b|i\s+mean)|actually|no\s+(?:wait|hang\s+on|hold\s+on)|no(?!\s+(?:further|longer|more|need)\b)|na+h|naw|nope|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
-    r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|my\s+(?:bad|mistake)|or\s+rather|rather|make\s+that|make\s+it|correction|"
+    r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|my\s+(?:bad|mistake|error|fault)|or\s+rather|rather|make\s+that|make\s+it|correction|"
     r"oops)\b[\s,]*)+", re.IGNORECASE)
-#: Words that take back what was said before ("never mind", "scratch that").
-CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|belay\s+(?:that|the\s+last)|forget\s+(?:it|that|everything|all\s+(?:of\s+)?that)|"
-                              r"cancel\s+that|ignore\s+that|disregard\s+that)\b[\s,]*", re.IGNORECASE)
+#: Words that take back what was said before ("never mind", "scratch that"). Radio and naval procedure say it
+#: with the word alone: "disregard" (ACP 125: the last transmission was in error) and "belay" (cancel the order).
+CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|forget\s+(?:it|that|everything|all\s+(?:of\s+)?that)|"
+                              r"(?:belay|disregard)(?:\s+(?:that|the\s+last|my\s+last)(?:\s+(?:one|order|transmission))?)?|"
+                              r"cancel\s+that|ignore\s+that)\b[\s,]*", re.IGNORECASE)
 #: Of those, the words that drop the whole request so far, not only its last instruction: "never mind"
 #: dismisses what the speaker was asking for ("keep going two feet, go south, go two t- ... never mind,
 #: so go three feet, turn south"); "scratch that" takes back the last thing said.
@@ -97,13 +99,17 @@ _LEAD_IN: Final = re.compile(r"^(?:(?:ok|okay|so|now|alright|robot|please|yeah|y
 
 
 #: Words that only soften or acknowledge ("about,", "yeah", "okay so"): a clause of them says nothing.
-_HEDGE_WORDS: Final = frozenset({"about", "like", "roughly", "approximately", "say", "so", "well", "yeah", "yes",
-                                 "yep", "okay", "ok", "alright", "sure", "good", "great", "cool",
-                                 "um", "uh", "hmm", "robot", "please", "now", "just",
+_HEDGE_WORDS: Final = lx.HESITATIONS | frozenset({"about", "like", "roughly", "approximately", "say", "so", "well",
+                                 "yeah", "yes", "yep", "okay", "ok", "alright", "sure", "good", "great", "cool",
+                                 "robot", "please", "now", "just",
                                  # praise and thanks for what was just done ("lovely, now ..."; "brilliant.")
                                  "lovely", "brilliant", "perfect", "nice", "excellent", "grand", "cheers", "thanks",
                                  "ta", "awesome", "sweet", "super", "fantastic", "wonderful", "splendid", "marvellous",
-                                 "champion", "beautiful", "superb", "fine"})
+                                 "champion", "beautiful", "superb", "fine",
+                                 # "yes" in the languages most often spoken alongside English (German, Dutch and
+                                 # Scandinavian "ja", French "oui", Spanish / Italian "si", Portuguese "sim", Russian
+                                 # "da", Polish "tak", Turkish "evet", Japanese "hai"): assent, never a correction
+                                 "ja", "oui", "si", "sim", "da", "tak", "evet", "hai"})
 
 
 def is_hedge(clause: str) -> bool:
@@ -321,3 +327,31 @@ def _restated(previous: str, correction: str) -> str:
         return correction
     amounts = " ".join(norm_prev[q.start:q.end] for q in find_quantities(norm_prev))
     return f"{norm_new} {amounts}" if amounts else correction
+
+
+#: A question whether an instruction may be done ("is it safe to turn right ninety degrees?", "would it be okay
+#: for you to go forward?"): no request yet, only the instruction asked about (group ``x``).
+_MAY_I_QUESTION_RE: Final = re.compile(
+    r"^(?:(?:so|and|okay|ok|um|well)\s+)*(?:is\s+it|would\s+it\s+be|will\s+it\s+be)\s+(?:safe|ok|okay|alright|all\s+right|"
+    r"possible|fine)\s+(?:for\s+(?:you|u)\s+)?(?:to\s+)?(?P<x>.+)$")
+#: Consent said after such a question ("okay, please do", "yes, do it", "go for it"): the instruction asked
+#: about is now asked for. (A bare "go ahead" opens a request, see _LEAD_IN; with nothing after it, it consents.)
+_CONSENT_RE: Final = re.compile(
+    r"^(?:(?:ok|okay|yes|yeah|yep|alright|good|great|then|so|in\s+that\s+case|right)\s+)*(?:please\s+do(?:\s+(?:it|so|that))?|"
+    r"(?:please\s+)?do\s+(?:it|so|that)(?:\s+(?:please|then|now))*|go\s+(?:ahead|for\s+it)(?:\s+(?:please|then|now))*)$")
+
+
+def read_consents(clauses: list[str]) -> list[str]:
+    """The clauses with each question whether an instruction may be done that a consent follows ("is it safe to
+    turn right ninety degrees? okay, please do") read as that instruction: English "do it" / "please do" points
+    back at the action just named. A question with no consent after it stays a question (the robot answers
+    that it cannot tell, and runs nothing)."""
+    out: list[str] = []
+    for clause in clauses:
+        if out and _CONSENT_RE.match(normalize(clause)):
+            asked = _MAY_I_QUESTION_RE.match(normalize(out[-1]))
+            if asked is not None:
+                out[-1] = asked.group("x")
+                continue
+        out.append(clause)
+    return out

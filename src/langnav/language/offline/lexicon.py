@@ -320,6 +320,8 @@ QUERY_POSE_PATTERNS: Final = (
     r"\bwhere\s+(?:is\s+it|are\s+we)\b", r"^\s*where\s+(?:you|u)\s+(?:are|r)\b",
     r"\bwhere\s+(?:is|are|r)\s+(?:you|u|ya)\b(?!\s+(?:going|heading|headed|driving|off\s+to))", r"\b(?:tell|show|say|know|report)\b.*\bwhere\s+you\s+are\b", r"\blocali[sz]e\s+yourself\b",
     r"\bwhat\s+is\s+your\s+(?:position|location|pose)\b", r"\bwhere\s+abouts\b",
+    # "what's your twenty?": radio ten-code 10-20 is "location" (police, taxi and CB radio)
+    r"\bwhat(?:'?s|\s+is)\s+(?:your|ur|the\s+robot'?s)\s+(?:twenty|20|10-20|ten[\s-]twenty)\b",
     r"\bwhat\s+room\s+are\s+you\s+in\b", r"\bwhere\s+have\s+you\s+got\s+to\b",
     # "where you at?" (the copula dropped, as many English dialects do); "where do you stand now?" (where
     # one stands is where one is, as learners and formal speakers ask it)
@@ -442,9 +444,25 @@ MUCH_PATTERNS: Final = (
 )
 
 # ------------------------------------------------------------------------------ filler & safety
-#: Sounds said while thinking ("um", "uhh", "erm", "hmm"): filler wherever they stand (the side
+#: Hesitation sounds, the one list (speech drops them before anything is read; the readings that come after
+#: count them as pauses too): no meaning in any position. ("em" is how Irish and Scottish speech is written for
+#: "um"; the pronoun "'em" keeps its apostrophe and is read as "them" first, see ``speech.ELIDED``.)
+HESITATIONS: Final = frozenset({
+    "uh", "uhh", "uhhh", "uhhhh", "um", "umm", "ummm", "uhm", "uhmm", "hmm", "hmmm", "hm", "er", "erm", "err",
+    "ah", "ahh", "eh", "mmm", "mhm", "huh", "ehm", "ooh", "oooh", "ohh", "aah", "phew", "hmph", "em", "emm",
+})
+#: The same sounds drawn out to any length ("ummmm", "uhhhhh"), as a regex: filler wherever they stand (the side
 #: talk reader knows more sounds, which are words elsewhere: "oh", "wow").
 HESITATION_SOUNDS: Final = r"um+|uh+|er+m?|hmm+"
+#: Words that put instructions in order, the one list, read in three ways:
+#: ``SEQUENCE_WORDS``: with one of them in a prompt, the same instruction said twice is meant twice ("turn left 90
+#: degrees, then turn left 90 degrees"; ``translator``); ``ORDER_WORDS``: those and the words that join or count
+#: instructions: between a turn and a turn to the other side, any of them says both are meant ("turn left, later,
+#: turn right"; ``restarts``); ``LATE_FILLER_PATTERNS`` (below): the ones read as nothing once a clause's elements
+#: are read ("first" may be an ordinal, "and" may join the two elements of "between"; ``parser``).
+SEQUENCE_WORDS: Final = ("then", "after that", "afterwards", "next", "followed by")
+ORDER_WORDS: Final = (*SEQUENCE_WORDS, "after", "later", "subsequently", "second", "secondly", "plus", "also", "too",
+                      "and", "den", "n", "followed")
 #: What people call the robot when they speak to it ("robot", "buddy"): filler wherever said
 #: ("dear robot" too; the side talk reader adds radio call words, which are words elsewhere).
 ROBOT_NAMES: Final = ("robot", "robo", "buddy", "mate")
@@ -523,8 +541,7 @@ SAFE_AVOIDANCE_PATTERNS: Final = (
     r"(?:the\s+|any\s+|a\s+)?(?:\w+\s+)?(?:walls?|obstacles?|objects?|things?|boxes?|anything|doors?|furniture)\b",
 )
 
-#: Filler read only after the elements and their details ("first" may be an ordinal, "and" may
-#: join the two elements of "between").
+#: Ordering words read as filler only after the elements and their details (see ``ORDER_WORDS``).
 LATE_FILLER_PATTERNS: Final = (r"\bfirst\b", r"\bnext\b", r"\bsecond(?:ly)?\b(?=\s*$)",
                                r"\bto\s+start\b", r"\bstraight\s+away\b")
 
@@ -605,6 +622,42 @@ UNKNOWABLE_ADJECTIVES: Final = frozenset({
 NEGATIONS: Final = r"\b(?:do\s+not|dont|never|not|no\s+longer|avoid|refrain\s+from|stop\s+going)\b"
 
 #: Words that may be left over without making the reading doubtful.
+#: The words for left, right, straight on, forward, back, stop and no in the languages most often spoken alongside
+#: English (as people type them, accents dropped; the recogniser writes them so). The reading does not read them:
+#: one left unread may be the way the speaker meant ("turn right, izquierda, ninety degrees"; "turn links ninety")
+#: or a correction of it ("turn right ninety, nein, turn left ninety"), so it is a word of where or how far
+#: (``ask.SPATIAL_WORDS``): the robot asks. Words that are also common English ("you", "no", "la", "para") are left
+#: out: they are read as English.
+FOREIGN_WAY_WORDS: Final = frozenset({
+    # Spanish
+    "izquierda", "derecha", "adelante", "atras", "recto", "derecho", "alto", "parate",
+    # Portuguese
+    "esquerda", "direita", "frente", "tras", "pare",
+    # French
+    "gauche", "droite", "droit", "avance", "avancez", "recule", "reculez", "arriere", "arrete", "arretez",
+    # Italian
+    "sinistra", "destra", "avanti", "indietro", "dritto", "diritto", "fermo", "ferma", "basta",
+    # German and Dutch
+    "links", "rechts", "geradeaus", "vorwaerts", "vorwarts", "zurueck", "zuruck", "rueckwaerts", "ruckwarts",
+    "stopp", "nein", "rechtdoor", "vooruit", "achteruit", "terug", "nee",
+    # Polish and Russian
+    "lewo", "prawo", "prosto", "naprzod", "przodu", "tylu", "stoj", "nie", "nalevo", "napravo", "pryamo", "vpered",
+    "nazad", "stoi", "nyet",
+    # Turkish
+    "sola", "sag", "saga", "ileri", "geri", "dur", "hayir", "duz",
+    # Arabic
+    "yamin", "yameen", "shimal", "shemal", "yasar", "odam", "amam", "wara", "ogaf",
+    # Hindi and Urdu
+    "baayen", "baen", "daayen", "daen", "seedha", "sidha", "peeche", "piche", "ruko", "nahin", "nahi",
+    # Japanese and Korean
+    "hidari", "migi", "mae", "ushiro", "massugu", "tomare", "tomatte", "iie", "oenjjok", "oreunjjok", "jikjin",
+    "meomchwo", "aniyo",
+    # Mandarin (pinyin)
+    "zuo", "zuobian", "youbian", "qianmian", "houmian", "houtui", "tingzhi",
+    # Tagalog, Swahili, Vietnamese
+    "kaliwa", "kanan", "diretso", "deretso", "hinto", "tigil", "kushoto", "kulia", "mbele", "nyuma", "simama",
+    "hapana", "trai", "phai", "thang", "khong",
+})
 STOPWORDS: Final = frozenset({
     "the", "a", "an", "to", "you", "your", "yourself", "and", "then", "of", "in", "on", "at", "is",
     "are", "be", "it", "its", "that", "this", "there", "here", "now", "please", "for", "with", "from",
@@ -629,6 +682,9 @@ STOPWORDS: Final = frozenset({
     "moving", "driving", "rolling", "heading", "turning", "rotating", "travelling", "traveling", "proceeding",
     # assent said before an instruction ("yeah, just turn north")
     "yeah", "yes", "yep", "yup",
+    # a focus word, as "just" ("go even one metre back": Dutch and German "even" / "eben" is "just"): it never
+    # sizes or points a motion ("even further" is read by "further")
+    "even",
 })
 
 # ------------------------------------------------------------------------------ typos

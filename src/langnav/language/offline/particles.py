@@ -46,7 +46,9 @@ from langnav.language.offline.vocabulary import VOCABULARY
 #: after an instruction with no amount of its own: any other unknown word there may be the way or the amount
 #: said in the speaker's other language ("move, atras, two metres": Spanish "back"; "turn left, migi, forty
 #: five": Japanese "right"; "go back konti, a little"), and the robot asks.
-FOREIGN_FILLERS: Final = frozenset({"ano", "eto", "etto", "ettoo", "yani", "yaani", "matlab", "este", "pues", "tipo",
+#: (Spanish and Portuguese "este" is also "east": a word that names a way in a common language is never taken for a
+#: filler.)
+FOREIGN_FILLERS: Final = frozenset({"ano", "eto", "etto", "ettoo", "yani", "yaani", "matlab", "pues", "tipo",
                                     "cioe", "aeh", "halt", "euh", "bah", "znaczy", "nu", "eum", "geu", "ehm"})
 #: Reads one clause on its own (the parser's ``read_clause``).
 ClauseReader = Callable[[str], Reading]
@@ -67,7 +69,9 @@ _SLOT_WORDS: Final = frozenset({
     "not", "sorry", "mean", "meant", "actually", "rather", "or", "correction", "called", "named",
 })
 #: Words of where and how far a particle must not be a slip of.
-_WHERE_AND_HOW_FAR: Final = frozenset(SPATIAL_WORDS | set(NUMBER_WORD_LIST))
+#: (English words only: a particle one letter away from a way word of another language, "pala" / "para", is
+#: still a particle; the way words themselves are none, see ``is_particle_word``.)
+_WHERE_AND_HOW_FAR: Final = frozenset((SPATIAL_WORDS - lx.FOREIGN_WAY_WORDS) | set(NUMBER_WORD_LIST))
 #: The everyday words of side, way, number and unit: a word cut off after two letters may be one of them
 #: ("turn left ri": right?). (Rarer words, "port" or "positive", are not recognised from two letters; a place's
 #: name cut short, "po" of "post", is no worry where a particle stands, with no "to the" before it.)
@@ -93,6 +97,8 @@ def is_particle_word(word: str, known_names: Sequence[str] = ()) -> bool:
         return False  # (a word said has a vowel: "bbbbb", "xkcd" are noise or typing, not speech)
     if bare in VOCABULARY or bare in lx.STOPWORDS or bare in lx.TYPOS or bare in COMPASS_ABBREVIATIONS:
         return False
+    if bare in lx.FOREIGN_WAY_WORDS:
+        return False  # a way said in another language ("turn around izquierda"): never a particle
     if any(bare == name.lower() or bare in name.lower().split() for name in known_names):
         return False  # a place the user named
     if is_english(bare) or normalize(bare) != bare:
@@ -136,6 +142,10 @@ def without_particles(clauses: list[str], read: ClauseReader, known_names: Seque
                 continue  # rule 2: a filler between an instruction and its amount
             out.append(clause)
             continue
+        inner = _inner_filler(words, read, known_names)
+        if inner is not None:
+            words = words[:inner] + words[inner + 1:]  # rule 2 inside one clause: "go back yani two meter"
+            clause = " ".join(words)
         keep = len(words)
         while len(words) - keep < MAX_PARTICLES and keep > 1 and is_particle_word(words[keep - 1], known_names):
             keep -= 1
@@ -145,6 +155,16 @@ def without_particles(clauses: list[str], read: ClauseReader, known_names: Seque
             continue
         out.append(clause)
     return out
+
+
+def _inner_filler(words: list[str], read: ClauseReader, known_names: Sequence[str]) -> int | None:
+    """Where a known filler of another language stands between an instruction and its amount inside one clause,
+    said with no pause marked ("go back yani two meter"): rule 2 as with commas around it."""
+    for j in range(1, len(words) - 1):
+        if words[j].lower().strip(_MARKS) in FOREIGN_FILLERS and is_particle_word(words[j], known_names) \
+                and _amount_only(" ".join(words[j + 1:])) and read(" ".join(words[:j])).steps:
+            return j
+    return None
 
 
 def _particle_slot(before: str) -> bool:

@@ -26,6 +26,7 @@ from collections.abc import Callable
 from typing import Final
 
 from langnav.language.intent import Amount, Direction, Movement, Step
+from langnav.language.offline import lexicon as lx
 from langnav.language.offline.ask import spatial
 from langnav.language.offline.corrections import DISMAY_RE
 from langnav.language.offline.normalize import normalize
@@ -220,8 +221,8 @@ def drop_insisted_amounts(clauses: list[str]) -> list[str]:
 #: What may stand between a turn and the turn to the other side that takes it back: pauses, fillers and
 #: exclamations ("turn right, uh, turn left"). Any other word between them ("then", "and", "take a picture")
 #: says both are meant.
-_PAUSE_WORDS: Final = frozenset({"uh", "um", "er", "erm", "hmm", "ah", "oh", "eh", "like", "so", "well", "okay", "ok",
-                                 "wait", "no", "sorry", "robot", "please", "now", "just", "i", "mean"})
+_PAUSE_WORDS: Final = lx.HESITATIONS | frozenset({"oh", "like", "so", "well", "okay", "ok", "wait", "no", "sorry",
+                                                 "robot", "please", "now", "just", "i", "mean"})
 #: A bare turn as said ("turn right", "rotate to the left"): between two turns, a false start too.
 _BARE_TURN_RE: Final = re.compile(r"\b(?:turn|rotate|spin|pivot|swing|veer)\s+(?:to\s+(?:the|your)\s+)?(?:left|right)\b")
 #: A side said on its own ("left.", "no, right"): a bare turn too, said short.
@@ -285,8 +286,7 @@ _OATH_MIN_LETTERS: Final = 4
 
 
 #: Words that put instructions in order ("turn left, later, turn right"): what they join was meant, each of it.
-_ORDER_RE: Final = re.compile(r"\b(?:then|next|after|afterwards|later|subsequently|second|secondly|plus|also|too|and|"
-                              r"den|n|followed)\b|&", re.IGNORECASE)
+_ORDER_RE: Final = re.compile(r"\b(?:" + "|".join(w.replace(" ", r"\s+") for w in lx.ORDER_WORDS) + r")\b|&", re.IGNORECASE)
 
 
 def _oath(word: str) -> bool:

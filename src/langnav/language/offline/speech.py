@@ -11,25 +11,21 @@ from __future__ import annotations
 import re
 from typing import Final
 
-from langnav.language.offline.lexicon import TYPOS
+from langnav.language.offline.lexicon import HESITATIONS, TYPOS
 from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS, ONES, TENS
 from langnav.language.offline.patterns import TURN_SIDE_WORDS
 from langnav.language.offline.sidetalk import without_side_talk
 from langnav.language.offline.vocabulary import VOCABULARY
 
-#: Hesitation sounds: no meaning in any position. ("em" is how Irish and Scottish speech is written for "um"; the
-#: pronoun "'em" keeps its apostrophe and is read as "them" first, see ELIDED.)
-HESITATIONS: Final = frozenset({
-    "uh", "uhh", "uhhh", "uhhhh", "um", "umm", "ummm", "uhm", "uhmm", "hmm", "hmmm", "hm", "er", "erm", "err",
-    "ah", "ahh", "eh", "mmm", "mhm", "huh", "ehm", "ooh", "oooh", "ohh", "aah", "phew", "hmph", "em", "emm",
-})
 #: Hedges a speaker puts before an amount or a direction ("uh maybe forty five degrees"): they soften
 #: the words, they never change the amount or the side.
 #: Affirmations ("you're right", "that's correct") are no side; "at least" / "at most" and "until I
 #: tell you to stop" leave the amount said as it is; "what about / how about" before a verb is a request.
 _HEDGES: Final = re.compile(
     r"\b(?:maybe|perhaps|i\s+guess|i\s+think|(?:i\s+)?reckon(?:\s+that)?|kind\s+of|sort\s+of|let\s+us\s+see|let's\s+see|lets\s+see|"
-    r"(?:you'?re|you\s+are|that'?s|that\s+is|thats)\s+(?:right|correct)|at\s+(?:least|most)|"
+    # ("where you are right now": after "where", "right" says when or where, no affirmation)
+    r"(?<!where\s)(?:you'?re|you\s+are|that'?s|that\s+is|thats)\s+(?:right|correct)|"
+    r"at\s+(?:least|most)|"
     r"(?:go\s+ahead|go\s+on|come\s+on)\s+and|"
     r"(?:until|till)\s+i\s+(?:tell\s+you(?:\s+(?:to\s+stop|otherwise))?|say\s+(?:so|stop|otherwise))|"
     r"(?:what|how)\s+about(?=\s+(?:you\s+)?(?:move|go|turn|rotate|head|drive|face|pivot|back|proceed)\b)|"
@@ -51,9 +47,22 @@ PARTICLES: Final = frozenset({"lah", "leh", "lor", "loh", "meh", "hor", "sia", "
 REPORTED: Final = re.compile(
     r"(?:^|(?<=[,.;!?]))\s*(?:(?:the|my|our|your|his|her|their|some|someone|somebody|everyone|everybody|people|"
     r"they|he|she|chat|boss|[a-z]+'s)\s+)*(?:chat|boss|they|he|she|someone|somebody|everyone|everybody|people|"
-    r"viewers?|folks|guys|team|mum|mom|dad|manager|supervisor)\s+(?:says?|said|is\s+saying|are\s+saying|"
-    r"wants?\s+(?:you|u)\s+to|want\s+(?:you|u)\s+to|asks?\s+(?:you\s+)?to|asked\s+(?:you\s+)?to|reckons?|thinks?)\s+"
+    r"viewers?|folks|guys|team|mum|mom|dad|manager|supervisor|client|caller|user)(?:'s|\s+is|\s+are|'d|\s+would)?\s+"
+    r"(?:says?|said|saying|"
+    # the verbs of a request relayed: "wants you to", "would like you to", "is asking you to", "tells you to";
+    # an interpreter voicing a signer says "she signs" / "she's signing"
+    r"wants?\s+(?:you|u)\s+to|want\s+(?:you|u)\s+to|like\s+(?:you|u)\s+to|(?:asks?|asked|asking)\s+(?:you\s+)?to|"
+    r"(?:tells?|telling)\s+(?:you|u)\s+to|signs?|signed|signing|reckons?|thinks?)\s+"
     r"(?=(?:to\s+)?(?:turn|go|move|rotate|spin|pivot|back|reverse|drive|head|face|stop|come)\b)",
+    re.IGNORECASE)
+#: A question relayed ("she asks where you are", "he wants to know where you are"): the question itself, asked
+#: of the robot, as when the speaker asks it ("where are you") -- only a question of where the robot is, the
+#: one the robot answers; the words of the relay are left as they are before any other question.
+REPORTED_QUESTION: Final = re.compile(
+    r"(?:^|(?<=[,.;!?]))\s*(?:(?:the|my|our|his|her|their|[a-z]+'s)\s+)*(?:they|he|she|chat|boss|someone|somebody|"
+    r"client|caller|user|manager|supervisor)(?:'s|\s+is|\s+are|'d|\s+would)?\s+"
+    r"(?:asks?|asked|asking|wants?\s+to\s+know|like\s+to\s+know|wonders?|wondering|signs?|signed|signing)\s+"
+    r"(?=where\s+(?:you|u)\s+(?:are|r)\b)",
     re.IGNORECASE)
 #: Nigerian Pidgin and Nigerian English, each only where the word has that job: "dey" after a pronoun is the
 #: copula "are" ("where you dey now"); "na X i talk / say" is "it is X I said" ("na left i talk"), which says
@@ -108,8 +117,8 @@ _RESTART: Final = re.compile(r"\b(?:can|could|will|would)\s+you\s+(?:(?!(?:and|t
 CORRECTION_MARKERS: Final = (
     r"actually(?:\s+no)?(?:\s+i\s+meant|\s+i\s+mean)?", r"no,?\s+wait", r"no\s+no", r"wait,?\s+no", r"oh\s+wait",
     r"i\s+meant\s+to\s+say", r"i\s+mean\s+to\s+say", rf"make\s+it(?=\s+(?:\d|a\b|an\b|half|just|only|(?:{NUMBER_WORDS})\b))",
-    r"(?:i'?m|i\s+am|im)\s+sorry", r"sorry", r"i\s+meant", r"i\s+mean", r"i\s+said", r"my\s+(?:bad|mistake)", r"or\s+rather", r"make\s+that",
-    r"scratch\s+that", r"never\s*mind", r"correction", r"oops",
+    r"(?:i'?m|i\s+am|im)\s+sorry", r"sorry", r"i\s+meant", r"i\s+mean", r"i\s+said", r"my\s+(?:bad|mistake|error|fault)", r"or\s+rather", r"make\s+that",
+    r"scratch\s+that", r"never\s*mind", r"correction", r"oops", r"disregard", r"belay",
     # "turn eighty degrees right no eighty five": "no" right before a number corrects the amount
     rf"no(?=\s+(?:\d|a\s+hundred|half|{NUMBER_WORDS})\b)",
     # "turn left no right thirty degrees": "no" right before another side corrects the side
@@ -402,7 +411,7 @@ def plain_speech(prompt: str) -> str:
     for pattern, spelled in ELIDED:
         prompt = pattern.sub(spelled, prompt)
     text = without_discourse_markers(without_side_talk(STAMMER.sub(_unstammer, prompt)))
-    text = REPORTED.sub(_relay, text)
+    text = REPORTED_QUESTION.sub(" ", REPORTED.sub(_relay, text))
     for pattern, repl in PIDGIN:
         text = pattern.sub(repl, text)
     for pattern, repl in HOMOPHONES:

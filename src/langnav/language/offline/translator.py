@@ -18,7 +18,7 @@ from langnav.language.intent import (
     Step,
 )
 from langnav.language.offline.amounts import said_again, same_way_again, with_unit_said_before
-from langnav.language.offline.ask import ask_message, spatial
+from langnav.language.offline.ask import ask_message, only_stops, spatial
 from langnav.language.offline.composition import read_composed
 from langnav.language.offline.corrections import (
     CANCEL_RE,
@@ -27,9 +27,11 @@ from langnav.language.offline.corrections import (
     is_fragment,
     is_hedge,
     join_fragments,
+    read_consents,
 )
+from langnav.language.offline.english import is_english
 from langnav.language.offline.idioms import plain_idioms
-from langnav.language.offline.lexicon import ELEMENT_NOUNS
+from langnav.language.offline.lexicon import ELEMENT_NOUNS, SEQUENCE_WORDS, STOPWORDS
 from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.particles import without_particles
@@ -45,6 +47,7 @@ from langnav.language.offline.restarts import (
 from langnav.language.offline.sidetalk import is_shout, without_spoken_count_in
 from langnav.language.offline.speech import plain_speech, unfinished_number
 from langnav.language.offline.splitter import split_steps
+from langnav.language.offline.vocabulary import VOCABULARY
 from langnav.language.translator import Context, clean_prompt
 
 log = logging.getLogger(__name__)
@@ -124,10 +127,13 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     questions: list[str] = []   # what the reading would have to guess
     last_asks: tuple[str, ...] = ()  # what the clause before asked, when its one step is the last step
     blocking: list[str] = []    # words left unread that could change where or how far
+    between: list[str] = []     # clauses left unread since the last motion step (see _UNREAD_BETWEEN)
     for clause in clauses:
         clause = with_unit_said_before(clause, previous, is_fragment(clause))
         again = said_again(clause, previous)
         if again is not None:
+            blocking.extend(_unread_between(steps, [again], between))
+            between = []
             steps.append(again)  # "turn left ninety, and again": the same turn once more
             previous = again
             continue
@@ -155,6 +161,11 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
         questions.extend(reading.asks)
         if reading.steps or reading.problem in UNREAD_PROBLEMS:
             blocking.extend(u for u in reading.unread if u and spatial(u))
+        if reading.problem == Problem.UNREADABLE and not reading.steps:
+            between.extend(u for u in reading.unread if u)
+        elif reading.steps:
+            blocking.extend(_unread_between(steps, list(reading.steps), between))
+            between = []
         new_steps = [_come_back_way(steps[-1] if steps else None, s) for s in reading.steps]
         if steps and _refines(clause, steps[-1], new_steps):
             # "go to the door on your left, the one after the first": the same place, said more exactly
@@ -218,6 +229,7 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
         problem, clause, reading = misread[0]
         return _clarify(_problem_message(problem, clause), confidence=reading.confidence,
                         unread=[] if problem in SURE_REFUSALS else list(reading.unread))
+    blocking = [] if only_stops(steps) else list(dict.fromkeys(blocking))  # a word said twice: asked about once
     if steps and (blocking or questions):
         # ask, don't guess: nothing runs; the reply says what would run and asks about the rest
         return _clarify(ask_message(steps, blocking, questions), confidence=ASK_CONFIDENCE,
@@ -239,6 +251,34 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
                   clarification=PHOTO_LEFT_OUT_MESSAGE if photo else None)
 
 
+#: The steps that move the robot: an unknown word between two of them may undo the first (see _unread_between).
+_MOTIONS: Final = frozenset({Movement.MOVE, Movement.ROTATE, Movement.NAVIGATE})
+
+
+def _unread_between(before: Sequence[Step], after: Sequence[Step], unread: Sequence[str]) -> list[str]:
+    """The clauses left unread (``unread``) that stand between a motion said before and one said after.
+
+    Speakers take an instruction back with a word and then say what they mean: "turn right ninety, nein, turn
+    left ninety"; "turn right, hayir, turn left". In English the words that do so are known (``corrections``:
+    "sorry", "disregard", "belay" ...); a word of another language the reading does not know may be one, and
+    then it cannot tell a correction (only the second motion is meant) from a pause (both are): doing both would
+    move or turn more than asked if it was a correction. So such a word blocks the plan and the robot asks. (An
+    English word it does not know, "dear", "easy", is no correction; before the first motion or after the last,
+    an unknown word takes nothing back: "unit one, stop"; "turn around po".)"""
+    if not unread or not any(s.movement in _MOTIONS for s in before) \
+            or not any(s.movement in _MOTIONS for s in after):
+        return []
+    return [u for u in unread if any(_foreign(w) for w in u.split())]
+
+
+def _foreign(word: str) -> bool:
+    """A word of no English (SCOWL's lists) that the reading does not know either: the class of words whose
+    meaning the robot cannot tell (an English word it does not know, "dear", "easy", is no correction: the
+    words English speakers correct with are known, ``corrections``)."""
+    bare = word.lower().strip(",.;:!?'\"")
+    return bare.isalpha() and not is_english(bare) and bare not in VOCABULARY and bare not in STOPWORDS
+
+
 def _clauses(text: str, known_names: Sequence[str] = ()) -> tuple[list[str], bool]:
     """The instructions of a prompt, each whole: particles of other languages and photo requests taken out
     (and whether there was one), fragments joined to the move or turn they complete, self-corrections applied."""
@@ -255,7 +295,7 @@ def _clauses(text: str, known_names: Sequence[str] = ()) -> tuple[list[str], boo
             kept.append(without.rest)
     # fragments join the instruction they complete both before and after the corrections: "move five
     # meters, I mean five feet, forward" is corrected first, then completed
-    kept = drop_insisted_amounts(read_stated_amounts(kept))  # before joining: "..., only a little"
+    kept = drop_insisted_amounts(read_stated_amounts(read_consents(kept)))  # before joining: "..., only a little"
     joined = join_fragments(apply_corrections(join_fragments(kept, _is_open)), _is_open)
     said_once = drop_false_start_turns(drop_stopped(drop_insisted_amounts(joined), _read), text, _read)
     return merge_restated_turns(said_once, _read), photo
@@ -320,7 +360,8 @@ _REPEAT_RE: Final = re.compile(r"\b(?:again|another|more|further|twice|second\s+
                                re.IGNORECASE)
 #: Words that put instructions in a sequence: with them, the same instruction twice is meant twice
 #: ("turn left 90 degrees, then turn left 90 degrees").
-_SEQUENCE_RE: Final = re.compile(r"\b(?:then|after\s+that|afterwards|next|followed\s+by)\b", re.IGNORECASE)
+_SEQUENCE_RE: Final = re.compile(r"\b(?:" + "|".join(w.replace(" ", r"\s+") for w in SEQUENCE_WORDS) + r")\b",
+                                 re.IGNORECASE)
 #: Two amounts closer than this are the same amount said again (less than one 3 cm / 10 degree step).
 _SAME_AMOUNT_TOL: Final = 1e-6
 #: Two amounts within this fraction of each other are one amount said again in another unit or rounded
