@@ -565,9 +565,25 @@ def only_way_in(d: Door, analysis: MapAnalysis) -> bool:
 
 def doors_of(analysis: MapAnalysis) -> list[Door]:
     """The doors a person counts: the analysis's doors without the narrow gaps and the ways round a
-    thing standing in a room (``round_a_thing``)."""
+    thing standing in a room (``round_a_thing``), and the openings that are a room's only way in
+    (``entrance_opening``)."""
     round_ends = {id(d) for d in round_a_thing(analysis)}
-    return [d for d in analysis.doors if not is_gap(d, analysis) and id(d) not in round_ends]
+    return [*(d for d in analysis.doors if not is_gap(d, analysis) and id(d) not in round_ends),
+            *(o for o in analysis.openings if entrance_opening(o, analysis))]
+
+
+def entrance_opening(o: Door, analysis: MapAnalysis) -> bool:
+    """An opening of a door's width that is the only way into a room is that room's door. The map
+    analysis calls an opening a door only where the places on both sides are wider than it; a room
+    whose floor narrows at once behind its doorway (an archive with its shelf aisle facing the door, a
+    store with a rack row) fails that, yet a person enters the room through it and counts it with the
+    corridor's doors. An opening into a room that has other ways in stays a way between two parts of
+    a space (the end of a partition, the way past a cart): no door."""
+    if not NARROW_GAP_MAX_M <= o.width_m <= analysis.params.door_max_width_m:
+        return False
+    ways = [w for w in (*analysis.doors, *analysis.openings, *analysis.narrow_passages) if len(set(w.connects)) > 1]
+    rooms = {r.id for r in analysis.rooms if r.kind == ElementKind.ROOM}
+    return any(space in rooms and sum(space in w.connects for w in ways) == 1 for space in o.connects)
 
 
 def things_standing_free(analysis: MapAnalysis) -> list[Obstacle]:
