@@ -581,7 +581,8 @@ def entrance_opening(o: Door, analysis: MapAnalysis) -> bool:
     a space (the end of a partition, the way past a cart): no door."""
     if not NARROW_GAP_MAX_M <= o.width_m <= analysis.params.door_max_width_m:
         return False
-    ways = [w for w in (*analysis.doors, *analysis.openings, *analysis.narrow_passages) if len(set(w.connects)) > 1]
+    everything: list[Door | NarrowPassage] = [*analysis.doors, *analysis.openings, *analysis.narrow_passages]
+    ways = [w for w in everything if len(set(w.connects)) > 1]
     rooms = {r.id for r in analysis.rooms if r.kind == ElementKind.ROOM}
     return any(space in rooms and sum(space in w.connects for w in ways) == 1 for space in o.connects)
 
