@@ -5,6 +5,7 @@ from __future__ import annotations
 import logging
 import re
 from collections.abc import Sequence
+from dataclasses import dataclass, field
 from typing import Final
 
 from langnav.language.intent import (
@@ -100,8 +101,29 @@ class OfflineTranslator:
 
 
 def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
-    """Read ``prompt`` into an intent. Raises TranslationError for empty, huge or non-text prompts."""
+    """Read ``prompt`` into an intent, in stages: prompts refused outright; speech made plain (numbers, hesitations,
+    idioms); the prompt split into whole instructions (``_clauses``); each read and joined to the steps before it
+    (``_Assembly.add``); the steps, or the question to ask, assembled (``_Assembly.intent``).
+    Raises TranslationError for empty, huge or non-text prompts."""
     text = clean_prompt(prompt)
+    refused = _refused_outright(text)
+    if refused is not None:
+        return refused
+    text = plain_idioms(plain_speech(canonical_numbers(without_spoken_count_in(text))))
+    clauses, photo = _clauses(text, known_names)
+    cut = next((c for c in map(unfinished_number, clauses) if c is not None), None)
+    if cut is not None:
+        return _clarify(CUT_NUMBER_MESSAGE.format(said=cut), confidence=ASK_CONFIDENCE, unread=[cut])
+    assembly = _Assembly(known_names=tuple(known_names), sequenced=_SEQUENCE_RE.search(text) is not None)
+    for clause in clauses:
+        refusal = assembly.add(clause)
+        if refusal is not None:
+            return refusal
+    return assembly.intent(clauses, text, photo)
+
+
+def _refused_outright(text: str) -> Intent | None:
+    """The refusal of a prompt refused before it is read: unsafe, a negative number, a place noun shouted alone."""
     if is_unsafe(text):
         log.info("refused an unsafe prompt: %.80s", text)
         return _clarify(UNSAFE_MESSAGE, confidence=1.0, unread=[])
@@ -111,61 +133,82 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
         return _clarify(NEGATIVE_MESSAGE.format(number=shown), confidence=1.0, unread=[])
     if is_shout(text) and text.strip(" !").lower() in ELEMENT_NOUNS:  # "corner!": a warning, or the place?
         return _clarify(SHOUT_MESSAGE.format(said=text.strip()), confidence=ASK_CONFIDENCE, unread=[text.strip()])
-    text = plain_idioms(plain_speech(canonical_numbers(without_spoken_count_in(text))))
-    clauses, photo = _clauses(text, known_names)
-    cut = next((c for c in map(unfinished_number, clauses) if c is not None), None)
-    if cut is not None:
-        return _clarify(CUT_NUMBER_MESSAGE.format(said=cut), confidence=ASK_CONFIDENCE, unread=[cut])
-    sequenced = _SEQUENCE_RE.search(text) is not None
-    steps: list[Step] = []
-    unread: list[str] = []
-    problems: list[tuple[Problem, str, Reading]] = []
-    confidence = 1.0
+    return None
+
+
+@dataclass
+class _Assembly:
+    """The steps read so far from a prompt's clauses, and what the reading of them left open."""
+
+    known_names: tuple[str, ...]
+    #: a word that orders the instructions is in the prompt: the same instruction twice is meant twice
+    sequenced: bool
+    steps: list[Step] = field(default_factory=list)
+    unread: list[str] = field(default_factory=list)
+    problems: list[tuple[Problem, str, Reading]] = field(default_factory=list)
+    confidence: float = 1.0
     previous: Step | None = None
     previous_target: ElementRef | None = None
-    asked: tuple[Problem, str, Reading] | None = None  # "which is the largest room?" before "drive into it"
-    questions: list[str] = []   # what the reading would have to guess
-    last_asks: tuple[str, ...] = ()  # what the clause before asked, when its one step is the last step
-    blocking: list[str] = []    # words left unread that could change where or how far
-    between: list[str] = []     # clauses left unread since the last motion step (see _UNREAD_BETWEEN)
-    for clause in clauses:
-        clause = with_unit_said_before(clause, previous, is_fragment(clause))
-        again = said_again(clause, previous)
+    #: "which is the largest room?" before "drive into it"
+    asked: tuple[Problem, str, Reading] | None = None
+    #: what the reading would have to guess
+    questions: list[str] = field(default_factory=list)
+    #: what the clause before asked, when its one step is the last step
+    last_asks: tuple[str, ...] = ()
+    #: words left unread that could change where or how far
+    blocking: list[str] = field(default_factory=list)
+    #: clauses left unread since the last motion step (see ``_unread_between``)
+    between: list[str] = field(default_factory=list)
+
+    def add(self, clause: str) -> Intent | None:
+        """Read ``clause`` and join its steps to those before; the refusal of the whole prompt when the clause
+        names a place the map cannot know."""
+        clause = with_unit_said_before(clause, self.previous, is_fragment(clause))
+        again = said_again(clause, self.previous)
         if again is not None:
-            blocking.extend(_unread_between(steps, [again], between))
-            between = []
-            steps.append(again)  # "turn left ninety, and again": the same turn once more
-            previous = again
-            continue
-        reading = read_composed(clause, previous, known_names, previous_target)
+            self.blocking.extend(_unread_between(self.steps, [again], self.between))
+            self.between = []
+            self.steps.append(again)  # "turn left ninety, and again": the same turn once more
+            self.previous = again
+            return None
+        reading = read_composed(clause, self.previous, self.known_names, self.previous_target)
         if reading.problem == Problem.QUESTION and reading.referent is not None:
-            asked = (reading.problem, clause, reading)
-            previous_target = reading.referent
-            continue
-        if asked is not None:
-            if any(s.target == asked[2].referent for s in reading.steps):
-                asked = None  # the question only named the place the next instruction goes to
-            else:
-                problems.append(asked)
-                confidence = min(confidence, asked[2].confidence)
-                unread.extend(asked[2].unread)
-                asked = None
+            self.asked = (reading.problem, clause, reading)
+            self.previous_target = reading.referent
+            return None
+        if self.asked is not None:
+            if not any(s.target == self.asked[2].referent for s in reading.steps):
+                self._left_open(self.asked)  # (a question that only named the place the next instruction goes to is no problem)
+            self.asked = None
         if reading.problem == Problem.NAME:
             return _clarify(_name_message(reading.name or clause), confidence=reading.confidence, unread=[])
         if reading.problem == Problem.UNKNOWABLE:
             return _clarify(_unknowable_message(reading.name or clause), confidence=reading.confidence, unread=[])
         if reading.problem is not None:
-            problems.append((reading.problem, clause, reading))
-        confidence = min(confidence, reading.confidence)
-        unread.extend(u for u in reading.unread if u)
-        questions.extend(reading.asks)
+            self.problems.append((reading.problem, clause, reading))
+        self.confidence = min(self.confidence, reading.confidence)
+        self.unread.extend(u for u in reading.unread if u)
+        self.questions.extend(reading.asks)
         if reading.steps or reading.problem in UNREAD_PROBLEMS:
-            blocking.extend(u for u in reading.unread if u and spatial(u))
+            self.blocking.extend(u for u in reading.unread if u and spatial(u))
         if reading.problem == Problem.UNREADABLE and not reading.steps:
-            between.extend(u for u in reading.unread if u)
+            self.between.extend(u for u in reading.unread if u)
         elif reading.steps:
-            blocking.extend(_unread_between(steps, list(reading.steps), between))
-            between = []
+            self.blocking.extend(_unread_between(self.steps, list(reading.steps), self.between))
+            self.between = []
+        self._join(clause, reading)
+        return None
+
+    def _left_open(self, asked: tuple[Problem, str, Reading]) -> None:
+        """A question the instructions after it did not take up: a problem of the prompt."""
+        self.problems.append(asked)
+        self.confidence = min(self.confidence, asked[2].confidence)
+        self.unread.extend(asked[2].unread)
+
+    def _join(self, clause: str, reading: Reading) -> None:
+        """The clause's steps joined to the steps before: a place said more exactly, a step completed, amended,
+        said again or confirmed is one step; the rest follow."""
+        steps, questions, sequenced = self.steps, self.questions, self.sequenced
         new_steps = [_come_back_way(steps[-1] if steps else None, s) for s in reading.steps]
         if steps and _refines(clause, steps[-1], new_steps):
             # "go to the door on your left, the one after the first": the same place, said more exactly
@@ -191,7 +234,7 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
                         questions.remove(question)
         elif steps and new_steps and not sequenced and _completes(steps[-1], new_steps[0], clause):
             steps.pop()  # "turn left ... turn left fifty degrees": the same turn said again with its amount
-            for question in last_asks:
+            for question in self.last_asks:
                 # "move forward ... you're breaking up ... move forward two metres": the bare move's
                 # question ("how far?") is answered by the move said again with its amount
                 if question in questions and question not in reading.asks:
@@ -206,49 +249,58 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
             new_steps.pop(0)  # "hold it, hold it"; "where are you? can you tell me where you are?"
         steps.extend(new_steps)
         if new_steps:
-            last_asks = reading.asks if len(new_steps) == 1 else ()
+            self.last_asks = reading.asks if len(new_steps) == 1 else ()
         if steps:
-            previous = steps[-1]
+            self.previous = steps[-1]
             targets = [s.target for s in steps if s.target is not None]
-            previous_target = targets[-1] if targets else None
-    if asked is not None:
-        problems.append(asked)
-        confidence = min(confidence, asked[2].confidence)
-        unread.extend(asked[2].unread)
-    if len(steps) > MAX_STEPS:
-        return _clarify(TOO_MANY_STEPS_MESSAGE, confidence=1.0, unread=[])
-    answered = [(p, clause, r) for p, clause, r in problems if p == Problem.QUESTION and _answered_by(clause, steps)]
-    if answered:
-        problems = [x for x in problems if x not in answered]
-        said = {u for _, _, r in answered for u in r.unread}
-        unread = [u for u in unread if u not in said]
-    misread = [(p, clause, r) for p, clause, r in problems if p in WHOLE_PROMPT_REFUSALS]
-    if misread:
-        # a step whose number is beyond range or unreadable: the other steps were planned around
-        # it ("turn left, 4000 degrees"; "go to door 2 and turn left"), so none of them runs
-        problem, clause, reading = misread[0]
-        return _clarify(_problem_message(problem, clause), confidence=reading.confidence,
-                        unread=[] if problem in SURE_REFUSALS else list(reading.unread))
-    blocking = [] if only_stops(steps) else list(dict.fromkeys(blocking))  # a word said twice: asked about once
-    if steps and (blocking or questions):
-        # ask, don't guess: nothing runs; the reply says what would run and asks about the rest
-        return _clarify(ask_message(steps, blocking, questions), confidence=ASK_CONFIDENCE,
-                        unread=blocking or [clause[:200] for clause in clauses][:MAX_STEPS])
-    if not steps:
-        if not problems and photo:
-            return _clarify(NO_CAMERA_MESSAGE, confidence=1.0, unread=[])
-        if not problems and not clauses and CANCEL_RE.search(text):
-            return _clarify(CANCELLED_MESSAGE, confidence=1.0, unread=[])
-        if not problems:
-            return _clarify(_unreadable_message(text), confidence=0.2, unread=[text[:200]])
-        problem, clause, _ = problems[0]
-        sure = all(p in SURE_REFUSALS for p, _, _ in problems)
-        return _clarify(_problem_message(problem, clause), confidence=min(r.confidence for _, _, r in problems),
-                        unread=[] if sure else unread)
-    if problems:
-        confidence = min(confidence, PARTIAL_CONFIDENCE)  # part of the prompt will not be done
-    return Intent(steps=steps, translator=TRANSLATOR_NAME, confidence=round(confidence, 3), unread=unread,
-                  clarification=PHOTO_LEFT_OUT_MESSAGE if photo else None)
+            self.previous_target = targets[-1] if targets else None
+
+    def intent(self, clauses: list[str], text: str, photo: bool) -> Intent:
+        """The intent of the whole prompt once every clause is read: its steps, or the question to ask."""
+        if self.asked is not None:
+            self._left_open(self.asked)
+        steps = self.steps
+        if len(steps) > MAX_STEPS:
+            return _clarify(TOO_MANY_STEPS_MESSAGE, confidence=1.0, unread=[])
+        problems, unread = self.problems, self.unread
+        answered = [(p, clause, r) for p, clause, r in problems if p == Problem.QUESTION and _answered_by(clause, steps)]
+        if answered:
+            problems = [x for x in problems if x not in answered]
+            said = {u for _, _, r in answered for u in r.unread}
+            unread = [u for u in unread if u not in said]
+        misread = [(p, clause, r) for p, clause, r in problems if p in WHOLE_PROMPT_REFUSALS]
+        if misread:
+            # a step whose number is beyond range or unreadable: the other steps were planned around
+            # it ("turn left, 4000 degrees"; "go to door 2 and turn left"), so none of them runs
+            problem, clause, reading = misread[0]
+            return _clarify(_problem_message(problem, clause), confidence=reading.confidence,
+                            unread=[] if problem in SURE_REFUSALS else list(reading.unread))
+        blocking = [] if only_stops(steps) else list(dict.fromkeys(self.blocking))  # a word said twice: asked once
+        if steps and (blocking or self.questions):
+            # ask, don't guess: nothing runs; the reply says what would run and asks about the rest
+            return _clarify(ask_message(steps, blocking, self.questions), confidence=ASK_CONFIDENCE,
+                            unread=blocking or [clause[:200] for clause in clauses][:MAX_STEPS])
+        if not steps:
+            return _nothing_to_run(problems, unread, clauses, text, photo)
+        confidence = min(self.confidence, PARTIAL_CONFIDENCE) if problems else self.confidence  # part not done
+        return Intent(steps=steps, translator=TRANSLATOR_NAME, confidence=round(confidence, 3), unread=unread,
+                      clarification=PHOTO_LEFT_OUT_MESSAGE if photo else None)
+
+
+def _nothing_to_run(problems: list[tuple[Problem, str, Reading]], unread: list[str], clauses: list[str], text: str,
+                    photo: bool) -> Intent:
+    """What to tell the user when no step was read: a picture asked for, a request taken back, the first
+    problem, or that nothing was understood."""
+    if not problems and photo:
+        return _clarify(NO_CAMERA_MESSAGE, confidence=1.0, unread=[])
+    if not problems and not clauses and CANCEL_RE.search(text):
+        return _clarify(CANCELLED_MESSAGE, confidence=1.0, unread=[])
+    if not problems:
+        return _clarify(_unreadable_message(text), confidence=0.2, unread=[text[:200]])
+    problem, clause, _ = problems[0]
+    sure = all(p in SURE_REFUSALS for p, _, _ in problems)
+    return _clarify(_problem_message(problem, clause), confidence=min(r.confidence for _, _, r in problems),
+                    unread=[] if sure else unread)
 
 
 #: The steps that move the robot: an unknown word between two of them may undo the first (see _unread_between).
