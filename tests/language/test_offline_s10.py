@@ -17,10 +17,10 @@ from langnav.language.offline.translator import translate_offline
 
 # ---------------------------------------------------------------- a word of another language between two motions
 @pytest.mark.parametrize("prompt", [
-    "turn right ninety, nein, turn left ninety",       # German "no": the left turn may replace the right one
-    "turn right forty five, hup, turn right fifteen",  # an unknown word between two turns
-    "go forward two metres, hayir, go back one metre",  # Turkish "no"
-    "turn left, nahin, turn right thirty degrees",      # Hindi "no"
+    "turn right ninety, zzyzx, turn left ninety",       # an unknown word: the left turn may replace the right one
+    "turn right forty five, hup, turn right fifteen",
+    "go forward two metres, blorp, go back one metre",
+    "turn left, nahin ji, turn right thirty degrees",   # a "no" with a word after it is no "no" alone
 ])
 def test_an_unknown_foreign_word_between_two_motions_asks(prompt: str) -> None:
     assert asks(prompt)
@@ -156,3 +156,57 @@ def test_a_may_i_question_alone_runs_nothing() -> None:
 def test_the_sideless_turn_asked_about_is_not_described_with_a_side() -> None:
     message = translate_offline("turn links, ninety degrees").clarification or ""
     assert "turn 90 degrees (which way?)" in message and "turn left" not in message
+
+
+# ---------------------------------------------------------------- "no" in another language corrects as "no" does
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("turn right ninety, nein, turn left ninety", [("rotate", "left", None, 90.0)]),
+    ("turn left forty, hayır, fifty degree", [("rotate", "left", None, 50.0)]),      # Turkish, dotless i kept
+    ("turn left, nahi nahi, right side forty five", [("rotate", "right", None, 45.0)]),  # Hindi, said twice
+    ("go forward two metres, hayir, go back one metre", [("move", "backward", 1.0, None)]),
+])
+def test_no_in_another_language_corrects(prompt: str, expected: Plan) -> None:
+    assert plan(prompt) == expected
+
+
+# ---------------------------------------------------------------- a way said in both languages
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("peeche, back side, thirty centimetre only", [("move", "backward", 0.3, None)]),  # Hindi "back"
+    ("turn left, izquierda, ninety degrees", [("rotate", "left", None, 90.0)]),
+    ("derecha, turn right forty five degrees", [("rotate", "right", None, 45.0)]),
+])
+def test_a_way_said_in_both_languages_is_read_once(prompt: str, expected: Plan) -> None:
+    assert plan(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "turn right, izquierda, ninety degrees",  # the other way: it may be the one meant
+    "turn links, ninety degrees",             # no side said in English: the placeholder side agrees with nothing
+    "peeche, go forward two metres",
+])
+def test_a_way_in_another_language_that_disagrees_asks(prompt: str) -> None:
+    assert asks(prompt)
+
+
+# ---------------------------------------------------------------- the recogniser's spellings
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("turn write nine tee degrees", [("rotate", "right", None, 90.0)]),     # a number of tens split in two
+    ("turn left for tee five degrees", [("rotate", "left", None, 45.0)]),
+    ("rotate ninety deg c w", [("rotate", "right", None, 90.0)]),           # letters said one by one
+    ("rotate thirty degrees c c w", [("rotate", "left", None, 30.0)]),
+    ("move, atrás, two metres", None),                                       # accents dropped: "atras" asks
+    ("where even are you", [("query", None, None, None)]),
+    ("turn to your right hand side, ninety", [("rotate", "right", None, 90.0)]),
+    ("move to your left hand side one metre", [("move", "left", 1.0, None)]),
+])
+def test_spellings_and_sides_as_said(prompt: str, expected: Plan | None) -> None:
+    if expected is None:
+        assert asks(prompt)
+    else:
+        assert plan(prompt) == expected
+
+
+def test_plain_letters_drops_accents_only() -> None:
+    from langnav.language.offline.speech import plain_letters
+    assert plain_letters("atrás yavaş hayır chút xíu łódź") == "atras yavas hayir chut xiu lodz"
+    assert plain_letters("go 1½ m, turn 45°") == "go 1½ m, turn 45°"

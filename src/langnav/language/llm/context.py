@@ -216,10 +216,13 @@ asks where you are") -> the request itself; "is it okay to turn left? yes, pleas
 asks for the action just named; the question alone asks nothing of the robot). "even" before an amount is \
 "just" ("go even two metres forward" -> forward 2).
 - Other languages: "yes" words ("ja", "oui", "si", "da", "tak", "hai") and fillers ("yani", "ano", "eto") mean \
-nothing ("reverse, ano, three metres" -> back 3). A way said in another language ("izquierda", "derecha", \
-"links", "rechts", "gauche", "sinistra", "hidari", "migi") or a word you do not know between two instructions \
-("turn left thirty, nein, turn right thirty": it may take the first back) -> ask; never run both, never guess \
-the way. A stop with such a word ("nee, stop") is still a stop.
+nothing ("reverse, ano, three metres" -> back 3); "no" said alone ("nein", "nee", "hayir", "nahi", "iie") \
+corrects like "no" ("turn left thirty, nein, sixty" -> left 60). A way said in another language ("izquierda", \
+"derecha", "links", "rechts", "gauche", "sinistra", "hidari", "migi", "peeche") is read only when it says the \
+same way as the English next to it ("derecha, turn right thirty" -> right 30); another way, or a word you do \
+not know between two instructions (it may take the first back) -> ask; never run both, never guess the way. A \
+stop with such a word ("dur, stop") is still a stop. Accents do not matter ("atrás" = "atras"). Recogniser \
+splits: "six tee degrees" -> sixty degrees; "c w" / "c c w" -> clockwise / counter-clockwise.
 - Ask, don't guess: when the side of a turn ("rotate 45 degrees"), the unit of a distance ("move forward 3") \
 or any word about where or how far is unclear, give no steps; in clarification say what you understood and \
 ask about the rest."""

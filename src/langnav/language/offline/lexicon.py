@@ -309,7 +309,7 @@ STOP_PHRASES: Final = (
 #: Questions and their answers.
 QUERY_POSE_PATTERNS: Final = (
     # ("whereabouts" asks where, in every English: "whereabouts are you (to) now?")
-    r"\bwhere(?:abouts)?\s+(?:exactly\s+|now\s+|on\s+earth\s+)?(?:are|r)\s+(?:you|u)\b(?!\s+(?:going|heading|headed|driving|off\s+to))", r"\bwhere\s+am\s+i\b", r"\bwhere\s+is\s+the\s+robot\b",
+    r"\bwhere(?:abouts)?\s+(?:exactly\s+|now\s+|on\s+earth\s+|even\s+)?(?:are|r)\s+(?:you|u)\b(?!\s+(?:going|heading|headed|driving|off\s+to))", r"\bwhere\s+am\s+i\b", r"\bwhere\s+is\s+the\s+robot\b",
     # ("hold your position", "keep your heading" ask to stay, not where the robot is)
     r"(?<!\bhold\s)(?<!\bkeep\s)(?<!\bmaintain\s)"
     r"\b(?:your|the\s+robot'?s?|current|robot)\s+(?:current\s+|exact\s+|present\s+|last\s+)?"
@@ -393,6 +393,9 @@ MOVE_DIRECTIONS: Final[dict[str, Direction]] = {
         "sideways to the right", "to the right side", "right side", "on the right", "on your right",
         "toward the right", "towards the right", "toward your right", "towards your right",
         "starboard", "on right")},
+    # (the side with "hand" said, as for a turn: "move to your left hand side one metre")
+    **{f"{lead}{side} hand side": Direction(side) for side in ("left", "right")
+       for lead in ("", "to the ", "to your ", "your ", "the ", "on the ", "on your ")},
 }
 
 ROTATE_DIRECTIONS: Final[dict[str, Direction]] = {
@@ -407,6 +410,10 @@ ROTATE_DIRECTIONS: Final[dict[str, Direction]] = {
         "to the right side", "toward the right", "towards the right", "toward your right",
         "towards your right", "your right", "the right", "starboard", "right side",
         "right hand side", "on the right", "on your right", "negative", "on right")},
+    # "to your right hand side", "on the left-hand side": the side with "hand" said, after any of its leads
+    **{f"{lead} {side} hand side": Direction(side) for side in ("left", "right")
+       for lead in ("to the", "to your", "your", "the", "on the", "on your", "towards the", "towards your",
+                    "toward the", "toward your")},
     **{w: Direction.AROUND for w in (
         "around", "round", "back", "backwards", "backward", "about", "the other way", "the opposite way",
         "the other direction", "the opposite direction", "behind", "behind you", "to face behind",
@@ -623,42 +630,59 @@ UNKNOWABLE_ADJECTIVES: Final = frozenset({
 NEGATIONS: Final = r"\b(?:do\s+not|dont|never|not|no\s+longer|avoid|refrain\s+from|stop\s+going)\b"
 
 #: Words that may be left over without making the reading doubtful.
-#: The words for left, right, straight on, forward, back, stop and no in the languages most often spoken alongside
-#: English (as people type them, accents dropped; the recogniser writes them so). The reading does not read them:
-#: one left unread may be the way the speaker meant ("turn right, izquierda, ninety degrees"; "turn links ninety")
-#: or a correction of it ("turn right ninety, nein, turn left ninety"), so it is a word of where or how far
-#: (``ask.SPATIAL_WORDS``): the robot asks. Words that are also common English ("you", "no", "la", "para") are left
-#: out: they are read as English.
-FOREIGN_WAY_WORDS: Final = frozenset({
+#: The words for left, right, straight on / forward, back, stop and no in the languages most often spoken alongside
+#: English (as people type them, accents dropped; the recogniser writes them so), with the way each one says. The
+#: reading does not read them as instructions: one left unread may be the way the speaker meant ("turn right,
+#: izquierda, ninety degrees"; "turn links ninety"), so it is a word of where or how far (``ask.SPATIAL_WORDS``) and
+#: the robot asks, unless it says the same way as the instruction next to it (a bilingual speaker saying the way in
+#: both languages: "peeche, back side, thirty centimetre": ``translator``). Words that are also common English
+#: ("you", "no", "la", "para") are left out: they are read as English.
+FOREIGN_WAYS: Final[dict[str, str]] = {
     # Spanish
-    "izquierda", "derecha", "adelante", "atras", "recto", "derecho", "alto", "parate",
+    "izquierda": "left", "derecha": "right", "adelante": "forward", "atras": "back", "recto": "forward",
+    "derecho": "forward", "alto": "stop", "parate": "stop",
     # Portuguese
-    "esquerda", "direita", "frente", "tras", "pare",
+    "esquerda": "left", "direita": "right", "frente": "forward", "tras": "back", "pare": "stop",
     # French
-    "gauche", "droite", "droit", "avance", "avancez", "recule", "reculez", "arriere", "arrete", "arretez",
+    "gauche": "left", "droite": "right", "droit": "forward", "avance": "forward", "avancez": "forward",
+    "recule": "back", "reculez": "back", "arriere": "back", "arrete": "stop", "arretez": "stop",
     # Italian
-    "sinistra", "destra", "avanti", "indietro", "dritto", "diritto", "fermo", "ferma", "basta",
+    "sinistra": "left", "destra": "right", "avanti": "forward", "indietro": "back", "dritto": "forward",
+    "diritto": "forward", "fermo": "stop", "ferma": "stop", "basta": "stop",
     # German and Dutch
-    "links", "rechts", "geradeaus", "vorwaerts", "vorwarts", "zurueck", "zuruck", "rueckwaerts", "ruckwarts",
-    "stopp", "nein", "rechtdoor", "vooruit", "achteruit", "terug", "nee",
+    "links": "left", "rechts": "right", "geradeaus": "forward", "vorwaerts": "forward", "vorwarts": "forward",
+    "zurueck": "back", "zuruck": "back", "rueckwaerts": "back", "ruckwarts": "back", "stopp": "stop", "nein": "no",
+    "rechtdoor": "forward", "vooruit": "forward", "achteruit": "back", "terug": "back", "nee": "no",
     # Polish and Russian
-    "lewo", "prawo", "prosto", "naprzod", "przodu", "tylu", "stoj", "nie", "nalevo", "napravo", "pryamo", "vpered",
-    "nazad", "stoi", "nyet",
+    "lewo": "left", "prawo": "right", "prosto": "forward", "naprzod": "forward", "przodu": "forward", "tylu": "back",
+    "stoj": "stop", "nie": "no", "nalevo": "left", "napravo": "right", "pryamo": "forward", "vpered": "forward",
+    "nazad": "back", "stoi": "stop", "nyet": "no",
     # Turkish
-    "sola", "sag", "saga", "ileri", "geri", "dur", "hayir", "duz",
+    "sola": "left", "sag": "right", "saga": "right", "ileri": "forward", "geri": "back", "dur": "stop", "hayir": "no",
+    "duz": "forward",
     # Arabic
-    "yamin", "yameen", "shimal", "shemal", "yasar", "odam", "amam", "wara", "ogaf",
+    "yamin": "right", "yameen": "right", "shimal": "left", "shemal": "left", "yasar": "left", "odam": "forward",
+    "amam": "forward", "wara": "back", "ogaf": "stop",
     # Hindi and Urdu
-    "baayen", "baen", "daayen", "daen", "seedha", "sidha", "peeche", "piche", "ruko", "nahin", "nahi",
+    "baayen": "left", "baen": "left", "daayen": "right", "daen": "right", "seedha": "forward", "sidha": "forward",
+    "peeche": "back", "piche": "back", "ruko": "stop", "nahin": "no", "nahi": "no",
     # Japanese and Korean
-    "hidari", "migi", "mae", "ushiro", "massugu", "tomare", "tomatte", "iie", "oenjjok", "oreunjjok", "jikjin",
-    "meomchwo", "aniyo",
+    "hidari": "left", "migi": "right", "mae": "forward", "ushiro": "back", "massugu": "forward", "tomare": "stop",
+    "tomatte": "stop", "iie": "no", "oenjjok": "left", "oreunjjok": "right", "jikjin": "forward", "meomchwo": "stop",
+    "aniyo": "no",
     # Mandarin (pinyin)
-    "zuo", "zuobian", "youbian", "qianmian", "houmian", "houtui", "tingzhi",
+    "zuo": "left", "zuobian": "left", "youbian": "right", "qianmian": "forward", "houmian": "back", "houtui": "back",
+    "tingzhi": "stop",
     # Tagalog, Swahili, Vietnamese
-    "kaliwa", "kanan", "diretso", "deretso", "hinto", "tigil", "kushoto", "kulia", "mbele", "nyuma", "simama",
-    "hapana", "trai", "phai", "thang", "khong",
-})
+    "kaliwa": "left", "kanan": "right", "diretso": "forward", "deretso": "forward", "hinto": "stop", "tigil": "stop",
+    "kushoto": "left", "kulia": "right", "mbele": "forward", "nyuma": "back", "simama": "stop", "hapana": "no",
+    "trai": "left", "phai": "right", "thang": "forward", "khong": "no",
+    # (Turkish written with its dotless i)
+    "hayır": "no",
+}
+FOREIGN_WAY_WORDS: Final = frozenset(FOREIGN_WAYS)
+#: Of those, the words for "no": said alone, they correct as "no" does (``speech.FOREIGN_NO``).
+FOREIGN_NO_WORDS: Final = frozenset(w for w, way in FOREIGN_WAYS.items() if way == "no")
 STOPWORDS: Final = frozenset({
     "the", "a", "an", "to", "you", "your", "yourself", "and", "then", "of", "in", "on", "at", "is",
     "are", "be", "it", "its", "that", "this", "there", "here", "now", "please", "for", "with", "from",

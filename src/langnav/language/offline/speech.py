@@ -9,9 +9,10 @@ follows sees what the speaker meant to say (README "Speech": fillers and cut-off
 from __future__ import annotations
 
 import re
+import unicodedata
 from typing import Final
 
-from langnav.language.offline.lexicon import HESITATIONS, TYPOS
+from langnav.language.offline.lexicon import FOREIGN_NO_WORDS, HESITATIONS, TYPOS
 from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS, ONES, TENS
 from langnav.language.offline.patterns import TURN_SIDE_WORDS
 from langnav.language.offline.sidetalk import without_side_talk
@@ -148,6 +149,15 @@ HOMOPHONES: Final = (
     (re.compile(r"\bniner\b", re.IGNORECASE), "nine"),
     *((re.compile(rf"\b{said}\s+(?=(?:{_UNIT_WORD}|zero|{NUMBER_WORDS})\b)", re.IGNORECASE), f"{digit} ")
       for said, digit in (("tree", "three"), ("fower", "four"), ("fife", "five"))),
+    # a number of tens heard as two words ("nine tee degrees", "for tee five degrees"): the recogniser split the
+    # word at its stress; only where a number goes (before a unit, a number or the end of a clause)
+    *((re.compile(rf"\b(?:{said})\s+tee\b(?=\s*(?:{_UNIT_WORD}\b|(?:{NUMBER_WORDS})\b|[,.;!?]|$))", re.IGNORECASE), tens)
+      for said, tens in (("twen|twin", "twenty"), ("thir|thur", "thirty"), ("for|four|fore", "forty"),
+                         ("fif|fifth", "fifty"), ("six|sicks", "sixty"), ("seven", "seventy"), ("eigh|ate|eight", "eighty"),
+                         ("nine|nigh|nein", "ninety"))),
+    # the letters of "cw" / "ccw" said one by one ("rotate ninety deg c w")
+    (re.compile(r"\bc\s+c\s+w\b", re.IGNORECASE), "ccw"),
+    (re.compile(r"\bc\s+w\b", re.IGNORECASE), "cw"),
     (re.compile(r"\bate\b", re.IGNORECASE), "eight"),
     (re.compile(rf"\b(?P<slot>{_SIDE_SLOT}|go|move|head|drive|slide|step|to\s+the|on\s+the|a)\s+(?:write|rite|wright)\b",
                 re.IGNORECASE), r"\g<slot> right"),
@@ -305,6 +315,10 @@ RESTATEMENT_MARKERS: Final = re.compile(
 #: "roger", "copy (that)", "wilco" acknowledge, "over" / "over and out" end the message.
 RADIO_NO: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*negative(?:\s+on\s+that)?(?:\s+(?:robot|rover|bot|base))?\s*(?=[,.;!?]|$)",
                             re.IGNORECASE)
+#: "No" in another language said alone between commas, once or again ("turn left forty, hayir, fifty degrees";
+#: "turn left, nahi nahi, right side forty five"): "no", which corrects what it follows, as in English.
+FOREIGN_NO: Final = re.compile(rf"(?:^|(?<=[,.;!?]))\s*(?:{'|'.join(sorted(FOREIGN_NO_WORDS))})(?:[\s,]+(?:{'|'.join(sorted(FOREIGN_NO_WORDS))}))*"
+                               r"\s*(?=[,.;!?]|$)", re.IGNORECASE)
 #: A radio call opening a message names who is called and who calls ("base to robot, ...", "robot, this is
 #: base, ..."): no instruction.
 _STATION: Final = r"(?:robot|rover|bot|unit|base|command|control|operator|team|hq|headquarters|scout)"
@@ -404,6 +418,19 @@ def without_discourse_markers(text: str) -> str:
     return rest.lstrip()
 
 
+#: Letters of other alphabets that carry no accent to drop but are written as a plain letter when typed without
+#: them (Turkish dotless "ı", Polish "ł", Vietnamese "đ", Nordic "ø").
+_PLAIN_LETTER: Final = str.maketrans({"ı": "i", "ł": "l", "Ł": "L", "đ": "d", "Đ": "D", "ø": "o", "Ø": "O"})
+
+
+def plain_letters(text: str) -> str:
+    """``text`` with the accents dropped from its letters ("atrás", "yavaş", "chút xíu", "hayır"): people type the
+    words of other languages with and without them, and the reading knows them without ("atras", "hayir"). Only
+    accents go (canonical decomposition, combining marks dropped): "½", "°" and every other sign stay."""
+    decomposed = unicodedata.normalize("NFD", text.translate(_PLAIN_LETTER))
+    return "".join(c for c in decomposed if unicodedata.category(c) != "Mn")
+
+
 def plain_speech(prompt: str) -> str:
     """``prompt`` with hesitations, hedges, cut-off words, stutters and noise tokens removed, a comma
     before each self-correction marker, the words speech recognition mistook put right, and polite
@@ -421,7 +448,7 @@ def plain_speech(prompt: str) -> str:
     text = RESTATEMENT_MARKERS.sub(", ", text)
     text = CONTRAST_AFTER.sub(r"\g<said>", CONTRAST_BEFORE.sub("", text))
     text = STOP_AFTER_AMOUNT.sub(" ", text)
-    text = RADIO_NOISE.sub(" ", RADIO_NO.sub(" no", RADIO_CALL.sub(" ", text)))
+    text = RADIO_NOISE.sub(" ", RADIO_NO.sub(" no", FOREIGN_NO.sub(" no", RADIO_CALL.sub(" ", text))))
     text = _UNIT_THEN_EXACT.sub(r"\g<unit>", NUMBER_RESTART.sub("", text))
     text = REQUEST_FRAMES.sub(" ", PSEUDO_CLEFT.sub(" ", text))
     text = THAT_CLAUSE.sub("", REMARKS.sub(" ", ASIDES.sub(" ", CONCESSION.sub(" ", text))))

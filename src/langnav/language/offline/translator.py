@@ -32,7 +32,7 @@ from langnav.language.offline.corrections import (
 )
 from langnav.language.offline.english import is_english
 from langnav.language.offline.idioms import plain_idioms
-from langnav.language.offline.lexicon import ELEMENT_NOUNS, SEQUENCE_WORDS, STOPWORDS
+from langnav.language.offline.lexicon import ELEMENT_NOUNS, FOREIGN_WAYS, SEQUENCE_WORDS, STOPWORDS
 from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.particles import without_particles
@@ -46,7 +46,7 @@ from langnav.language.offline.restarts import (
     read_stated_amounts,
 )
 from langnav.language.offline.sidetalk import is_shout, without_spoken_count_in
-from langnav.language.offline.speech import plain_speech, unfinished_number
+from langnav.language.offline.speech import plain_letters, plain_speech, unfinished_number
 from langnav.language.offline.splitter import split_steps
 from langnav.language.offline.vocabulary import VOCABULARY
 from langnav.language.translator import Context, clean_prompt
@@ -109,7 +109,7 @@ def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
     refused = _refused_outright(text)
     if refused is not None:
         return refused
-    text = plain_idioms(plain_speech(canonical_numbers(without_spoken_count_in(text))))
+    text = plain_idioms(plain_speech(canonical_numbers(without_spoken_count_in(plain_letters(text)))))
     clauses, photo = _clauses(text, known_names)
     cut = next((c for c in map(unfinished_number, clauses) if c is not None), None)
     if cut is not None:
@@ -159,6 +159,10 @@ class _Assembly:
     blocking: list[str] = field(default_factory=list)
     #: clauses left unread since the last motion step (see ``_unread_between``)
     between: list[str] = field(default_factory=list)
+    #: each word of where left unread, with the steps said next to it (see ``_said_in_both_languages``)
+    near: list[tuple[str, list[Step]]] = field(default_factory=list)
+    #: of those, the ones said in a clause with no step: the next step said is next to them too
+    awaiting: list[list[Step]] = field(default_factory=list)
 
     def add(self, clause: str) -> Intent | None:
         """Read ``clause`` and join its steps to those before; the refusal of the whole prompt when the clause
@@ -166,7 +170,7 @@ class _Assembly:
         clause = with_unit_said_before(clause, self.previous, is_fragment(clause))
         again = said_again(clause, self.previous)
         if again is not None:
-            self.blocking.extend(_unread_between(self.steps, [again], self.between))
+            self._doubt(_unread_between(self.steps, [again], self.between), [*self.steps[-1:], again])
             self.between = []
             self.steps.append(again)  # "turn left ninety, and again": the same turn once more
             self.previous = again
@@ -189,15 +193,30 @@ class _Assembly:
         self.confidence = min(self.confidence, reading.confidence)
         self.unread.extend(u for u in reading.unread if u)
         self.questions.extend(reading.asks)
+        before = self.steps[-1:]
+        if reading.steps:
+            for near in self.awaiting:
+                near.append(reading.steps[0])
+            self.awaiting = []
         if reading.steps or reading.problem in UNREAD_PROBLEMS:
-            self.blocking.extend(u for u in reading.unread if u and spatial(u))
+            self._doubt([u for u in reading.unread if u and spatial(u)], [*before, *reading.steps],
+                        waits=not reading.steps)
         if reading.problem == Problem.UNREADABLE and not reading.steps:
             self.between.extend(u for u in reading.unread if u)
         elif reading.steps:
-            self.blocking.extend(_unread_between(self.steps, list(reading.steps), self.between))
+            self._doubt(_unread_between(self.steps, list(reading.steps), self.between), [*before, reading.steps[0]])
             self.between = []
         self._join(clause, reading)
         return None
+
+    def _doubt(self, unread: list[str], near: list[Step], *, waits: bool = False) -> None:
+        """Words left unread that could change where or how far, with the steps said next to them (``waits``: and
+        the next step said, still to come)."""
+        for text in unread:
+            self.blocking.append(text)
+            self.near.append((text, near))
+        if unread and waits:
+            self.awaiting.append(near)
 
     def _left_open(self, asked: tuple[Problem, str, Reading]) -> None:
         """A question the instructions after it did not take up: a problem of the prompt."""
@@ -275,7 +294,9 @@ class _Assembly:
             problem, clause, reading = misread[0]
             return _clarify(_problem_message(problem, clause), confidence=reading.confidence,
                             unread=[] if problem in SURE_REFUSALS else list(reading.unread))
-        blocking = [] if only_stops(steps) else list(dict.fromkeys(self.blocking))  # a word said twice: asked once
+        said_twice = {text for text, near in self.near if _said_in_both_languages(text, near)}
+        unread = [u for u in unread if u not in said_twice]
+        blocking = [] if only_stops(steps) else [u for u in dict.fromkeys(self.blocking) if u not in said_twice]
         if steps and (blocking or self.questions):
             # ask, don't guess: nothing runs; the reply says what would run and asks about the rest
             return _clarify(ask_message(steps, blocking, self.questions), confidence=ASK_CONFIDENCE,
@@ -301,6 +322,30 @@ def _nothing_to_run(problems: list[tuple[Problem, str, Reading]], unread: list[s
     sure = all(p in SURE_REFUSALS for p, _, _ in problems)
     return _clarify(_problem_message(problem, clause), confidence=min(r.confidence for _, _, r in problems),
                     unread=[] if sure else unread)
+
+
+def _said_in_both_languages(text: str, near: Sequence[Step]) -> bool:
+    """Every word of where in ``text`` is a way said in another language (``lexicon.FOREIGN_WAYS``) that a step
+    said next to it takes: a bilingual speaker says the way in both languages ("peeche, back side, thirty
+    centimetre": Hindi "back"; "turn left, izquierda, ninety degrees"), so the word is read. A way the steps next
+    to it do not take ("turn right, izquierda, ninety degrees") may be the way meant: the robot asks."""
+    words = [w.strip(",.;:!?'\"") for w in spatial(text)]
+    return bool(words) and all(w in FOREIGN_WAYS and any(_takes(FOREIGN_WAYS[w], s) for s in near) for w in words)
+
+
+def _takes(way: str, step: Step) -> bool:
+    """Whether ``step`` goes the way a word of ``lexicon.FOREIGN_WAYS`` says."""
+    if way == "stop":
+        return step.movement == Movement.STOP
+    if way in ("left", "right"):
+        # (the side said in English too: a turn whose side was not said carries a placeholder side, which agrees
+        # with nothing: "turn links, ninety degrees" asks)
+        return step.movement in (Movement.MOVE, Movement.ROTATE) and step.direction == Direction(way) \
+            and re.search(rf"\b{way}\b", step.text.lower()) is not None
+    if way in ("forward", "back"):
+        way_said = Direction.FORWARD if way == "forward" else Direction.BACKWARD
+        return step.movement == Movement.MOVE and step.direction == way_said
+    return False
 
 
 #: The steps that move the robot: an unknown word between two of them may undo the first (see _unread_between).
