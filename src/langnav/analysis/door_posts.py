@@ -3,11 +3,12 @@
 A post, a column or the mullion of a double door standing in an opening splits the boundary
 between two spaces into two gaps side by side, and the segmentation proposes a doorway in each.
 A person sees one opening, as wide as both gaps and the post: a lobby's open front with a column
-in it, an arch with a pillar. A post stands alone in the line of the wall, no deeper than it is
-wide; a wall meeting that line (a partition between two rooms behind a glass front) is none. Where that whole opening is wider than the widest door,
-neither gap is a door, however door-wide each reads: they are the two halves of a wide opening
-(still a way between the two spaces). Two doors into the same room are farther apart than a
-post is wide: each needs its frame and a stretch of wall beside it.
+in it, an arch with a pillar. Where that whole opening is wider than the widest door, neither gap
+is a door, however door-wide each reads: they are the two halves of a wide opening (still a way
+between the two spaces). A post stands alone in the line of the wall, no deeper than it is wide;
+a wall meeting that line (a partition between two rooms behind a glass front) is none. Two doors
+into the same room are farther apart than a post is wide: each needs its frame and a stretch of
+wall beside it.
 
 Pure functions over the grid's masks; thresholds in metres with their reasons.
 """
