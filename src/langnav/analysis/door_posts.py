@@ -6,7 +6,8 @@ A person sees one opening, as wide as both gaps and the post: a lobby's open fro
 in it, an arch with a pillar. Where that whole opening is wider than the widest door, neither gap
 is a door, however door-wide each reads: they are the two halves of a wide opening (still a way
 between the two spaces). A post stands alone in the line of the wall, no deeper than it is wide;
-a wall meeting that line (a partition between two rooms behind a glass front) is none. Two doors
+a wall meeting that line (a partition between two rooms behind a glass front) is none, and so is
+a pier in a row of them (a glass front seen only at its piers: each gap is a way in). Two doors
 into the same room are farther apart than a post is wide: each needs its frame and a stretch of
 wall beside it.
 
@@ -112,17 +113,28 @@ def post_span_m(free: BoolArray, a: RawDoor, b: RawDoor, resolution_m: float) ->
 
 def wide_with_posts(doors: Sequence[RawDoor], free: BoolArray, resolution_m: float,
                     params: AnalysisParams) -> tuple[list[RawDoor], list[RawDoor]]:
-    """Split ``doors`` into (doors, halves of a wide opening): those with another of ``doors``
-    beside them across a post with which they make an opening wider than the widest door (see
-    module doc). Only gaps that each read as a door are paired: a slit or a glass pane's gap
-    beside a door is a hole in its wall, not the other half of its opening."""
+    """Split ``doors`` into (doors, halves of a wide opening): pairs of them side by side across
+    a post that make an opening wider than the widest door (see module doc). Only gaps that each
+    read as a door are paired: a slit or a glass pane's gap beside a door is a hole in its wall,
+    not the other half of its opening. Three gaps and more in a row across posts are a front of
+    panes between piers (a glass front the lidar saw only at its piers), each gap a way in: they
+    stay as they are."""
     widest = params.door_wide_max_width_m + resolution_m
-    kept: list[RawDoor] = []
-    halves: list[RawDoor] = []
-    for d in doors:
-        spans = (post_span_m(free, d, e, resolution_m) for e in doors)
-        (halves if any(s is not None and s > widest for s in spans) else kept).append(d)
-    return kept, halves
+    n = len(doors)
+    span: dict[tuple[int, int], float] = {}
+    for i in range(n):
+        for j in range(i + 1, n):
+            s = post_span_m(free, doors[i], doors[j], resolution_m)
+            if s is not None:
+                span[i, j] = s
+    beside = [[j for j in range(n) if (min(i, j), max(i, j)) in span] for i in range(n)]
+    halves_at: set[int] = set()
+    for (i, j), s in span.items():
+        # One post between two gaps, neither with another gap across a post beside it.
+        if s > widest and beside[i] == [j] and beside[j] == [i]:
+            halves_at.update((i, j))
+    kept = [d for k, d in enumerate(doors) if k not in halves_at]
+    return kept, [d for k, d in enumerate(doors) if k in halves_at]
 
 
 __all__ = ["POST_MAX_WIDTH_M", "post_span_m", "wide_with_posts"]
