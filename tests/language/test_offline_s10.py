@@ -210,3 +210,48 @@ def test_plain_letters_drops_accents_only() -> None:
     from langnav.language.offline.speech import plain_letters
     assert plain_letters("atrás yavaş hayır chút xíu łódź") == "atras yavas hayir chut xiu lodz"
     assert plain_letters("go 1½ m, turn 45°") == "go 1½ m, turn 45°"
+
+
+# ---------------------------------------------------------------- English ways of saying "I said it wrong"
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("turn left ninety, wrong, turn right ninety", [("rotate", "right", None, 90.0)]),
+    ("turn left ninety, strike that, turn right ninety", [("rotate", "right", None, 90.0)]),
+    ("turn left ninety, scrap that, turn right ninety", [("rotate", "right", None, 90.0)]),
+    ("turn left ninety, i misspoke, turn right ninety", [("rotate", "right", None, 90.0)]),
+    ("turn left ninety, on second thought, turn right ninety", [("rotate", "right", None, 90.0)]),
+    ("turn left ninety, or actually turn right ninety", [("rotate", "right", None, 90.0)]),
+    ("go forward two metres, delete that, go back one metre", [("move", "backward", 1.0, None)]),
+    ("go forward two metres, turn left, start over, turn right", [("rotate", "right", None, None)]),
+])
+def test_english_corrections_take_the_instruction_back(prompt: str, expected: Plan) -> None:
+    assert plan(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "turn left ninety, hmm not quite, turn right ninety",  # English words the reading does not know between two
+    "go forward two metres, not that, go back one metre",  # whole instructions: they may take the first back
+    "turn left ninety, not left, turn right ninety",
+])
+def test_unread_english_between_two_whole_instructions_asks(prompt: str) -> None:
+    assert asks(prompt)
+
+
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("turn to your left, dear, ninety degrees", [("rotate", "left", None, 90.0)]),  # an amount completing it
+    ("face north, dear? face north", [("rotate", None, None, None)]),               # the same facing said again
+])
+def test_unread_english_before_what_completes_or_repeats_takes_nothing_back(prompt: str, expected: Plan) -> None:
+    assert plan(prompt) == expected
+
+
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("turn left thirty degrees not forty", [("rotate", "left", None, 30.0)]),  # amount against amount
+    ("turn left, not right", [("rotate", "left", None, None)]),                # side against side
+])
+def test_a_contrast_sets_alternatives_of_one_kind_against_each_other(prompt: str, expected: Plan) -> None:
+    assert plan(prompt) == expected
+
+
+def test_not_a_side_after_an_amount_takes_the_side_back_and_asks() -> None:
+    """"turn left ninety, not left, turn right ninety": "not left" is no contrast with "ninety"; both turns never run."""
+    assert asks("turn left ninety, not left, turn right ninety")

@@ -44,17 +44,24 @@ DISMAY: Final = (r"oops|oopsie|whoops|whoopsie|ar+gh+|ugh+|aiy(?:a+h?|o+h?)|alam
 CORRECTION_START_RE: Final = re.compile(
     rf"^(?:(?:{DISMAY})\b[\s,!.]*|"
     r"(?:(?:oh|ah|uh|um)\s*,?\s+(?=sorry|no\b|i\s+mean)|actually|no\s+(?:wait|hang\s+on|hold\s+on)|no(?!\s+(?:further|longer|more|need)\b)|na+h|naw|nope|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
-    r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|my\s+(?:bad|mistake|error|fault)|or\s+rather|rather|make\s+that|make\s+it|correction|"
+    r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|my\s+(?:bad|mistake|error|fault|b)|"
+    # the other ways English speakers say they said it wrong ("wrong", "I misspoke", "on second thought")
+    r"(?:that'?s\s+|that\s+is\s+)?wrong|i\s+misspoke|let\s+me\s+(?:rephrase(?:\s+that)?|correct\s+(?:that|myself))|"
+    r"on\s+second\s+thoughts?|second\s+thoughts?|change\s+of\s+plans?|or\s+actually|or\s+rather|rather|make\s+that|make\s+it|correction|"
     r"oops)\b[\s,]*)+", re.IGNORECASE)
 #: Words that take back what was said before ("never mind", "scratch that"). Radio and naval procedure say it
 #: with the word alone: "disregard" (ACP 125: the last transmission was in error) and "belay" (cancel the order).
 CANCEL_RE: Final = re.compile(r"\b(?:never\s*mind|scratch\s+that|forget\s+(?:it|that|everything|all\s+(?:of\s+)?that)|"
                               r"(?:belay|disregard)(?:\s+(?:that|the\s+last|my\s+last)(?:\s+(?:one|order|transmission))?)?|"
+                              # dictation and editing words ("strike that", "delete that", "undo that")
+                              r"(?:strike|delete|erase|undo|scrap)\s+(?:that|the\s+last(?:\s+one)?)|"
+                              r"(?:let'?s\s+|let\s+me\s+)?(?:start\s+(?:over|again)|start\s+from\s+scratch)|"
                               r"cancel\s+that|ignore\s+that)\b[\s,]*", re.IGNORECASE)
 #: Of those, the words that drop the whole request so far, not only its last instruction: "never mind"
 #: dismisses what the speaker was asking for ("keep going two feet, go south, go two t- ... never mind,
 #: so go three feet, turn south"); "scratch that" takes back the last thing said.
-CANCEL_ALL_RE: Final = re.compile(r"\b(?:never\s*mind|forget\s+(?:everything|all\s+(?:of\s+)?that))\b", re.IGNORECASE)
+CANCEL_ALL_RE: Final = re.compile(r"\b(?:never\s*mind|forget\s+(?:everything|all\s+(?:of\s+)?that)|start\s+(?:over|again)|"
+                                  r"start\s+from\s+scratch)\b", re.IGNORECASE)
 #: Words that give the side of a move or a turn (a fragment may carry one).
 SIDE_RE: Final = re.compile(
     r"(?:\b(?:to|on|towards?)\s+(?:the|your)\s+)?\b(?:left|right|clockwise|counter\s*clockwise|anti\s*clockwise|cw|ccw|"

@@ -120,6 +120,7 @@ CORRECTION_MARKERS: Final = (
     r"i\s+meant\s+to\s+say", r"i\s+mean\s+to\s+say", rf"make\s+it(?=\s+(?:\d|a\b|an\b|half|just|only|(?:{NUMBER_WORDS})\b))",
     r"(?:i'?m|i\s+am|im)\s+sorry", r"sorry", r"i\s+meant", r"i\s+mean", r"i\s+said", r"my\s+(?:bad|mistake|error|fault)", r"or\s+rather", r"make\s+that",
     r"scratch\s+that", r"never\s*mind", r"correction", r"oops", r"disregard", r"belay",
+    r"(?:strike|delete|erase|undo|scrap)\s+that", r"i\s+misspoke", r"on\s+second\s+thoughts?",
     # "turn eighty degrees right no eighty five": "no" right before a number corrects the amount
     rf"no(?=\s+(?:\d|a\s+hundred|half|{NUMBER_WORDS})\b)",
     # "turn left no right thirty degrees": "no" right before another side corrects the side
@@ -347,8 +348,30 @@ _ALTERNATIVE: Final = (rf"(?:(?:to\s+(?:the|your)\s+)?(?:{TURN_SIDE_WORDS}|forwa
 #: A contrast that names what is not meant ("turn left, not right"; "three feet not four"; "not left but
 #: right"; "not right, left", "not right, i mean left"): the alternative said with "not" is no instruction,
 #: only the other one is (and the clause is no negation of the whole instruction).
-CONTRAST_AFTER: Final = re.compile(rf"\b(?P<said>{_ALTERNATIVE})\s*,?\s+(?:and\s+|but\s+)?not\s+{_ALTERNATIVE}\b"
+CONTRAST_AFTER: Final = re.compile(rf"\b(?P<said>{_ALTERNATIVE})\s*,?\s+(?:and\s+|but\s+)?not\s+(?P<other>{_ALTERNATIVE})\b"
                                    r"(?!\s+(?:but|rather)\b)", re.IGNORECASE)
+#: The kinds of alternative a contrast sets against each other.
+_SIDE_ALTERNATIVE: Final = re.compile(rf"(?:to\s+(?:the|your)\s+)?(?:{TURN_SIDE_WORDS})$", re.IGNORECASE)
+_UNIT_ALTERNATIVE: Final = re.compile(r"(?:feet|foot|inch(?:es)?|yards?|met(?:er|re)s?|centimet(?:er|re)s?|degrees?)$",
+                                      re.IGNORECASE)
+
+
+def _alternative_kind(word: str) -> str:
+    if _SIDE_ALTERNATIVE.match(word):
+        return "side"
+    if _UNIT_ALTERNATIVE.match(word) or re.match(rf"(?:\d+(?:\.\d+)?|{NUMBER_WORDS})$", word, re.IGNORECASE):
+        return "amount"  # ("thirty degrees not forty": the unit ends the amount set against the number)
+    return "way"
+
+
+def _contrast_after(m: re.Match[str]) -> str:
+    """"turn left, not right", "three feet not four": the alternative said with "not" is set against the one just
+    said, of the same kind and another one; "turn left ninety, not left" sets nothing against "ninety": the "not"
+    takes the side said before back, and stays to be read (it asks, or a correction follows)."""
+    said, other = m.group("said"), m.group("other")
+    if _alternative_kind(said) != _alternative_kind(other) or said.lower() == other.lower():
+        return m.group(0)
+    return said
 CONTRAST_BEFORE: Final = re.compile(rf"\bnot\s+{_ALTERNATIVE}\s*(?:,?\s+(?:but|rather)\s+(?=\S)|,\s*(?:i\s+mean\s+)?"
                                     rf"(?={_ALTERNATIVE}\s*(?:[,.;!?]|$)))", re.IGNORECASE)
 #: "go forward and stop after two metres": the amount is how far the move goes (a stop after a place,
@@ -446,7 +469,7 @@ def plain_speech(prompt: str) -> str:
     text = LIST_ITEM.sub(". ", ENUMERATION.sub(" ", text))
     text = HOLDING_THE_FLOOR.sub("", TAG_QUESTION.sub(".", text))
     text = RESTATEMENT_MARKERS.sub(", ", text)
-    text = CONTRAST_AFTER.sub(r"\g<said>", CONTRAST_BEFORE.sub("", text))
+    text = CONTRAST_AFTER.sub(_contrast_after, CONTRAST_BEFORE.sub("", text))
     text = STOP_AFTER_AMOUNT.sub(" ", text)
     text = RADIO_NOISE.sub(" ", RADIO_NO.sub(" no", FOREIGN_NO.sub(" no", RADIO_CALL.sub(" ", text))))
     text = _UNIT_THEN_EXACT.sub(r"\g<unit>", NUMBER_RESTART.sub("", text))

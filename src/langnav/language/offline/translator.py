@@ -201,10 +201,11 @@ class _Assembly:
         if reading.steps or reading.problem in UNREAD_PROBLEMS:
             self._doubt([u for u in reading.unread if u and spatial(u)], [*before, *reading.steps],
                         waits=not reading.steps)
-        if reading.problem == Problem.UNREADABLE and not reading.steps:
+        if reading.problem in _UNREAD_ALONE and not reading.steps:
             self.between.extend(u for u in reading.unread if u)
         elif reading.steps:
-            self._doubt(_unread_between(self.steps, list(reading.steps), self.between), [*before, reading.steps[0]])
+            self._doubt(_unread_between(self.steps, list(reading.steps), self.between,
+                                        whole=not reading.amends_previous), [*before, reading.steps[0]])
             self.between = []
         self._join(clause, reading)
         return None
@@ -352,7 +353,13 @@ def _takes(way: str, step: Step) -> bool:
 _MOTIONS: Final = frozenset({Movement.MOVE, Movement.ROTATE, Movement.NAVIGATE})
 
 
-def _unread_between(before: Sequence[Step], after: Sequence[Step], unread: Sequence[str]) -> list[str]:
+#: Clauses read as no instruction at all, or as one not to do ("not left"): between two instructions, they may
+#: take the first back (see _unread_between).
+_UNREAD_ALONE: Final = frozenset({Problem.UNREADABLE, Problem.NO_ANTECEDENT, Problem.NEGATED})
+
+
+def _unread_between(before: Sequence[Step], after: Sequence[Step], unread: Sequence[str], *,
+                    whole: bool = False) -> list[str]:
     """The clauses left unread (``unread``) that stand between a motion said before and one said after.
 
     Speakers take an instruction back with a word and then say what they mean: "turn right ninety, nein, turn
@@ -360,12 +367,20 @@ def _unread_between(before: Sequence[Step], after: Sequence[Step], unread: Seque
     "sorry", "disregard", "belay" ...); a word of another language the reading does not know may be one, and
     then it cannot tell a correction (only the second motion is meant) from a pause (both are): doing both would
     move or turn more than asked if it was a correction. So such a word blocks the plan and the robot asks. (An
-    English word it does not know, "dear", "easy", is no correction; before the first motion or after the last,
-    an unknown word takes nothing back: "unit one, stop"; "turn around po".)"""
+    English word it does not know before an amount that completes the instruction before it, "turn to your left,
+    dear, ninety degrees", "slew right, easy, about thirty degrees", is no correction; before the first motion or
+    after the last, an unknown word takes nothing back: "unit one, stop"; "turn around po".)
+
+    Between two whole instructions (``whole``: the second no amount completing the first), English words it does
+    not know ask too: English has more ways to say "I said it wrong" than any list ("turn left ninety, the
+    opposite, turn right ninety"; "go forward two metres, not that, go back one metre"), and doing both would move
+    or turn more than asked if it was one."""
     if not unread or not any(s.movement in _MOTIONS for s in before) \
             or not any(s.movement in _MOTIONS for s in after):
         return []
-    return [u for u in unread if any(_foreign(w) for w in u.split())]
+    # (the same facing or stop said again is no second instruction: "face north, dear? the window is north")
+    whole = whole and not _asked_again(before[-1], after[0])
+    return [u for u in unread if whole or any(_foreign(w) for w in u.split())]
 
 
 def _foreign(word: str) -> bool:
