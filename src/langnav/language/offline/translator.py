@@ -32,7 +32,13 @@ from langnav.language.offline.corrections import (
 )
 from langnav.language.offline.english import is_english
 from langnav.language.offline.idioms import plain_idioms
-from langnav.language.offline.lexicon import ELEMENT_NOUNS, FOREIGN_WAYS, SEQUENCE_WORDS, STOPWORDS
+from langnav.language.offline.lexicon import (
+    ELEMENT_NOUNS,
+    FOREIGN_WAYS,
+    ORDER_WORDS,
+    SEQUENCE_WORDS,
+    STOPWORDS,
+)
 from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.particles import without_particles
@@ -380,7 +386,13 @@ def _unread_between(before: Sequence[Step], after: Sequence[Step], unread: Seque
         return []
     # (the same facing or stop said again is no second instruction: "face north, dear? the window is north")
     whole = whole and not _asked_again(before[-1], after[0])
-    return [u for u in unread if whole or any(_foreign(w) for w in u.split())]
+    # (words that put the instructions in order say both are meant: "turn left, later, turn right forty five")
+    return [u for u in unread if (whole and not _ORDER_ONLY_RE.match(u)) or any(_foreign(w) for w in u.split())]
+
+
+#: A clause of only words that put instructions in order (``lexicon.ORDER_WORDS``: "later", "plus", "n", "&").
+_ORDER_ONLY_RE: Final = re.compile(r"^\W*(?:(?:" + "|".join(w.replace(" ", r"\s+") for w in ORDER_WORDS)
+                                   + r")\b\W*|&\W*)+$", re.IGNORECASE)
 
 
 def _foreign(word: str) -> bool:
