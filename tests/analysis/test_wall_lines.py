@@ -137,7 +137,9 @@ def test_a_wing_behind_an_arch_cut_in_a_wall_is_a_room_of_its_own(hollow: bool, 
     assert seg.doors == ()
     [arch] = seg.openings
     assert set(arch.connects) == {wing.id, living.id}
-    assert arch.width_m == pytest.approx(3.3 if hollow else 3.15, abs=0.25)  # a line wall ends past its end points
+    # Its clear width: 3.3 m (3.15 m past a line wall's rounded ends); on a turned, noisy map
+    # the stair-stepped wall and its specks take up to 0.4 m of it.
+    assert (3.3 if hollow else 3.15) - 0.45 <= arch.width_m <= 3.3 + 0.1
 
 
 @pytest.mark.parametrize("hollow", [False, True])

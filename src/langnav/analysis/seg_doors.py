@@ -81,8 +81,7 @@ def doors_between(labels: IntArray, clearance_m: FloatArray, resolution_m: float
                   min_width_m: float | None = None) -> list[RawDoor]:
     """Doorways along the boundaries of ``labels`` (see module doc), from ``min_width_m``
     (default ``params.door_min_width_m``) to ``params.door_max_width_m`` wide (between two
-    spaces: up to ``params.seg_wall_gap_max_width_m``, a wide gap in a wall line, or an arch up
-    to ``params.seg_wall_line_arch_max_m``).
+    spaces: up to ``params.seg_wall_gap_max_width_m``, a wide gap in a wall line).
 
     With ``outside_label``, only boundaries between a space and that label are examined, and the
     doorway's ``b`` is 0 (unknown).
@@ -107,9 +106,8 @@ def doors_between(labels: IntArray, clearance_m: FloatArray, resolution_m: float
     starts = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
     ends = np.r_[starts[1:], key.size]
     min_w = (params.door_min_width_m if min_width_m is None else min_width_m) - resolution_m
-    # Between two spaces, a gap in a wall line wider than a door may separate them too (and
-    # an arch cut in a wall, up to seg_wall_line_arch_max_m: see wall_lines).
-    wide = max(params.seg_wall_gap_max_width_m, params.seg_wall_line_arch_max_m) if outside_label is None else 0.0
+    # Between two spaces, a gap in a wall line wider than a door may separate them too.
+    wide = params.seg_wall_gap_max_width_m if outside_label is None else 0.0
     max_w = max(params.door_max_width_m, params.door_wide_max_width_m, wide) + resolution_m
     found: list[RawDoor] = []
     for s0, s1 in zip(starts, ends, strict=True):
