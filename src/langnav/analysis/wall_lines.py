@@ -571,7 +571,7 @@ def _with_floor(floor_at: _LineSampler[np.bool_], cells: list[tuple[IntArray, In
 
 
 def _partition_share(both_at: _LineSampler[np.uint8], u_end: FloatArray, sign: float, v: FloatArray, side: int,
-                     reach: int, thin: int, hollow: BoolArray | None = None) -> FloatArray:
+                     reach: int, thin: int) -> FloatArray:
     """Per candidate: of the wall cells on the line at ``v`` over ``side`` cells from ``u_end``
     on (towards ``sign``), the share where the wall across the line is at most ``thin`` cells
     thick with floor just beyond both of its faces (within two cells); 0 with no wall cell.
@@ -580,13 +580,10 @@ def _partition_share(both_at: _LineSampler[np.uint8], u_end: FloatArray, sign: f
     vv = (v[:, None] + np.arange(-reach, reach + 1, dtype=np.float64))[:, None, :]
     both = both_at(u, vv)  # (candidate, cell along, cell across)
     w, f = (both & WALL_BIT) > 0, (both & FLOOR_BIT) > 0
-    on, lo, hi = _band_runs(w, reach)
-    if hollow is not None and hollow.any():
-        # The wall's thickness is that of what is not floor across it: a wall's two faces with
-        # its unscanned inside between them (a thick wall drawn as two lines) are one wall.
-        _, lo_h, hi_h = _band_runs(~f, reach)
-        lo = np.where(hollow[:, None], lo_h, lo)
-        hi = np.where(hollow[:, None], hi_h, hi)
+    # The wall's thickness is that of what is not floor across it: a wall's two faces with its
+    # unscanned inside between them (a thick wall or a block drawn as its outline) are one wall.
+    on = _band_runs(w, reach)[0]
+    _, lo, hi = _band_runs(~f, reach)
     idx = np.arange(w.shape[-1])
     floor_before = (f & (idx >= (lo - 2)[..., None]) & (idx < lo[..., None])).any(axis=-1)
     floor_after = (f & (idx > hi[..., None]) & (idx <= (hi + 2)[..., None])).any(axis=-1)
@@ -797,7 +794,6 @@ def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: An
     max_depth = WALL_MAX_THICKNESS_M / res + 1.0  # + the cell the line runs through
     thin = round(WALL_MAX_THICKNESS_M / res) + 1
     reach = math.ceil(2 * params.door_max_depth_m / res) + 2
-    arch_min = (params.seg_wall_line_gap_max_m + res) / res
     both = np.where(wall, WALL_BIT, 0).astype(np.uint8) | np.where(floor, FLOOR_BIT, 0).astype(np.uint8)
     out: list[WallGap] = []
     for lc in _line_candidates(wall, dirs, res, params, params.seg_wall_line_gap_max_m,
@@ -808,7 +804,7 @@ def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: An
         for b0 in range(0, lc.cand.size, CANDIDATE_BLOCK):
             front = None if lc.front is None else lc.front[b0:b0 + CANDIDATE_BLOCK]
             out += _gaps_kept(lc.cand[b0:b0 + CANDIDATE_BLOCK], lc.line, lc.pos, lc.umin, lc.vmin, floor_at,
-                              wall_at, both_at, _GapScales(past, depths, max_depth, thin, reach, side, arch_min), res,
+                              wall_at, both_at, _GapScales(past, depths, max_depth, thin, reach, side), res,
                               front)
     widest_door = params.seg_wall_line_gap_max_m + res
     if any(g.width_m > widest_door and not g.in_front for g in out):
@@ -851,8 +847,6 @@ class _GapScales:
     thin: int
     reach: int
     side: int
-    #: Gaps wider than this (cells) are arches (see the module doc).
-    arch_min: float = math.inf
 
 
 def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: int,
@@ -865,7 +859,6 @@ def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: i
     v_line = (line[cand] + vmin).astype(np.float64)
     ua, ub = (pos[cand] + umin).astype(np.float64), (pos[cand + 1] + umin).astype(np.float64)  # the last / next wall cell
     inner = (ub - ua - 1).astype(np.int64)
-    arch = inner > k.arch_min
     group, step = _ragged(inner)
     on_floor = floor_at(ua[group] + 1.0 + step, v_line[group])
     floor_share = np.bincount(group, weights=on_floor, minlength=cand.size) / np.maximum(inner, 1)
@@ -881,13 +874,11 @@ def _gaps_kept(cand: IntArray, line: IntArray, pos: IntArray, umin: int, vmin: i
     keep[idx] = _through_depth(wall_at, ua[idx], ub[idx], v_line[idx], k.reach, leaves[idx]) <= k.max_depth
     # The wall runs on past both ends as a partition between two spaces: thin, floor
     # on both sides (an outer wall has unknown outside it, a shelf row or a counter is
-    # thick, a wall with cupboards along it has them on one side only). Beside an arch,
-    # the unscanned inside of the wall it is cut in (a thick wall drawn as its two faces)
-    # counts as that wall: an arch needs a solid wall, however it was scanned.
+    # thick, a wall with cupboards along it has them on one side only).
     idx = np.flatnonzero(keep)
     keep[idx] = np.minimum(
-        _partition_share(both_at, ua[idx], -1.0, v_line[idx], k.side, k.reach, k.thin, arch[idx]),
-        _partition_share(both_at, ub[idx], 1.0, v_line[idx], k.side, k.reach, k.thin, arch[idx])) \
+        _partition_share(both_at, ua[idx], -1.0, v_line[idx], k.side, k.reach, k.thin),
+        _partition_share(both_at, ub[idx], 1.0, v_line[idx], k.side, k.reach, k.thin)) \
         >= PARTITION_MIN_SHARE
     # On both sides the space runs on along the wall past one of the gap's ends (behind the
     # door leaves standing open in it).
