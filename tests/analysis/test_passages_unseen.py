@@ -183,3 +183,30 @@ def test_a_gap_in_a_free_standing_line_in_the_whole_analysis(degrees: float) -> 
     assert a.doors == ()
     (p,) = a.narrow_passages
     assert p.width_m == pytest.approx(0.7, abs=0.051)
+
+
+def long_cross_aisle() -> OccupancyGrid:
+    """A 9 x 10 m store room (y 0..10): a 0.4 m rack stands 0.8 m off its west wall (x 0.8-1.2,
+    0.3 m from the north and south walls: too tight to pass), and seven 4 m rack rows run east
+    from x = 2 (0.4 m deep, from y = 1.2 every 1.2 m): their 0.8 m aisles open east into the room
+    and west into the 0.8 m cross aisle, which meets the room's floor only past the first and last
+    rows, 3.6 m from the middle aisle's west mouth."""
+    b = MapBuilder(11.0, 12.0, origin=(-1.0, -1.0))
+    b.room(0.0, 0.0, 9.0, 10.0)
+    b.box(0.8, 0.3, 1.2, 9.7)
+    for k in range(7):
+        b.box(2.0, 1.2 + 1.2 * k, 6.0, 1.6 + 1.2 * k)
+    return b.build(source="long_cross_aisle")
+
+
+@pytest.mark.parametrize("degrees", [0.0, 23.0])
+def test_aisles_leading_round_a_rack_into_a_long_cross_aisle_lead_somewhere(degrees: float) -> None:
+    # The west mouths open into the cross aisle, which reaches open floor within the way round a
+    # thing standing in a room (WAY_ROUND_M): all six aisles lead somewhere.
+    grid = long_cross_aisle()
+    found = sorted(passages_of(rotated(grid, degrees) if degrees else grid), key=lambda p: p.center[1])
+    assert len(found) == 6
+    assert all(p.width_m == pytest.approx(0.8, abs=0.06) for p in found)
+    assert all(p.length_m == pytest.approx(4.0, abs=0.15) for p in found)
+    if not degrees:
+        assert [p.center for p in found] == [pytest.approx((4.0, 2.0 + 1.2 * k), abs=0.06) for k in range(6)]

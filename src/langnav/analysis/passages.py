@@ -15,7 +15,8 @@ sides along most of its length (or a wall along one side and a single doorway in
 passage with a door off it), solid ones (walls, furniture, a shelf's unscanned inside: not
 laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
 unexplored area), leads somewhere (both mouths open into free space wider than any passage, or, for
-an aisle, into another narrow way that reaches such space within ``MOUTH_LEADS_ON_M``: a dead-end
+an aisle, into another narrow way that reaches such space within ``MOUTH_LEADS_ON_M`` (the way round a
+thing standing in a room, in at one side and out at the other): a dead-end
 slot does not), is not a door's own gap (a door across its middle; a door at one of its mouths is
 how it is entered; a door found in a squeeze between two things with parallel faces, deeper than
 any wall, or across an aisle as long as a corridor between two such things, is no door), and is
@@ -164,10 +165,12 @@ THROAT_MIN_CELLS: Final = 3
 THROAT_SIDE_M: Final = 0.3
 #: A thin line beside a gap, drawn askew, steps this many cells off the gap's own band.
 THROAT_BAND_CELLS: Final = 2
-#: A mouth that opens into another narrow way (the next aisle round a shelving island) leads
-#: somewhere when that way reaches open floor within this distance of the mouth (m): about a
-#: shelf's length; a dead-end slot's far end leads nowhere however far one looks.
-MOUTH_LEADS_ON_M: Final = 3.0
+#: A mouth that opens into another narrow way (the next aisle round a shelving island, the strip
+#: round the end of a locker block between two rows of bunks) leads somewhere when that way
+#: reaches open floor within this distance of the mouth (m): the way round a thing standing in a
+#: room (WAY_ROUND_M), in at one side and out at the other; a dead-end slot's far end leads
+#: nowhere however far one looks.
+MOUTH_LEADS_ON_M: Final = WAY_ROUND_M
 
 BoolArray = npt.NDArray[np.bool_]
 
