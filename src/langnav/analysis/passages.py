@@ -33,6 +33,14 @@ any wall, or across an aisle as long as a corridor between two such things, is n
   clearly roomier (one of the equal lanes of a grid of bikes or desks); a roomier one only when
   it is the only way past.
 
+A gap no deeper than a doorway is a door's business, except a gap in a line of free-standing
+things (a line of screens, a rail, a detector arch between two machines): neither side is joined
+to the building's walls (so no doorway: doorways are in walls), both go on along the line away
+from the gap, no door was found there and no scan specks lie across it (a glass front's sparse
+returns); it is then judged as a squeeze between two things (tight, or the only way). Its middle
+line may be too short for a core (a line a cell or two thick): such throats are judged too, the
+way through square to the line between the things either side of the narrowest cell.
+
 A passage along a wall (between the wall and a long shelf) shares its skeleton line with the
 one-sided strip along the rest of the room's walls: a core without sides along most of its length
 is split into its two-sided stretches, and each is judged on its own. An aisle goes on past an
