@@ -379,10 +379,10 @@ def _open_floor(grid: OccupancyGrid, params: AnalysisParams, blocking: BoolArray
 def _core_pieces(floor: _Floor) -> tuple[list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]],
                                           list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]]]:
     """The cores of the narrow middle line long enough to be passages: per core its cells (window
-    rows, cols) and which of them are a ridge across (:func:`across_ridge`); and the throats
-    shorter than that but as long as the robot is wide (``GAP_MIN_CELLS``): a gap in a thin line
-    (a rail, a line of screens), whose middle line is no longer than the line is thick plus its
-    mouths, a passage only between free-standing things (:func:`_free_standing_things`)."""
+    rows, cols) and which of them are a ridge across (:func:`across_ridge`); and the throats, whole
+    chains too short for such a core (``THROAT_MIN_CELLS`` or more): a gap in a thin line (a rail,
+    a line of screens), whose middle line is no longer than the line is thick plus a cell or two,
+    a passage only in a line of free-standing things (:func:`_in_a_line`)."""
     params, res, d2, width_of = floor.params, floor.grid.resolution_m, floor.d2, floor.width_of
     band_of = (width_of > 2.0 * params.robot_radius_m) & (width_of <= params.passage_max_width_m)
     band = floor.open_ & band_of[d2]
