@@ -940,7 +940,9 @@ def _things_in_sight(ref: ElementRef, pool: list[Element], analysis: MapAnalysis
             pool = seen_near
     if ref.side is not None and space is None and ref.near is None:
         # "the obstacle on your right" places a thing by where the robot sees it: one behind a wall, in
-        # another room, is not on its right to a person standing there (ask rather than drive to it)
+        # another room, is not on its right to a person standing there (ask rather than drive to it).
+        # Only walls hide it: a plant beyond a bench row in the same room is seen over the benches, or
+        # round them as one steps aside (as for "the nearest obstacles")
         seen: list[Element] = []
         # nearest first; when only the nearest ones can be meant, the farther ones need no look
         wanted = ((ref.ordinal or 1) + count - 1 if ref.superlative in (None, Superlative.NEAREST)
@@ -948,7 +950,7 @@ def _things_in_sight(ref: ElementRef, pool: list[Element], analysis: MapAnalysis
         for e in sorted(pool, key=lambda e: distance_to(e, pose.xy)):
             if len(seen) >= wanted:
                 break
-            if isinstance(e, Obstacle) and in_sight(analysis, pose.xy, e):
+            if isinstance(e, Obstacle) and in_sight(analysis, pose.xy, e, past_things=True):
                 seen.append(e)
         if not seen and pool:
             raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]}{_where(ref)} from here: the nearest such "
