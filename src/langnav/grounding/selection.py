@@ -976,6 +976,18 @@ class _LocalRank:
         return 0 if any(_in_space(e, s, self.analysis) for s in self.here_group) else 1
 
 
+def _doors_in_sight(ref: ElementRef, pool: list[Element], analysis: MapAnalysis, pose: Pose) -> list[Element]:
+    """Doors picked by order, side or alone ("the third doorway behind you", "the door") in a space with
+    no door of its own (a corridor whose ways out are all wide openings): a person means a door both can
+    see, never one between two other rooms tens of metres away; ask when none is in sight. A door picked
+    by name, by a landmark, as passed or as the nearest one says itself which it is. With none in
+    sight, ``_counted_off`` says so and asks."""
+    if ref.label is not None or ref.relation is not None or ref.near is not None or ref.passed \
+            or ref.superlative not in (None, Superlative.FARTHEST):
+        return pool
+    return [e for e in pool if _gap_in_sight(analysis, pose.xy, e)]
+
+
 def _local_rank(analysis: MapAnalysis, pose: Pose, space: Room | None) -> _LocalRank:
     here = space_of(analysis, pose.xy)
     return _LocalRank(analysis, here, tuple(gap_joined(analysis, here)) if here is not None else (), space)
@@ -987,6 +999,9 @@ def _of_this_space(ref: ElementRef, pool: list[Element], analysis: MapAnalysis, 
     "the obstacle" of a room with one; "the fourth door on your left" counted among the doors of the
     space the robot is in."""
     here_group = list(rank.here_group)
+    if ref.kind == Kind.DOOR and space is None and rank.here is not None \
+            and not any(rank(e) == 0 for e in elements_of_kind(analysis, Kind.DOOR)):
+        pool = _doors_in_sight(ref, pool, analysis, pose)
     if ref.kind == Kind.DOOR and count == 1 and _plain(ref):
         _one_door_or_ask(pool, [space] if space is not None else here_group, analysis, pose)
     if ref.kind == Kind.OBSTACLE and count == 1 and _plain(ref) and space is None and here_group:
@@ -996,9 +1011,15 @@ def _of_this_space(ref: ElementRef, pool: list[Element], analysis: MapAnalysis, 
         if len(own) == 1:
             pool = own
     if ref.ordinal is not None and ref.kind in (Kind.DOOR, Kind.NARROW_PASSAGE) and rank.here is not None \
-            and space is None and any(rank(e) == 0 for e in elements_of_kind(analysis, ref.kind)):
+            and space is None and (ref.kind == Kind.DOOR
+                                   or any(rank(e) == 0 for e in elements_of_kind(analysis, ref.kind))):
         # "the fourth door on your left" counts the doors of the space the robot is in (README): with
-        # three of them on that side there is no fourth, whatever doors of other rooms it could see
+        # three of them on that side there is no fourth, whatever doors of other rooms it could see. A
+        # space with no door of its own has no first, second or third door either: counting the doors
+        # between two other rooms instead sends the robot to a door anywhere in the building (a corridor
+        # whose ways out are all open fronts: "the third doorway behind you" 68 m away), so the count comes
+        # up short and the robot asks. (Passages are not a space's own in that way: the first narrow
+        # passage ahead may be in the next space.)
         pool = [e for e in pool if rank(e) == 0]
     return pool
 
