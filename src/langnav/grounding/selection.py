@@ -854,8 +854,10 @@ def _candidates(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> list[Elem
     if ref.kind == Kind.NARROW_PASSAGE:
         # a gap between two things is the robot's to name only where it sees it: noise and furniture
         # leave hundreds such gaps on a real map, and one in another room is no "gap" a person in this
-        # one points at (the doorway in front is) -- see _gap_in_sight
+        # one points at (the doorway in front is) -- see _gap_in_sight. So is a passage the analysis
+        # found no deeper than a doorway: a gap in a line of things (a rail, a line of screens)
         between = {id(g) for g in gaps_between_things(analysis)}
+        between |= {id(p) for p in analysis.narrow_passages if p.length_m < analysis.params.door_max_depth_m}
         pool = [e for e in pool if id(e) not in between or _gap_in_sight(analysis, pose.xy, e)]
     if not pool:
         raise GroundingError(f"I see no {KIND_NOUN[ref.kind][1]} in this map.")
