@@ -565,9 +565,26 @@ def only_way_in(d: Door, analysis: MapAnalysis) -> bool:
 
 def doors_of(analysis: MapAnalysis) -> list[Door]:
     """The doors a person counts: the analysis's doors without the narrow gaps and the ways round a
-    thing standing in a room (``round_a_thing``)."""
+    thing standing in a room (``round_a_thing``), and the openings that are a room's only way in
+    (``entrance_opening``)."""
     round_ends = {id(d) for d in round_a_thing(analysis)}
-    return [d for d in analysis.doors if not is_gap(d, analysis) and id(d) not in round_ends]
+    return [*(d for d in analysis.doors if not is_gap(d, analysis) and id(d) not in round_ends),
+            *(o for o in analysis.openings if entrance_opening(o, analysis))]
+
+
+def entrance_opening(o: Door, analysis: MapAnalysis) -> bool:
+    """An opening of a door's width that is the only way into a room is that room's door. The map
+    analysis calls an opening a door only where the places on both sides are wider than it; a room
+    whose floor narrows at once behind its doorway (an archive with its shelf aisle facing the door, a
+    store with a rack row) fails that, yet a person enters the room through it and counts it with the
+    corridor's doors. An opening into a room that has other ways in stays a way between two parts of
+    a space (the end of a partition, the way past a cart): no door."""
+    if not NARROW_GAP_MAX_M <= o.width_m <= analysis.params.door_max_width_m:
+        return False
+    everything: list[Door | NarrowPassage] = [*analysis.doors, *analysis.openings, *analysis.narrow_passages]
+    ways = [w for w in everything if len(set(w.connects)) > 1]
+    rooms = {r.id for r in analysis.rooms if r.kind == ElementKind.ROOM}
+    return any(space in rooms and sum(space in w.connects for w in ways) == 1 for space in o.connects)
 
 
 def things_standing_free(analysis: MapAnalysis) -> list[Obstacle]:
@@ -747,7 +764,38 @@ def shape_filter(pool: list[Element], words: str) -> list[Element]:
 
 def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, words: str = "",
                 came_through: frozenset[str] = frozenset()) -> list[Element]:
-    """``count`` elements the words mean, best first ("the two obstacles in this room")."""
+    """``count`` elements the words mean, best first ("the two obstacles in this room").
+
+    In steps, each a rule about what the words pick: an answer the words give directly (a label, a
+    relation between spaces, a corner, "this room", "the gap"); the elements of the kind; those the
+    words place by space (``_placed_by_space``), by side (``_placed_by_side``), by sight for things
+    (``_things_in_sight``), by a landmark; the ones of the space the robot is in (``_of_this_space``);
+    then ordered by the superlative or by distance (``_ordered``) and counted off (``_counted_off``)."""
+    direct = _selected_directly(ref, analysis, pose, count, words)
+    if direct is not None:
+        return direct
+    pool = _candidates(ref, analysis, pose)
+    space = _space_for_ref(ref, analysis, pose)
+    pool = _placed_by_space(ref, pool, analysis, pose, space)
+    pool = _placed_by_side(ref, pool, pose, came_through)
+    if ref.kind == Kind.OBSTACLE:
+        pool = _things_in_sight(ref, pool, analysis, pose, count, words, space)
+    by_landmark: dict[int, float] | None = None
+    if ref.near is not None and not (ref.near.kind in (Kind.ROOM, Kind.HALLWAY) and space is not None):
+        pool, by_landmark = _near_landmark(ref, pool, analysis, pose)
+    rank = _local_rank(analysis, pose, space)
+    pool = _of_this_space(ref, pool, analysis, pose, count, space, rank)
+    ordered = _ordered(ref, pool, analysis, pose, rank, by_landmark)
+    ordered = _at_the_end_if_said(ref, ordered, pose, space, words)
+    return _counted_off(ref, ordered, count)
+
+
+def _selected_directly(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int,
+                       words: str) -> list[Element] | None:
+    """What the words name without a choice among the elements of a kind (None: choose): a name the
+    user gave (here unknown: ask), a label on the map ("door 2"), a space by its relation to another
+    ("the room across the hall"), a corner, "this room"; and "the gap" said of a door, which is a narrow
+    passage when the map has one that matches the words."""
     if ref.name:
         raise GroundingError(
             f"I don't know a place called '{ref.name}'; name it first: stand there and say 'call this spot the "
@@ -766,28 +814,38 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
 
         return select_related_spaces(ref, analysis, pose, count)
     if ref.kind == Kind.CORNER:
-        first = _select_corner(ref, analysis, pose)
-        if count == 1:
-            return [first]
-        space = _space_for_ref(ref, analysis, pose)
-        assert space is not None
-        rest = sorted((c for c in analysis.corners if c is not first and _in_space(c, space, analysis)),
-                      key=lambda c: math.dist(pose.xy, c.point))
-        if len(rest) < count - 1:
-            raise GroundingError(f"I see only {1 + len(rest)} corners here, so I cannot pick {count} of them.")
-        return [first, *rest[:count - 1]]
+        return _corners(ref, analysis, pose, count)
     if ref.kind in (Kind.ROOM, Kind.HALLWAY) and ref.in_current_room and ref.superlative is None \
             and ref.ordinal is None and count == 1:
         here = space_of(analysis, pose.xy)
         if here is None:
             raise GroundingError("I cannot tell which room I am in: I seem to be outside every room.")
         return [here]
-
     if ref.kind == Kind.DOOR and words and _GAP_RE.search(words) and not _DOOR_RE.search(words):
         try:
             return select_many(ref.model_copy(update={"kind": Kind.NARROW_PASSAGE}), analysis, pose, count, words)
         except GroundingError:
             pass  # no gap matches the words: "the gap" is a doorway
+    return None
+
+
+def _corners(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int) -> list[Element]:
+    """The corner the words mean (``_select_corner``) and, for more than one, the nearest others of its
+    space."""
+    first = _select_corner(ref, analysis, pose)
+    if count == 1:
+        return [first]
+    space = _space_for_ref(ref, analysis, pose)
+    assert space is not None
+    rest = sorted((c for c in analysis.corners if c is not first and _in_space(c, space, analysis)),
+                  key=lambda c: math.dist(pose.xy, c.point))
+    if len(rest) < count - 1:
+        raise GroundingError(f"I see only {1 + len(rest)} corners here, so I cannot pick {count} of them.")
+    return [first, *rest[:count - 1]]
+
+
+def _candidates(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> list[Element]:
+    """The elements of the kind the noun names; raises when the map has none."""
     pool = elements_of_kind(analysis, ref.kind)
     if ref.kind == Kind.NARROW_PASSAGE:
         # a gap between two things is the robot's to name only where it sees it: noise and furniture
@@ -795,10 +853,16 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         # one points at (the doorway in front is) -- see _gap_in_sight
         between = {id(g) for g in gaps_between_things(analysis)}
         pool = [e for e in pool if id(e) not in between or _gap_in_sight(analysis, pose.xy, e)]
-    noun_plural = KIND_NOUN[ref.kind][1]
     if not pool:
-        raise GroundingError(f"I see no {noun_plural} in this map.")
-    space = _space_for_ref(ref, analysis, pose)
+        raise GroundingError(f"I see no {KIND_NOUN[ref.kind][1]} in this map.")
+    return pool
+
+
+def _placed_by_space(ref: ElementRef, pool: list[Element], analysis: MapAnalysis, pose: Pose,
+                     space: Room | None) -> list[Element]:
+    """The elements in the space the words name ("the door of this room"); for a space placed relative
+    to the robot, another space than the one it stands in; for "the second room on your left" said in a
+    hallway, the rooms that open onto it."""
     if space is not None and ref.kind not in (Kind.ROOM, Kind.HALLWAY):
         pool = [e for e in pool if _in_space(e, space, analysis)]
     if ref.kind in (Kind.ROOM, Kind.HALLWAY) and not ref.in_current_room and _relative_to_robot(ref):
@@ -818,16 +882,29 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         opening = {i for o in ways_out if here_space.id in o.connects for i in o.connects}
         if any(e.id in opening for e in pool):
             pool = [e for e in pool if e.id in opening]
+    return pool
+
+
+def _placed_by_side(ref: ElementRef, pool: list[Element], pose: Pose,
+                    came_through: frozenset[str]) -> list[Element]:
+    """The elements on the side the words say; "on your left / right" never the door just come through
+    (``came_through_doors``); "behind you on the left": both sides hold."""
     if ref.side is not None:
         pool = [e for e in pool if matches_side(e, pose, ref.side)]
         if came_through and ref.side in (Side.LEFT, Side.RIGHT):
             pool = [e for e in pool if e.id not in came_through]
     if ref.also_side is not None:
-        pool = [e for e in pool if matches_side(e, pose, ref.also_side)]  # "behind you on the left": both hold
-    if ref.kind == Kind.OBSTACLE and words:
+        pool = [e for e in pool if matches_side(e, pose, ref.also_side)]
+    return pool
+
+
+def _things_in_sight(ref: ElementRef, pool: list[Element], analysis: MapAnalysis, pose: Pose, count: int,
+                     words: str, space: Room | None) -> list[Element]:
+    """Obstacles of the shape the noun implies, and, where no space is named, the ones the robot sees:
+    the nearest ones and the ones on a side are things a person standing there sees."""
+    if words:
         pool = shape_filter(pool, words)
-    if ref.kind == Kind.OBSTACLE and ref.side is None and ref.superlative == Superlative.NEAREST and space is None \
-            and ref.near is None:
+    if ref.side is None and ref.superlative == Superlative.NEAREST and space is None and ref.near is None:
         # "the two nearest obstacles" are things the robot sees from where it stands, not one nearer
         # by a straight line through a wall in the next room (when too few are in sight: all of them)
         wanted = (ref.ordinal or 1) + count - 1
@@ -839,7 +916,7 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
                 seen_near.append(e)
         if len(seen_near) >= wanted:
             pool = seen_near
-    if ref.kind == Kind.OBSTACLE and ref.side is not None and space is None and ref.near is None:
+    if ref.side is not None and space is None and ref.near is None:
         # "the obstacle on your right" places a thing by where the robot sees it: one behind a wall, in
         # another room, is not on its right to a person standing there (ask rather than drive to it)
         seen: list[Element] = []
@@ -855,18 +932,37 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
             raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]}{_where(ref)} from here: the nearest such "
                                  "thing is behind a wall. Which one do you mean?")
         pool = seen
-    by_landmark: dict[int, float] | None = None
-    if ref.near is not None and not (ref.near.kind in (Kind.ROOM, Kind.HALLWAY) and space is not None):
-        pool, by_landmark = _near_landmark(ref, pool, analysis, pose)
+    return pool
 
-    here = space_of(analysis, pose.xy)
-    here_group = gap_joined(analysis, here) if here is not None else []
 
-    def local_first(e: Element) -> int:
-        if here is None or space is not None or not isinstance(e, Door | NarrowPassage):
+@dataclass(frozen=True)
+class _LocalRank:
+    """Doors and passages of the space the robot is in (``here``, with the parts a gap narrower than any
+    door joins to it: ``here_group``) come before the others (0, else 1), unless the words name a space
+    (``space``); every other element ranks 0."""
+
+    analysis: MapAnalysis
+    here: Room | None
+    here_group: tuple[Room, ...]
+    space: Room | None
+
+    def __call__(self, e: Element) -> int:
+        if self.here is None or self.space is not None or not isinstance(e, Door | NarrowPassage):
             return 0
-        return 0 if any(_in_space(e, s, analysis) for s in here_group) else 1
+        return 0 if any(_in_space(e, s, self.analysis) for s in self.here_group) else 1
 
+
+def _local_rank(analysis: MapAnalysis, pose: Pose, space: Room | None) -> _LocalRank:
+    here = space_of(analysis, pose.xy)
+    return _LocalRank(analysis, here, tuple(gap_joined(analysis, here)) if here is not None else (), space)
+
+
+def _of_this_space(ref: ElementRef, pool: list[Element], analysis: MapAnalysis, pose: Pose, count: int,
+                   space: Room | None, rank: _LocalRank) -> list[Element]:
+    """"The door" of the space the robot is in (one, the one it faces, or ask: ``_one_door_or_ask``);
+    "the obstacle" of a room with one; "the fourth door on your left" counted among the doors of the
+    space the robot is in."""
+    here_group = list(rank.here_group)
     if ref.kind == Kind.DOOR and count == 1 and _plain(ref):
         _one_door_or_ask(pool, [space] if space is not None else here_group, analysis, pose)
     if ref.kind == Kind.OBSTACLE and count == 1 and _plain(ref) and space is None and here_group:
@@ -875,33 +971,48 @@ def select_many(ref: ElementRef, analysis: MapAnalysis, pose: Pose, count: int, 
         own = [e for e in pool if any(_in_space(e, s, analysis) for s in here_group)]
         if len(own) == 1:
             pool = own
-
-    if ref.ordinal is not None and ref.kind in (Kind.DOOR, Kind.NARROW_PASSAGE) and here is not None \
-            and space is None and any(local_first(e) == 0 for e in elements_of_kind(analysis, ref.kind)):
+    if ref.ordinal is not None and ref.kind in (Kind.DOOR, Kind.NARROW_PASSAGE) and rank.here is not None \
+            and space is None and any(rank(e) == 0 for e in elements_of_kind(analysis, ref.kind)):
         # "the fourth door on your left" counts the doors of the space the robot is in (README): with
         # three of them on that side there is no fourth, whatever doors of other rooms it could see
-        pool = [e for e in pool if local_first(e) == 0]
+        pool = [e for e in pool if rank(e) == 0]
+    return pool
 
+
+def _ordered(ref: ElementRef, pool: list[Element], analysis: MapAnalysis, pose: Pose, rank: _LocalRank,
+             by_landmark: dict[int, float] | None) -> list[Element]:
+    """The elements best first: by size or width for those superlatives, farthest first, nearest the
+    landmark ("the door next to the box"), else nearest first (the space's own doors first, ``rank``)."""
     sup = ref.superlative
     if sup in (Superlative.BIGGEST, Superlative.SMALLEST) and ref.kind == Kind.ROOM:
-        ordered = _rooms_by_size(pool, analysis, pose, biggest=sup == Superlative.BIGGEST)
-    elif sup in (Superlative.BIGGEST, Superlative.SMALLEST):
-        ordered = sorted(pool, key=lambda e: floor_area_m2(e, analysis), reverse=sup == Superlative.BIGGEST)
-    elif sup in (Superlative.WIDEST, Superlative.NARROWEST):
-        ordered = sorted(pool, key=width_of, reverse=sup == Superlative.WIDEST)
-    elif sup == Superlative.FARTHEST:
-        ordered = sorted(pool, key=lambda e: (local_first(e), -distance_to(e, pose.xy)))
-    elif by_landmark is not None and sup is None and ref.ordinal is None:
-        ordered = sorted(pool, key=lambda e: by_landmark[id(e)])  # "the door next to the box": nearest to it
-    else:
-        ordered = sorted(pool, key=lambda e: (local_first(e), distance_to(e, pose.xy)))
+        return _rooms_by_size(pool, analysis, pose, biggest=sup == Superlative.BIGGEST)
+    if sup in (Superlative.BIGGEST, Superlative.SMALLEST):
+        return sorted(pool, key=lambda e: floor_area_m2(e, analysis), reverse=sup == Superlative.BIGGEST)
+    if sup in (Superlative.WIDEST, Superlative.NARROWEST):
+        return sorted(pool, key=width_of, reverse=sup == Superlative.WIDEST)
+    if sup == Superlative.FARTHEST:
+        return sorted(pool, key=lambda e: (rank(e), -distance_to(e, pose.xy)))
+    if by_landmark is not None and sup is None and ref.ordinal is None:
+        return sorted(pool, key=lambda e: by_landmark[id(e)])  # "the door next to the box": nearest to it
+    return sorted(pool, key=lambda e: (rank(e), distance_to(e, pose.xy)))
 
-    if ref.kind == Kind.DOOR and sup == Superlative.FARTHEST and space is not None \
+
+def _at_the_end_if_said(ref: ElementRef, ordered: list[Element], pose: Pose, space: Room | None,
+                        words: str) -> list[Element]:
+    """"The last door at the end of the corridor": only the doors at its end (``_at_the_end``); ask when
+    there is none there."""
+    if ref.kind == Kind.DOOR and ref.superlative == Superlative.FARTHEST and space is not None \
             and space.kind == ElementKind.HALLWAY and words and _END_RE.search(words):
         ordered = [e for e in ordered if _at_the_end(e, space, pose)]
         if not ordered:
             raise GroundingError(f"I see no door at the end of {label_of(space)}: its doors are along its sides. "
                                  "Which door do you mean? Say e.g. 'the last door on your left'.")
+    return ordered
+
+
+def _counted_off(ref: ElementRef, ordered: list[Element], count: int) -> list[Element]:
+    """The ``count`` elements from the ordinal on ("the second and third"); says how many there are
+    when there are too few."""
     k = (ref.ordinal or 1) - 1
     if len(ordered) < k + count:
         if not ordered:

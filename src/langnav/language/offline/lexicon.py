@@ -191,7 +191,8 @@ NEUTRAL_ADJECTIVES: Final = frozenset({"open", "nearest-by", "available", "free"
 #: (or the previous element) and the element, longest first.
 DETAIL_PHRASES: Final[dict[str, Detail]] = {
     **{f"{pre}{the}{w} {e} of": Detail.OPPOSITE_SIDE_OF
-       for pre in ("", "to ", "over to ", "on ", "onto ", "go to ")
+       # "go across to the opposite side of the room": across to a place is over to it
+       for pre in ("", "to ", "over to ", "across to ", "on ", "onto ", "go to ")
        for the in ("the ", "")
        for w in ("other", "opposite", "far", "farther", "further", "farthest", "furthest", "another")
        for e in ("side", "end", "half", "part")},
