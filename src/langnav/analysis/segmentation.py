@@ -30,6 +30,7 @@ from scipy import ndimage as ndi
 from skimage.segmentation import watershed
 
 from langnav.analysis.door_judge import judge_doors
+from langnav.analysis.door_posts import wide_with_posts
 from langnav.analysis.elements import Door, ElementKind, Room
 from langnav.analysis.errors import AnalysisError
 from langnav.analysis.params import DEFAULT_PARAMS, AnalysisParams
@@ -272,6 +273,9 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     leaves = leaf_mask(gaps, occupied.shape)
     raw_doors, not_doors = judge_doors(raw_doors, fl.free | leaves, occupied & ~fl.floor & ~leaves, res, params,
                                        unknown=unknown)
+    # Two door-wide gaps either side of a post are one opening: wider than a door, neither is a door.
+    raw_doors, halves = wide_with_posts(raw_doors, fl.free | leaves, res, params)
+    not_doors += halves
     raw_wide += [d for d in not_doors if d.b != 0]
     openings = np.bincount(np.array([x for d in raw_doors + raw_wide for x in (d.a, d.b) if x > 0], dtype=np.int64),
                            minlength=int(labels.max()) + 1)
