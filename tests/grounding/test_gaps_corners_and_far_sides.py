@@ -24,6 +24,7 @@ from langnav.grounding.ground import THROUGH_MIN_PAST_M
 from langnav.grounding.selection import gaps_between_things, select, things_standing_free
 from langnav.language.intent import ElementRef, Intent, Step
 from langnav.maps.draw import MapBuilder
+from langnav.maps.grid import FREE
 
 
 def ref(**kw: Any) -> ElementRef:
@@ -222,3 +223,28 @@ def test_a_gap_between_things_behind_a_wall_is_not_the_gap_in_front(gap_far: Map
     x, y = last_pose(gap_far, (9.0, 4.0, 270.0), movement="navigate", detail="through",
                      target={"kind": "narrow_passage"})
     assert 10.0 <= x <= 10.6 and y < 2.5
+
+
+def test_a_thing_on_your_side_beyond_another_thing_is_seen_a_thing_behind_a_wall_is_not() -> None:
+    """Only walls hide a thing one places by side: a plant beyond a bench row in the same room is seen
+    over the benches. One room (x 1-13, y 1-9) with a wall at x 10 (door at y 8): the robot at (4, 1.8)
+    facing north; a bench row (x 2-6, y 3-3.5) ahead-left; a plant (x 6.6-7.2, y 6-6.6) on the right,
+    the line to its nearest cell crossing the bench row; beyond the wall a box on the right, nearer."""
+    b = MapBuilder(14.0, 10.0)
+    b.room(1.0, 1.0, 13.0, 9.0)
+    b.wall(10.0, 1.0, 10.0, 9.0, 0.15)
+    b.door_v(10.0, 8.0, 0.9)
+    b.box(2.0, 3.0, 6.0, 3.5)
+    b.box(6.6, 6.0, 7.2, 6.6)
+    b.box(10.6, 2.0, 11.2, 2.6)
+    a = analyze(b.build("plant_beyond_benches"))
+    assert len(a.obstacles) == 3
+    x, y = last_pose(a, (4.0, 1.8, 90.0), movement="navigate", detail="next_to",
+                     target={"kind": "obstacle", "side": "right"})
+    # next to the plant (within 1.0 m of its edge), not the box beyond the wall
+    assert (round(x, 3), round(y, 3)) == (6.875, 5.575)
+    # with the plant gone, the box beyond the wall is no thing on the robot's right: ask
+    b.rect(6.6, 6.0, 7.2, 6.6, FREE)
+    a = analyze(b.build("box_behind_a_wall"))
+    with pytest.raises(GroundingError, match="behind a wall"):
+        last_pose(a, (4.0, 1.8, 90.0), movement="navigate", detail="next_to", target={"kind": "obstacle", "side": "right"})

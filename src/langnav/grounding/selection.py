@@ -676,7 +676,11 @@ def elements_of_kind(analysis: MapAnalysis, kind: Kind) -> list[Element]:
             for p in passages) and not any(math.dist(g.center, d.center) <= max(d.width_m, g.width_m) for d in gaps)]
         return [*passages, *gaps, *between]
     if kind == Kind.ROOM:
-        return [r for r in analysis.rooms if r.kind == ElementKind.ROOM]
+        # a room parted by a gap narrower than any door is one room (``gap_joined``), whatever the
+        # shape of its parts: a lab's strip between the door and a bench row is that lab's part, not a
+        # hallway, when the lab is mostly room (``mostly_hallway``)
+        return [r for r in analysis.rooms if r.kind == ElementKind.ROOM
+                or not mostly_hallway(gap_joined(analysis, r))]
     if kind == Kind.HALLWAY:
         return [r for r in analysis.rooms if r.kind == ElementKind.HALLWAY]
     if kind == Kind.OBSTACLE:
@@ -869,7 +873,9 @@ def _placed_by_space(ref: ElementRef, pool: list[Element], analysis: MapAnalysis
         # "the room on the right", "the nearest room", "the second room on your left": words that place
         # a space relative to the robot mean another space than the one it stands in
         here_space = space_of(analysis, pose.xy)
-        others = [e for e in pool if e is not here_space]
+        # (the parts of the room it stands in are that room: a gap narrower than a door does not end it)
+        here_parts = {id(r) for r in gap_joined(analysis, here_space)} if here_space is not None else set()
+        others = [e for e in pool if id(e) not in here_parts]
         if here_space is not None and len(others) < len(pool):
             pool = others
             if not pool:
@@ -882,7 +888,21 @@ def _placed_by_space(ref: ElementRef, pool: list[Element], analysis: MapAnalysis
         opening = {i for o in ways_out if here_space.id in o.connects for i in o.connects}
         if any(e.id in opening for e in pool):
             pool = [e for e in pool if e.id in opening]
+    if ref.kind == Kind.ROOM and ref.superlative not in (Superlative.BIGGEST, Superlative.SMALLEST):
+        pool = _one_part_each(pool, analysis, pose)
     return pool
+
+
+def _one_part_each(pool: list[Element], analysis: MapAnalysis, pose: Pose) -> list[Element]:
+    """Rooms once each: of the parts a gap narrower than any door joins into one room (``gap_joined``),
+    the one nearest the robot, the part one enters (by size, ``_rooms_by_size`` counts them whole)."""
+    best: dict[str, Element] = {}
+    for e in pool:
+        key = min(r.id for r in gap_joined(analysis, e)) if isinstance(e, Room) else e.id
+        if key not in best or distance_to(e, pose.xy) < distance_to(best[key], pose.xy):
+            best[key] = e
+    keep = {id(e) for e in best.values()}
+    return [e for e in pool if id(e) in keep]
 
 
 def _placed_by_side(ref: ElementRef, pool: list[Element], pose: Pose,
@@ -918,7 +938,9 @@ def _things_in_sight(ref: ElementRef, pool: list[Element], analysis: MapAnalysis
             pool = seen_near
     if ref.side is not None and space is None and ref.near is None:
         # "the obstacle on your right" places a thing by where the robot sees it: one behind a wall, in
-        # another room, is not on its right to a person standing there (ask rather than drive to it)
+        # another room, is not on its right to a person standing there (ask rather than drive to it).
+        # Only walls hide it: a plant beyond a bench row in the same room is seen over the benches, or
+        # round them as one steps aside (as for "the nearest obstacles")
         seen: list[Element] = []
         # nearest first; when only the nearest ones can be meant, the farther ones need no look
         wanted = ((ref.ordinal or 1) + count - 1 if ref.superlative in (None, Superlative.NEAREST)
@@ -926,7 +948,7 @@ def _things_in_sight(ref: ElementRef, pool: list[Element], analysis: MapAnalysis
         for e in sorted(pool, key=lambda e: distance_to(e, pose.xy)):
             if len(seen) >= wanted:
                 break
-            if isinstance(e, Obstacle) and in_sight(analysis, pose.xy, e):
+            if isinstance(e, Obstacle) and in_sight(analysis, pose.xy, e, past_things=True):
                 seen.append(e)
         if not seen and pool:
             raise GroundingError(f"I see no {KIND_NOUN[ref.kind][0]}{_where(ref)} from here: the nearest such "
