@@ -4,10 +4,13 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+from scipy import ndimage as ndi
+
 from langnav.analysis.elements import Door, Room
 from langnav.analysis.segmentation import Segmentation
 from langnav.maps.draw import MapBuilder
-from langnav.maps.grid import OCCUPIED, OccupancyGrid
+from langnav.maps.grid import OCCUPIED, UNKNOWN, OccupancyGrid
 
 #: Door positions within two cells plus the half-cell of a door's centre.
 POS_TOL_M = 0.15
@@ -27,6 +30,26 @@ def door_near(doors: tuple[Door, ...], x: float, y: float, tol: float = POS_TOL_
     assert len(near) == 1, f"{len(near)} doors near ({x}, {y}): {[d.center for d in doors]}"
     return near[0]
 
+
+
+def turned(grid: OccupancyGrid, degrees: float) -> OccupancyGrid:
+    """The grid turned by ``degrees`` about its centre, cell by cell (nearest cell; the corners
+    it uncovers are unknown): walls become stair-stepped lines, as in a real map at an angle."""
+    cells = ndi.rotate(grid.cells.astype(np.int16) + 1, degrees, order=0, reshape=True, cval=0) - 1
+    return OccupancyGrid(cells.astype(np.int8), grid.resolution_m, source=f"{grid.source}_turned")
+
+
+def scan_noise(grid: OccupancyGrid, seed: int = 0) -> OccupancyGrid:
+    """Lidar noise: occupied specks on 3 % of the free cells within two cells of a wall, unknown
+    specks on 0.2 % of the free cells, and 5 % of the wall cells dropped out (free)."""
+    rng = np.random.default_rng(seed)
+    c = grid.cells.copy()
+    free, occ = c == 0, c == OCCUPIED
+    near_wall = ndi.binary_dilation(occ, iterations=2) & free
+    c[near_wall & (rng.random(c.shape) < 0.03)] = OCCUPIED
+    c[free & (rng.random(c.shape) < 0.002)] = UNKNOWN
+    c[occ & (rng.random(c.shape) < 0.05)] = 0
+    return OccupancyGrid(c, grid.resolution_m, source=f"{grid.source}_noisy")
 
 
 def room_with_door() -> OccupancyGrid:

@@ -348,8 +348,9 @@ def test_a_wide_gap_in_a_straight_wall_separates_two_rooms() -> None:
     assert set(d.connects) == {west.id, east.id}
     assert d.center == pytest.approx((6.575, 3.5), abs=POS_TOL_M)
     assert d.width_m == pytest.approx(2.2, abs=POS_TOL_M)
-    # Without the wall-line rule an opening that wide joins them into one space.
-    one = segment_spaces(grid, AnalysisParams(seg_wall_gap_max_width_m=0.0))
+    # Without the wall-line rules (the flood's, and the arches found in the wall lines) an
+    # opening that wide joins them into one space.
+    one = segment_spaces(grid, AnalysisParams(seg_wall_gap_max_width_m=0.0, seg_wall_line_arch_max_m=0.0))
     assert len(one.rooms) == 1
     assert one.doors == ()
     assert one.openings == ()

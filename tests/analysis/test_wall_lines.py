@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 import pytest
-from analysis_maps import POS_TOL_M, door_near, space_at
+from analysis_maps import POS_TOL_M, door_near, scan_noise, space_at, turned
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy import ndimage as ndi
@@ -101,6 +101,75 @@ def test_a_bedroom_wing_behind_a_wide_opening_is_a_hallway_of_its_own() -> None:
         d = door_near(seg.doors, x, y)
         assert set(d.connects) == {wing.id, bed.id}
         assert d.width_m == pytest.approx(0.9, abs=POS_TOL_M)
+
+
+def home_with_an_arch(arch_m: float, hollow: bool) -> OccupancyGrid:
+    """A 16 m x 11 m home: a wall 6 m from its west side runs its whole depth, with an arch
+    ``arch_m`` wide cut in it 4 m from the south (the bedroom wing west of it, the living room
+    east). ``hollow``: the wall drawn as two faces with its unscanned inside between them (a
+    simulator's thick wall), else one solid line."""
+    b = MapBuilder(18.0, 13.0)
+    b.room(1.0, 1.0, 17.0, 12.0)
+    for y0, y1 in ((1.0, 5.0), (5.0 + arch_m, 12.0)):
+        if hollow:
+            b.rect(6.85, y0, 7.15, y1, OCCUPIED).unknown(6.9, y0, 7.1, y1)
+        else:
+            b.wall(7.0, y0, 7.0, y1)
+    return b.build("home with an arch")
+
+
+@pytest.mark.parametrize("hollow", [False, True])
+@pytest.mark.parametrize("degrees", [0.0, 23.0, 62.0])
+def test_a_wing_behind_an_arch_cut_in_a_wall_is_a_room_of_its_own(hollow: bool, degrees: float) -> None:
+    """A 3.3 m arch, wider than a double door, in a wall that runs on solid past both of its
+    ends for longer than half its width (aws_small_house's bedroom wing): the wing and the
+    living room are two rooms with an opening between them, whatever the map's rotation,
+    the scan's noise or whether the wall's inside was scanned."""
+    grid = home_with_an_arch(3.3, hollow)
+    if degrees:
+        grid = scan_noise(turned(grid, degrees))
+    seg = segment_spaces(grid)
+    assert len(seg.rooms) == 2
+    assert [r.kind for r in seg.rooms] == [ElementKind.ROOM] * 2
+    wing, living = sorted(seg.rooms, key=lambda r: r.area_m2)
+    assert wing.area_m2 == pytest.approx(6.0 * 11.0, rel=0.03)
+    assert living.area_m2 == pytest.approx(10.0 * 11.0, rel=0.03)
+    assert seg.doors == ()
+    [arch] = seg.openings
+    assert set(arch.connects) == {wing.id, living.id}
+    # Its clear width: 3.3 m (3.15 m past a line wall's rounded ends); on a turned, noisy map
+    # the stair-stepped wall and its specks take up to 0.4 m of it.
+    assert (3.3 if hollow else 3.15) - 0.45 <= arch.width_m <= 3.3 + 0.1
+
+
+@pytest.mark.parametrize("hollow", [False, True])
+def test_an_opening_wider_than_an_arch_or_between_cabinets_joins_one_open_plan(hollow: bool) -> None:
+    """A 5 m opening (wider than an arch: an open plan's short stubs either side) is no
+    boundary, and nor is a 3.3 m gap in a row of cabinets standing in line (dashed: furniture,
+    not a wall): one room each time."""
+    assert len(segment_spaces(home_with_an_arch(5.0, hollow)).rooms) == 1
+    b = MapBuilder(18.0, 13.0)
+    b.room(1.0, 1.0, 17.0, 12.0)
+    for y0, y1 in ((1.0, 5.0), (8.3, 12.0)):
+        y = y0
+        while y < y1 - 0.3:
+            b.box(6.8, y, 7.2, min(y + 0.5, y1))  # 0.5 m cabinets, 0.3 m apart
+            y += 0.8
+    assert len(segment_spaces(b.build("cabinet row")).rooms) == 1
+
+
+def test_wide_gaps_between_free_standing_screens_are_no_arches() -> None:
+    """Desk pods in an open-plan office: solid screens standing free on the floor, 3.3 m apart
+    along lines as long as an arch's walls (b7_call_centre). They are joined to no wall of the
+    building, so the gaps between them are aisles of one open floor, not arches."""
+    b = MapBuilder(18.0, 13.0)
+    b.room(1.0, 1.0, 17.0, 12.0)
+    for x in (6.0, 9.0, 12.0):
+        b.wall(x, 3.0, x, 5.0).wall(x, 8.3, x, 10.3)
+        b.wall(x - 0.8, 3.0, x + 0.8, 3.0).wall(x - 0.8, 10.3, x + 0.8, 10.3)
+    seg = segment_spaces(b.build("desk pods"))
+    assert len(seg.rooms) == 1
+    assert seg.doors == () and seg.openings == ()
 
 
 def t_junction() -> OccupancyGrid:

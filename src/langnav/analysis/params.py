@@ -125,6 +125,12 @@ class AnalysisParams:
     #: line: glass, laser gaps, open door leaves).
     seg_wall_line_side_m: float = 1.0
     seg_wall_line_side_share: float = 0.5
+    #: Segmentation: a gap in a wall line wider than seg_wall_line_gap_max_m, up to this width
+    #: (m: the wide arch between a home's living room and its dining room or bedroom wing),
+    #: parts the spaces on its two sides too when the wall runs on past each of its ends for at
+    #: least half its width (a wall with an arch cut in it, not an open plan's short stubs);
+    #: wider openings join the spaces (one open-plan floor). 0 switches it off.
+    seg_wall_line_arch_max_m: float = 4.0
     # -- unexplored areas a person would send the robot to look at (not furniture insides) --
     #: An unknown region is worth a trip from this size (m2): a square about two robot widths
     #: across (0.7 m), room for the robot to drive in and turn; smaller pockets are the shadows

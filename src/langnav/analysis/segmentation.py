@@ -57,7 +57,13 @@ from langnav.analysis.seg_core import (
     merge_basins,
 )
 from langnav.analysis.seg_doors import RawDoor, doors_between, label_max, openings_to_unknown
-from langnav.analysis.wall_lines import closure_mask, dominant_directions, leaf_mask, wall_gaps
+from langnav.analysis.wall_lines import (
+    WallGap,
+    closure_mask,
+    dominant_directions,
+    leaf_mask,
+    wall_gaps,
+)
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 
 log = logging.getLogger(__name__)
@@ -117,6 +123,9 @@ CORRIDOR_MOUTH_MAX_SHARE: Final = 2.0
 #: out of the building (a fan of laser rays through a door or a window, ending in the open or at
 #: the sensor's range), not a room or a hallway a person would name.
 SPACE_MIN_WALL_SHARE: Final = 0.1
+#: The spaces an arch joins are read this far (m) either side of its wall line: past the
+#: half-thickness of the wall it is cut in.
+ARCH_SIDE_LOOK_M: Final = 0.3
 #: Id used in ``Door.connects`` for unexplored territory.
 UNKNOWN_ID: Final = "unknown"
 #: Openings between two spaces narrower than the robot can pass (``door_min_width_m``) but at
@@ -264,6 +273,7 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     raw_doors = [d for d in between if passable <= d.width_m <= widest]
     raw_narrow = [d for d in between if d.width_m < passable]
     raw_wide = [d for d in between if d.width_m > widest]
+    raw_wide += _arches(gaps, labels, fl.clearance_m, res, params)
     peaks = label_max(labels, fl.clearance_m)  # the widest clearance of each space
     raw_doors += openings_to_unknown(labels, fl.floor, exterior, occupied,
                                      fl.clearance_m, res, params, peaks, known=between, directions=directions)
@@ -298,6 +308,41 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     wide = _doors(grid, raw_wide, ids, prefix="opening")
     return Segmentation(labels=labels, rooms=tuple(rooms), doors=tuple(doors), narrow_doors=tuple(narrow),
                         openings=tuple(wide))
+
+
+def _arches(gaps: list[WallGap], labels: npt.NDArray[np.int32], clearance_m: npt.NDArray[np.float64],
+            res: float, params: AnalysisParams) -> list[RawDoor]:
+    """The openings between two spaces through the arches among ``gaps`` wider than
+    ``doors_between`` looks (``seg_wall_gap_max_width_m``): a way between the spaces on the
+    arch's two sides, found from the wall line itself; one per arch (the lines a cell apart
+    find it each: the narrowest, the line through the wall's middle, is kept). Its width is
+    the clear width at its middle (twice the clearance there: a line across a stair-stepped
+    wall at an angle finds its gap between the steps, a little wider)."""
+    out: list[RawDoor] = []
+    h, w = labels.shape
+    look = ARCH_SIDE_LOOK_M / res
+    for g in sorted(gaps, key=lambda g: g.width_m):
+        if g.in_front or g.width_m <= params.seg_wall_gap_max_width_m + res:
+            continue
+        (ra, ca), (rb, cb) = g.end_a_rc, g.end_b_rc
+        length = math.hypot(rb - ra, cb - ca)
+        if length == 0:
+            continue
+        nr, nc = (cb - ca) / length, -(rb - ra) / length
+        r, c = (ra + rb) / 2, (ca + cb) / 2
+        sides = []
+        for sign in (-1.0, 1.0):
+            ri, ci = round(r + sign * look * nr), round(c + sign * look * nc)
+            sides.append(int(labels[ri, ci]) if 0 <= ri < h and 0 <= ci < w else 0)
+        a, b = sides
+        seen = any({o.a, o.b} == {a, b} and math.hypot(o.center_rc[0] - r - 0.5, o.center_rc[1] - c - 0.5) * res
+                   <= o.width_m for o in out)
+        if a > 0 and b > 0 and a != b and not seen:
+            normal = (nr, nc) if a < b else (-nr, -nc)
+            clear = float(clearance_m[round(r), round(c)])
+            width = min(g.width_m, 2.0 * clear - 0.5 * res) if clear > 0 else g.width_m
+            out.append(RawDoor(min(a, b), max(a, b), (r + 0.5, c + 0.5), normal, width, in_wall_line=True))
+    return out
 
 
 def _reopen(labels: npt.NDArray[np.int32], closed: npt.NDArray[np.bool_],

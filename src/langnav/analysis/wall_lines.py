@@ -20,6 +20,13 @@ closed before the flood (ROSE², RA-L 2022, bounds rooms by the building's wall 
    - it is door-wide (``door_min_width_m`` to ``seg_wall_line_gap_max_m``);
    - the wall line runs on past both of its ends, solid on at least ``seg_wall_line_side_share``
      of ``seg_wall_line_side_m`` (a wall, not the corner of a piece of furniture);
+   - or it is wider than a door, an arch (up to ``seg_wall_line_arch_max_m``: the wide opening
+     between a home's living room and its bedroom wing or dining room), and the wall runs on
+     solid (``seg_wall_line_min_share``: beside an opening that wide, a dashed line is a row of
+     furniture) past each end for at least half the arch's width: the wall line is at least as
+     long as the opening in it (a wall with an arch cut in it; an open plan's short stubs at
+     the ends of a wide opening are no wall), and both of its ends belong to the walls joined
+     to the building's shell (desk screens and shelf units stand free on the floor);
    - its floor is scanned (a gap into unknown is an opening into unexplored territory, left to
      :mod:`langnav.analysis.seg_doors`);
    - on both sides the space it opens onto runs on along the wall past one of its ends: a
@@ -573,7 +580,10 @@ def _partition_share(both_at: _LineSampler[np.uint8], u_end: FloatArray, sign: f
     vv = (v[:, None] + np.arange(-reach, reach + 1, dtype=np.float64))[:, None, :]
     both = both_at(u, vv)  # (candidate, cell along, cell across)
     w, f = (both & WALL_BIT) > 0, (both & FLOOR_BIT) > 0
-    on, lo, hi = _band_runs(w, reach)
+    # The wall's thickness is that of what is not floor across it: a wall's two faces with its
+    # unscanned inside between them (a thick wall or a block drawn as its outline) are one wall.
+    on = _band_runs(w, reach)[0]
+    _, lo, hi = _band_runs(~f, reach)
     idx = np.arange(w.shape[-1])
     floor_before = (f & (idx >= (lo - 2)[..., None]) & (idx < lo[..., None])).any(axis=-1)
     floor_after = (f & (idx > hi[..., None]) & (idx <= (hi + 2)[..., None])).any(axis=-1)
@@ -600,10 +610,14 @@ class _LineCandidates:
 
 
 def _line_candidates(wall: BoolArray, dirs: list[float], resolution_m: float, params: AnalysisParams,
-                     max_width_m: float, front_max_width_m: float = 0.0) -> list[_LineCandidates]:
+                     max_width_m: float, front_max_width_m: float = 0.0,
+                     arch_max_width_m: float = 0.0) -> list[_LineCandidates]:
     """Per wall direction, the gaps ``door_min_width_m`` to ``max_width_m`` wide in its wall
     lines where the line runs on past both ends, occupied on ``seg_wall_line_side_share`` of
     ``seg_wall_line_side_m`` (a wall, not the corner of a piece of furniture).
+
+    With ``arch_max_width_m``, also the wider gaps up to that width where the line runs on
+    that solid past each end for at least half the gap's width (see the module doc: an arch).
 
     With ``front_max_width_m``, also the gaps up to that width in a *front*: a stretch of the
     line broken into pieces (piers, mullions, door frames, the glass the lidar saw square on)
@@ -614,6 +628,7 @@ def _line_candidates(wall: BoolArray, dirs: list[float], resolution_m: float, pa
     gmin = (params.door_min_width_m - res) / res
     gmax = (max_width_m + res) / res
     fmax = (front_max_width_m + res) / res
+    amax = (arch_max_width_m + res) / res
     side = max(2, round(params.seg_wall_line_side_m / res))
     share = params.seg_wall_line_side_share * side
     rr, cc = nonzero2(wall)
@@ -631,6 +646,13 @@ def _line_candidates(wall: BoolArray, dirs: list[float], resolution_m: float, pa
         key, line, pos = _line_keys(u - umin, v - vmin, span)
         cand, walled = _gap_candidates(key, line, pos, span, side, share, gmin, gmax)
         cand = cand[walled]
+        if amax > gmax:
+            # An arch is cut in a solid wall: beside an opening that wide, only a line drawn
+            # solid (``seg_wall_line_min_share``, as the flood's wall lines) tells a wall from a
+            # row of furniture or clutter standing in line.
+            arch, walled = _gap_candidates(key, line, pos, span, side, params.seg_wall_line_min_share * side,
+                                           gmax, amax, arch=True)
+            cand = np.union1d(cand, arch[walled])
         if cand.size:
             out.append(_LineCandidates(cos_t, sin_t, cand, line, pos, umin, vmin))
         if pieces is None or not pieces.any():
@@ -697,17 +719,22 @@ def _line_keys(u: IntArray, v: IntArray, span: int) -> tuple[IntArray, IntArray,
 
 
 def _gap_candidates(key: IntArray, line: IntArray, pos: IntArray, span: int, side: int, share: float,
-                    gmin: float, gmax: float) -> tuple[IntArray, BoolArray]:
+                    gmin: float, gmax: float, arch: bool = False) -> tuple[IntArray, BoolArray]:
     """The gaps ``gmin`` to ``gmax`` cells wide between the sorted wall ``key`` cells of a line
     (gap i between key i and i + 1), and whether the line is solid (``share`` of ``side``
-    cells) just before and just after each."""
+    cells) just before and just after each. ``arch``: over at least half the gap's width
+    (``share`` of it) instead, when that is longer than ``side``."""
     gap = np.diff(pos) - 1
     cand = np.flatnonzero((line[1:] == line[:-1]) & (gap >= gmin) & (gap <= gmax))
-    lo_before = np.maximum(key[cand] - side + 1, line[cand] * span)
+    sides = np.full(cand.size, side, dtype=np.int64)
+    if arch:
+        sides = np.maximum(sides, np.ceil(gap[cand] / 2).astype(np.int64))
+    need = share / side * sides
+    lo_before = np.maximum(key[cand] - sides + 1, line[cand] * span)
     before = np.searchsorted(key, key[cand], side="right") - np.searchsorted(key, lo_before, side="left")
-    hi_after = np.minimum(key[cand + 1] + side - 1, line[cand + 1] * span + span - 1)
+    hi_after = np.minimum(key[cand + 1] + sides - 1, line[cand + 1] * span + span - 1)
     after = np.searchsorted(key, hi_after, side="right") - np.searchsorted(key, key[cand + 1], side="left")
-    return cand, (before >= share) & (after >= share)
+    return cand, (before >= need) & (after >= need)
 
 
 def _not_specks(wall: BoolArray, min_cells: float) -> BoolArray:
@@ -770,7 +797,7 @@ def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: An
     both = np.where(wall, WALL_BIT, 0).astype(np.uint8) | np.where(floor, FLOOR_BIT, 0).astype(np.uint8)
     out: list[WallGap] = []
     for lc in _line_candidates(wall, dirs, res, params, params.seg_wall_line_gap_max_m,
-                               params.seg_wall_gap_max_width_m):
+                               params.seg_wall_gap_max_width_m, params.seg_wall_line_arch_max_m):
         floor_at = _LineSampler(floor, lc.cos_t, lc.sin_t)
         wall_at = _LineSampler(wall, lc.cos_t, lc.sin_t)
         both_at = _LineSampler(both, lc.cos_t, lc.sin_t)
@@ -779,7 +806,35 @@ def wall_gaps(wall: BoolArray, floor: BoolArray, resolution_m: float, params: An
             out += _gaps_kept(lc.cand[b0:b0 + CANDIDATE_BLOCK], lc.line, lc.pos, lc.umin, lc.vmin, floor_at,
                               wall_at, both_at, _GapScales(past, depths, max_depth, thin, reach, side), res,
                               front)
+    widest_door = params.seg_wall_line_gap_max_m + res
+    if any(g.width_m > widest_door and not g.in_front for g in out):
+        # An arch is cut in one of the building's walls: both of its ends stand in the wall
+        # network that reaches the building's shell (the outside, unknown or its outer walls).
+        # Free-standing screens, desk pods and shelf units stand on the floor, however solid
+        # and long: a wide gap between two of them is an open floor's aisle.
+        shell = _shell(floor)
+        out = [g for g in out if g.width_m <= widest_door or g.in_front
+               or (_touches(shell, g.end_a_rc) and _touches(shell, g.end_b_rc))]
     return out
+
+
+def _shell(floor: BoolArray) -> BoolArray:
+    """The non-floor cells connected (8-connected) to the grid's border: the building's outer
+    walls, the unknown outside them and every wall joined to them."""
+    lab, n = ndi.label(~floor, structure=EIGHT)
+    keep = np.zeros(n + 1, dtype=bool)
+    edge = np.concatenate([lab[0, :], lab[-1, :], lab[:, 0], lab[:, -1]])
+    keep[edge] = True
+    keep[0] = False
+    return keep[lab]
+
+
+def _touches(mask: BoolArray, rc: tuple[float, float]) -> bool:
+    """Is a cell of ``mask`` within a cell of the continuous (row, col) ``rc`` (a wall line's
+    band is a cell either side of it)?"""
+    r, c = round(rc[0]), round(rc[1])
+    h, w = mask.shape
+    return bool(mask[max(r - 1, 0):min(r + 2, h), max(c - 1, 0):min(c + 2, w)].any())
 
 
 @dataclass(frozen=True)

@@ -994,9 +994,15 @@ def _of_this_space(ref: ElementRef, pool: list[Element], analysis: MapAnalysis, 
         if len(own) == 1:
             pool = own
     if ref.ordinal is not None and ref.kind in (Kind.DOOR, Kind.NARROW_PASSAGE) and rank.here is not None \
-            and space is None and any(rank(e) == 0 for e in elements_of_kind(analysis, ref.kind)):
+            and space is None and (ref.kind == Kind.DOOR
+                                   or any(rank(e) == 0 for e in elements_of_kind(analysis, ref.kind))):
         # "the fourth door on your left" counts the doors of the space the robot is in (README): with
-        # three of them on that side there is no fourth, whatever doors of other rooms it could see
+        # three of them on that side there is no fourth, whatever doors of other rooms it could see. A
+        # space with no door of its own has no first, second or third door either: counting the doors
+        # between two other rooms instead sends the robot to a door anywhere in the building (a corridor
+        # whose ways out are all open fronts: "the third doorway behind you" 68 m away), so the count comes
+        # up short and the robot asks. (Passages are not a space's own in that way: the first narrow
+        # passage ahead may be in the next space.)
         pool = [e for e in pool if rank(e) == 0]
     return pool
 
