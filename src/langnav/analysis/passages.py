@@ -15,7 +15,8 @@ sides along most of its length (or a wall along one side and a single doorway in
 passage with a door off it), solid ones (walls, furniture, a shelf's unscanned inside: not
 laser-ray stripes of unknown, nor the unscanned world beyond a sliver outside a wall, nor an
 unexplored area), leads somewhere (both mouths open into free space wider than any passage, or, for
-an aisle, into another narrow way that reaches such space within ``MOUTH_LEADS_ON_M``: a dead-end
+an aisle, into another narrow way that reaches such space within ``MOUTH_LEADS_ON_M`` (the way round a
+thing standing in a room, in at one side and out at the other): a dead-end
 slot does not), is not a door's own gap (a door across its middle; a door at one of its mouths is
 how it is entered; a door found in a squeeze between two things with parallel faces, deeper than
 any wall, or across an aisle as long as a corridor between two such things, is no door), and is
@@ -32,6 +33,14 @@ any wall, or across an aisle as long as a corridor between two such things, is n
   clearly roomier (one of the equal lanes of a grid of bikes or desks); a roomier one only when
   it is the only way past.
 
+A gap no deeper than a doorway is a door's business, except a gap in a line of free-standing
+things (a line of screens, a rail, a detector arch between two machines): neither side is joined
+to the building's walls (so no doorway: doorways are in walls), both go on along the line away
+from the gap, no door was found there and no scan specks lie across it (a glass front's sparse
+returns); it is then judged as a squeeze between two things (tight, or the only way). Its middle
+line may be too short for a core (a line a cell or two thick): such throats are judged too, the
+way through square to the line between the things either side of the narrowest cell.
+
 A passage along a wall (between the wall and a long shelf) shares its skeleton line with the
 one-sided strip along the rest of the room's walls: a core without sides along most of its length
 is split into its two-sided stretches, and each is judged on its own. An aisle goes on past an
@@ -47,6 +56,7 @@ import logging
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Final
 
 import numpy as np
@@ -92,7 +102,7 @@ from langnav.analysis.precompute import (
     median,
     truncated_sq_edt,
 )
-from langnav.maps.grid import OccupancyGrid
+from langnav.maps.grid import OCCUPIED, OccupancyGrid
 
 #: A passage is at least this many times longer than wide: a corridor, not a gap beside an
 #: object (a 0.9 m gap along a 0.7 m table is where you walk round it, not a passage).
@@ -155,10 +165,20 @@ PASSAGE_MIN_MARGIN_M: Final = 0.1
 #: A side is solid when nothing open lies within this depth past where it starts (a shelf's
 #: unscanned inside, a wall); laser-ray stripes of unknown are thinner, with free space behind.
 SOLID_UNKNOWN_DEPTH_M: Final = 0.3
-#: A mouth that opens into another narrow way (the next aisle round a shelving island) leads
-#: somewhere when that way reaches open floor within this distance of the mouth (m): about a
-#: shelf's length; a dead-end slot's far end leads nowhere however far one looks.
-MOUTH_LEADS_ON_M: Final = 3.0
+#: A throat of the middle line (a gap in a thin line: a rail, a line of screens) spans at least
+#: this many cells: a line, not a speck of the skeleton.
+THROAT_MIN_CELLS: Final = 3
+#: The things either side of a throat are read over this much (m) past their nearest cell: the
+#: first stretch of a rail or a screen line, enough to set its direction through its pixel steps.
+THROAT_SIDE_M: Final = 0.3
+#: A thin line beside a gap, drawn askew, steps this many cells off the gap's own band.
+THROAT_BAND_CELLS: Final = 2
+#: A mouth that opens into another narrow way (the next aisle round a shelving island, the strip
+#: round the end of a locker block between two rows of bunks) leads somewhere when that way
+#: reaches open floor within this distance of the mouth (m): the way round a thing standing in a
+#: room (WAY_ROUND_M), in at one side and out at the other; a dead-end slot's far end leads
+#: nowhere however far one looks.
+MOUTH_LEADS_ON_M: Final = WAY_ROUND_M
 
 BoolArray = npt.NDArray[np.bool_]
 
@@ -209,6 +229,18 @@ class _Floor:
             log.debug("no passage at (%.2f, %.2f), width %.2f m, length %.2f m: %s", float(x), float(y), width_m,
                       length_m, reason)
 
+    @cached_property
+    def structure(self) -> tuple[BoolArray, npt.NDArray[np.int32]]:
+        """The building's structure and its things: per window cell, whether it is blocking
+        joined (8-connected) to the window's edge (walls run into each other and into the
+        unscanned world beyond the outer ones), and the label of the blocking component it is in
+        (0 on open floor). A component that does not reach the edge stands free in the floor:
+        a piece of furniture, a screen, a rail."""
+        lab, _n = ndi.label(~self.open_, structure=np.ones((3, 3), dtype=bool))
+        lab = np.asarray(lab, dtype=np.int32)
+        edge = np.unique(np.concatenate([lab[0], lab[-1], lab[:, 0], lab[:, -1]]))
+        return np.isin(lab, edge[edge > 0]), lab
+
     def to_world(self, g: npt.NDArray[np.float64]) -> tuple[float, float]:
         """A point in window cells (x, y) in world metres."""
         x, y = self.grid.grid_to_world(g[1] + self.r0, g[0] + self.c0)
@@ -228,6 +260,9 @@ class _Piece:
     mean: npt.NDArray[np.float64]
     axis: npt.NDArray[np.float64]
     proj: npt.NDArray[np.float64]
+    #: A throat shorter than a passage's core (:func:`_core_pieces`): a passage only between
+    #: free-standing things.
+    short: bool = False
 
     @property
     def normal(self) -> npt.NDArray[np.float64]:
@@ -278,14 +313,16 @@ def find_passages(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDArr
     if floor is None:
         return ()
     passages: list[NarrowPassage] = []
-    pieces = _joined_across_side_openings(floor, _core_pieces(floor))
-    while pieces:
+    cores, throats = _core_pieces(floor)
+    pieces = _joined_across_side_openings(floor, cores)
+    measured = _measured(floor, pieces) + _measured(floor, throats, short=True)
+    while measured:
         retry: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]] = []
-        for piece, sides in _measured(floor, pieces):
+        for piece, sides in measured:
             found = _judged(floor, piece, sides, doors, labels, room_ids, f"passage_{len(passages) + 1}", retry)
             if found is not None:
                 passages.append(found)
-        pieces = _two_sided_pieces(floor, retry)
+        measured = _measured(floor, _two_sided_pieces(floor, retry))
     return tuple(passages)
 
 
@@ -339,9 +376,13 @@ def _open_floor(grid: OccupancyGrid, params: AnalysisParams, blocking: BoolArray
                   min_cells=params.passage_min_length_m / res - 1.0, min_len_m=min_len_m)
 
 
-def _core_pieces(floor: _Floor) -> list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]]:
+def _core_pieces(floor: _Floor) -> tuple[list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]],
+                                          list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]]]:
     """The cores of the narrow middle line long enough to be passages: per core its cells (window
-    rows, cols) and which of them are a ridge across (:func:`across_ridge`)."""
+    rows, cols) and which of them are a ridge across (:func:`across_ridge`); and the throats, whole
+    chains too short for such a core (``THROAT_MIN_CELLS`` or more): a gap in a thin line (a rail,
+    a line of screens), whose middle line is no longer than the line is thick plus a cell or two,
+    a passage only in a line of free-standing things (:func:`_in_a_line`)."""
     params, res, d2, width_of = floor.params, floor.grid.resolution_m, floor.d2, floor.width_of
     band_of = (width_of > 2.0 * params.robot_radius_m) & (width_of <= params.passage_max_width_m)
     band = floor.open_ & band_of[d2]
@@ -354,7 +395,7 @@ def _core_pieces(floor: _Floor) -> list[tuple[npt.NDArray[np.intp], npt.NDArray[
     idx = np.flatnonzero(skel)
     cid, n = label8_cells(idx, skel.shape)
     if n == 0:
-        return []
+        return [], []
     w = width_of[d2.ravel()[idx]]
     # Per chain: its typical width (sort by (chain, width), pick the rank).
     order = np.lexsort((w, cid))
@@ -382,13 +423,33 @@ def _core_pieces(floor: _Floor) -> list[tuple[npt.NDArray[np.intp], npt.NDArray[
     # Which cells are a ridge across: a per-cell test, made for all the core cells at once.
     across_core = across_ridge(d2, core_r, core_c)
     pieces: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]] = []
+    has_core = np.zeros(n + 1, dtype=bool)
+    core_chain = cid[in_core]
     for k in long_enough.tolist():
         sl = boxes[k]
         if math.hypot(sl[0].stop - sl[0].start, sl[1].stop - sl[1].start) < floor.min_cells:
             continue
         cells = by_core[core_start[k]:core_start[k + 1]]
         pieces.append((core_r[cells], core_c[cells], across_core[cells]))
-    return pieces
+        has_core[core_chain[cells[0]]] = True
+    # The throats: the whole chains too short to hold a core that long (a gap in a thin line: its
+    # middle line runs only through the gap, as long as the line is thick, a cell or two more:
+    # the sides flare at once), of THROAT_MIN_CELLS or more (fewer is a speck of the skeleton).
+    gap_cells = float(THROAT_MIN_CELLS)
+    short = np.flatnonzero((counts * math.sqrt(2) >= gap_cells) & ~has_core[1:]) + 1
+    throats: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]] = []
+    if len(short):
+        chain_r, chain_c = np.divmod(idx, floor.open_.shape[1])
+        chain_boxes = component_boxes(cid, chain_r, chain_c, short)
+        by_chain = np.argsort(cid, kind="stable")
+        chain_start = np.searchsorted(cid[by_chain], np.arange(n + 2))
+        for k in short.tolist():
+            sl = chain_boxes[k]
+            if not gap_cells <= math.hypot(sl[0].stop - sl[0].start, sl[1].stop - sl[1].start) < floor.min_cells:
+                continue
+            cells = by_chain[chain_start[k]:chain_start[k + 1]]
+            throats.append((chain_r[cells], chain_c[cells], None))
+    return pieces, throats
 
 
 def _joined_across_side_openings(
@@ -497,11 +558,12 @@ def _joined_across_side_openings(
     return out
 
 
-def _measured(floor: _Floor, pieces: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]]
-              ) -> list[tuple[_Piece, npt.NDArray[np.float64]]]:
+def _measured(floor: _Floor, pieces: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]],
+              short: bool = False) -> list[tuple[_Piece, npt.NDArray[np.float64]]]:
     """Each piece's axis and length, and the cheap test first (with the skeleton's width, at most
     a cell narrower than the true one); then the distances to the sides of all that pass, at
-    once: the pieces at least ``passage_min_length_m`` long, with their sides."""
+    once: the pieces at least ``passage_min_length_m`` long (``THROAT_MIN_CELLS`` for the
+    ``short`` throats of :func:`_core_pieces`), with their sides."""
     res = floor.grid.resolution_m
     measured: list[_Piece] = []
     for rr, cc, across in pieces:
@@ -512,6 +574,10 @@ def _measured(floor: _Floor, pieces: list[tuple[npt.NDArray[np.intp], npt.NDArra
         cov = cov2((pts - mean).T)
         evals, evecs = np.linalg.eigh(cov)
         axis = evecs[:, int(np.argmax(evals))]
+        if short:
+            # A throat's few cells fit no axis: the way through runs across the line between
+            # the nearest blocking cells on either side of its narrowest cell.
+            axis = _throat_axis(floor, rr, cc, axis)
         # Snap a nearly axis-aligned passage onto the grid axis (cleaner width sampling).
         if abs(axis[0]) >= math.cos(math.radians(AXIS_SNAP_DEG)):
             axis = np.array([math.copysign(1.0, axis[0]), 0.0])
@@ -520,13 +586,46 @@ def _measured(floor: _Floor, pieces: list[tuple[npt.NDArray[np.intp], npt.NDArra
         proj = (pts - mean) @ axis
         # Short ones too (a squeeze past furniture beside a wall is as deep as the furniture,
         # its mouths flaring on either side).
-        if (float(proj.max() - proj.min()) + 1.0) * res < floor.params.passage_min_length_m:
+        if (float(proj.max() - proj.min()) + 1.0) < (
+                THROAT_MIN_CELLS if short else floor.params.passage_min_length_m / res):
             continue
-        measured.append(_Piece(rr=rr, cc=cc, across=across, pts=pts, mean=mean, axis=axis, proj=proj))
+        measured.append(_Piece(rr=rr, cc=cc, across=across, pts=pts, mean=mean, axis=axis, proj=proj, short=short))
     side_sets = side_distances_each(floor.open_, [p.pts for p in measured],
                                     [floor.dist_of[floor.d2[p.rr, p.cc]] / res for p in measured],
                                     [p.normal for p in measured], SIDE_TOL_M / res)
     return list(zip(measured, side_sets, strict=True))
+
+
+def _throat_axis(floor: _Floor, rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp],
+                 fallback: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
+    """The way through a throat (unit x, y in cells): square to the line between the two things
+    either side of its narrowest cell, each taken as its blocking cells within ``THROAT_SIDE_M``
+    past the nearest one (their middle: one cell's pixel steps do not tilt it), the far one on
+    the other side of that cell from the nearest (``fallback`` when there is none within a
+    passage's width)."""
+    k = int(np.argmin(floor.d2[rr, cc]))
+    r, c = int(rr[k]), int(cc[k])
+    res = floor.grid.resolution_m
+    reach = math.ceil((floor.params.passage_max_width_m + THROAT_SIDE_M) / res)
+    h, w = floor.open_.shape
+    r0, c0 = max(0, r - reach), max(0, c - reach)
+    br, bc = np.nonzero(~floor.open_[r0:min(h, r + reach + 1), c0:min(w, c + reach + 1)])
+    if len(br) == 0:
+        return fallback
+    v = np.stack([bc + c0 - c, br + r0 - r], axis=1).astype(float)
+    n = np.sqrt((v * v).sum(axis=1))
+    first = v[int(np.argmin(n))]
+    far = v @ first < 0
+    if not far.any():
+        return fallback
+    near_d, far_d = float(n.min()), float(n[far].min())
+    side_a = v[~far & (n <= near_d + THROAT_SIDE_M / res)].mean(axis=0)
+    side_b = v[far & (n <= far_d + THROAT_SIDE_M / res)].mean(axis=0)
+    across = side_b - side_a
+    norm = float(np.hypot(*across))
+    if norm == 0.0:
+        return fallback
+    return np.array([across[1], -across[0]]) / norm
 
 
 def _judged(floor: _Floor, piece: _Piece, sides: npt.NDArray[np.float64], doors: Sequence[Door],
@@ -543,9 +642,30 @@ def _judged(floor: _Floor, piece: _Piece, sides: npt.NDArray[np.float64], doors:
     stretch = _two_sided_stretch(floor, piece, sides)
     if stretch is None:
         return None
+    if stretch.length_m < floor.min_len_m and not piece.short:
+        # A gap between free-standing things, shorter than a doorway: its sides are where it is
+        # narrowest, and the way through runs square to them (_throat_axis), not along the chain
+        # with its flaring mouths (askew across a thin line, the probes miss the line).
+        again = _measured(floor, [(piece.rr, piece.cc, None)], short=True)
+        return _judged(floor, *again[0], doors, labels, room_ids, passage_id, retry) if again else None
     if not _leads_somewhere(floor, piece, stretch):
         floor.reject('a mouth leads nowhere', stretch.mid, stretch.width_m, stretch.length_m)
         return None
+    # A gap no deeper than a doorway between free-standing things (_two_sided_stretch) where a
+    # door was found is that door: the things may be the pieces of a wall broken by laser gaps.
+    # Nor is it a gap where scan specks lie across it: the sparse returns of a glass front or a
+    # thin rail, the line goes on there.
+    if stretch.length_m < floor.min_len_m:
+        if any(math.dist(d.center, floor.to_world(stretch.mid)) <= stretch.length_m / 2 + floor.params.door_max_depth_m
+               for d in doors):
+            floor.reject('a door', stretch.mid, stretch.width_m, stretch.length_m)
+            return None
+        if not _in_a_line(floor, piece, stretch):
+            floor.reject('shorter than a doorway is deep', stretch.mid, stretch.width_m, stretch.length_m)
+            return None
+        if _specks_across(floor, piece, stretch):
+            floor.reject('scan specks across it: the line goes on', stretch.mid, stretch.width_m, stretch.length_m)
+            return None
     squeeze = False
     if stretch.length_m < floor.params.hallway_min_elongation * stretch.width_m:
         gap = _short_way(floor, piece, stretch, doors)
@@ -567,11 +687,20 @@ def _two_sided_stretch(floor: _Floor, piece: _Piece, sides: npt.NDArray[np.float
     bounded: BoolArray = np.asarray(np.isfinite(sides).all(axis=1), dtype=bool)
     # Width: across the passage between its two sides (exact for axis-aligned sides).
     width_m = (median(sides[bounded].sum(axis=1)) - 0.5) * res
+    if piece.short and bounded.any():
+        # A throat is as wide as it is at its narrowest: its few samples across a thin line drawn
+        # askew may hit the line a step past its end.
+        width_m = (float(sides[bounded].sum(axis=1).min()) - 0.5) * res
     # It runs where it has two sides: not on into its flaring mouths.
     lo, hi = float(piece.proj[bounded].min()), float(piece.proj[bounded].max())
     length_m = (hi - lo + 1.0) * res
     mid = piece.mean + 0.5 * (lo + hi) * piece.axis
-    if length_m < floor.min_len_m:
+    # A doorway is as deep as its wall is thick: a shorter gap is a door's business, except
+    # between two things that stand free (a gap in a line of screens, a rail or a detector arch
+    # standing in a room, open floor round its ends): a wall runs into the building's other
+    # walls, so a gap between two free-standing things is in no wall, however thin they are.
+    if ((length_m < floor.min_len_m or piece.short)
+            and _free_standing_things(floor, piece, sides, bounded) is None):
         floor.reject('shorter than a doorway is deep', mid, width_m, length_m)
         return None
     # Wide enough for the robot to pass, and narrow (the band's test used the skeleton's
@@ -592,6 +721,86 @@ def _two_sided_stretch(floor: _Floor, piece: _Piece, sides: npt.NDArray[np.float
         floor.reject('sides not solid', mid, width_m, length_m)
         return None
     return _Stretch(sides=sides, bounded=bounded, width_m=width_m, lo=lo, hi=hi, length_m=length_m, mid=mid)
+
+
+def _free_standing_things(floor: _Floor, piece: _Piece, sides: npt.NDArray[np.float64],
+                          bounded: BoolArray) -> tuple[int, int] | None:
+    """The two free-standing things a stretch runs between, when it does: where its two sides
+    start (along most of its two-sided points, ``MIN_BOUNDED_FRACTION``), blocking that is no
+    part of the building's structure (:attr:`_Floor.structure`: walls joined to each other and to
+    the world beyond them), a different thing on each side (not a slot in one thing). Their
+    labels (the commonest on each side); None when it does not."""
+    if not bounded.any():
+        return None
+    structure, things = floor.structure
+    h, w = structure.shape
+    on: list[npt.NDArray[np.int32]] = []
+    for j, sign in enumerate((-1.0, 1.0)):
+        # The first blocked sample of side_distances, the same arithmetic.
+        t = sign * sides[bounded, j]
+        r = np.clip(np.floor(piece.pts[bounded, 1] + t * piece.normal[1]).astype(int), 0, h - 1)
+        c = np.clip(np.floor(piece.pts[bounded, 0] + t * piece.normal[0]).astype(int), 0, w - 1)
+        lab = things[r, c]
+        if np.count_nonzero((lab > 0) & ~structure[r, c]) < MIN_BOUNDED_FRACTION * len(lab):
+            return None
+        on.append(lab[lab > 0])
+    if len(np.intersect1d(on[0], on[1])):
+        return None
+    a, b = (int(np.bincount(o).argmax()) for o in on)
+    return a, b
+
+
+def _in_a_line(floor: _Floor, piece: _Piece, stretch: _Stretch) -> bool:
+    """Is a stretch no deeper than a doorway a gap in a line of free-standing things (a line of
+    screens, a rail, a detector arch between two machines): between two of them
+    (:func:`_free_standing_things`: no wall, so no doorway), each going on away from the gap
+    along the line, deeper than any wall is thick (``door_max_depth_m``), not a thing running
+    along the way beside it (the end of a rack row beside a cross aisle)?"""
+    res = floor.grid.resolution_m
+    b = stretch.bounded
+    pair = _free_standing_things(floor, piece, stretch.sides, b)
+    if pair is None:
+        return False
+    depth = floor.params.door_max_depth_m / res
+    return all(deep(floor.open_, piece.pts[b], piece.normal * (2 * j - 1), stretch.sides[b, j], depth, res)
+               or _reaches(floor, pair[j], stretch, piece.normal * (2 * j - 1), depth) for j in (0, 1))
+
+
+def _reaches(floor: _Floor, thing: int, stretch: _Stretch, outward: npt.NDArray[np.float64],
+             depth: float) -> bool:
+    """Does a free-standing thing (its label in :attr:`_Floor.structure`) beside a short stretch
+    reach ``depth`` cells along ``outward`` (x, y in cells, square to the way), within the band
+    the stretch spans along the way (and ``THROAT_BAND_CELLS`` either side: a thin line drawn
+    askew in steps): a line that goes on away from the gap, not a thing that runs along the way
+    beside it?"""
+    _structure, lab = floor.structure
+    mid = stretch.mid
+    pad = math.ceil(depth + floor.params.passage_max_width_m / floor.grid.resolution_m) + 1
+    h, w = lab.shape
+    r0, c0 = max(0, math.floor(mid[1]) - pad), max(0, math.floor(mid[0]) - pad)
+    rr, cc = np.nonzero(lab[r0:min(h, math.floor(mid[1]) + pad + 1), c0:min(w, math.floor(mid[0]) + pad + 1)] == thing)
+    dx, dy = cc + c0 + 0.5 - mid[0], rr + r0 + 0.5 - mid[1]
+    way = np.abs(dx * outward[1] - dy * outward[0])
+    along = (dx * outward[0] + dy * outward[1])[way <= stretch.half_len + THROAT_BAND_CELLS]
+    return bool(len(along) and along.max() - along.min() >= depth)
+
+
+def _specks_across(floor: _Floor, piece: _Piece, stretch: _Stretch) -> bool:
+    """Are there scan specks (occupied cells the floor reads past) on the line across a stretch's
+    middle, between its two sides: the sparse returns of the line it is a gap in (a glass front,
+    a thin rail), which goes on there?"""
+    b = stretch.bounded
+    lo = -float(np.median(stretch.sides[b, 0]))
+    hi = float(np.median(stretch.sides[b, 1]))
+    t = np.arange(lo + 1.0, hi - 0.5, 0.5)
+    if len(t) == 0:
+        return False
+    pts = stretch.mid[None, :] + t[:, None] * piece.normal[None, :]
+    r = np.floor(pts[:, 1]).astype(int) + floor.r0
+    c = np.floor(pts[:, 0]).astype(int) + floor.c0
+    h, w = floor.grid.cells.shape
+    ok = (r >= 0) & (r < h) & (c >= 0) & (c < w)
+    return bool((floor.grid.cells[r[ok], c[ok]] == OCCUPIED).any())
 
 
 def _leads_somewhere(floor: _Floor, piece: _Piece, stretch: _Stretch) -> bool:
@@ -648,6 +857,10 @@ def _short_way(floor: _Floor, piece: _Piece, stretch: _Stretch, doors: Sequence[
         depth = params.door_max_depth_m / res
         sides_deep = [deep(floor.open_, piece.pts[bounded], piece.normal * (2 * j - 1), sides[bounded, j], depth, res)
                       for j in (0, 1)]
+        # A gap in a line of free-standing things (_in_a_line): both are deep along the line,
+        # however thin (the probe above misses a thin line drawn askew in steps).
+        if length_m < floor.min_len_m:
+            sides_deep = [True, True]
         # A squeeze past a thing deeper than a wall beside a wall that runs on, or
         # between two such things (a parked bed and a trolley in a corridor, a
         # wardrobe and a desk across a room): longer than a wall is thick

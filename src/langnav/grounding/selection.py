@@ -854,8 +854,10 @@ def _candidates(ref: ElementRef, analysis: MapAnalysis, pose: Pose) -> list[Elem
     if ref.kind == Kind.NARROW_PASSAGE:
         # a gap between two things is the robot's to name only where it sees it: noise and furniture
         # leave hundreds such gaps on a real map, and one in another room is no "gap" a person in this
-        # one points at (the doorway in front is) -- see _gap_in_sight
+        # one points at (the doorway in front is) -- see _gap_in_sight. So is a passage the analysis
+        # found no deeper than a doorway: a gap in a line of things (a rail, a line of screens)
         between = {id(g) for g in gaps_between_things(analysis)}
+        between |= {id(p) for p in analysis.narrow_passages if p.length_m < analysis.params.door_max_depth_m}
         pool = [e for e in pool if id(e) not in between or _gap_in_sight(analysis, pose.xy, e)]
     if not pool:
         raise GroundingError(f"I see no {KIND_NOUN[ref.kind][1]} in this map.")
@@ -974,6 +976,18 @@ class _LocalRank:
         return 0 if any(_in_space(e, s, self.analysis) for s in self.here_group) else 1
 
 
+def _doors_in_sight(ref: ElementRef, pool: list[Element], analysis: MapAnalysis, pose: Pose) -> list[Element]:
+    """Doors picked by order, side or alone ("the third doorway behind you", "the door") in a space with
+    no door of its own (a corridor whose ways out are all wide openings): a person means a door both can
+    see, never one between two other rooms tens of metres away; ask when none is in sight. A door picked
+    by name, by a landmark, as passed or as the nearest one says itself which it is. With none in
+    sight, ``_counted_off`` says so and asks."""
+    if ref.label is not None or ref.relation is not None or ref.near is not None or ref.passed \
+            or ref.superlative not in (None, Superlative.FARTHEST):
+        return pool
+    return [e for e in pool if _gap_in_sight(analysis, pose.xy, e)]
+
+
 def _local_rank(analysis: MapAnalysis, pose: Pose, space: Room | None) -> _LocalRank:
     here = space_of(analysis, pose.xy)
     return _LocalRank(analysis, here, tuple(gap_joined(analysis, here)) if here is not None else (), space)
@@ -985,6 +999,9 @@ def _of_this_space(ref: ElementRef, pool: list[Element], analysis: MapAnalysis, 
     "the obstacle" of a room with one; "the fourth door on your left" counted among the doors of the
     space the robot is in."""
     here_group = list(rank.here_group)
+    if ref.kind == Kind.DOOR and space is None and rank.here is not None \
+            and not any(rank(e) == 0 for e in elements_of_kind(analysis, Kind.DOOR)):
+        pool = _doors_in_sight(ref, pool, analysis, pose)
     if ref.kind == Kind.DOOR and count == 1 and _plain(ref):
         _one_door_or_ask(pool, [space] if space is not None else here_group, analysis, pose)
     if ref.kind == Kind.OBSTACLE and count == 1 and _plain(ref) and space is None and here_group:
