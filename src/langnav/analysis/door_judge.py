@@ -651,6 +651,17 @@ def opens_wider(ev: DoorEvidence, width_m: float, sides: tuple[int, ...] = (0, 1
     return all(ev.beyond_width_m[i] > limit for i in sides)
 
 
+def hallways_meet(width_m: float, hallway_widths_m: tuple[float, float]) -> bool:
+    """Whether an opening ``width_m`` wide between two hallways ``hallway_widths_m`` wide (each
+    its typical width, judged along its length) is where they meet, not a door: a door between
+    two corridors (a fire door, a door across a corridor) stands in a frame narrower than both by
+    a door's widening (WIDEN_FACTOR / WIDEN_MIN_M); an opening as wide as one of them is that
+    corridor running into the other (a junction, a corridor's mouth), however a side opening near
+    it widens the place beyond it locally."""
+    limit = max(width_m * WIDEN_FACTOR, width_m + WIDEN_MIN_M)
+    return min(hallway_widths_m) <= limit
+
+
 def line_turn_deg(occupied: BoolArray, center_rc: tuple[float, float], line_rad: float,
                   resolution_m: float) -> float:
     """The angle (degrees, 0-45) between a line through ``center_rc`` at ``line_rad`` (in the
@@ -828,6 +839,7 @@ __all__ = [
     "floor_beyond",
     "free_widths",
     "free_widths_each",
+    "hallways_meet",
     "is_door",
     "is_furniture",
     "judge_doors",

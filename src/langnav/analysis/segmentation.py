@@ -29,7 +29,7 @@ import numpy.typing as npt
 from scipy import ndimage as ndi
 from skimage.segmentation import watershed
 
-from langnav.analysis.door_judge import judge_doors
+from langnav.analysis.door_judge import hallways_meet, judge_doors
 from langnav.analysis.door_posts import wide_with_posts
 from langnav.analysis.elements import Door, ElementKind, Room
 from langnav.analysis.errors import AnalysisError
@@ -292,6 +292,13 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     pairs = [(d.a, d.b) for d in raw_doors + raw_wide]
     rooms = _rooms(grid, labels, fl, params, peaks, openings, _ways_on(openings, pairs, labels),
                    _served(pairs, openings, labels))
+    # Two hallways meet through an opening as wide as one of them: a junction, no door (it stays
+    # a way between them).
+    halls = {r.label: r.width_m for r in rooms if r.kind == ElementKind.HALLWAY}
+    junctions = [d for d in raw_doors if d.a in halls and d.b in halls
+                 and hallways_meet(d.width_m, (halls[d.a], halls[d.b]))]
+    raw_doors = [d for d in raw_doors if d not in junctions]
+    raw_wide += junctions
     view = _views_out(labels, occupied)
     if view.any():
         # A view out of the building is no space: its cells are no one's, a door into it leads
