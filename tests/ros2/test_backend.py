@@ -208,7 +208,11 @@ def test_a_robot_whose_nav2_shuts_down_ends_the_task_aborted(demo_robot: Callabl
     node.close()  # Nav2 shuts down: it aborts its goal and leaves the graph
     result = handle.wait(10.0)
     assert result.status is TaskStatus.FAILED
-    assert "aborted" in result.message and "/navigate_through_poses" in result.message
+    # Two right reports race here: the abort result, when it reaches the client before the server is
+    # gone, or else the graph watch seeing the action server leave (the result lost with the node).
+    # Either way the task fails, names the server, and does so within the watch's time.
+    assert "/navigate_through_poses" in result.message
+    assert "aborted" in result.message or "left the ROS graph" in result.message
     assert time.monotonic() - t0 < 5.0
     deadline = time.monotonic() + 5.0
     while robot.state().connected and time.monotonic() < deadline:
