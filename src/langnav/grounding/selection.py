@@ -977,9 +977,10 @@ class _LocalRank:
 
 
 def _doors_in_sight(ref: ElementRef, pool: list[Element], analysis: MapAnalysis, pose: Pose) -> list[Element]:
-    """Doors picked by order, side or alone ("the third doorway behind you", "the door") in a space with
-    no door of its own (a corridor whose ways out are all wide openings): a person means a door both can
-    see, never one between two other rooms tens of metres away; ask when none is in sight. A door picked
+    """Doors picked by side or alone ("the last doorway on your left", "the door") in a space with no
+    door of its own (a corridor whose ways out are all wide openings): a person means a door both can
+    see, never one between two other rooms tens of metres away; ask when none is in sight (an ordinal
+    counts only the space's own doors, so it asks there already: ``_of_this_space``). A door picked
     by name, by a landmark, as passed or as the nearest one says itself which it is. With none in
     sight, ``_counted_off`` says so and asks."""
     if ref.label is not None or ref.relation is not None or ref.near is not None or ref.passed \
@@ -999,7 +1000,7 @@ def _of_this_space(ref: ElementRef, pool: list[Element], analysis: MapAnalysis, 
     "the obstacle" of a room with one; "the fourth door on your left" counted among the doors of the
     space the robot is in."""
     here_group = list(rank.here_group)
-    if ref.kind == Kind.DOOR and space is None and rank.here is not None \
+    if ref.kind == Kind.DOOR and ref.ordinal is None and space is None and rank.here is not None \
             and not any(rank(e) == 0 for e in elements_of_kind(analysis, Kind.DOOR)):
         pool = _doors_in_sight(ref, pool, analysis, pose)
     if ref.kind == Kind.DOOR and count == 1 and _plain(ref):
