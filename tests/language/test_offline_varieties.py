@@ -113,7 +113,9 @@ def test_talk_around_the_request(prompt: str, expected: Plan) -> None:
 
 @pytest.mark.parametrize("prompt", [
     "corner!",                                 # a warning, or the place? ask
-    "behind! okay robot, back up two feet",    # a shout with a way in it is kept, and not understood: ask
+    # a shout with a way in it is kept: a way other than the motion's may be the way meant, ask (one that agrees,
+    # "behind! back up two feet", says the way again: test_offline_s11)
+    "ahead! okay robot, back up two feet",
     "along this wall, fine. go forward",       # no thing before the place: it may be an instruction; and how far?
 ])
 def test_shouts_and_notes_that_may_be_meant_are_asked(prompt: str) -> None:

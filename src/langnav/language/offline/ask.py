@@ -44,6 +44,21 @@ def spatial(words: str) -> list[str]:
     return [w for w in words.lower().split() if w.strip(",.;:!?'\"") in SPATIAL_WORDS]
 
 
+#: A verb of going and the word that says a destination follows ("go to", "head towards", "drive into").
+_GOING_TO_RE: Final = re.compile(
+    r"\b(?:" + "|".join(sorted((re.escape(v).replace(r"\ ", r"\s+") for v in lx.GO_VERBS), key=len, reverse=True))
+    + r")\s+(?:(?:up|over|on|back|down|right|straight)\s+)?(?:to|towards?|into|onto|up\s+to|as\s+far\s+as)\s+\S",
+    re.IGNORECASE)
+
+
+def names_destination(words: str) -> bool:
+    """Whether ``words`` send the robot to a place (a verb of going, then "to", "towards", "into" and what follows):
+    left unread, they name a destination the reading could not ground ("go to the robot and turn left"; "go to my
+    friend"), so the plan may not be what was asked: the rest of the request must not run without it (the words
+    after the verb are a place, never an address to the robot, which is spoken to, not gone to)."""
+    return _GOING_TO_RE.search(words) is not None
+
+
 def only_stops(steps: Sequence[Step]) -> bool:
     """A plan that only stops ("nee nee, stop"; "dur, stop!"): a word left unread next to it cannot make the robot
     go farther or turn more than stopping does, so it is no reason to hold the stop back and ask."""

@@ -46,7 +46,10 @@ CORRECTION_START_RE: Final = re.compile(
     r"(?:(?:oh|ah|uh|um)\s*,?\s+(?=sorry|no\b|i\s+mean)|actually|no\s+(?:wait|hang\s+on|hold\s+on)|no(?!\s+(?:further|longer|more|need)\b)|na+h|naw|nope|wait(?=\s*,?\s*no\b)|oh\s+wait|(?:i'?m|i\s+am|im)\s+sorry|"
     r"sorry|i\s+meant\s+to\s+say|i\s+mean\s+to\s+say|i\s+meant|i\s+mean|i\s+said|my\s+(?:bad|mistake|error|fault|b)|"
     # the other ways English speakers say they said it wrong ("wrong", "I misspoke", "on second thought")
-    r"(?:that'?s\s+|that\s+is\s+)?wrong|i\s+misspoke|let\s+me\s+(?:rephrase(?:\s+that)?|correct\s+(?:that|myself))|"
+    # (a typist's "typo" is a speaker's "I misspoke": "rotate right 30, typo, meant left")
+    r"(?:that'?s\s+|that\s+is\s+)?wrong|i\s+misspoke|(?:that\s+was\s+a\s+|my\s+|a\s+)?typo|let\s+me\s+(?:rephrase(?:\s+that)?|correct\s+(?:that|myself))|"
+    # "the opposite" said alone: the way said was the wrong one ("turn left ninety, the opposite, turn right ninety")
+    r"(?:the\s+)?opposite(?=[\s,.!]*$)|"
     r"on\s+second\s+thoughts?|second\s+thoughts?|change\s+of\s+plans?|or\s+actually|or\s+rather|rather|make\s+that|make\s+it|correction|"
     r"oops)\b[\s,]*)+", re.IGNORECASE)
 #: Words that take back what was said before ("never mind", "scratch that"). Radio and naval procedure say it
@@ -196,7 +199,11 @@ def apply_corrections(clauses: list[str]) -> list[str]:
     correct_next = False  # "i'm sorry" alone: the next clause is the correction
     dismay_next = False  # ... opened by an exclamation of dismay alone ("damn")
     take_back: bool | None = None  # a take-back alone, waiting for what follows: whether it drops everything
-    for clause in clauses:
+    for i, clause in enumerate(clauses):
+        if not correct_next and take_back is None and out and i + 1 < len(clauses) \
+                and _takes_back_between(out[-1], clause, clauses[i + 1]):
+            out.pop()  # "turn left ninety, cancel, turn right ninety": only the right turn
+            continue
         cancel = CANCEL_RE.search(clause)
         start = CORRECTION_START_RE.match(clause)
         everything: bool | None = None
@@ -284,6 +291,25 @@ def _unit_corrected(previous: str, unit: str) -> str:
     q = said[-1]
     words = norm[q.start:q.end].split()
     return f"{norm[:q.start]}{' '.join(words[:-1])} {unit}{norm[q.end:]}" if len(words) > 1 else norm
+
+
+#: "cancel" said alone: the instruction before it is called off.
+_CANCEL_ALONE_RE: Final = re.compile(r"^(?:cancel|cancel\s+it|call\s+it\s+off|abort|abort\s+that)$")
+
+
+def _takes_back_between(before: str, clause: str, after: str) -> bool:
+    """Whether ``clause``, said alone between two instructions, takes the first back: "cancel" calls it off
+    whatever follows ("go forward two metres, cancel, go back one metre"); "wait" / "hold on" between two
+    instructions of the same kind ("turn left ninety, wait, turn right ninety") is the speaker stopping to say it
+    again, as they meant it. (Doing both would move or turn more than asked if it was a take-back; doing only the
+    second never does. A pause between two kinds of instruction, "go forward, wait, turn left", orders them.)"""
+    norm = normalize(clause)
+    kinds = _kind(before), _kind(after)
+    if kinds[0] is None or kinds[1] is None:
+        return False
+    if _CANCEL_ALONE_RE.match(norm):
+        return True
+    return _HOLD_RE.match(norm) is not None and kinds[0] == kinds[1]
 
 
 def _take_back(out: list[str], everything: bool) -> None:

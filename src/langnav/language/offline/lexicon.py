@@ -314,8 +314,9 @@ QUERY_POSE_PATTERNS: Final = (
     r"(?<!\bhold\s)(?<!\bkeep\s)(?<!\bmaintain\s)"
     r"\b(?:your|the\s+robot'?s?|current|robot)\s+(?:current\s+|exact\s+|present\s+|last\s+)?"
     r"(?:position|location|pose|coordinates|whereabouts|heading|orientation|place)\b",
-    # ("say position": radio procedure's "say" asks the other station to tell it)
-    r"\b(?:report|send|give|tell|say)\s+(?:me\s+|us\s+)?(?:your\s+|the\s+)?(?:current\s+|present\s+)?"
+    # ("say position": radio procedure's "say" asks the other station to tell it; "get pose": a developer's
+    # "get" fetches a value, as "get map" does)
+    r"\b(?:report|send|give|tell|say|get|fetch)\s+(?:me\s+|us\s+)?(?:your\s+|the\s+)?(?:current\s+|present\s+)?"
     r"(?:position|location|pose|coordinates|whereabouts)\b(?!\s+of\b)",
     r"\bwhich\s+(?:way|direction)\s+are\s+you\s+(?:facing|pointing|heading|looking)\b",
     r"\bwhere\s+(?:is\s+it|are\s+we)\b", r"^\s*where\s+(?:you|u)\s+(?:are|r)\b",
@@ -345,7 +346,10 @@ QUERY_MAP_PATTERNS: Final = (
     r"\b(?:show|give|send|display|get|fetch|let\s+me\s+see|can\s+i\s+see|see|view|open|bring\s+up|"
     r"pull\s+up|print|draw|download|share|provide|transmit|upload|export|post)\b(?:\s+\w+){0,4}?\s+(?:(?:mini|floor|site|overview)\s*-?\s*)?"
     r"(?:map|occupancy\s+grid)\b",
-    r"\bwhat\s+does\s+(?:the|your)\s+map\s+look\s+like\b", r"\b(?:the|your|current)\s+map\s*\?",
+    r"\bwhat\s+does\s+(?:the|your)\s+map\s+look\s+like\b",
+    # "how is the map now?", "how's the map looking": asking how the map is, as "what does it look like", is asking
+    # to see it
+    r"\bhow\s+(?:is|does|are)\s+(?:the|your|our)\s+map\b(?!\s+(?:made|built|drawn|saved|stored)\b)", r"\b(?:the|your|current)\s+map\s*\?",
     r"^\s*(?:the\s+)?map\s*$", r"\bwhat\s+(?:have\s+you|did\s+you)\s+mapped\b",
     r"\bwhat\s+is\s+on\s+(?:the|your)\s+map\b", r"\bwhat\s+(?:you\s+have|have\s+you)\s+(?:mapped|explored|seen)\b",
 )
@@ -683,6 +687,32 @@ FOREIGN_WAYS: Final[dict[str, str]] = {
 FOREIGN_WAY_WORDS: Final = frozenset(FOREIGN_WAYS)
 #: Of those, the words for "no": said alone, they correct as "no" does (``speech.FOREIGN_NO``).
 FOREIGN_NO_WORDS: Final = frozenset(w for w, way in FOREIGN_WAYS.items() if way == "no")
+#: "A little" / "a bit" and "more" in the same languages (accents dropped, as typed): an amount said small is the
+#: contract's small amount in every language ("back up un poquito": 0.15-0.5 m, 10-40 degrees), and "more" after
+#: it is "a little more" ("a little bit mas"). Unlike a way word, the reading takes them as the English words: a
+#: small amount is bounded, so reading it never moves or turns more than a person would agree to. Words that are
+#: also English ("plus", "motto", "duo") or another common word ("jom", "kami", "zara", "etwas") are left out.
+FOREIGN_AMOUNTS: Final[dict[str, str]] = {
+    **{w: "a little" for w in (
+        # Spanish, Portuguese, French, Italian
+        "un poco", "un poquito", "poquito", "un poquitito", "poquitito", "tantito", "un tantito",
+        "um pouco", "um pouquinho", "pouquinho", "um tiquinho",
+        "un peu", "un petit peu", "un tout petit peu",
+        "un po", "un poco", "un pochino", "pochino", "un pochettino", "pochettino",
+        # German, Dutch, Polish, Russian
+        "ein bisschen", "ein bischen", "bisschen", "ein wenig", "ein klein wenig", "ein bisserl",
+        "een beetje", "beetje", "een klein beetje", "een stukje", "stukje",
+        "troche", "troszke", "troszeczke", "odrobine",
+        "nemnogo", "nemnozhko", "chut chut", "chut-chut",
+        # Turkish, Arabic, Hindi and Urdu, Persian
+        "biraz", "birazcik", "azicik", "shwaya", "shwayya", "shwaiya", "shwai", "shway", "shwy",
+        "thoda", "thora", "thoda sa", "thora sa", "thodi", "thodi si", "thoda thoda", "kam kam", "yekam", "yek kam",
+        # Japanese, Korean, Mandarin (pinyin), Tagalog, Swahili, Vietnamese, Indonesian and Malay, Greek, Hebrew
+        "sukoshi", "chotto", "jogeum", "chogeum", "yidian", "yi dian", "yidiandian", "yidianr",
+        "konti", "kaunti", "konting", "kidogo", "mot chut", "chut xiu", "mot it", "sedikit", "sikit", "ligo", "ktsat",
+    )},
+    **{w: "more" for w in ("mas", "mais", "piu", "mehr", "meer", "wiecej", "bolshe", "daha", "zyada", "jyada")},
+}
 STOPWORDS: Final = frozenset({
     "the", "a", "an", "to", "you", "your", "yourself", "and", "then", "of", "in", "on", "at", "is",
     "are", "be", "it", "its", "that", "this", "there", "here", "now", "please", "for", "with", "from",

@@ -12,7 +12,7 @@ import re
 import unicodedata
 from typing import Final
 
-from langnav.language.offline.lexicon import FOREIGN_NO_WORDS, HESITATIONS, TYPOS
+from langnav.language.offline.lexicon import FOREIGN_AMOUNTS, FOREIGN_NO_WORDS, GO_VERBS, HESITATIONS, ROTATE_VERBS, TYPOS
 from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS, ONES, TENS
 from langnav.language.offline.patterns import TURN_SIDE_WORDS
 from langnav.language.offline.sidetalk import without_side_talk
@@ -54,7 +54,9 @@ REPORTED: Final = re.compile(
     # an interpreter voicing a signer says "she signs" / "she's signing"
     r"wants?\s+(?:you|u)\s+to|want\s+(?:you|u)\s+to|like\s+(?:you|u)\s+to|(?:asks?|asked|asking)\s+(?:you\s+)?to|"
     r"(?:tells?|telling)\s+(?:you|u)\s+to|signs?|signed|signing|reckons?|thinks?)\s+"
-    r"(?=(?:to\s+)?(?:turn|go|move|rotate|spin|pivot|back|reverse|drive|head|face|stop|come)\b)",
+    # (a way relayed alone is the request too: "she signed right", as an interpreter voices a signed way)
+    r"(?=(?:to\s+)?(?:turn|go|move|rotate|spin|pivot|back|reverse|drive|head|face|stop|come|"
+    r"left|right|forwards?|backwards?|ahead|straight|around)\b)",
     re.IGNORECASE)
 #: A question relayed ("she asks where you are", "he wants to know where you are"): the question itself, asked
 #: of the robot, as when the speaker asks it ("where are you") -- only a question of where the robot is, the
@@ -120,7 +122,7 @@ CORRECTION_MARKERS: Final = (
     r"i\s+meant\s+to\s+say", r"i\s+mean\s+to\s+say", rf"make\s+it(?=\s+(?:\d|a\b|an\b|half|just|only|(?:{NUMBER_WORDS})\b))",
     r"(?:i'?m|i\s+am|im)\s+sorry", r"sorry", r"i\s+meant", r"i\s+mean", r"i\s+said", r"my\s+(?:bad|mistake|error|fault)", r"or\s+rather", r"make\s+that",
     r"scratch\s+that", r"never\s*mind", r"correction", r"oops", r"disregard", r"belay",
-    r"(?:strike|delete|erase|undo|scrap)\s+that", r"i\s+misspoke", r"on\s+second\s+thoughts?",
+    r"(?:strike|delete|erase|undo|scrap)\s+that", r"i\s+misspoke", r"typo", r"on\s+second\s+thoughts?",
     # "turn eighty degrees right no eighty five": "no" right before a number corrects the amount
     rf"no(?=\s+(?:\d|a\s+hundred|half|{NUMBER_WORDS})\b)",
     # "turn left no right thirty degrees": "no" right before another side corrects the side
@@ -294,6 +296,19 @@ _OPEN_WORDS: Final = frozenset({
 })
 
 
+#: Of those, the words that may also end what is said ("the opposite"): before a verb or a side, the comma after them ends it
+#: ("turn left ninety, the opposite, turn right ninety").
+_WHOLE_ALONE: Final = frozenset({"opposite", "other"})
+_VERBS_ALONE: Final = (frozenset(v for v in (*GO_VERBS, *ROTATE_VERBS) if " " not in v) - {"be", "do", "have", "make"}
+                        | {"left", "right"})
+
+
+#: "stop, but first turn left": what is said after "but first" (or "but before that") is done before what was said
+#: ahead of it, as a person would do it; said in that order, the steps run in the order meant.
+FIRST_AFTER: Final = re.compile(r"(?P<a>[^.;!?]+?)[,\s]+but\s+(?:first|before\s+(?:that|this|you\s+do\s+that))\s*,?\s+"
+                                r"(?P<b>[^.;!?]+)", re.IGNORECASE)
+
+
 #: A tag question after a statement ("that's two metres, right?", "..., okay?"): it asks for agreement,
 #: it names no side. (If the instruction before it misses its side, the reading asks for it.)
 TAG_QUESTION: Final = re.compile(r",\s*(?:right|correct|yes|yeah|ok(?:ay)?|yep|no)\s*\?+", re.IGNORECASE)
@@ -320,6 +335,11 @@ RADIO_NO: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*negative(?:\s+on\s+that)?(?:
 #: "turn left, nahi nahi, right side forty five"): "no", which corrects what it follows, as in English.
 FOREIGN_NO: Final = re.compile(rf"(?:^|(?<=[,.;!?]))\s*(?:{'|'.join(sorted(FOREIGN_NO_WORDS))})(?:[\s,]+(?:{'|'.join(sorted(FOREIGN_NO_WORDS))}))*"
                                r"\s*(?=[,.;!?]|$)", re.IGNORECASE)
+#: "A little" and "more" said in another language (``lexicon.FOREIGN_AMOUNTS``): read as the English words (not
+#: after an article: "the konti" names a thing, which the reading asks about).
+FOREIGN_AMOUNT: Final = re.compile(
+    r"(?<!\bthe\s)(?<!\ba\s)(?<!\ban\s)(?<!\bthis\s)(?<!\bthat\s)\b(?:" + "|".join(re.escape(w).replace(r"\ ", r"\s+") for w in sorted(FOREIGN_AMOUNTS, key=len, reverse=True))
+    + r")\b", re.IGNORECASE)
 #: A radio call opening a message names who is called and who calls ("base to robot, ...", "robot, this is
 #: base, ..."): no instruction.
 _STATION: Final = r"(?:robot|rover|bot|unit|base|command|control|operator|team|hq|headquarters|scout)"
@@ -472,7 +492,9 @@ def plain_speech(prompt: str) -> str:
     text = CONTRAST_AFTER.sub(_contrast_after, CONTRAST_BEFORE.sub("", text))
     text = STOP_AFTER_AMOUNT.sub(" ", text)
     text = RADIO_NOISE.sub(" ", RADIO_NO.sub(" no", FOREIGN_NO.sub(" no", RADIO_CALL.sub(" ", text))))
+    text = FOREIGN_AMOUNT.sub(lambda m: f" {FOREIGN_AMOUNTS[' '.join(m.group(0).lower().split())]} ", text)
     text = _UNIT_THEN_EXACT.sub(r"\g<unit>", NUMBER_RESTART.sub("", text))
+    text = FIRST_AFTER.sub(r"\g<b>, then \g<a>", text)
     text = REQUEST_FRAMES.sub(" ", PSEUDO_CLEFT.sub(" ", text))
     text = THAT_CLAUSE.sub("", REMARKS.sub(" ", ASIDES.sub(" ", CONCESSION.sub(" ", text))))
     text = NOT_TOO_FAR.sub(" a little", KEEPING_HEADING.sub(" ", ESTIMATING_WHAT.sub(" ", text)))
@@ -503,7 +525,8 @@ def plain_speech(prompt: str) -> str:
         kept.append(token)
     for i in range(len(kept) - 1):
         word = kept[i].lower()
-        if word.endswith(",") and word.rstrip(",") in _OPEN_WORDS:
+        if word.endswith(",") and word.rstrip(",") in _OPEN_WORDS \
+                and not (word.rstrip(",") in _WHOLE_ALONE and kept[i + 1].lower() in _VERBS_ALONE):
             kept[i] = kept[i].rstrip(",")  # "the, uh, the first door": one phrase
     kept = [t for i, t in enumerate(kept) if not (i + 1 < len(kept) and t.lower() in _OPEN_WORDS
                                                   and t.lower() == kept[i + 1].lower().strip(",.;:!?"))]

@@ -19,7 +19,8 @@ from langnav.language.intent import (
     Step,
 )
 from langnav.language.offline.amounts import said_again, same_way_again, with_unit_said_before
-from langnav.language.offline.ask import ask_message, only_stops, spatial
+from langnav.language.offline.ask import ask_message, names_destination, only_stops, spatial
+from langnav.language.offline.code import plain_code
 from langnav.language.offline.composition import read_composed
 from langnav.language.offline.corrections import (
     CANCEL_RE,
@@ -43,7 +44,7 @@ from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.particles import without_particles
 from langnav.language.offline.photos import without_photo
-from langnav.language.offline.reading import ASK_AMOUNT, ASK_CONFIDENCE, ASK_SIDE
+from langnav.language.offline.reading import ASK_AMOUNT, ASK_CONFIDENCE, ASK_SIDE, ASK_UNIT
 from langnav.language.offline.restarts import (
     drop_false_start_turns,
     drop_insisted_amounts,
@@ -107,11 +108,11 @@ class OfflineTranslator:
 
 
 def translate_offline(prompt: str, known_names: Sequence[str] = ()) -> Intent:
-    """Read ``prompt`` into an intent, in stages: prompts refused outright; speech made plain (numbers, hesitations,
+    """Read ``prompt`` into an intent, in stages: code notation read as the words it spells; prompts refused outright; speech made plain (numbers, hesitations,
     idioms); the prompt split into whole instructions (``_clauses``); each read and joined to the steps before it
     (``_Assembly.add``); the steps, or the question to ask, assembled (``_Assembly.intent``).
     Raises TranslationError for empty, huge or non-text prompts."""
-    text = clean_prompt(prompt)
+    text = plain_code(clean_prompt(prompt))
     refused = _refused_outright(text)
     if refused is not None:
         return refused
@@ -205,7 +206,8 @@ class _Assembly:
                 near.append(reading.steps[0])
             self.awaiting = []
         if reading.steps or reading.problem in UNREAD_PROBLEMS:
-            self._doubt([u for u in reading.unread if u and spatial(u)], [*before, *reading.steps],
+            self._doubt([u for u in reading.unread if u and (spatial(u) or names_destination(u))],
+                        [*before, *reading.steps],
                         waits=not reading.steps)
         if reading.problem in _UNREAD_ALONE and not reading.steps:
             self.between.extend(u for u in reading.unread if u)
@@ -244,6 +246,12 @@ class _Assembly:
             steps[-1] = steps[-1].model_copy(update={"detail": Detail.THROUGH,
                                                      "text": f"{steps[-1].text}, {clause}"[:500]})
         if reading.amends_previous and steps and new_steps and _amendable(steps[-1], new_steps[0]):
+            if steps[-1].movement == Movement.ROTATE:
+                # "turn left, hands, ninety": a bare number completing a turn counts the turn's degrees (as
+                # "turn left, ninety" does), whatever word came between: no unit to ask about
+                for question in reading.asks:
+                    if question.startswith(ASK_UNIT_START) and question in questions:
+                        questions.remove(question)
             steps[-1] = _amend(steps[-1], new_steps.pop(0), clause)
         if (reading.amends_previous and steps and new_steps and not sequenced and not _REPEAT_RE.search(clause)
                 and same_way_again(steps[-1], new_steps[0]) and not _restates(steps[-1], new_steps[0], clause)):
@@ -337,7 +345,16 @@ def _said_in_both_languages(text: str, near: Sequence[Step]) -> bool:
     centimetre": Hindi "back"; "turn left, izquierda, ninety degrees"), so the word is read. A way the steps next
     to it do not take ("turn right, izquierda, ninety degrees") may be the way meant: the robot asks."""
     words = [w.strip(",.;:!?'\"") for w in spatial(text)]
+    if len(text.split()) == 1 and len(words) == 1 and words[0] in _WAYS_ALONE:
+        # an English way word said on its own ("behind! back up two feet") is read the same way: it says again
+        # the way of the motion beside it, or (another way) may be the way meant, and the robot asks
+        return any(_takes(_WAYS_ALONE[words[0]], s) for s in near)
     return bool(words) and all(w in FOREIGN_WAYS and any(_takes(FOREIGN_WAYS[w], s) for s in near) for w in words)
+
+
+#: English words of a way said on their own, and the way each says (as ``lexicon.FOREIGN_WAYS``).
+_WAYS_ALONE: Final = {"behind": "back", "back": "back", "backward": "back", "backwards": "back", "ahead": "forward",
+                      "forward": "forward", "forwards": "forward", "left": "left", "right": "right"}
 
 
 def _takes(way: str, step: Step) -> bool:
@@ -590,6 +607,8 @@ def _come_back_way(previous: Step | None, step: Step) -> Step:
 _POINTS_BACK_RE: Final = re.compile(r"\b(?:there|it|inside)\b", re.IGNORECASE)
 _ELEMENT_NOUN_RE: Final = re.compile(r"\b(?:" + "|".join(sorted(map(re.escape, ELEMENT_NOUNS), key=len, reverse=True))
                                      + r")\b", re.IGNORECASE)
+#: The start of the question of a number's unit (``reading.ASK_UNIT``).
+ASK_UNIT_START: Final = ASK_UNIT.split("{")[0]
 #: Steps that move nothing: said twice in a row, they are one request.
 _NO_MOTION: Final = frozenset({Movement.STOP, Movement.QUERY})
 

@@ -99,6 +99,11 @@ def amount_said(c: Clause, quantities: list[Quantity]) -> float | None:
     return value
 
 
+#: Words that say a turn to one side goes as far as it can ("turn left fully"), with no amount.
+_FULLY_RE: Final = re.compile(r"\b(?:fully|completely|totally|entirely|all\s+the\s+way|as\s+far\s+as\s+(?:you\s+)?can)\b",
+                              re.IGNORECASE)
+
+
 def rotation(c: Clause, vm: re.Match[str] | None) -> Step:
     step = _single_rotation(c, vm)
     times = repeat_count(c)
@@ -177,6 +182,11 @@ def _single_rotation(c: Clause, vm: re.Match[str] | None) -> Step:
                 c.asks.append(ASK_SIDE)
     elif angle is None:
         amount = Amount.LITTLE if little else Amount.DEFAULT
+        fully = _FULLY_RE.search(c.s.text)
+        if fully is not None and direction in (Direction.LEFT, Direction.RIGHT) and not little:
+            # "turn left fully": as far as a turn to one side goes is no amount a person would agree on (a
+            # quarter turn? a half? a whole?): ask, as for "a fair bit"
+            c.asks.append(ASK_HOW_MUCH_TURN.format(said=fully.group(0)))
         if direction is None:
             verb = vm.group(0) if vm is not None else ""
             if re.search(r"\b(?:spin|pirouette|twirl)\b", verb) or re.search(r"\blook\s+around\b", c.s.text):
