@@ -192,3 +192,21 @@ def test_a_turn_as_far_as_it_goes_asks(prompt: str) -> None:
 
 def test_fully_around_is_a_half_turn() -> None:
     assert plan("turn around fully") == [("rotate", "around", None, 180.0)]
+
+
+# ---------------------------------------------------------------- an amount said in another language and in English
+@pytest.mark.parametrize(("prompt", "expected"), [
+    ("aage jao, do meter, two meter forward", [("move", "forward", 2.0, None)]),   # Hindi "do": two
+    ("go forward two metres, iki metre", [("move", "forward", 2.0, None)]),         # Turkish "iki": two
+])
+def test_an_amount_said_in_both_languages_is_read(prompt: str, expected: Plan) -> None:
+    assert plan(prompt) == expected
+
+
+@pytest.mark.parametrize("prompt", [
+    "go forward two metres, teen meter",    # Hindi three beside two: which one?
+    "go forward, do meter",                 # the amount only in another language
+    "turn left, iki, forty five",           # two beside forty five
+])
+def test_an_amount_in_another_language_that_disagrees_asks(prompt: str) -> None:
+    assert asks(prompt)

@@ -713,6 +713,25 @@ FOREIGN_AMOUNTS: Final[dict[str, str]] = {
     )},
     **{w: "more" for w in ("mas", "mais", "piu", "mehr", "meer", "wiecej", "bolshe", "daha", "zyada", "jyada")},
 }
+#: The numbers one to ten, and the halves, in the languages whose speakers most often say an amount in it and again
+#: in English ("do meter, two meter forward": Hindi "do" is two; "bir bucuk meter, one and a half": Turkish one and a
+#: half). Many are English words too ("do", "on", "ba", "sau"): the reading takes them for a number only where they
+#: say again, in a stretch left unread of only numbers and a unit, the amount a step beside them has
+#: (``translator``); said alone, the amount is not read, and the robot asks. The halves add to the number before them
+#: ("bir bucuk": 1.5); "dedh" and "dhai" are Hindi one and a half and two and a half.
+FOREIGN_NUMBERS: Final[dict[str, float]] = {
+    # Hindi and Urdu
+    "ek": 1, "do": 2, "teen": 3, "tin": 3, "char": 4, "chaar": 4, "paanch": 5, "panch": 5, "chhe": 6, "chhah": 6,
+    "saat": 7, "aath": 8, "nau": 9, "das": 10, "dedh": 1.5, "derh": 1.5, "dhai": 2.5, "adha": 0.5, "aadha": 0.5,
+    # Turkish
+    "bir": 1, "iki": 2, "uc": 3, "dort": 4, "bes": 5, "alti": 6, "yedi": 7, "sekiz": 8, "dokuz": 9, "on": 10,
+    "bucuk": 0.5, "yarim": 0.5,
+    # Vietnamese
+    "mot": 1, "hai": 2, "ba": 3, "bon": 4, "nam": 5, "sau": 6, "bay": 7, "tam": 8, "chin": 9, "muoi": 10, "ruoi": 0.5,
+    # Spanish
+    "uno": 1, "dos": 2, "tres": 3, "cuatro": 4, "cinco": 5, "seis": 6, "siete": 7, "ocho": 8, "nueve": 9, "diez": 10,
+    "medio": 0.5, "y": 0,
+}
 STOPWORDS: Final = frozenset({
     "the", "a", "an", "to", "you", "your", "yourself", "and", "then", "of", "in", "on", "at", "is",
     "are", "be", "it", "its", "that", "this", "there", "here", "now", "please", "for", "with", "from",

@@ -35,12 +35,13 @@ from langnav.language.offline.english import is_english
 from langnav.language.offline.idioms import plain_idioms
 from langnav.language.offline.lexicon import (
     ELEMENT_NOUNS,
+    FOREIGN_NUMBERS,
     FOREIGN_WAYS,
     ORDER_WORDS,
     SEQUENCE_WORDS,
     STOPWORDS,
 )
-from langnav.language.offline.numbers import NEGATIVE_NUMBER, canonical_numbers
+from langnav.language.offline.numbers import ANGLE_UNITS_DEG, LENGTH_UNITS_M, NEGATIVE_NUMBER, canonical_numbers
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.particles import without_particles
 from langnav.language.offline.photos import without_photo
@@ -344,12 +345,40 @@ def _said_in_both_languages(text: str, near: Sequence[Step]) -> bool:
     said next to it takes: a bilingual speaker says the way in both languages ("peeche, back side, thirty
     centimetre": Hindi "back"; "turn left, izquierda, ninety degrees"), so the word is read. A way the steps next
     to it do not take ("turn right, izquierda, ninety degrees") may be the way meant: the robot asks."""
+    if _amount_said_again(text, near):
+        return True
     words = [w.strip(",.;:!?'\"") for w in spatial(text)]
     if len(text.split()) == 1 and len(words) == 1 and words[0] in _WAYS_ALONE:
         # an English way word said on its own ("behind! back up two feet") is read the same way: it says again
         # the way of the motion beside it, or (another way) may be the way meant, and the robot asks
         return any(_takes(_WAYS_ALONE[words[0]], s) for s in near)
     return bool(words) and all(w in FOREIGN_WAYS and any(_takes(FOREIGN_WAYS[w], s) for s in near) for w in words)
+
+
+def _amount_said_again(text: str, near: Sequence[Step]) -> bool:
+    """``text`` is only an amount said in another language (``lexicon.FOREIGN_NUMBERS``, with or without its unit)
+    that a step next to it has: the speaker said the amount in both languages ("do meter, two meter forward"), so
+    the words are read. (Any other amount, or a word that is no number, may be the amount meant: the robot asks.)"""
+    value, unit_m, unit_deg, said = 0.0, None, None, False
+    for word in (w.strip(",.;:!?'\"") for w in text.lower().split()):
+        if word in FOREIGN_NUMBERS:
+            value, said = value + FOREIGN_NUMBERS[word], said or FOREIGN_NUMBERS[word] > 0
+        elif word in LENGTH_UNITS_M and unit_m is None and unit_deg is None:
+            unit_m = LENGTH_UNITS_M[word]
+        elif word in ANGLE_UNITS_DEG and unit_m is None and unit_deg is None:
+            unit_deg = ANGLE_UNITS_DEG[word]
+        else:
+            return False
+    if not said:
+        return False
+    for step in near:
+        if step.movement == Movement.MOVE and unit_m is not None and step.distance_m is not None:
+            if abs(step.distance_m - value * unit_m) <= _SAME_AMOUNT_REL * step.distance_m:
+                return True
+        if step.movement == Movement.ROTATE and unit_m is None and step.angle_deg is not None:
+            if abs(step.angle_deg - value * (unit_deg or 1.0)) <= _SAME_AMOUNT_REL * step.angle_deg:
+                return True
+    return False
 
 
 #: English words of a way said on their own, and the way each says (as ``lexicon.FOREIGN_WAYS``).
