@@ -35,6 +35,8 @@ from langnav.language.offline.translator import translate_offline
     ("go_through(door, side=left)", "go through the door on the left"),
     ("goto(center_of_this_room)", "go to the center of this room"),
     ("turn_to(heading=south)", "turn to heading south"),
+    ("move(dir=back, distance_m=0.5)", "move back 0.5 m"),        # a part word with no place is said as it is
+    ("forward(1m)\nturn_left(90deg)", "forward 1m. turn left 90deg"),  # calls one after another: statements
 ])
 def test_code_is_read_as_the_words_it_spells(code: str, words: str) -> None:
     assert plain_code(code) == words
@@ -154,6 +156,8 @@ def test_a_word_after_an_article_is_a_name() -> None:
     ("she says turn left, sorry, she signed right, forty degrees", [("rotate", "right", None, 40.0)]),
     ("turn left, hands, ninety", [("rotate", "left", None, 90.0)]),      # a kitchen call between turn and amount
     ("how is the map now, show me", [("query", None, None, None)]),
+    # a bare number after a turn said by name counts its degrees
+    ("turn around, one hundred eighty", [("rotate", "around", None, 180.0)]),
 ])
 def test_session_11_speech(prompt: str, expected: Plan) -> None:
     assert plan(prompt) == expected
@@ -162,6 +166,7 @@ def test_session_11_speech(prompt: str, expected: Plan) -> None:
 @pytest.mark.parametrize("prompt", [
     "ahead! back up two feet",           # a way said alone that disagrees: maybe the way meant
     "move forward, hands, ninety",       # a bare number completing a move has no unit
+    "turn around, ninety",               # another number than the named turn's: which way?
 ])
 def test_session_11_neighbours_that_ask(prompt: str) -> None:
     assert asks(prompt)

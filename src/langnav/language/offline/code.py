@@ -33,6 +33,8 @@ _NAME: Final = r"[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*"
 #: A call with its arguments, the bracket right after the name ("left (clockwise)" is speech's aside); no nested
 #: calls: an instruction is not a program.
 _CALL: Final = re.compile(rf"\b(?P<name>{_NAME})\((?P<args>[^()]*)\)")
+#: A call's closing bracket with another call after it: two statements.
+_NEXT_CALL: Final = re.compile(rf"\)\s+(?={_NAME}\()")
 #: Words joined by underscores or capitals ("move_forward", "turnLeft"), a key given a value ("side=left").
 _JOINED: Final = re.compile(r"[A-Za-z]_[A-Za-z0-9]|[a-z][A-Z][a-z]")
 _KEY_VALUE: Final = re.compile(r"\b[A-Za-z_]\w*\s*=\s*\S")
@@ -73,7 +75,8 @@ def plain_code(text: str) -> str:
     """``text`` with code notation read as the words it spells (see the module docstring); other text unchanged."""
     if not is_code(text):
         return text
-    statements = [s.strip() for s in text.split(";")]
+    # (calls one after another, as lines are once the line breaks are gone, are statements of their own)
+    statements = [s.strip() for s in _NEXT_CALL.sub(");", text).split(";")]
     out: list[str] = []
     for statement in statements:
         if not statement:
@@ -128,7 +131,7 @@ def _call(name: str, args: str) -> str:
         if key in ELEMENT_NOUNS:
             place.append(f"{value} {key}")  # "room=biggest": the biggest room
         elif value in _PARTS and key in _ROLE_KEYS | {""} and (place or key):
-            parts.append(value)  # "where=middle": the middle of the place
+            parts.append(value)  # "where=middle": the middle of the place (with no place, said as it is)
         elif value in SIDE_ADJECTIVES and key in _ROLE_KEYS | {""} and place:
             sides.append(value)  # "side=left": the one on the left
         elif key.split()[-1:] and key.split()[-1] in _KEY_UNITS:
@@ -150,7 +153,7 @@ def _call(name: str, args: str) -> str:
         phrase.append(said)
         phrase.extend(f"on the {side}" for side in sides)
     else:
-        phrase.extend(f"the {part}" for part in parts)
+        phrase.extend(parts)
         phrase.extend(sides)
     phrase.extend(rest)
     return " ".join(phrase)

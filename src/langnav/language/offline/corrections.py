@@ -22,7 +22,7 @@ from langnav.language.offline.clock import CLOCK_RE
 from langnav.language.offline.compass import COMPASS_RE
 from langnav.language.offline.idioms import named_turn_alone
 from langnav.language.offline.normalize import normalize
-from langnav.language.offline.numbers import find_quantities
+from langnav.language.offline.numbers import QuantityKind, find_quantities
 from langnav.language.offline.patterns import (
     BOAT_SIDE_WORDS,
     GO_VERB_RE,
@@ -159,6 +159,17 @@ def _move_after_turn(instruction: str, fragment: str) -> bool:
             and _MOVE_WAY_RE.match(frag.strip()) is not None and _TURN_SIDE_RE.search(frag) is None)
 
 
+def _number_of_a_named_turn(instruction: str, fragment: str) -> bool:
+    """'turn around, one hundred eighty': a bare number (no unit) right after a turn said by name with no number
+    ("turn around", "about face") counts the turn's degrees: said with it, the turn reads the two together (the
+    same half turn, or, another number, a turn whose side it asks about), never a move of that many metres."""
+    norm, frag = normalize(instruction), normalize(fragment)
+    if _kind(instruction) != "turn" or find_quantities(norm) or SIDE_RE.search(frag):
+        return False
+    quantities = find_quantities(frag)
+    return len(quantities) == 1 and quantities[0].kind == QuantityKind.BARE
+
+
 def join_fragments(clauses: list[str], is_open: IsOpen) -> list[str]:
     """Each fragment joined to the open instruction before it (or, failing that, after it)."""
     out: list[str] = []
@@ -173,7 +184,8 @@ def join_fragments(clauses: list[str], is_open: IsOpen) -> list[str]:
             i += 1  # "face, face east", "turn and face east": a false start of the next instruction
             continue
         if is_fragment(clause):
-            if out and (is_open(out[-1]) or is_bare_verb(out[-1])) and not _move_after_turn(out[-1], clause):
+            if out and (is_open(out[-1]) or is_bare_verb(out[-1]) or _number_of_a_named_turn(out[-1], clause)) \
+                    and not _move_after_turn(out[-1], clause):
                 out[-1] = f"{out[-1]} {clause}"
                 i += 1
                 continue

@@ -12,7 +12,14 @@ import re
 import unicodedata
 from typing import Final
 
-from langnav.language.offline.lexicon import FOREIGN_AMOUNTS, FOREIGN_NO_WORDS, GO_VERBS, HESITATIONS, ROTATE_VERBS, TYPOS
+from langnav.language.offline.lexicon import (
+    FOREIGN_AMOUNTS,
+    FOREIGN_NO_WORDS,
+    GO_VERBS,
+    HESITATIONS,
+    ROTATE_VERBS,
+    TYPOS,
+)
 from langnav.language.offline.numbers import NUMBER_WORD_LIST, NUMBER_WORDS, ONES, TENS
 from langnav.language.offline.patterns import TURN_SIDE_WORDS
 from langnav.language.offline.sidetalk import without_side_talk

@@ -41,7 +41,12 @@ from langnav.language.offline.lexicon import (
     SEQUENCE_WORDS,
     STOPWORDS,
 )
-from langnav.language.offline.numbers import ANGLE_UNITS_DEG, LENGTH_UNITS_M, NEGATIVE_NUMBER, canonical_numbers
+from langnav.language.offline.numbers import (
+    ANGLE_UNITS_DEG,
+    LENGTH_UNITS_M,
+    NEGATIVE_NUMBER,
+    canonical_numbers,
+)
 from langnav.language.offline.parser import Problem, Reading, is_unsafe, read_clause
 from langnav.language.offline.particles import without_particles
 from langnav.language.offline.photos import without_photo
@@ -373,11 +378,13 @@ def _amount_said_again(text: str, near: Sequence[Step]) -> bool:
         return False
     for step in near:
         if step.movement == Movement.MOVE and unit_m is not None and step.distance_m is not None:
-            if abs(step.distance_m - value * unit_m) <= _SAME_AMOUNT_REL * step.distance_m:
-                return True
-        if step.movement == Movement.ROTATE and unit_m is None and step.angle_deg is not None:
-            if abs(step.angle_deg - value * (unit_deg or 1.0)) <= _SAME_AMOUNT_REL * step.angle_deg:
-                return True
+            said, had = value * unit_m, step.distance_m
+        elif step.movement == Movement.ROTATE and unit_m is None and step.angle_deg is not None:
+            said, had = value * (unit_deg or 1.0), step.angle_deg
+        else:
+            continue
+        if abs(had - said) <= _SAME_AMOUNT_REL * had:
+            return True
     return False
 
 
