@@ -116,6 +116,8 @@ def test_an_unread_destination_blocks_the_whole_request(prompt: str) -> None:
 @pytest.mark.parametrize(("prompt", "expected"), [
     ("robot, turn left", [("rotate", "left", None, None)]),   # the robot addressed: a vocative
     ("turn left robot", [("rotate", "left", None, None)]),
+    # "to the side" says a way, not a place to go to
+    ("step to the side, left, half a metre", [("move", "left", 0.5, None)]),
 ])
 def test_the_robot_addressed_is_no_destination(prompt: str, expected: Plan) -> None:
     assert plan(prompt) == expected

@@ -47,8 +47,11 @@ def spatial(words: str) -> list[str]:
 #: A verb of going and the word that says a destination follows ("go to", "head towards", "drive into").
 _GOING_TO_RE: Final = re.compile(
     r"\b(?:" + "|".join(sorted((re.escape(v).replace(r"\ ", r"\s+") for v in lx.GO_VERBS), key=len, reverse=True))
-    + r")\s+(?:(?:up|over|on|back|down|right|straight)\s+)?(?:to|towards?|into|onto|up\s+to|as\s+far\s+as)\s+\S",
-    re.IGNORECASE)
+    + r")\s+(?:(?:up|over|on|back|down|right|straight)\s+)?(?:to|towards?|into|onto|up\s+to|as\s+far\s+as)\s+"
+    r"(?P<place>[^,.;!?]+)", re.IGNORECASE)
+#: Words after "to" that say a way, not a place ("step to the side", "go to your left"): no destination.
+_WAY_OBJECTS: Final = frozenset({"the", "your", "my", "a", "one", "other", "side", "sides", "left", "right", "front",
+                                 "back", "rear", "hand"})
 
 
 def names_destination(words: str) -> bool:
@@ -56,7 +59,8 @@ def names_destination(words: str) -> bool:
     left unread, they name a destination the reading could not ground ("go to the robot and turn left"; "go to my
     friend"), so the plan may not be what was asked: the rest of the request must not run without it (the words
     after the verb are a place, never an address to the robot, which is spoken to, not gone to)."""
-    return _GOING_TO_RE.search(words) is not None
+    m = _GOING_TO_RE.search(words)
+    return m is not None and not set(m.group("place").lower().split()) <= _WAY_OBJECTS
 
 
 def only_stops(steps: Sequence[Step]) -> bool:
