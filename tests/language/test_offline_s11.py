@@ -217,3 +217,14 @@ def test_an_amount_said_in_both_languages_is_read(prompt: str, expected: Plan) -
 ])
 def test_an_amount_in_another_language_that_disagrees_asks(prompt: str) -> None:
     assert asks(prompt)
+
+
+@settings(max_examples=40, deadline=None, derandomize=True)
+@given(verb=st.sampled_from(["move forward", "move backward", "turn left", "turn right", "strafe left", "back up"]),
+       amount=st.sampled_from(["1.5m", "2 m", "45deg", "3ft", "40cm", "90 degrees"]),
+       style=st.sampled_from(["snake", "camel"]))
+def test_a_call_plans_as_the_words_it_spells(verb: str, amount: str, style: str) -> None:
+    """Whatever the verb and amount, the call written in code plans exactly as the words said."""
+    first, *rest = verb.split()
+    name = "_".join(verb.split()) if style == "snake" else first + "".join(w.capitalize() for w in rest)
+    assert translate_offline(f"{name}({amount})").steps == translate_offline(f"{verb} {amount}").steps
