@@ -378,12 +378,12 @@ def _amount_said_again(text: str, near: Sequence[Step]) -> bool:
         return False
     for step in near:
         if step.movement == Movement.MOVE and unit_m is not None and step.distance_m is not None:
-            said, had = value * unit_m, step.distance_m
+            amount, had = value * unit_m, step.distance_m
         elif step.movement == Movement.ROTATE and unit_m is None and step.angle_deg is not None:
-            said, had = value * (unit_deg or 1.0), step.angle_deg
+            amount, had = value * (unit_deg or 1.0), step.angle_deg
         else:
             continue
-        if abs(had - said) <= _SAME_AMOUNT_REL * had:
+        if abs(had - amount) <= _SAME_AMOUNT_REL * had:
             return True
     return False
 
