@@ -160,6 +160,9 @@ def test_a_word_after_an_article_is_a_name() -> None:
     ("how is the map now, show me", [("query", None, None, None)]),
     # a bare number after a turn said by name counts its degrees
     ("turn around, one hundred eighty", [("rotate", "around", None, 180.0)]),
+    ("turn to back side, one hundred eighty", [("rotate", "around", None, 180.0)]),
+    # (only a turn whose name says its amount: "spin it" says none, and "full three sixty" is its amount)
+    ("spin it, full three sixty", [("rotate", "left", None, 360.0)]),
 ])
 def test_session_11_speech(prompt: str, expected: Plan) -> None:
     assert plan(prompt) == expected

@@ -16,6 +16,7 @@ import re
 from collections.abc import Callable
 from typing import Final
 
+from langnav.language.intent import Direction
 from langnav.language.offline import lexicon as lx
 from langnav.language.offline.amounts import unit_word, with_unit
 from langnav.language.offline.clock import CLOCK_RE
@@ -159,12 +160,18 @@ def _move_after_turn(instruction: str, fragment: str) -> bool:
             and _MOVE_WAY_RE.match(frag.strip()) is not None and _TURN_SIDE_RE.search(frag) is None)
 
 
+#: The words that name a half turn ("around", "about face", "u-turn", "back side"): a turn said by them has its
+#: amount named (``lexicon.ROTATE_DIRECTIONS``).
+_HALF_TURN_RE: Final = rx([w for w, d in lx.ROTATE_DIRECTIONS.items() if d == Direction.AROUND and not w[0].isdigit()]
+                          + ["back side"], "turn")
+
+
 def _number_of_a_named_turn(instruction: str, fragment: str) -> bool:
     """'turn around, one hundred eighty': a bare number (no unit) right after a turn said by name with no number
     ("turn around", "about face") counts the turn's degrees: said with it, the turn reads the two together (the
     same half turn, or, another number, a turn whose side it asks about), never a move of that many metres."""
     norm, frag = normalize(instruction), normalize(fragment)
-    if _kind(instruction) != "turn" or find_quantities(norm) or SIDE_RE.search(frag):
+    if _kind(instruction) != "turn" or find_quantities(norm) or SIDE_RE.search(frag) or not _HALF_TURN_RE.search(norm):
         return False
     quantities = find_quantities(frag)
     return len(quantities) == 1 and quantities[0].kind == QuantityKind.BARE
