@@ -107,6 +107,8 @@ WALL_RUN_MIN_ELONGATION: Final = 3.0
 #: piece spans across that line (a wall's thickness); a wall crossing the line fills the band
 #: but for the doors in it.
 IN_LINE_MAX_BAND_SHARE: Final = 0.5
+#: Two wall directions less than this apart (radians, one degree) are one.
+SAME_LINE_MAX_RAD: Final = math.radians(1.0)
 #: 3x3 neighbourhood: 8-connectivity for components of cells.
 EIGHT: Final = np.ones((3, 3), dtype=bool)
 
@@ -483,9 +485,14 @@ class JambJudge:
         """The directions (unit, row/col) a wall may run along: the building's wall directions
         and their right angles, or, when none were found, ``own`` (a piece's long axis) and
         its right angle."""
-        if self.directions:
-            return [(math.sin(t + q), math.cos(t + q)) for t in self.directions for q in (0.0, math.pi / 2)]
-        return [own, (-own[1], own[0])]
+        if not self.directions:
+            return [own, (-own[1], own[0])]
+        # A line read one way or the other is the same line (both its ends are looked at).
+        angles: list[float] = []
+        for a in ((t + q) % math.pi for t in self.directions for q in (0.0, math.pi / 2)):
+            if all(abs((a - b + math.pi / 2) % math.pi - math.pi / 2) > SAME_LINE_MAX_RAD for b in angles):
+                angles.append(a)
+        return [(math.sin(a), math.cos(a)) for a in angles]
 
     def _in_line_with_walls(self, rows: npt.NDArray[np.intp], cols: npt.NDArray[np.intp],
                             axis: tuple[float, float]) -> bool:
