@@ -1,8 +1,8 @@
 """A group of furniture standing free in a room (desks pushed together with their chairs) is no
 wall, however large: the gaps between it and the walls are no doorways and the room stays one
-room (ROSE² freiburg_building79's lab, strands g4s_y2's open-plan office were cut in two or three
-at such gaps). A stretch of wall between two doorways stays a wall, with a cupboard built against
-it, at its end, or a partition's cabinets along it."""
+room (ROSE² freiburg_building79's lab, strands g4s_y2's open-plan office, b9_town_hall's council
+chamber were cut in two or three at such gaps). A stretch of wall between two doorways stays a
+wall, with a cupboard built against it, at its end, or a partition's cabinets along it."""
 
 from __future__ import annotations
 
@@ -28,6 +28,18 @@ def office_with_desks() -> OccupancyGrid:
     b.box(6.65, 2.1, 7.35, 6.9).box(5.5, 4.15, 8.5, 4.85)
     b.box(6.0, 3.0, 6.65, 3.5).box(7.35, 5.5, 7.9, 6.0)
     return b.build("office")
+
+
+def council_chamber() -> OccupancyGrid:
+    """A 12 m x 10 m council chamber under a corridor (a 1.6 m double door), with a horseshoe
+    of council desks 0.6 m deep in its middle: 5.4 m across, its arms 5.8 m long and open to the
+    south, their ends 1.2 m from the south wall (b9_town_hall's chamber was cut in three)."""
+    b = MapBuilder(14.0, 15.0)
+    b.room(1.0, 1.0, 13.0, 11.0)
+    b.room(1.0, 11.15, 13.0, 13.15)
+    b.door_h(7.0, 11.075, 1.6)
+    b.box(4.3, 2.2, 4.9, 8.0).box(9.1, 2.2, 9.7, 8.0).box(4.3, 7.4, 9.7, 8.0)
+    return b.build("council chamber")
 
 
 def parted_office() -> OccupancyGrid:
@@ -86,6 +98,20 @@ def test_a_group_of_desks_standing_free_leaves_the_office_one_room(degrees: floa
     assert corridor.area_m2 == pytest.approx(24.0, abs=0.2)
     door = door_near(seg.doors, 3.0, 8.075)
     assert set(door.connects) == {office.id, corridor.id}
+
+
+def test_a_horseshoe_of_desks_leaves_the_chamber_one_room() -> None:
+    grid = council_chamber()
+    seg = segment_spaces(grid)
+    chamber = space_at(seg, grid, 2.0, 6.0)
+    assert chamber.kind == ElementKind.ROOM
+    # inside the horseshoe, east of it, north of it, and between its ends and the south wall
+    for x, y in ((7.0, 4.0), (12.0, 6.0), (7.0, 9.5), (4.6, 1.6), (9.4, 1.6)):
+        assert space_at(seg, grid, x, y) is chamber
+    assert len(seg.rooms) == 2
+    assert seg.openings == ()
+    door = door_near(seg.doors, 7.0, 11.075)
+    assert set(door.connects) == {chamber.id, space_at(seg, grid, 7.0, 12.1).id}
 
 
 def test_a_partition_with_cabinets_along_it_still_parts_two_rooms() -> None:

@@ -91,8 +91,9 @@ WALL_LINE_PIECE_MAX_THICKNESS_M: Final = 0.3
 #: walls wobble a cell, and a rotated wall's staircase another half).
 WALL_LINE_BAND_CELLS: Final = 1.5
 #: A group of furniture standing free in a room (desks pushed together with their chairs, a
-#: meeting table, a counter with its stools) is at most this long (m): it stands in one room
-#: with room to walk round it; a free-standing block longer than that is a wing of walls.
+#: meeting table, a council chamber's horseshoe of desks, a counter with its stools) is at most
+#: this long end to end (m): it stands in one room with room to walk round it; a free-standing
+#: block longer than that is a wing of walls.
 FURNITURE_GROUP_MAX_EXTENT_M: Final = 6.0
 #: ... and at most this deep (m, twice its largest inner clearance): desks and cabinets are
 #: 0.4-0.8 m deep, and where two meet at a corner the piece is as deep as their diagonal
@@ -426,7 +427,7 @@ class JambJudge:
         """Is the large piece ``k`` a group of furniture standing free in a room (desks pushed
         together with their chairs, a meeting table, a counter with its stools), not a wall? It
         stands free (off the grid's edge, which the walls and the unknown outside reach), at
-        most FURNITURE_GROUP_MAX_EXTENT_M long, deeper than a wall and no deeper than
+        most FURNITURE_GROUP_MAX_EXTENT_M long end to end, deeper than a wall and no deeper than
         furniture (FURNITURE_GROUP_MAX_DEPTH_M), and spread both ways rather than running along
         a line (WALL_RUN_MIN_ELONGATION): a piece of wall broken off between two doorways, with
         cabinets against it, is still a line; a closed room or a core seen from outside is
@@ -443,12 +444,15 @@ class JambJudge:
                 spread, axes = np.linalg.eigh(np.cov(np.vstack([rr, cc]).astype(float)))
                 # The length of a uniform strip with that spread along each principal axis.
                 long_m, short_m = (math.sqrt(12.0 * max(float(v), 0.0)) * self.res for v in spread[::-1])
+                # ... and its length end to end along the long one.
+                along = rr * float(axes[0, 1]) + cc * float(axes[1, 1])
+                length_m = (float(along.max() - along.min()) + 1.0) * self.res
                 # Its depth with the specks of scan noise inside it filled (a solid block's laser
                 # hits are dotted with free cells; the floor between desks is larger).
                 holes = _small_components(~np.pad(mine, 1), self.params.seg_speck_max_area_m2 / self.res**2,
                                           exclude_border=True)
                 depth_m = 2.0 * float(ndi.distance_transform_edt(np.pad(mine, 1) | holes, sampling=self.res).max())
-                out = (long_m <= FURNITURE_GROUP_MAX_EXTENT_M and long_m < WALL_RUN_MIN_ELONGATION * short_m
+                out = (length_m <= FURNITURE_GROUP_MAX_EXTENT_M and long_m < WALL_RUN_MIN_ELONGATION * short_m
                        and WALL_MAX_THICKNESS_M < depth_m <= FURNITURE_GROUP_MAX_DEPTH_M
                        and not self._holds_wall_run(mine)
                        and not any(self._in_line_with_walls(rr + sl[0].start, cc + sl[1].start, axis)
