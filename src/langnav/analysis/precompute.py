@@ -163,7 +163,10 @@ def count_labels(labels: npt.NDArray[np.integer[Any]], minlength: int = 0) -> np
     if v.size == 0:
         return np.bincount(v, minlength=minlength)
     starts = _run_starts(v)
-    lengths = np.diff(starts, append=v.size)
+    lengths = np.empty_like(starts)
+    lengths[:-1] = starts[1:]
+    lengths[-1] = v.size
+    lengths -= starts
     return np.bincount(v[starts], weights=lengths, minlength=minlength).astype(np.intp)
 
 
