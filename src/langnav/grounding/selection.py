@@ -295,7 +295,7 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
     # (A gap the analysis reads as no door at all, an opening, parts no more: the way past a cart
     # standing against a corridor's wall is the way round its end.)
     gaps = [d for d in (*analysis.doors, *analysis.openings)
-            if is_gap(d, analysis) and d not in round_ends] + round_ends
+            if is_gap(d, analysis) and d not in round_ends and not _between_two_rooms(d, analysis)] + round_ends
     by_id = {r.id: r for r in analysis.rooms}
     group = [space]
     seen = {space.id}
@@ -310,6 +310,53 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
                         group.append(by_id[other])
         k += 1
     return group
+
+
+def _between_two_rooms(gap: Door, analysis: MapAnalysis) -> bool:
+    """A narrow way between two rooms that each have a way in of their own (a door or an opening wider
+    than a gap, from a third space) is a door between two rooms, not a gap parting one: a kennel room and a treatment room,
+    each with its door on the corridor, joined by a 0.8 m connecting door that the scan measures 0.7 m.
+    The part behind a gap in a bench row or a shelf line is reached through that gap only (or it is a
+    strip, a corridor's part: hallways still join), and that part is the same room."""
+    by_id = {r.id: r for r in analysis.rooms}
+    sides = [by_id.get(c) for c in gap.connects]
+    if len(set(gap.connects)) != 2 or any(r is None or r.kind != ElementKind.ROOM for r in sides):
+        return False
+    if _jamb_depth_m(gap, analysis) >= FURNITURE_MIN_THICKNESS_M:
+        return False  # cut in something as deep as furniture (a shelf line, a bench row): a gap in one room
+    # a way in of its own: from a third space (not another way between the same two), wider than a gap
+    pair = set(gap.connects)
+    ways = [w for w in (*analysis.doors, *analysis.openings) if len(set(w.connects)) == 2
+            and set(w.connects) != pair and w.width_m >= NARROW_GAP_MAX_M]
+    return all(any(c in w.connects for w in ways) for c in pair)
+
+
+def _jamb_depth_m(way: Door, analysis: MapAnalysis) -> float:
+    """How deep the thing a way is cut in is: the run of occupied cells along the way's normal through a
+    point just inside each jamb (``FURNITURE_LINE_SLACK_M`` along the opening's line), the deeper of the
+    two. A wall is 0.1-0.3 m; a shelf or a bench row 0.5 m and more (``FURNITURE_MIN_THICKNESS_M``)."""
+    grid = analysis.grid
+    occupied = grid.occupied
+    nx, ny = way.normal
+    reach = np.arange(-2.0, 2.0, grid.resolution_m / 2)
+    deepest = 0.0
+    for jamb, other in (way.jambs, way.jambs[::-1]):
+        along = unit((jamb[0] - other[0], jamb[1] - other[1]))
+        px, py = jamb[0] + along[0] * FURNITURE_LINE_SLACK_M, jamb[1] + along[1] * FURNITURE_LINE_SLACK_M
+        rr, cc = grid.world_to_index(px + reach * nx, py + reach * ny)
+        ok = grid.in_bounds(rr, cc)
+        hit = np.zeros(len(reach), dtype=bool)
+        hit[ok] = occupied[rr[ok], cc[ok]]
+        mid = len(reach) // 2
+        if not hit[mid]:
+            continue
+        lo, hi = mid, mid
+        while lo > 0 and hit[lo - 1]:
+            lo -= 1
+        while hi < len(hit) - 1 and hit[hi + 1]:
+            hi += 1
+        deepest = max(deepest, float(reach[hi] - reach[lo]) + grid.resolution_m)
+    return deepest
 
 
 def round_a_thing(analysis: MapAnalysis) -> list[Door]:
