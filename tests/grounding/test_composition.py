@@ -564,20 +564,43 @@ def test_the_door_at_the_end_of_a_corridor_is_the_one_in_its_end_wall() -> None:
     assert math.dist((x, y), end.center) <= 0.75
 
 
-def test_a_room_parted_by_a_narrow_gap_is_as_big_as_both_parts(two_rooms: MapAnalysis) -> None:
-    # two_rooms: A 30 m2 and B 29.1 m2; with their second opening narrowed to a gap between shelves
-    # and both opening onto a third room C of 40 m2, A and B are one room of 59 m2: C is the smallest
+def _parted_with_a_door_each(two_rooms: MapAnalysis, divider_m: float) -> MapAnalysis:
+    """two_rooms (A 30 m2, B 29.1 m2) with their second opening narrowed to a 0.68 m gap in a divider
+    ``divider_m`` deep, and each opening onto a third room C of 40 m2 by a door of its own."""
     d1, d2 = two_rooms.doors
     room_a, room_b = two_rooms.rooms[:2]
     room_c = dataclasses.replace(room_b, id="room_c", label=3, area_m2=40.0, free_area_m2=40.0,
                                  cells_xy=room_b.cells_xy + np.array([0.0, 20.0]))
-    gap = dataclasses.replace(d2, width_m=0.68)
+    gap = dataclasses.replace(d2, width_m=0.68, jambs=((6.075, 4.66), (6.075, 5.34)))
     a_to_c = dataclasses.replace(d1, connects=("room_a", "room_c"))
     b_to_c = dataclasses.replace(d1, id="door_3", center=(8.0, 6.9), connects=("room_b", "room_c"))
-    a = dataclasses.replace(two_rooms, rooms=(room_a, room_b, room_c), doors=(a_to_c, gap, b_to_c))
+    grid = two_rooms.grid
+    cells = grid.cells.copy()
+    rows, cols = np.indices(cells.shape)
+    xs, ys = grid.cell_to_world(rows, cols)
+    divider = (np.abs(xs - 6.075) <= divider_m / 2) & (ys > 1.0) & (ys < 7.0) & ~((ys > 4.66) & (ys < 5.34))
+    cells[divider] = 100
+    return dataclasses.replace(two_rooms, grid=dataclasses.replace(grid, cells=cells),
+                               rooms=(room_a, room_b, room_c), doors=(a_to_c, gap, b_to_c))
+
+
+def test_a_room_parted_by_a_narrow_gap_is_as_big_as_both_parts(two_rooms: MapAnalysis) -> None:
+    # a gap between shelves (a divider 0.6 m deep) parts one room: A and B are one room of 59 m2, C
+    # the smallest, even though each part has a door of its own onto C
+    a = _parted_with_a_door_each(two_rooms, 0.6)
     pose = Pose.from_deg(3.0, 3.0, 90.0)
     assert select(ElementRef(kind="room", superlative="smallest"), a, pose).id == "room_c"
-    assert select(ElementRef(kind="room", superlative="biggest"), a, pose).id == "room_a"  # the part nearest
+    assert select(ElementRef(kind="room", superlative="biggest"), a, pose).id == "room_a"  # the part one is in
+
+
+def test_two_rooms_with_a_door_each_and_a_narrow_door_between_are_two_rooms(two_rooms: MapAnalysis) -> None:
+    # the same narrow way cut in a wall (0.15 m) between two rooms each with its own door onto C is a
+    # connecting door (round 11w's vet: a 0.8 m door between the kennels and the treatment room, measured
+    # 0.7 m): C (40 m2) is the biggest room, A and B are not one room of 59 m2
+    a = _parted_with_a_door_each(two_rooms, 0.15)
+    pose = Pose.from_deg(3.0, 3.0, 90.0)
+    assert select(ElementRef(kind="room", superlative="biggest"), a, pose).id == "room_c"
+    assert select(ElementRef(kind="room", superlative="smallest"), a, pose).id == "room_b"
 
 
 def test_a_corridors_end_past_a_narrow_gap_is_no_room(two_rooms: MapAnalysis) -> None:

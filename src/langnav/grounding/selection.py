@@ -17,11 +17,12 @@ your left" in a hallway means the hallway's doors, not one seen through a wall.
 
 from __future__ import annotations
 
+import collections
 import itertools
 import math
 import re
 import weakref
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Final
 
@@ -140,6 +141,9 @@ _COMPACT_RE: Final = re.compile(r"\b(?:" + "|".join(COMPACT_NOUNS) + r")\b", re.
 #: "gap" rather than "door" means one of those (``NARROW_GAP_MAX_M``).
 _GAP_RE: Final = re.compile(r"\bgaps?\b", re.IGNORECASE)
 _DOOR_RE: Final = re.compile(r"\bdoor", re.IGNORECASE)
+#: A question about which door is meant names at most this many doors (nearest first): more is a list
+#: nobody reads out, and the user can name any door by its label on the map.
+MAX_DOORS_NAMED: Final = 3
 #: Facing within ~78 deg of across a hallway (cos 0.2), the robot faces neither of its ends.
 FACING_ALONG_MIN: Final = 0.2
 #: "The door at the end of the corridor" (``_at_the_end``).
@@ -291,7 +295,7 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
     # (A gap the analysis reads as no door at all, an opening, parts no more: the way past a cart
     # standing against a corridor's wall is the way round its end.)
     gaps = [d for d in (*analysis.doors, *analysis.openings)
-            if is_gap(d, analysis) and d not in round_ends] + round_ends
+            if is_gap(d, analysis) and d not in round_ends and not _between_two_rooms(d, analysis)] + round_ends
     by_id = {r.id: r for r in analysis.rooms}
     group = [space]
     seen = {space.id}
@@ -306,6 +310,53 @@ def gap_joined(analysis: MapAnalysis, space: Room) -> list[Room]:
                         group.append(by_id[other])
         k += 1
     return group
+
+
+def _between_two_rooms(gap: Door, analysis: MapAnalysis) -> bool:
+    """A narrow way between two rooms that each have a way in of their own (a door or an opening wider
+    than a gap, from a third space) is a door between two rooms, not a gap parting one: a kennel room and a treatment room,
+    each with its door on the corridor, joined by a 0.8 m connecting door that the scan measures 0.7 m.
+    The part behind a gap in a bench row or a shelf line is reached through that gap only (or it is a
+    strip, a corridor's part: hallways still join), and that part is the same room."""
+    by_id = {r.id: r for r in analysis.rooms}
+    sides = [by_id.get(c) for c in gap.connects]
+    if len(set(gap.connects)) != 2 or any(r is None or r.kind != ElementKind.ROOM for r in sides):
+        return False
+    if _jamb_depth_m(gap, analysis) >= FURNITURE_MIN_THICKNESS_M:
+        return False  # cut in something as deep as furniture (a shelf line, a bench row): a gap in one room
+    # a way in of its own: from a third space (not another way between the same two), wider than a gap
+    pair = set(gap.connects)
+    ways = [w for w in (*analysis.doors, *analysis.openings) if len(set(w.connects)) == 2
+            and set(w.connects) != pair and w.width_m >= NARROW_GAP_MAX_M]
+    return all(any(c in w.connects for w in ways) for c in pair)
+
+
+def _jamb_depth_m(way: Door, analysis: MapAnalysis) -> float:
+    """How deep the thing a way is cut in is: the run of occupied cells along the way's normal through a
+    point just inside each jamb (``FURNITURE_LINE_SLACK_M`` along the opening's line), the deeper of the
+    two. A wall is 0.1-0.3 m; a shelf or a bench row 0.5 m and more (``FURNITURE_MIN_THICKNESS_M``)."""
+    grid = analysis.grid
+    occupied = grid.occupied
+    nx, ny = way.normal
+    reach = np.arange(-2.0, 2.0, grid.resolution_m / 2)
+    deepest = 0.0
+    for jamb, other in (way.jambs, way.jambs[::-1]):
+        along = unit((jamb[0] - other[0], jamb[1] - other[1]))
+        px, py = jamb[0] + along[0] * FURNITURE_LINE_SLACK_M, jamb[1] + along[1] * FURNITURE_LINE_SLACK_M
+        rr, cc = grid.world_to_index(px + reach * nx, py + reach * ny)
+        ok = grid.in_bounds(rr, cc)
+        hit = np.zeros(len(reach), dtype=bool)
+        hit[ok] = occupied[rr[ok], cc[ok]]
+        mid = len(reach) // 2
+        if not hit[mid]:
+            continue
+        lo, hi = mid, mid
+        while lo > 0 and hit[lo - 1]:
+            lo -= 1
+        while hi < len(hit) - 1 and hit[hi + 1]:
+            hi += 1
+        deepest = max(deepest, float(reach[hi] - reach[lo]) + grid.resolution_m)
+    return deepest
 
 
 def round_a_thing(analysis: MapAnalysis) -> list[Door]:
@@ -897,14 +948,46 @@ def _placed_by_space(ref: ElementRef, pool: list[Element], analysis: MapAnalysis
 
 def _one_part_each(pool: list[Element], analysis: MapAnalysis, pose: Pose) -> list[Element]:
     """Rooms once each: of the parts a gap narrower than any door joins into one room (``gap_joined``),
-    the one nearest the robot, the part one enters (by size, ``_rooms_by_size`` counts them whole)."""
+    the part one enters from here (``entered_part_key``; by size, ``_rooms_by_size`` counts them whole)."""
     best: dict[str, Element] = {}
+    order = entered_part_key(analysis, pose)
     for e in pool:
         key = min(r.id for r in gap_joined(analysis, e)) if isinstance(e, Room) else e.id
-        if key not in best or distance_to(e, pose.xy) < distance_to(best[key], pose.xy):
+        if key not in best or order(e) < order(best[key]):
             best[key] = e
     keep = {id(e) for e in best.values()}
     return [e for e in pool if id(e) in keep]
+
+
+def doorways_from(analysis: MapAnalysis, xy: Point) -> dict[str, int]:
+    """How many doorways (doors and wide openings, the analysis's ``graph``) one passes walking from the
+    space holding ``xy`` into each space it can reach; the spaces it cannot reach are left out."""
+    here = space_of(analysis, xy)
+    if here is None:
+        return {}
+    graph = analysis.graph()
+    hops = {here.id: 0}
+    queue = collections.deque([here.id])
+    while queue:
+        cur = queue.popleft()
+        for _, other in graph.get(cur, []):
+            if other not in hops:
+                hops[other] = hops[cur] + 1
+                queue.append(other)
+    return hops
+
+
+def entered_part_key(analysis: MapAnalysis, pose: Pose) -> Callable[[Element], tuple[float, float]]:
+    """Which part of a room a person means, smallest first: the part one enters from here, before the
+    part nearest by a straight line. A room parted by a gap narrower than a door (``gap_joined``) is
+    entered through one of its parts' doors: the library's shelf room, whose door is on the robot's
+    corridor, is entered there, not at the strip behind it that lies nearer through a wall (that strip
+    opens onto another room). So the part fewest doorways away (``doorways_from``), then the nearest."""
+    hops = doorways_from(analysis, pose.xy)
+
+    def key(e: Element) -> tuple[float, float]:
+        return (float(hops.get(e.id, math.inf)), distance_to(e, pose.xy))
+    return key
 
 
 def _placed_by_side(ref: ElementRef, pool: list[Element], pose: Pose,
@@ -1182,8 +1265,9 @@ def _at_the_end(e: Element, hall: Room, pose: Pose) -> bool:
 def _rooms_by_size(pool: list[Element], analysis: MapAnalysis, pose: Pose, *, biggest: bool) -> list[Element]:
     """Rooms from biggest (or smallest) on, a room parted by a gap narrower than any door counted
     whole (``gap_joined``: a lab split by two benches with a 0.7 m gap between them is one lab, as
-    big as both parts). Each room once, by the part of it nearest the robot (the part one enters).
+    big as both parts). Each room once, by the part of it one enters from here (``entered_part_key``).
     Parts that are mostly hallway (a corridor's end past a cart that narrows it) are no room."""
+    order = entered_part_key(analysis, pose)
     area: dict[str, float] = {}
     part: dict[str, Element] = {}
     for e in pool:
@@ -1194,7 +1278,7 @@ def _rooms_by_size(pool: list[Element], analysis: MapAnalysis, pose: Pose, *, bi
             continue
         key = min(r.id for r in group)
         area[key] = sum(floor_area_m2(r, analysis) for r in group)
-        if key not in part or distance_to(e, pose.xy) < distance_to(part[key], pose.xy):
+        if key not in part or order(e) < order(part[key]):
             part[key] = e
     keys = sorted(area, key=lambda k: area[k], reverse=biggest)
     return [part[k] for k in keys]
@@ -1230,10 +1314,21 @@ def _plain(ref: ElementRef) -> bool:
 def _one_door_or_ask(pool: list[Element], spaces: list[Room], analysis: MapAnalysis, pose: Pose) -> None:
     """"The door" of a room with one door is that door; of a room with several it could be any of
     them, so ask (naming them as the map shows them, with where each is) instead of guessing. A
-    space with no door of its own leaves "the door" to the nearest one (``pool`` unchanged)."""
+    space with no door of its own has no "the door" either: the words take for granted the door of
+    the place where both stand, and any door seen from it (``pool``: the doors in sight) is another
+    space's, one of several or far off (a corridor whose ways out are all open fronts, with one door
+    in sight at its far end 74 m away). Which one, or whether one of the open ways out was meant, is
+    the person's to say: ask, naming the doors in sight nearest first (none in sight: ``_counted_off``
+    says so)."""
     if not spaces:
         return
     own = [e for e in pool if any(_in_space(e, s, analysis) for s in spaces)]
+    if not own and pool:
+        seen = sorted(pool, key=lambda e: distance_to(e, pose.xy))[:MAX_DOORS_NAMED]
+        names = ", ".join(f"{label_of(e)} ({_where_is(e, pose)}, {distance_to(e, pose.xy):.1f} m)" for e in seen)
+        raise GroundingError(f"{label_of(spaces[0]).capitalize()} has no door of its own; the door"
+                             f"{'s' if len(seen) > 1 else ''} I see from here: {names}. Which door do you mean? "
+                             f"Say e.g. '{label_of(seen[0])}'.")
     if len(own) <= 1:
         if own:
             pool[:] = own

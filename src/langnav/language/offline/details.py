@@ -27,6 +27,8 @@ def assign_details(s: Scratch, phrases: list[Phrase], clause_start: int) -> None
             key = m.group("verb") if "verb" in m.groupdict() and m.group("verb") else m.group("detail")
             table = lx.VERB_DETAILS if m.re is _VERB_DETAIL_AT_END_RE else lx.DETAIL_PHRASES
             p.detail = as_detail(lx.lookup(table, key))
+            if " ".join(key.split()) in lx.ENTERING_WORDS and p.ref.kind in lx.THROUGH_KINDS:
+                p.detail = Detail.THROUGH  # into a doorway is through it (``lx.ENTERING_WORDS``)
             if table is lx.VERB_DETAILS:
                 p.detail_from_verb = " ".join(key.split())
             s.use(boundary + m.start(), boundary + m.end())
@@ -35,6 +37,8 @@ def assign_details(s: Scratch, phrases: list[Phrase], clause_start: int) -> None
             v = _VERB_DETAIL_RE.search(region)
             if v is not None:
                 p.detail = as_detail(lx.lookup(lx.VERB_DETAILS, v.group("verb")))
+                if " ".join(v.group("verb").split()) in lx.ENTERING_WORDS and p.ref.kind in lx.THROUGH_KINDS:
+                    p.detail = Detail.THROUGH
                 p.detail_from_verb = " ".join(v.group("verb").split())
                 s.use(boundary + v.start(), boundary + v.end())
         boundary = p.second.end if p.second is not None else p.end

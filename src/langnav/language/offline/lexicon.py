@@ -261,6 +261,9 @@ VERB_DETAILS: Final[dict[str, Detail]] = {
 
 #: Details that only fit some elements, and their reading for the others.
 THROUGH_KINDS: Final = frozenset({Element.DOOR, Element.NARROW_PASSAGE})
+#: Words of going in: into a room is to be inside it, but one goes into a doorway or a gap only by
+#: passing through it ("go into the first door on your right": through it, into what lies beyond).
+ENTERING_WORDS: Final = frozenset({"into", "in to", "enter", "go into", "head into"})
 
 # ------------------------------------------------------------------------------ movements
 #: Verbs that move the robot somewhere (navigate with an element, move without one).
