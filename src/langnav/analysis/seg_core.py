@@ -25,6 +25,9 @@ and merging steps of ROSE², RA-L 2022):
    belong to the wall network or to a wall stub running along the gap (:class:`JambJudge`), or
    one of them is the door itself standing open (a thin leaf hinged there): an open door
    marks its doorway, which then parts a small room behind it (an en-suite) from its room.
+   A large piece standing free in a room that spreads both ways at the depth of furniture
+   (desks pushed together with their chairs), with no wall running on in line with it, is no
+   wall: the gaps between it and the walls are ways round the furniture, not doorways.
    A crack narrower than a door (a slit beside a cabinet, a pane of a glass front) is no way
    through: failing the test, it does not join the spaces; their wider openings decide.
 6. A space whose opening is wide for its size (``seg_merge_gap_ratio``: a bay) and pieces
@@ -36,6 +39,7 @@ and merging steps of ROSE², RA-L 2022):
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Final
 
@@ -55,7 +59,7 @@ from langnav.analysis.precompute import (
     maximum3,
     nonzero2,
 )
-from langnav.analysis.wall_lines import WallDirections, dominant_directions
+from langnav.analysis.wall_lines import WALL_MAX_THICKNESS_M, WallDirections, dominant_directions
 from langnav.maps.grid import FREE, OCCUPIED, UNKNOWN
 
 BoolArray = npt.NDArray[np.bool_]
@@ -86,6 +90,26 @@ WALL_LINE_PIECE_MAX_THICKNESS_M: Final = 0.3
 #: Wall cells within this many cells across a piece's own line are in line with it (scanned
 #: walls wobble a cell, and a rotated wall's staircase another half).
 WALL_LINE_BAND_CELLS: Final = 1.5
+#: A group of furniture standing free in a room (desks pushed together with their chairs, a
+#: meeting table, a council chamber's horseshoe of desks, a counter with its stools) is at most
+#: this long end to end (m): it stands in one room with room to walk round it; a free-standing
+#: block longer than that is a wing of walls.
+FURNITURE_GROUP_MAX_EXTENT_M: Final = 6.0
+#: ... and at most this deep (m, twice its largest inner clearance): desks and cabinets are
+#: 0.4-0.8 m deep, and where two meet at a corner the piece is as deep as their diagonal
+#: (0.8 m x sqrt 2); a closed room or a core seen from outside (its inside never scanned, at
+#: least 1.5 m across) is deeper. It is deeper than a wall is thick (WALL_MAX_THICKNESS_M).
+FURNITURE_GROUP_MAX_DEPTH_M: Final = 1.2
+#: A piece of wall, even broken off between two doorways and with cabinets standing against it,
+#: runs along a line: at least this many times longer than the band it takes across (a 2 m
+#: piece of wall with 0.6 m of furniture against it); a group of furniture spreads both ways.
+WALL_RUN_MIN_ELONGATION: Final = 3.0
+#: A wall running on along a line beyond a piece takes at most this share of the band the
+#: piece spans across that line (a wall's thickness); a wall crossing the line fills the band
+#: but for the doors in it.
+IN_LINE_MAX_BAND_SHARE: Final = 0.5
+#: Two wall directions less than this apart (radians, one degree) are one.
+SAME_LINE_MAX_RAD: Final = math.radians(1.0)
 #: 3x3 neighbourhood: 8-connectivity for components of cells.
 EIGHT: Final = np.ones((3, 3), dtype=bool)
 
@@ -331,8 +355,11 @@ class JambJudge:
     """
 
     def __init__(self, floor: BoolArray, clearance_m: FloatArray, resolution_m: float,
-                 params: AnalysisParams, wall_pieces: BoolArray | None = None) -> None:
+                 params: AnalysisParams, wall_pieces: BoolArray | None = None,
+                 directions: Sequence[float] | None = None) -> None:
         self.res = resolution_m
+        #: The building's wall directions (radians in the (col, row) plane), when known.
+        self.directions = list(directions or ())
         self.params = params
         self.obstacle = ~floor
         # Pieces closer than seg_jamb_join_m are one piece: a door frame scanned as fragments is
@@ -345,6 +372,11 @@ class JambJudge:
         self.objs = ndi.find_objects(self.comp)
         self._cache: dict[int, float] = {}
         self._axes: dict[int, tuple[float, float]] = {}
+        self._groups: dict[int, bool] = {}
+        # The pieces reaching the grid's edge: the building's walls with the unknown outside.
+        self.outer = np.zeros(int(self.comp.max()) + 1, dtype=bool)
+        self.outer[border_labels(self.comp)] = True
+        self.outer[0] = False
         # Pieces holding a piece of a wall line are walls, however short.
         self.in_wall_line = np.zeros(int(self.comp.max()) + 1, dtype=bool)
         if wall_pieces is not None and wall_pieces.any():
@@ -377,8 +409,10 @@ class JambJudge:
     def structural(self, jamb: tuple[int, int], tangent: tuple[float, float]) -> bool:
         """Is the non-floor at ``jamb`` a wall that a doorway along ``tangent`` can be cut in?"""
         k = int(self.comp[jamb])
-        if self.sizes[k] >= self.params.seg_wall_network_min_area_m2 or self.in_wall_line[k]:
+        if self.in_wall_line[k]:
             return True
+        if self.sizes[k] >= self.params.seg_wall_network_min_area_m2:
+            return not self._furniture_group(k)
         length = self._stub(k)
         if length <= 0:
             return False
@@ -388,6 +422,115 @@ class JambJudge:
         if ar == 0.0 and ac == 0.0:
             return True  # a compact stub: no direction to contradict the doorway
         return abs(ar * tangent[0] + ac * tangent[1]) >= STUB_ACROSS_MAX_COS or self._leaf_at(k, jamb, length)
+
+    def _furniture_group(self, k: int) -> bool:
+        """Is the large piece ``k`` a group of furniture standing free in a room (desks pushed
+        together with their chairs, a meeting table, a counter with its stools), not a wall? It
+        stands free (off the grid's edge, which the walls and the unknown outside reach), at
+        most FURNITURE_GROUP_MAX_EXTENT_M long end to end, deeper than a wall and no deeper than
+        furniture (FURNITURE_GROUP_MAX_DEPTH_M), and spread both ways rather than running along
+        a line (WALL_RUN_MIN_ELONGATION): a piece of wall broken off between two doorways, with
+        cabinets against it, is still a line; a closed room or a core seen from outside is
+        deeper."""
+        if k in self._groups:
+            return self._groups[k]
+        out = False
+        sl = self.objs[k - 1]
+        h, w = self.obstacle.shape
+        if sl is not None and sl[0].start > 0 and sl[1].start > 0 and sl[0].stop < h and sl[1].stop < w:
+            mine = (self.comp[sl] == k) & self.obstacle[sl]
+            rr, cc = np.nonzero(mine)
+            if rr.size >= 3:
+                spread, axes = np.linalg.eigh(np.cov(np.vstack([rr, cc]).astype(float)))
+                # The length of a uniform strip with that spread along each principal axis.
+                long_m, short_m = (math.sqrt(12.0 * max(float(v), 0.0)) * self.res for v in spread[::-1])
+                # ... and its length end to end along the long one.
+                along = rr * float(axes[0, 1]) + cc * float(axes[1, 1])
+                length_m = (float(along.max() - along.min()) + 1.0) * self.res
+                # Its depth with the specks of scan noise inside it filled (a solid block's laser
+                # hits are dotted with free cells; the floor between desks is larger).
+                holes = _small_components(~np.pad(mine, 1), self.params.seg_speck_max_area_m2 / self.res**2,
+                                          exclude_border=True)
+                depth_m = 2.0 * float(ndi.distance_transform_edt(np.pad(mine, 1) | holes, sampling=self.res).max())
+                out = (length_m <= FURNITURE_GROUP_MAX_EXTENT_M and long_m < WALL_RUN_MIN_ELONGATION * short_m
+                       and WALL_MAX_THICKNESS_M < depth_m <= FURNITURE_GROUP_MAX_DEPTH_M
+                       and not self._holds_wall_run(mine)
+                       and not any(self._in_line_with_walls(rr + sl[0].start, cc + sl[1].start, axis)
+                                   for axis in self._line_axes((float(axes[0, 1]), float(axes[1, 1])))))
+        self._groups[k] = out
+        return out
+
+    def _holds_wall_run(self, mine: BoolArray) -> bool:
+        """Does the piece ``mine`` hold a stretch of wall: a part no thicker than a wall
+        (WALL_MAX_THICKNESS_M) running straight for a wall's length (``seg_wall_line_side_m``,
+        WALL_RUN_MIN_ELONGATION times longer than wide)? Then it is a wall with furniture
+        against it (a partition with a cabinet at its end); desks and cabinets are deeper than
+        a wall, and their thin bits (a chair's back, a shelf's edge) are short."""
+        r = max(1, round(WALL_MAX_THICKNESS_M / 2 / self.res))
+        yy, xx = np.ogrid[-r:r + 1, -r:r + 1]
+        body = np.pad(mine, r + 1)
+        # The parts a disc as wide as a wall does not fit in (and not the fringe of the others).
+        thick = ndi.binary_dilation(ndi.binary_opening(body, structure=xx * xx + yy * yy <= r * r), structure=EIGHT)
+        runs, _ = ndi.label(body & ~thick, structure=EIGHT)
+        for i, sl in enumerate(ndi.find_objects(runs), start=1):
+            if sl is None or max(sl[0].stop - sl[0].start, sl[1].stop - sl[1].start) * self.res \
+                    < self.params.seg_wall_line_side_m / math.sqrt(2.0):
+                continue  # too short along any direction to be a wall's length
+            rr, cc = np.nonzero(runs[sl] == i)
+            if rr.size < 3:
+                continue
+            spread = np.linalg.eigvalsh(np.cov(np.vstack([rr, cc]).astype(float)))
+            long_m, short_m = (math.sqrt(12.0 * max(float(v), 0.0)) * self.res for v in spread[::-1])
+            if long_m >= self.params.seg_wall_line_side_m and long_m >= WALL_RUN_MIN_ELONGATION * short_m:
+                return True
+        return False
+
+    def _line_axes(self, own: tuple[float, float]) -> list[tuple[float, float]]:
+        """The directions (unit, row/col) a wall may run along: the building's wall directions
+        and their right angles, or, when none were found, ``own`` (a piece's long axis) and
+        its right angle."""
+        if not self.directions:
+            return [own, (-own[1], own[0])]
+        # A line read one way or the other is the same line (both its ends are looked at).
+        angles: list[float] = []
+        for a in ((t + q) % math.pi for t in self.directions for q in (0.0, math.pi / 2)):
+            if all(abs((a - b + math.pi / 2) % math.pi - math.pi / 2) > SAME_LINE_MAX_RAD for b in angles):
+                angles.append(a)
+        return [(math.sin(a), math.cos(a)) for a in angles]
+
+    def _in_line_with_walls(self, rows: npt.NDArray[np.intp], cols: npt.NDArray[np.intp],
+                            axis: tuple[float, float]) -> bool:
+        """Does a wall of the building (the wall network reaching the grid's edge) run on in
+        line with the piece at ``rows``, ``cols`` beyond one of its ends along ``axis`` (unit,
+        row/col), past a gap up to a double door's width, for a wall's length
+        (``seg_wall_line_side_m``)? Then the piece is a stretch of that wall, thickened by what
+        stands against it, not a group of furniture. A wall crossing the line (the wall the
+        group stands off) fills only its thickness of it."""
+        ar, ac = axis
+        u = rows * ar + cols * ac
+        v = cols * ar - rows * ac
+        reach = (self.params.door_wide_max_width_m + self.params.seg_wall_line_side_m) / self.res
+        pad = math.ceil(reach) + 1
+        h, w = self.obstacle.shape
+        r0, r1 = max(int(rows.min()) - pad, 0), min(int(rows.max()) + pad + 1, h)
+        c0, c1 = max(int(cols.min()) - pad, 0), min(int(cols.max()) + pad + 1, w)
+        wall = self.obstacle[r0:r1, c0:c1] & self.outer[self.comp[r0:r1, c0:c1]]
+        gr, gc = np.mgrid[r0:r1, c0:c1]
+        gu = gr * ar + gc * ac
+        gv = gc * ar - gr * ac
+        band = (gv >= v.min()) & (gv <= v.max())
+        for near in (band & (gu < u.min()) & (gu >= u.min() - reach), band & (gu > u.max()) & (gu <= u.max() + reach)):
+            # Steps along the line where wall takes a thin part of the band across: a wall
+            # running along the line (a wall crossing it fills the band but for its doors, and
+            # the unknown behind it all of it).
+            step = np.floor(gu[near]).astype(np.int64)
+            step -= step.min(initial=0)
+            on_wall = np.bincount(step, weights=wall[near], minlength=1)
+            across = np.bincount(step, minlength=1)
+            along = (on_wall > 0) & (on_wall <= IN_LINE_MAX_BAND_SHARE * across)
+            if np.count_nonzero(along) * self.res >= self.params.seg_wall_line_side_m:
+                return True
+        return False
 
     def _leaf_at(self, k: int, jamb: tuple[int, int], length_m: float) -> bool:
         """Is the stub ``k`` (``length_m`` long) a door leaf standing open, hinged at ``jamb``?

@@ -251,7 +251,8 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
         split_floor = fl.floor & ~closed
         split_clear = edt_scaled(split_floor, res)
     raw_labels = basins(split_clear, split_floor, params.seg_min_peak_m)
-    judge = JambJudge(split_floor, split_clear, res, params, fl.wall_pieces) if params.seg_jamb_test else None
+    judge = JambJudge(split_floor, split_clear, res, params, fl.wall_pieces, directions) if params.seg_jamb_test \
+        else None
     labels = merge_basins(raw_labels, split_clear, res, params, judge)
     if closed.any():
         labels = _reopen(labels, closed, params.seg_max_openings_between, res, front)
