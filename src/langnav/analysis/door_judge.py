@@ -730,6 +730,11 @@ def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wal
     clear = ev.clear_width_m[0] if into_unknown else min(ev.clear_width_m)
     if clear < 2.0 * params.robot_radius_m:
         return False
+    # A gap read in a wall line between two spaces is as wide as the floor is clear along its
+    # line through its centre (a ragged wall's band shows wider gaps on its outer lines, where
+    # the wall's cells stray from them), give or take a door's widening (its frame, a leaf).
+    if in_wall_line and not into_unknown and width_m is not None and clear * WIDEN_FACTOR < width_m:
+        return False
     # Into the unexplored: beyond lie rays, not a passage running on between walls.
     if into_unknown and ev.walled_beyond_share > STRIP_WALLED_MAX_SHARE:
         return False
@@ -804,9 +809,10 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
         far = far_from_outside(~unknown, SEEN_FLOOR_MIN_M, resolution_m)
     # Between two spaces, judged on the wall line (into the unexplored, the rays beyond would
     # read as the narrowest crossing). The free widths of all candidates are read at once.
-    between = [d for d in candidates if d.b != 0]
+    # (A gap found in a wall line is on it already.)
+    between = [d for d in candidates if d.b != 0 and not d.in_wall_line]
     moved = iter(on_wall_lines(free, between, resolution_m))
-    at_line = [d if d.b == 0 else next(moved) for d in candidates]
+    at_line = [d if d.b == 0 or d.in_wall_line else next(moved) for d in candidates]
     t_m, widths = free_widths_each(free, [a.center_rc for a in at_line], [a.normal_rc for a in at_line],
                                    resolution_m, evidence_look_m())
     for d, at, w_m in zip(candidates, at_line, widths, strict=True):
@@ -816,9 +822,12 @@ def judge_doors(candidates: list[RawDoor], free: BoolArray, occupied: BoolArray,
         if ok and far is not None:
             # A place on each side that is a space: its floor was seen, not only rays through
             # the opening (into unexplored territory: the space's own side).
+            # (A gap read in a wall line between two spaces opens from seen floor onto the rays
+            # through it, judged so there: seen floor on one side.)
             sides = (-1.0,) if d.b == 0 else (-1.0, 1.0)
-            ok = all(floor_beyond(free, far, d.center_rc, d.normal_rc, sd, resolution_m) >= BEYOND_MIN_FLOOR_SHARE
-                     for sd in sides)
+            seen = [floor_beyond(free, far, d.center_rc, d.normal_rc, sd, resolution_m) >= BEYOND_MIN_FLOOR_SHARE
+                    for sd in sides]
+            ok = any(seen) if d.in_wall_line and d.b != 0 else all(seen)
             # ... and a door onto the unexplored has the unexplored beyond it, not seen floor: a
             # line from a wall to the scanned face of a wardrobe whose inside is unknown runs
             # across a room, with the room's floor on both sides. (A gap in a wall line found

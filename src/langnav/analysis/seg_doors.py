@@ -64,6 +64,16 @@ class RawDoor:
     in_wall_line: bool = False
 
 
+@dataclass(frozen=True)
+class UnknownOpenings:
+    """What :func:`openings_to_unknown` finds: the doorways into unexplored territory, and the
+    doorways between two spaces (``known``, by index) that lie at a gap of an outer wall line,
+    each read as that gap (see :func:`doors_in_outer_walls`)."""
+
+    doors: list[RawDoor]
+    at_gaps: dict[int, RawDoor] = dataclasses.field(default_factory=dict)
+
+
 def _boundary_pairs(labels: IntArray) -> tuple[npt.NDArray[np.int64], ...]:
     """All 4-neighbour cell pairs (p, q) with different non-zero labels: rows/cols of p and q."""
     out: list[tuple[npt.NDArray[np.int64], ...]] = []
@@ -155,19 +165,21 @@ def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
                         obstacle: BoolArray, clearance_m: FloatArray, resolution_m: float,
                         params: AnalysisParams, peak: FloatArray | None = None,
                         known: list[RawDoor] | None = None,
-                        directions: list[float] | None = None) -> list[RawDoor]:
+                        directions: list[float] | None = None,
+                        views_out: BoolArray | None = None) -> UnknownOpenings:
     """Doorways from a space into unexplored territory (see module doc). ``peak``:
     ``label_max(labels, clearance_m)``, when the caller has it; ``known``: the doorways between
     spaces found already (a gap in an outer wall that is one of them is not found twice);
-    ``directions``: the wall directions of ``obstacle & ~floor``, when the caller has them.
+    ``directions``: the wall directions of ``obstacle & ~floor``, when the caller has them;
+    ``views_out``: per label, whether that space is a view out of the building (no space).
 
     Only windows around the frontier (floor touching unexplored unknown) are flooded again.
     """
     if not exterior.any() or labels.max() == 0:
-        return []
+        return UnknownOpenings([])
     frontier = floor & (labels > 0) & maximum3(exterior)
     if not frontier.any():
-        return []
+        return UnknownOpenings([])
     # A door to the outside or to an unscanned room may be a double door.
     widest = max(params.door_max_width_m, params.door_wide_max_width_m)
     door_clear_max = (widest + resolution_m) / 2
@@ -213,20 +225,28 @@ def openings_to_unknown(labels: IntArray, floor: BoolArray, exterior: BoolArray,
                 continue
             out.append(RawDoor(d.a, 0, (r, c), d.normal_rc, d.width_m))
     return doors_in_outer_walls(labels, floor, exterior, obstacle, resolution_m, params, out, known or [],
-                                directions)
+                                directions, views_out)
 
 
 def doors_in_outer_walls(labels: IntArray, floor: BoolArray, exterior: BoolArray, obstacle: BoolArray,
                          resolution_m: float, params: AnalysisParams, found: list[RawDoor],
-                         known: list[RawDoor], directions: list[float] | None = None) -> list[RawDoor]:
+                         known: list[RawDoor], directions: list[float] | None = None,
+                         views_out: BoolArray | None = None) -> UnknownOpenings:
     """``found`` (doorways into unexplored territory found at a saddle) and the doorways from a
     space into unexplored territory through which the lidar saw out: a door-wide gap in a wall
     line with the space's seen floor on one side and, on the other, only the fan of rays that
     went through it (:func:`langnav.analysis.wall_lines.outer_gaps`). The fan joins the space's
     floor, so its frontier lies metres out, too long for a saddle as narrow as a door: the wall
-    line shows the door. A gap at a doorway of ``found`` marks that one as in a wall line; one
-    at a doorway between two spaces (``known``) is left out. ``directions``: the wall directions
-    of ``obstacle & ~floor``, when the caller has them."""
+    line shows the door. A gap at a doorway of ``found`` marks that one as in a wall line. A gap
+    at a doorway between two spaces (``known``: the view out through the door, or a room seen
+    only through it, was flooded as a space) is that doorway read in the wall line (returned in
+    ``at_gaps``): the flood parts the two where their basins meet, often off the wall (a line
+    across the rays beyond the door, slanted to the wall), and measures it there; a person
+    reads the door where the wall is, as wide as the gap in it. Beyond such a gap lie the rays
+    through it: no space, the first space's own (flooded past the wall), or a view out of the
+    building (``views_out``: per label); a space of its own there was seen otherwise, and the
+    gap is no door onto the unseen (the end of a row of hollow benches beside a hall's wall).
+    ``directions``: the wall directions of ``obstacle & ~floor``, when the caller has them."""
     walls = obstacle & ~floor
     seen = floor & far_from_outside(~exterior, SEEN_FLOOR_MIN_M, resolution_m)
     out = list(found)
@@ -236,9 +256,37 @@ def doors_in_outer_walls(labels: IntArray, floor: BoolArray, exterior: BoolArray
     def near(o: RawDoor, r: float, c: float, width_m: float) -> bool:
         return math.hypot(r - o.center_rc[0], c - o.center_rc[1]) * resolution_m < max(width_m, o.width_m)
 
+    # A doorway between two spaces at a gap: the gap nearest to it (a ragged wall gives a gap on
+    # each of the lines in its band).
+    in_line: dict[int, tuple[float, RawDoor]] = {}
+
+    def space_at(r: float, c: float, sign: float, nr: float, nc: float) -> int:
+        """The space met stepping from (r, c) along ``sign`` x the normal (0: none)."""
+        rr = np.floor(r + sign * look * nr).astype(np.int64)
+        cc = np.floor(c + sign * look * nc).astype(np.int64)
+        ok = (rr >= 0) & (rr < h) & (cc >= 0) & (cc < w)
+        lab = labels[rr[ok], cc[ok]]
+        lab = lab[lab > 0]
+        return int(np.bincount(lab).argmax()) if lab.size else 0
+
     for g in outer_gaps(walls, floor, seen, exterior, resolution_m, params, directions):
         (r, c), (nr, nc) = g.center_rc, g.normal_rc
-        if any(near(o, r, c, g.width_m) for o in known):
+        at_known = [k for k, o in enumerate(known) if near(o, r, c, g.width_m)]
+        if at_known:
+            # The doorway is between the space the gap opens from and one beyond it: the rays
+            # just past the gap are no one's, the first space's own (the flood parted the two
+            # further out, across the rays) or a view out.
+            inner, outer = space_at(r, c, -1.0, nr, nc), space_at(r, c, 1.0, nr, nc)
+            rays = outer in (0, inner) or (views_out is not None and bool(views_out[outer]))
+            for k in at_known:
+                o = known[k]
+                if not rays or inner not in (o.a, o.b) or outer not in (o.a, o.b, 0):
+                    continue
+                d = math.hypot(r - o.center_rc[0], c - o.center_rc[1])
+                if k not in in_line or d < in_line[k][0]:
+                    sg = 1.0 if inner == o.a else -1.0
+                    in_line[k] = (d, dataclasses.replace(o, center_rc=(r, c), normal_rc=(sg * nr, sg * nc),
+                                                         width_m=g.width_m, in_wall_line=True))
             continue
         at = [i for i, o in enumerate(out) if near(o, r, c, g.width_m)]
         if at:
@@ -246,15 +294,11 @@ def doors_in_outer_walls(labels: IntArray, floor: BoolArray, exterior: BoolArray
                 out[i] = dataclasses.replace(out[i], in_wall_line=True)
             continue
         # The space it opens from: the label met stepping in from the gap.
-        rr = np.floor(r - look * nr).astype(np.int64)
-        cc = np.floor(c - look * nc).astype(np.int64)
-        ok = (rr >= 0) & (rr < h) & (cc >= 0) & (cc < w)
-        lab = labels[rr[ok], cc[ok]]
-        lab = lab[lab > 0]
-        if lab.size == 0:
+        inner = space_at(r, c, -1.0, nr, nc)
+        if inner == 0:
             continue
-        out.append(RawDoor(int(np.bincount(lab).argmax()), 0, (r, c), (nr, nc), g.width_m, in_wall_line=True))
-    return out
+        out.append(RawDoor(inner, 0, (r, c), (nr, nc), g.width_m, in_wall_line=True))
+    return UnknownOpenings(out, {k: d for k, (_, d) in in_line.items()})
 
 
 __all__ = ["SEEN_FLOOR_MIN_M", "RawDoor", "doors_between", "doors_in_outer_walls", "label_max", "openings_to_unknown"]

@@ -276,14 +276,23 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     raw_wide = [d for d in between if d.width_m > widest]
     raw_wide += _arches(gaps, labels, fl.clearance_m, res, params)
     peaks = label_max(labels, fl.clearance_m)  # the widest clearance of each space
-    raw_doors += openings_to_unknown(labels, fl.floor, exterior, occupied,
-                                     fl.clearance_m, res, params, peaks, known=between, directions=directions)
+    view = _views_out(labels, occupied)
+    found = openings_to_unknown(labels, fl.floor, exterior, occupied, fl.clearance_m, res, params, peaks,
+                                known=between, directions=directions, views_out=view)
+    raw_doors += found.doors
+    # A doorway between two spaces at a gap in an outer wall line is judged as the flood found
+    # it and as that gap (seg_doors.doors_in_outer_walls): the gap stands in for it when only
+    # the gap is a door.
+    in_line = {id(between[k]): g for k, g in found.at_gaps.items()}
+    alternates = list(in_line.values())
     # Only openings cut in a wall are doors (door_judge); the others between two spaces are
     # still ways between them.
     # (The open leaves of double doors found in the wall lines are no wall there.)
     leaves = leaf_mask(gaps, occupied.shape)
-    raw_doors, not_doors = judge_doors(raw_doors, fl.free | leaves, occupied & ~fl.floor & ~leaves, res, params,
-                                       unknown=unknown)
+    raw_doors, not_doors = judge_doors(raw_doors + alternates, fl.free | leaves, occupied & ~fl.floor & ~leaves,
+                                       res, params, unknown=unknown)
+    raw_doors, not_doors, raw_wide, raw_narrow = _read_in_wall_lines(in_line, raw_doors, not_doors, raw_wide,
+                                                                     raw_narrow)
     # Two door-wide gaps either side of a post are one opening: wider than a door, neither is a door.
     raw_doors, halves = wide_with_posts(raw_doors, fl.free | leaves, res, params)
     not_doors += halves
@@ -300,7 +309,6 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
                  and hallways_meet(d.width_m, (halls[d.a], halls[d.b]))]
     raw_doors = [d for d in raw_doors if d not in junctions]
     raw_wide += junctions
-    view = _views_out(labels, occupied)
     if view.any():
         # A view out of the building is no space: its cells are no one's, a door into it leads
         # into unexplored territory (found and judged as any other, so the doors stay as they
@@ -316,6 +324,25 @@ def _segment(grid: OccupancyGrid, params: AnalysisParams, layers: GridLayers | N
     wide = _doors(grid, raw_wide, ids, prefix="opening")
     return Segmentation(labels=labels, rooms=tuple(rooms), doors=tuple(doors), narrow_doors=tuple(narrow),
                         openings=tuple(wide))
+
+
+def _read_in_wall_lines(in_line: dict[int, RawDoor], doors: list[RawDoor], not_doors: list[RawDoor],
+                        wide: list[RawDoor], narrow: list[RawDoor]
+                        ) -> tuple[list[RawDoor], list[RawDoor], list[RawDoor], list[RawDoor]]:
+    """The judged ``doors`` and ``not_doors`` (flood doorways and their readings at wall-line
+    gaps, ``in_line``: id of the doorway -> the gap's reading), and the ``wide`` and ``narrow``
+    doorways, with each doorway read one way: as the gap when that is a door (it replaces the
+    doorway, whatever its width: the wall shows where and how wide the door is), else as the
+    flood found it."""
+    alternates = {id(g) for g in in_line.values()}
+    door_ids = {id(d) for d in doors}
+    replaced = {k for k, g in in_line.items() if id(g) in door_ids}
+    kept_alts = {id(in_line[k]) for k in replaced}
+    doors = [d for d in doors if (id(d) not in alternates or id(d) in kept_alts) and id(d) not in replaced]
+    not_doors = [d for d in not_doors if id(d) not in alternates and id(d) not in replaced]
+    wide = [d for d in wide if id(d) not in replaced]
+    narrow = [d for d in narrow if id(d) not in replaced]
+    return doors, not_doors, wide, narrow
 
 
 def _arches(gaps: list[WallGap], labels: npt.NDArray[np.int32], clearance_m: npt.NDArray[np.float64],
