@@ -21,12 +21,15 @@ from langnav.analysis.precompute import (
     approximate_polygons,
     border_labels,
     component_boxes,
+    count_labels,
     cov2,
     dilate4,
     dilate8,
     dilate_box,
     disc,
+    divmod_int,
     edt_scaled,
+    extreme_at,
     far_from_outside,
     fill_holes,
     grow_by_disc,
@@ -79,6 +82,51 @@ def test_nonzero2_matches_nonzero(m: npt.NDArray[np.bool_]) -> None:
     r, c = nonzero2(m)
     er, ec = np.nonzero(m)
     assert np.array_equal(r, er) and np.array_equal(c, ec)
+
+
+@settings(max_examples=150, deadline=None)
+@given(arrays(np.int64, st.integers(0, 60), elements=st.integers(-(2**40), 2**40)),
+       st.integers(1, 5000) | st.integers(-5000, -1), st.sampled_from([np.int64, np.int32]))
+def test_divmod_int_matches_divmod(a: npt.NDArray[np.int64], n: int, dtype: type[np.integer]) -> None:
+    a = (a % (2**31 - 1)).astype(dtype) if dtype is np.int32 else a
+    q, r = divmod_int(a, n)
+    eq, er = np.divmod(a, n)
+    assert q.dtype == eq.dtype and r.dtype == er.dtype
+    assert np.array_equal(q, eq) and np.array_equal(r, er)
+
+
+def test_divmod_int_known_values() -> None:
+    q, r = divmod_int(np.array([0, 5, 419, 420, 421, 113399, -1, -421]), 420)
+    assert q.tolist() == [0, 0, 0, 1, 1, 269, -1, -2]
+    assert r.tolist() == [0, 5, 419, 0, 1, 419, 419, 419]
+
+
+@settings(max_examples=150, deadline=None)
+@given(SHAPES.flatmap(lambda s: arrays(np.int32, s, elements=st.integers(0, 6))), st.integers(0, 12))
+def test_count_labels_matches_bincount(lab: npt.NDArray[np.int32], minlength: int) -> None:
+    for a in (lab, np.sort(lab, axis=None).reshape(lab.shape), lab[:0]):  # runs long and short; none
+        got, expected = count_labels(a, minlength), np.bincount(a.ravel(), minlength=minlength)
+        assert got.dtype == expected.dtype and np.array_equal(got, expected)
+    comp, _n = ndi.label(lab > 2, structure=EIGHT)
+    assert np.array_equal(count_labels(comp), np.bincount(comp.ravel()))
+
+
+@settings(max_examples=150, deadline=None)
+@given(arrays(np.int32, st.integers(0, 80), elements=st.integers(0, 6)), st.integers(0, 2**31))
+def test_extreme_at_matches_ufunc_at(index: npt.NDArray[np.int32], seed: int) -> None:
+    values = np.random.default_rng(seed).normal(size=index.size).round(1)  # ties between runs
+    for idx in (index, np.sort(index)):  # short runs and long ones
+        for ufunc in (np.maximum, np.minimum):
+            got, expected = np.zeros(8), np.zeros(8)
+            extreme_at(ufunc, got, idx, values)
+            ufunc.at(expected, idx, values)
+            assert np.array_equal(got, expected)
+
+
+def test_count_labels_known_values() -> None:
+    lab = np.array([[0, 0, 2, 2], [2, 0, 0, 5]], dtype=np.int32)
+    assert count_labels(lab).tolist() == [4, 0, 3, 0, 0, 1]
+    assert count_labels(lab, 8).tolist() == [4, 0, 3, 0, 0, 1, 0, 0]
 
 
 @settings(max_examples=200, deadline=None)

@@ -172,6 +172,9 @@ BODY_MIN_UNKNOWN_SHARE: Final = 0.45
 #: most this deep (m): cabinets, desks and counters are 0.4-0.8 m deep; a closet or a small
 #: room never entered, walled in the same way, is deeper.
 BODY_MAX_DEPTH_M: Final = 0.8
+#: A body standing free in the floor, scanned solid, is a column or a post up to this footprint
+#: (m2: as wide as a cabinet is deep, each way); a pier between two doors stands there too.
+COLUMN_MAX_AREA_M2: Final = BODY_MAX_DEPTH_M ** 2
 #: The walls around a door, whose directions its line must follow: those within this distance
 #: (m) of it (the room or corridor it opens from; a wing at an angle has its own directions).
 LOCAL_WALLS_M: Final = 3.0
@@ -229,6 +232,9 @@ class DoorEvidence:
     #: that is as narrow as the opening with scanned wall beside it (:func:`walled_strip_share`;
     #: 0 where not measured).
     walled_beyond_share: float = 0.0
+    #: Whether both jambs are columns or posts standing free in the floor (False where the
+    #: unknown cells were not given).
+    column_jambs: bool = False
 
 
 def _sample(mask: BoolArray, rows: npt.NDArray[np.float64], cols: npt.NDArray[np.float64],
@@ -522,11 +528,11 @@ def evidence(free: BoolArray, occupied: BoolArray, center_rc: tuple[float, float
                     and _floor_behind(free, occupied, jamb, fan, resolution_m))
         along.append(0.0 if crossing else float(np.where(runs_on | turns, shares, 0.0)[:-2].max()))
         across.append(float(shares[-2:].min()))
-    furniture = unknown is not None and any(is_furniture(free, unknown, j, resolution_m) for j in jj)
+    bodies = [_free_body(free, unknown, j, resolution_m) for j in jj] if unknown is not None else []
     return DoorEvidence(constriction_m=depth, constriction_back_m=back, along=(along[0], along[1]),
                         across=(across[0], across[1]), line_turn_deg=turn, beyond_width_m=beyond, past_width_m=past,
-                        furniture_jamb=furniture, scanned_share=scanned, clear_width_m=clear,
-                        walled_beyond_share=walled)
+                        furniture_jamb="furniture" in bodies, scanned_share=scanned, clear_width_m=clear,
+                        walled_beyond_share=walled, column_jambs=bodies == ["column", "column"])
 
 
 def _floor_behind(free: BoolArray, occupied: BoolArray, start_rc: tuple[float, float],
@@ -613,6 +619,17 @@ def is_furniture(free: BoolArray, unknown: BoolArray, cell_rc: tuple[float, floa
     not-free cells holding it lies within BODY_LOOK_M of it, at least BODY_MIN_UNKNOWN_SHARE of
     it unscanned, and it is deeper than a wall and at most BODY_MAX_DEPTH_M deep (twice its
     largest inner clearance)."""
+    return _free_body(free, unknown, cell_rc, resolution_m) == "furniture"
+
+
+def is_column(free: BoolArray, unknown: BoolArray, cell_rc: tuple[float, float], resolution_m: float) -> bool:
+    """Whether the occupied cell at ``cell_rc`` is on a column or a post standing free: a body
+    as :func:`is_furniture`'s, but scanned solid, and no larger than COLUMN_MAX_AREA_M2."""
+    return _free_body(free, unknown, cell_rc, resolution_m) == "column"
+
+
+def _free_body(free: BoolArray, unknown: BoolArray, cell_rc: tuple[float, float], resolution_m: float) -> str:
+    """What the body of not-free cells holding ``cell_rc`` is: "furniture", "column" or "wall"."""
     rad = math.ceil(BODY_LOOK_M / resolution_m)
     r, c = math.floor(cell_rc[0]), math.floor(cell_rc[1])
     h, w = free.shape
@@ -624,11 +641,13 @@ def is_furniture(free: BoolArray, unknown: BoolArray, cell_rc: tuple[float, floa
     pieces, _ = ndi.label(body, structure=EIGHT)
     mine = pieces == pieces[rad, rad]
     if mine[0].any() or mine[-1].any() or mine[:, 0].any() or mine[:, -1].any():
-        return False  # it runs on beyond the look: a wall
-    if (unk & mine).sum() < BODY_MIN_UNKNOWN_SHARE * mine.sum():
-        return False
+        return "wall"  # it runs on beyond the look
     depth_m = 2.0 * float(ndi.distance_transform_edt(mine).max()) * resolution_m
-    return WALL_MAX_THICKNESS_M < depth_m <= BODY_MAX_DEPTH_M
+    if not WALL_MAX_THICKNESS_M < depth_m <= BODY_MAX_DEPTH_M:
+        return "wall"
+    if (unk & mine).sum() >= BODY_MIN_UNKNOWN_SHARE * mine.sum():
+        return "furniture"
+    return "column" if mine.sum() * resolution_m ** 2 <= COLUMN_MAX_AREA_M2 else "wall"
 
 
 def typical_width(t_m: npt.NDArray[np.float64], width_m: npt.NDArray[np.float64], side: float,
@@ -741,8 +760,9 @@ def is_door(ev: DoorEvidence, params: AnalysisParams, into_unknown: bool, in_wal
     # It was scanned: the robot saw through it.
     if ev.scanned_share < GAP_MIN_FLOOR_SHARE:
         return False
-    # Its jambs are walls, not furniture.
-    if ev.furniture_jamb:
+    # Its jambs are walls, not furniture; and not two columns standing free in the floor (a
+    # pier between two doors stands beside a wall's end at their other jambs).
+    if ev.furniture_jamb or ev.column_jambs:
         return False
     # Both jambs are wall running on along the opening's line (a return beside a corner counts,
     # the bare face of a wall across the line does not: see the module doc).
@@ -849,6 +869,7 @@ __all__ = [
     "free_widths",
     "free_widths_each",
     "hallways_meet",
+    "is_column",
     "is_door",
     "is_furniture",
     "judge_doors",

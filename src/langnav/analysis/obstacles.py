@@ -23,6 +23,7 @@ from langnav.analysis.precompute import (
     border_labels,
     component_boxes,
     dilate8,
+    divmod_int,
     fill_holes,
 )
 from langnav.analysis.unexplored import adjacent_pairs
@@ -92,7 +93,7 @@ def find_obstacles(grid: OccupancyGrid, params: AnalysisParams, labels: npt.NDAr
     mask.ravel()[cand_flat] = True
     by_cand = np.argsort(cand_comp, kind="stable")
     cand_flat, cand_comp = cand_flat[by_cand], cand_comp[by_cand]
-    cand_r, cand_c = np.divmod(cand_flat, comp.shape[1])
+    cand_r, cand_c = divmod_int(cand_flat, comp.shape[1])
     slices = component_boxes(cand_comp, cand_r, cand_c, candidates)
     cand_x, cand_y = grid.cell_to_world(cand_r, cand_c)
     bounds = np.searchsorted(cand_comp, np.append(candidates, n + 1))

@@ -98,6 +98,7 @@ from langnav.analysis.precompute import (
     component_boxes,
     cov2,
     dilate8,
+    divmod_int,
     label8_cells,
     median,
     truncated_sq_edt,
@@ -415,7 +416,7 @@ def _core_pieces(floor: _Floor) -> tuple[list[tuple[npt.NDArray[np.intp], npt.ND
     n_cells = np.bincount(core_id, minlength=m + 1)
     long_enough = np.flatnonzero(n_cells * math.sqrt(2) >= floor.min_cells)
     long_enough = long_enough[long_enough > 0]
-    core_r, core_c = np.divmod(core_idx, floor.open_.shape[1])
+    core_r, core_c = divmod_int(core_idx, floor.open_.shape[1])
     boxes = component_boxes(core_id, core_r, core_c, long_enough)
     # Each core's cells, in raster order.
     by_core = np.argsort(core_id, kind="stable")
@@ -439,7 +440,7 @@ def _core_pieces(floor: _Floor) -> tuple[list[tuple[npt.NDArray[np.intp], npt.ND
     short = np.flatnonzero((counts * math.sqrt(2) >= gap_cells) & ~has_core[1:]) + 1
     throats: list[tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], BoolArray | None]] = []
     if len(short):
-        chain_r, chain_c = np.divmod(idx, floor.open_.shape[1])
+        chain_r, chain_c = divmod_int(idx, floor.open_.shape[1])
         chain_boxes = component_boxes(cid, chain_r, chain_c, short)
         by_chain = np.argsort(cid, kind="stable")
         chain_start = np.searchsorted(cid[by_chain], np.arange(n + 2))
@@ -482,7 +483,7 @@ def _joined_across_side_openings(
         axis = evecs[:, int(np.argmax(evals))]
         proj = (pts - mean) @ axis
         shape.append((mean, axis, float(proj.min()), float(proj.max()),
-                      float(np.median(floor.dist_of[floor.d2[rr, cc]])) / res))
+                      median(floor.dist_of[floor.d2[rr, cc]]) / res))
     idx = [k for k, ok in enumerate(fits_of) if ok]
     side_sets = side_distances_each(floor.open_, [pts_of[k] for k in idx],
                                     [floor.dist_of[floor.d2[pieces[k][0], pieces[k][1]]] / res for k in idx],
@@ -790,8 +791,8 @@ def _specks_across(floor: _Floor, piece: _Piece, stretch: _Stretch) -> bool:
     middle, between its two sides: the sparse returns of the line it is a gap in (a glass front,
     a thin rail), which goes on there?"""
     b = stretch.bounded
-    lo = -float(np.median(stretch.sides[b, 0]))
-    hi = float(np.median(stretch.sides[b, 1]))
+    lo = -median(stretch.sides[b, 0])
+    hi = median(stretch.sides[b, 1])
     t = np.arange(lo + 1.0, hi - 0.5, 0.5)
     if len(t) == 0:
         return False

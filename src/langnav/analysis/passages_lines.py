@@ -19,7 +19,7 @@ import numpy as np
 import numpy.typing as npt
 
 from langnav.analysis.passages_probe import side_distances
-from langnav.analysis.precompute import label8_cells
+from langnav.analysis.precompute import divmod_int, label8_cells, median
 
 BoolArray = npt.NDArray[np.bool_]
 
@@ -88,7 +88,7 @@ def typical_wall_thickness_m(occupied: BoolArray, free: BoolArray, res: float) -
         thick = np.where(bounded, (ends - starts + 1) * step * res, np.inf)
         best[order] = np.minimum(best[order], thick[run])  # (order visits each cell once)
     walls = best[best <= WALL_MAX_THICKNESS_M]
-    return float(np.median(walls)) if len(walls) else res
+    return median(walls) if len(walls) else res
 
 
 def crest(d2: npt.NDArray[np.integer]) -> BoolArray:
@@ -139,7 +139,7 @@ def jogs(idx: npt.NDArray[np.intp], core: BoolArray, near: BoolArray,
     run_flat = idx[cand]
     run, n_runs = label8_cells(run_flat, shape)
     h, w = shape
-    r, c = np.divmod(run_flat, w)
+    r, c = divmod_int(run_flat, w)
     # Each run's cells' core neighbours: the stretches each run touches.
     pairs: list[npt.NDArray[np.int64]] = []
     for dr in (-1, 0, 1):
@@ -160,7 +160,7 @@ def jogs(idx: npt.NDArray[np.intp], core: BoolArray, near: BoolArray,
     # ... and the two stretches are one way on either side of it: in line (their axes within
     # JOG_MAX_TURN_DEG, each passing within half the way's width of the run), not two ways
     # meeting at a corner (the gaps on either side of a locker block, joined round its end).
-    sr, sc = np.divmod(core_flat, w)
+    sr, sc = divmod_int(core_flat, w)
     cnt = np.bincount(stretch, minlength=_n + 1).astype(float)
     cnt[0] = 1.0
     mx, my = np.bincount(stretch, weights=sc, minlength=_n + 1) / cnt, np.bincount(stretch, weights=sr, minlength=_n + 1) / cnt
@@ -192,7 +192,7 @@ def long_pieces(rr: npt.NDArray[np.intp], cc: npt.NDArray[np.intp], shape: tuple
         return []
     flat = np.sort(rr * shape[1] + cc)
     ids, n = label8_cells(flat, shape)
-    rows, cols = np.divmod(flat, shape[1])
+    rows, cols = divmod_int(flat, shape[1])
     out = []
     for i in np.flatnonzero(np.bincount(ids, minlength=n + 1) * math.sqrt(2) >= min_cells).tolist():
         if i == 0:

@@ -53,9 +53,12 @@ from langnav.analysis.precompute import (
     Components,
     GridLayers,
     border_labels,
+    count_labels,
     dilate8,
     dilate_box,
+    divmod_int,
     edt_scaled,
+    extreme_at,
     maximum3,
     nonzero2,
 )
@@ -136,7 +139,7 @@ def _small_components(mask: BoolArray, max_cells: float, *, exclude_border: bool
     (``components``: that labelling of ``mask``, when it is at hand)."""
     if components is None:
         lab, n = ndi.label(mask, structure=EIGHT)
-        sizes = np.bincount(lab.ravel()) if n else np.zeros(1, dtype=np.int64)
+        sizes = count_labels(lab) if n else np.zeros(1, dtype=np.int64)
     else:
         lab, n, sizes = components.labels, components.n, components.sizes
     if n == 0:
@@ -643,14 +646,14 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
     if n <= 1:
         return labels
     flat = labels.ravel()
-    cells = np.bincount(flat, minlength=n).astype(float)
+    cells = count_labels(flat, n).astype(float)
     area = cells * resolution_m**2
     # The cells of the pieces (label 0 is never measured below), in raster order.
     on_flat = np.flatnonzero(flat)
     lab_on = flat[on_flat]
     clear_on = clearance_m.ravel()[on_flat]
     peak = np.zeros(n)
-    np.maximum.at(peak, lab_on, clear_on)
+    extreme_at(np.maximum, peak, lab_on, clear_on)
     # Summed clearance (m x cells): twice the mean clearance of a space is about its half-width
     # where it is long and narrow, whatever bulges (junctions, door recesses) raise its peak.
     clear_sum = np.bincount(lab_on, weights=clear_on, minlength=n)
@@ -662,7 +665,7 @@ def merge_basins(labels: IntArray, clearance_m: FloatArray, resolution_m: float,
 
     def moments() -> list[list[float]]:
         if not mom:
-            rows_i, cols_i = np.divmod(on_flat, labels.shape[1])
+            rows_i, cols_i = divmod_int(on_flat, labels.shape[1])
             rf, cf = rows_i.astype(float), cols_i.astype(float)
             mom.extend(np.bincount(lab_on, weights=w, minlength=n).tolist()
                        for w in (rf, cf, rf * rf, cf * cf, rf * cf))

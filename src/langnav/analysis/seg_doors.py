@@ -26,7 +26,7 @@ from scipy import ndimage as ndi
 from skimage.segmentation import watershed
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import dilate_box, far_from_outside, maximum3, nonzero2
+from langnav.analysis.precompute import dilate_box, extreme_at, far_from_outside, maximum3, nonzero2
 from langnav.analysis.seg_core import EIGHT, BoolArray, FloatArray, IntArray
 from langnav.analysis.wall_lines import outer_gaps
 
@@ -157,7 +157,7 @@ def label_max(labels: IntArray, values: FloatArray) -> FloatArray:
     """The largest value under each label 0..max (0 where a label is absent; label 0 ignored)."""
     out = np.zeros(int(labels.max()) + 1)
     m = labels > 0
-    np.maximum.at(out, labels[m], values[m])
+    extreme_at(np.maximum, out, labels[m], values[m])
     return out
 
 

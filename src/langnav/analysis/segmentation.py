@@ -38,12 +38,15 @@ from langnav.analysis.precompute import (
     GridLayers,
     approximate_polygons,
     border_labels,
+    count_labels,
     dilate8,
     dilate_box,
+    divmod_int,
     edt_scaled,
     fill_holes,
     longest_contour,
     maximum3,
+    median,
     nonzero2,
     unique_values,
 )
@@ -472,10 +475,10 @@ def _views_out(labels: npt.NDArray[np.int32], occupied: npt.NDArray[np.bool_]) -
             cell = (rr + max(-dr, 0)).astype(np.int64) * w + (cc + max(-dc, 0))
             keys.append(src[rr, cc].astype(np.int64) * (h * w) + cell)
     pairs = unique_values(np.concatenate(keys))
-    space, cell = np.divmod(pairs, h * w)
+    space, cell = divmod_int(pairs, h * w)
     ring = np.bincount(space, minlength=n + 1)
     wall = np.bincount(space[occupied.ravel()[cell]], minlength=n + 1)
-    area = np.bincount(labels.ravel(), minlength=n + 1)
+    area = count_labels(labels, n + 1)
     view = (wall < SPACE_MIN_WALL_SHARE * ring) & (area > 0)
     view[0] = False
     # A view out is a small part of a map that draws its walls: where most of the floor has
@@ -528,8 +531,8 @@ def _attach_enclosed_unknown(labels: npt.NDArray[np.int32], fl: Floor, grid: Occ
     # Not larger than an unscanned part of a room can be: a bounded area, and less than the
     # scanned part of the room itself (a courtyard inside a corridor loop is neither).
     cell_area = grid.resolution_m**2
-    unknown_area = np.bincount(lab.ravel(), minlength=n + 1) * cell_area
-    room_area = np.bincount(labels.ravel(), minlength=int(labels.max()) + 1) * cell_area
+    unknown_area = count_labels(lab, n + 1) * cell_area
+    room_area = count_labels(labels, int(labels.max()) + 1) * cell_area
     take = (best_share >= ENCLOSED_UNKNOWN_MIN_FLOOR_SHARE) & (best_room > 0) \
         & (unknown_area <= params.seg_enclosed_unknown_max_area_m2) \
         & (unknown_area <= room_area[best_room])
@@ -555,7 +558,7 @@ def _fill_enclosed(labels: npt.NDArray[np.int32], max_cells: float) -> npt.NDArr
         if not inside.any():
             continue
         pockets, n = ndi.label(inside, structure=EIGHT)
-        sizes = np.bincount(pockets.ravel(), minlength=n + 1)
+        sizes = count_labels(pockets, n + 1)
         take = sizes <= max_cells
         take[0] = False
         out[sl][take[pockets]] = k
@@ -804,7 +807,7 @@ def _wall_to_wall(mask: npt.NDArray[np.bool_], res: float, max_pocket_m2: float
     holes = fill_holes(whole) & ~whole
     if holes.any() and max_pocket_m2 > 0:
         pockets, n = ndi.label(holes, structure=EIGHT)
-        area = np.bincount(pockets.ravel(), minlength=n + 1) * rk * rk
+        area = count_labels(pockets, n + 1) * rk * rk
         small = area <= min(max_pocket_m2, FURNITURE_MAX_SHARE * float(whole.sum()) * rk * rk)
         small[0] = False
         whole = whole | small[pockets]
@@ -839,7 +842,7 @@ def _whole_typical_width(mask: npt.NDArray[np.bool_], res: float, reach_m: float
     line = _centre_line(d, whole, rk, reach_m)
     if not line.any():
         return 0.0
-    return 2.0 * float(np.median(d[line])) - rk
+    return 2.0 * median(d[line]) - rk
 
 
 def _split_halls_from_corridors(labels: npt.NDArray[np.int32], res: float,
@@ -860,7 +863,7 @@ def _split_halls_from_corridors(labels: npt.NDArray[np.int32], res: float,
     nxt = n + 1
     r_hall = HALL_MIN_WIDTH_SHARE * params.hallway_max_width_m / 2
     min_area = math.pi * r_hall * r_hall
-    cells = np.bincount(labels.ravel(), minlength=n + 1) * res * res
+    cells = count_labels(labels, n + 1) * res * res
     for k, sl in enumerate(ndi.find_objects(labels), start=1):
         if sl is None or cells[k] < 2 * min_area:
             continue
@@ -872,7 +875,7 @@ def _split_halls_from_corridors(labels: npt.NDArray[np.int32], res: float,
             continue
         # ... over a stretch of floor (HALL_CORE_MIN_SIDE_M).
         cores, nc = ndi.label(core, structure=EIGHT)
-        big_core = np.bincount(cores.ravel(), minlength=nc + 1) * rk * rk >= HALL_CORE_MIN_SIDE_M ** 2
+        big_core = count_labels(cores, nc + 1) * rk * rk >= HALL_CORE_MIN_SIDE_M ** 2
         big_core[0] = False
         core = big_core[cores]
         if not core.any():
@@ -883,13 +886,13 @@ def _split_halls_from_corridors(labels: npt.NDArray[np.int32], res: float,
             continue
         line = _centre_line(d, whole, rk, params.hallway_max_width_m / 2)
         near_wide = dilate8(wide)
-        area = np.bincount(rest.ravel(), minlength=m + 1) * rk * rk
+        area = count_labels(rest, m + 1) * rk * rk
         corridor = np.zeros(m + 1, dtype=bool)
         for j in np.flatnonzero(area[1:] >= params.room_min_area_m2) + 1:
             on = line & (rest == j)
             if not on.any():
                 continue
-            typical = 2.0 * float(np.median(d[on])) - rk
+            typical = 2.0 * median(d[on]) - rk
             # A corridor leaves a hall through a mouth as wide as itself; a bay of the hall
             # cut off by the disc's arc meets it along a longer curve.
             mouths, _ = ndi.label(near_wide & (rest == j), structure=EIGHT)
@@ -905,7 +908,7 @@ def _split_halls_from_corridors(labels: npt.NDArray[np.int32], res: float,
         for j in np.flatnonzero(corridor):
             pieces[rest == j] = int(j)
         halls, h = ndi.label(whole & (pieces == 0), structure=EIGHT)
-        big = np.bincount(halls.ravel(), minlength=h + 1) * rk * rk >= min_area
+        big = count_labels(halls, h + 1) * rk * rk >= min_area
         big[0] = False
         pieces[big[halls]] = halls[big[halls]] + m
         # Corners, alcoves and fragments (laser-ray dashes) join the nearest corridor or hall.
@@ -941,7 +944,7 @@ def _served(pairs: list[tuple[int, int]], openings: npt.NDArray[np.int64],
     dead end, as in :func:`_ways_on`), and each opening into unexplored territory as a place of
     its own."""
     n = openings.size
-    area = np.bincount(labels.ravel(), minlength=n)
+    area = count_labels(labels, n)
     others: list[set[int]] = [set() for _ in range(n)]
     dead_end = np.zeros(n, dtype=bool)
     unknown = np.zeros(n, dtype=np.int64)
@@ -963,7 +966,7 @@ def _ways_on(openings: npt.NDArray[np.int64], pairs: list[tuple[int, int]],
     no other (an en-suite bathroom, a closet, a store behind its door: a room with one is still
     a dead end, not a way through). A corridor serves several such rooms: they all count but
     one, and it stays a way through."""
-    area = np.bincount(labels.ravel(), minlength=openings.size)
+    area = count_labels(labels, openings.size)
     leaves = np.zeros_like(openings)
     for a, b in pairs:
         if a <= 0 or b <= 0:

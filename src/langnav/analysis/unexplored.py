@@ -38,8 +38,10 @@ from langnav.analysis.precompute import (
     GridLayers,
     border_labels,
     component_boxes,
+    count_labels,
     dilate8,
     disc,
+    divmod_int,
     grow_by_disc,
     label8,
     label8_cells,
@@ -90,7 +92,7 @@ def adjacent_pairs(a: npt.NDArray[np.integer] | BoolArray, b: npt.NDArray[np.int
     flat = np.flatnonzero(near).astype(np.int64, copy=False)
     if len(flat) == 0:
         return np.zeros((0, 2), dtype=np.int64)
-    rr, cc = np.divmod(flat, w)
+    rr, cc = divmod_int(flat, w)
     b_flat = b.ravel()
     # Neighbour labels by flat offset; "clip" keeps the index in the array, and the cells on the
     # grid's edge, whose offsets wrap round or fall off, are put right below.
@@ -171,7 +173,7 @@ def find_unexplored(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     # One frontier cell may touch an area through several neighbours: unique (area, cell).
     fr_codes = np.unique(fr_area.astype(np.int64) * (grid.width * grid.height) + fr_cells)
     fr = np.stack([fr_codes // (grid.width * grid.height), fr_codes % (grid.width * grid.height)], axis=1)
-    fr_r, fr_c = np.divmod(fr[:, 1], grid.width)
+    fr_r, fr_c = divmod_int(fr[:, 1], grid.width)
     fx, fy = grid.cell_to_world(fr_r, fr_c)
     order = np.argsort(fr[:, 0], kind="stable")
     splits = np.searchsorted(fr[order, 0], np.arange(1, n_areas + 2))
@@ -302,7 +304,7 @@ def _cut_thin_parts(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
             n_new += pieces.n - 1
     if out is None:
         return lab, n, sizes, outside
-    new_sizes = np.bincount(out.ravel(), minlength=n_new + 1).astype(np.int64)
+    new_sizes = count_labels(out, n_new + 1).astype(np.int64)
     new_sizes[0] = 0
     new_outside = np.zeros(n_new + 1, dtype=bool)
     new_outside[:n + 1] = outside
@@ -404,7 +406,7 @@ def _edge_adjacent(lab: IntArray, pairs: npt.NDArray[np.int64]) -> BoolArray:
     """Per (cell, label) pair: has the cell a 4-neighbour of that label?"""
     h, w = lab.shape
     flat = lab.ravel()
-    rr, cc = np.divmod(pairs[:, 0], w)
+    rr, cc = divmod_int(pairs[:, 0], w)
     out = np.zeros(len(pairs), dtype=bool)
     for dr, dc in ((-1, 0), (1, 0), (0, -1), (0, 1)):
         r2, c2 = rr + dr, cc + dc
@@ -464,7 +466,7 @@ def reachable_floor(grid: OccupancyGrid, params: AnalysisParams, layers: GridLay
     # round one of its neighbours: looked up at those offsets, on the region padded so that
     # none falls off it.
     main = np.pad(comps.labels == 1 + int(np.argmax(comps.sizes[1:])), pad, constant_values=False)
-    rr, cc = np.divmod(cells, grid.width)
+    rr, cc = divmod_int(cells, grid.width)
     inside = (rr >= r0) & (rr < r1) & (cc >= c0) & (cc < c1)
     flat = (rr[inside] - r0 + pad) * main.shape[1] + (cc[inside] - c0 + pad)
     main_flat = main.ravel()

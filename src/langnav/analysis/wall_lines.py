@@ -50,7 +50,7 @@ import numpy.typing as npt
 from scipy import ndimage as ndi
 
 from langnav.analysis.params import AnalysisParams
-from langnav.analysis.precompute import EIGHT, nonzero2, take2
+from langnav.analysis.precompute import EIGHT, divmod_int, nonzero2, take2
 
 BoolArray = npt.NDArray[np.bool_]
 FloatArray = npt.NDArray[np.float64]
@@ -330,7 +330,11 @@ def dominant_directions(wall: BoolArray) -> list[float]:
     small = max(wall.shape) <= LINE_TABLE_SIDE and rr.size == np.count_nonzero(wall)
     score = _coarse_scores(rr, cc) if small else _line_scores(rows, neg_cols, grid_deg)
     base = float(score.min())
-    peaks = np.flatnonzero((score >= np.roll(score, 1)) & (score > np.roll(score, -1)))
+    # Each score against its neighbours round the circle of directions (``np.roll`` by 1 and by
+    # -1, without its generic set-up).
+    before = np.concatenate((score[-1:], score[:-1]))
+    after = np.concatenate((score[1:], score[:1]))
+    peaks = np.flatnonzero((score >= before) & (score > after))
     peaks = peaks[np.argsort(-score[peaks])]
     taken: list[float] = []
     for p in peaks.tolist():
@@ -714,7 +718,7 @@ def _line_keys(u: IntArray, v: IntArray, span: int) -> tuple[IntArray, IntArray,
     seen = np.zeros(int(flat.max()) + 1, dtype=bool)
     seen[flat] = True
     key = np.flatnonzero(seen)
-    line, pos = np.divmod(key, span)
+    line, pos = divmod_int(key, span)
     return key, line, pos
 
 

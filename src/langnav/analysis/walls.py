@@ -167,7 +167,8 @@ def _direction_peaks(theta_deg: FloatArray, min_points: float) -> list[float]:
     """Dominant directions (degrees) of a set of face normals: peaks of a circular histogram."""
     nbins = round(360 / DIRECTION_BIN_DEG)
     hist = np.bincount((theta_deg // DIRECTION_BIN_DEG).astype(int) % nbins, minlength=nbins).astype(float)
-    smooth = hist + 0.5 * (np.roll(hist, 1) + np.roll(hist, -1))
+    # (The neighbours round the circle: ``np.roll`` by 1 and by -1, without its generic set-up.)
+    smooth = hist + 0.5 * (np.concatenate((hist[-1:], hist[:-1])) + np.concatenate((hist[1:], hist[:1])))
     peaks: list[float] = []
     order = np.argsort(-smooth)
     # The bins walked one by one: as Python values (a numpy scalar per look costs more).

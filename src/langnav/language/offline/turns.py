@@ -57,13 +57,33 @@ def rotate_steps(c: Clause, targets: list[Phrase], vm: re.Match[str] | None) -> 
     turn = rotation(c, vm)
     steps.append(turn)
     distance = amount_said(c, lengths) or 0.0
-    if lengths and turn.direction in (Direction.LEFT, Direction.RIGHT) and 0 < distance <= MAX_MOVE_M:
+    if lengths and _move_said_apart(c, vm):
+        # "turn left 90 move back 1 foot", "turn right 45 or go back 1 foot": the distance is another
+        # instruction's, said with its own verb and way, not the straight-on move of "turn right three feet";
+        # read as that, the robot would go forward where back was said. Left unread, the robot asks.
+        c.lost.extend(c.s.text[a.start:a.end] for a in lengths)
+    elif lengths and turn.direction in (Direction.LEFT, Direction.RIGHT) and 0 < distance <= MAX_MOVE_M:
         # "turn right three feet": that turn, then the distance straight on (README: "move N to your
         # right" may be a 90 degree turn and a move forward)
         steps.append(Step(movement=Movement.MOVE, direction=Direction.FORWARD, distance_m=distance, text=c.text[:500]))
     elif lengths:
         c.lost.extend(c.s.text[a.start:a.end] for a in lengths)
     return steps
+
+
+#: A verb of going after the turn's verb ("turn left 90 move back 1 foot"), or an "or" offering another
+#: instruction ("turn left or go back 1 foot"; not "or so", "or more", which hedge the amount).
+_SECOND_GO_VERB_RE: Final = re.compile(
+    r"\b(?:" + "|".join(sorted((re.escape(v).replace(r"\ ", r"\s+") for v in lx.GO_VERBS if v != "be"),
+                                 key=len, reverse=True)) + r")\b")
+_OR_RE: Final = re.compile(r"\bor\b(?!\s+(?:so|thereabouts|about|more|less|two|three)\b)")
+
+
+def _move_said_apart(c: Clause, vm: re.Match[str] | None) -> bool:
+    """Whether a distance in a turn's clause belongs to another instruction said in the same breath: a verb
+    of going after the turn's verb, or an "or" between them (see ``rotate_steps``)."""
+    after = c.s.text[vm.end():] if vm is not None else c.s.text
+    return _SECOND_GO_VERB_RE.search(after) is not None or _OR_RE.search(after) is not None
 
 
 #: "turn round to the left": only a bare "round / around" gives way to a side named with it.
