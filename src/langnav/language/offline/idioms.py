@@ -184,12 +184,20 @@ def plain_idioms(text: str) -> str:
 _NAMED_TURN_ALONE: Final = re.compile(
     r"^(?:(?:a|an|another|one|the)\s+)?(?:(?:quick|fast|full|complete|whole|little)\s+)?"
     r"(?P<deg>one\s+eighty|180|three\s+sixty|360)(?:\s+(?:please|now|again))?$")
+#: "Around" said alone as the whole instruction ("around!", "round, yeah"): the turn around it names, as "left"
+#: alone is a turn to the left (with a verb or a place, "go around the box", it is read as usual).
+_AROUND_ALONE: Final = re.compile(r"^(?:(?:all\s+the\s+way|right)\s+)?(?:a)?round(?:\s+(?:please|now))?$")
 
 
-def named_turn_alone(clause: str) -> str:
-    """A whole instruction (normalised) that is only "180" or "three sixty" is the turn of that name.
+def named_turn_alone(clause: str, around_alone: bool = True) -> str:
+    """A whole instruction (normalised) that is only "180" or "three sixty" is the turn of that name, and
+    one that is only "around" the turn around when ``around_alone`` (it opens the prompt, or says again the turn
+    around before it: "turn around, around"; after another step, "turn left, around", it may correct that step
+    or add to it, and is asked about).
     (As a fragment it completes the instruction before it instead: "turn left, 180"; that joining
     happens before a clause is read, so this applies only to what is read as a clause.)"""
+    if around_alone and _AROUND_ALONE.match(clause):
+        return "turn around"
     m = _NAMED_TURN_ALONE.match(clause)
     if m is None:
         return clause

@@ -102,7 +102,8 @@ SUPERLATIVES: Final[dict[str, Superlative]] = {
                                           "opposite", "far away", "distant", "far end")},
     **{w: Superlative.BIGGEST for w in ("biggest", "largest", "big", "large", "huge", "largest size",
                                          "bigger", "larger", "main")},
-    **{w: Superlative.SMALLEST for w in ("smallest", "small", "tiny", "smaller", "tiniest", "little")},
+    # ("littlest": the superlative of "little", said in Northern English and by children)
+    **{w: Superlative.SMALLEST for w in ("smallest", "small", "tiny", "smaller", "tiniest", "little", "littlest")},
     **{w: Superlative.WIDEST for w in ("widest", "wide", "wider", "broadest", "broad")},
     **{w: Superlative.NARROWEST for w in ("narrowest", "narrow", "narrower", "tightest", "thinnest")},
 }
@@ -327,13 +328,18 @@ QUERY_POSE_PATTERNS: Final = (
     r"\bwhat\s+is\s+your\s+(?:position|location|pose)\b", r"\bwhere\s+abouts\b",
     # "what's your twenty?": radio ten-code 10-20 is "location" (police, taxi and CB radio)
     r"\bwhat(?:'?s|\s+is)\s+(?:your|ur|the\s+robot'?s)\s+(?:twenty|20|10-20|ten[\s-]twenty)\b",
-    r"\bwhat\s+room\s+are\s+you\s+in\b", r"\bwhere\s+have\s+you\s+got\s+to\b",
+    # ("where's he got to": the "'s" of "where's" is "has" as often as "is")
+    r"\bwhat\s+room\s+are\s+you\s+in\b", r"\bwhere\s+(?:have|has|is)\s+(?:you|u)\s+got\s+to\b",
     # "where you at?" (the copula dropped, as many English dialects do); "where do you stand now?" (where
     # one stands is where one is, as learners and formal speakers ask it)
     r"^\s*where\s+(?:you|u|ya|y'all)\s+at\b",
     # ("where you now?", "where you right now": the copula dropped before "now", as learners and many
     # varieties ask it)
     r"^\s*where\s+(?:you|u|ya)\s+(?:right\s+)?now\b",
+    # "you are where now?", "you now where?": the question word left in the place of what is asked, as Chinese,
+    # Cantonese, Thai and Arabic ask it ("ni zai nali", "you at where") and English does in surprise
+    r"^\s*(?:you|u|ya)\s+(?:are\s+|r\s+|is\s+)?(?:(?:right\s+)?now\s+)?where\b"
+    r"(?!\s+(?:is|are|was|were|the|a|an|you|u|i|we|it|they|to|from|do|does|did)\b)",  # (no clause after it: "where the door is")
     r"\bwhere\s+(?:do|does)\s+(?:you|u|the\s+robot|it)\s+(?:stand|find\s+(?:yourself|itself)|sit|stay)\b"
     r"(?!\s+(?:on|with)\b)",
 )
@@ -751,6 +757,8 @@ STOPWORDS: Final = frozenset({
     "fully", "completely", "immediately", "soon", "afterward", "afterwards",
     "finally", "first", "second", "lastly", "next", "quick", "slow", "thanks", "thank",
     "hey", "hi", "hello", "sure", "fine", "good", "great", "nice", "cool", "man", "pal", "dude",
+    # words of address: Northern English "lad" / "lass", Arabic "habibi" / "habibti" ("my dear")
+    "lad", "lass", "habibi", "habibti",
     "they", "their", "them", "those", "these", "if", "than", "how", "far", "long", "whole",
     "entire", "total", "altogether", "approx", "ca",
     "circa", "reached", "reach", "arrived", "arrive",
@@ -820,6 +828,13 @@ TYPOS: Final[dict[str, str]] = {
     "tae": "to", "yer": "your", "ye": "you", "oot": "out", "aye": "yes", "gonnae": "going to", "intae": "into",
     "ontae": "onto", "yersel": "yourself", "yerself": "yourself", "wantae": "want to", "dinnae": "do not",
     "doon": "down", "o'": "of",
+    # Yorkshire and other Northern English dialect words ("forrard ten foot", "turn reet", "back up nobbut a bit",
+    # "get thisen to t' door"): the same words of general English ("thee" / "tha", the pronouns, are read in
+    # ``normalize``: spelt so, they may also be a slip for "the")
+    "reet": "right", "forrard": "forward", "forrards": "forwards", "thi": "your", "thisen": "yourself",
+    "thysen": "yourself", "nobbut": "only", "t'": "the", "an'": "and",
+    # Gulf and Levantine Arabic "shwayya" (also spelt "shwaya", "shwaiya"), said inside English as "a little"
+    "shwayya": "a little", "shwaya": "a little", "shwaiya": "a little",
 }
 
 #: Words that typo repair may aim at (edit distance 1, words of at least five letters).

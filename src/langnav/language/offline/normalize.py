@@ -94,11 +94,31 @@ _IDIOMS: Final = (
     (re.compile(r"\b(?:do|make|perform)\s+(?:a|one)\s+(?:little\s+)?(?:twirl|pirouette|spin)\b"), "turn 360 degrees"),
     # "a quarter of the way round", "half of the way around": that part of a turn
     (re.compile(r"\b(a\s+quarter|one\s+quarter|half|three\s+quarters)\s+of\s+the\s+way\s+(?:a)?round\b"), r"\1 turn"),
+    # "turn left a quarter", "rotate a half": after a turn, a share said with no noun is that share of a turn
+    # (the noun left out, as "a quarter turn" is said); a share of a unit ("a quarter metre") keeps its noun
+    (re.compile(r"\b((?:turn|rotate|spin|pivot|swivel)(?:\s+(?:left|right|around|round|clockwise|anticlockwise|"
+                r"counterclockwise))?\s+)(a\s+quarter|one\s+quarter|a\s+half|three\s+quarters)\b(?!\s*(?:of|turns?|"
+                r"revolutions?|rotations?|circles?|inch\w*|met\w*|foot|feet|yards?|cm|mm|m|degrees?|more|an?)\b)"),
+     r"\1\2 turn"),
+    # Yorkshire "thee" / "tha" ("turn thee right", "where's tha got to") are "you"; before a word of a noun
+    # phrase ("thee door", "tha biggest room") they are a slip for "the" and are left to the reading
+    (re.compile(r"\b(?:thee|tha)\b(?!\s+(?:" + "|".join(sorted(
+        {w for w in (*ELEMENT_NOUNS, *ORDINALS, *SUPERLATIVES) if " " not in w and "-" not in w}
+        | {"door", "end", "middle", "centre", "center", "corner", "wall", "same", "other", "one", "way"}, key=len, reverse=True))
+        + r")\b)"), "you"),
+    # "rest there", "and rest here": to rest is to stay still, where the robot is or arrives ("the rest of
+    # the way" is no verb)
+    (re.compile(r"(?<!\bthe\s)\brest\s+(?=(?:right\s+)?(?:there|here)\b)"), "stay "),
     # "in a forward direction", "in the counterclockwise direction": that way
     (re.compile(r"\bin\s+(?:a|the)\s+(forwards?|backwards?|clockwise|counter\s*clockwise|anti\s*clockwise)\s+direction\b"),
      r"\1"),
     # "turn left one more time", "once more": again (no amount)
     (re.compile(r"\b(?:one\s+more\s+time|once\s+more|once\s+again)\b"), "again"),
+    # "turn around one time": "one time" is "once" (a count of times, no amount)
+    (re.compile(r"\bone\s+time\b"), "once"),
+    # "just a small turn to the right" said with no verb: the turn it names, a little ("make a small turn"
+    # keeps its verb)
+    (re.compile(r"^(?:(?:just|only)\s+)?(?:a\s+)?(?:very\s+)?(?:small|slight|tiny|little|short)\s+turn\b"), "turn a little"),
     # "one more turn to the left", "another turn": a turn (not one whole turn, not an amount)
     (re.compile(r"\b(?:one\s+more|another|a\s+further)\s+turn\b(?!\s+(?:of|and))"), "turn"),
     # "a right angle" is 90 degrees (the "right" of it is no side)

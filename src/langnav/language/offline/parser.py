@@ -108,7 +108,7 @@ def read_clause(text: str, previous: Step | None = None, known_names: Sequence[s
                 previous_target: ElementRef | None = None) -> Reading:
     """Read one instruction. ``previous`` is the step before it and ``previous_target`` the last
     element named (for 'it', 'there', 'the next one')."""
-    norm = named_turn_alone(normalize(text))
+    norm = named_turn_alone(normalize(text), around_alone=previous is None or previous.direction == Direction.AROUND)
     c = Clause(text=text, s=Scratch(norm), previous=previous)
     if not norm:
         return Reading()

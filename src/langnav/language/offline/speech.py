@@ -356,16 +356,32 @@ RADIO_CALL: Final = re.compile(rf"^\s*(?:{_STATION}\s+to\s+{_STATION}|{_STATION}
                                rf"{_STATION}\s+(?:number\s+)?(?:\d{{1,2}}|one|two|three|four|five|six|seven|eight|nine|ten|"
                                r"alpha|bravo|charlie|delta|echo))\s*(?=[,.;!?]|$)",
                                re.IGNORECASE)
+#: A stage manager's cue call ("cue seven go, turn right", "cue three, back up one metre, go", "standby cue
+#: four"): the cue's number or letter names which cue is called and counts no amount; the "go" said with it (or
+#: alone after the instruction, which the reading already drops) is the call to carry the instruction out.
+CUE_CALL: Final = re.compile(
+    rf"(?:^|(?<=[,.;!?]))\s*(?:(?:stand\s*by|standby)\s+(?:for\s+)?)?(?:(?:lx|lights?|lighting|sound|sq|lq|fly|deck)\s+)?"
+    rf"cue\s+(?:number\s+)?(?:\d+(?:\.\d+)?[a-z]?|(?:{NUMBER_WORDS})(?:[\s-]+(?:{NUMBER_WORDS}))?|[a-z])(?:\s*,?\s+go)?"
+    r"\s*(?=[,.;!?]|$)", re.IGNORECASE)
+#: "Stand by" opening what follows ("stand by, ... go"): the call to get ready for the instruction said next, no
+#: instruction of its own (said alone, it is left to the reading).
+STAND_BY: Final = re.compile(r"^\s*(?:stand\s*by|standby)\s*[,.;:!]+\s*(?=\S)", re.IGNORECASE)
+#: "... and announce when there", "let me know once you arrive": a request to report the arrival, which the
+#: robot's result reports; "there" is where the instruction before it ends, no place of its own.
+ARRIVAL_REPORT: Final = re.compile(
+    r"\s*[,;]?\s*(?:and\s+)?(?:then\s+)?(?:announce(?:\s+it)?|report(?:\s+back)?|tell\s+(?:me|us)|let\s+(?:me|us)\s+know|"
+    r"say\s+so|call\s+out|shout|beep|signal|ping\s+(?:me|us))\s+(?:when|once|as\s+soon\s+as)\s+"
+    r"(?:(?:you\s+)?(?:are|'re|get|have\s+got|arrive|reach)\s+)?(?:there|arrived|you\s+arrive)\b", re.IGNORECASE)
 #: (North American radio's "ten-four", "10-4" is "understood", as "roger" is.)
 RADIO_NOISE: Final = re.compile(r"(?:^|(?<=[,.;!?]))\s*(?:affirmative|roger(?:\s+that)?|copy(?:\s+that)?|wilco|that\s+is|i\.?e|"
                                 r"ten\s*-?\s*four|10\s*-\s*4|"
                                 r"over(?:\s+and\s+out)?|out)\s*(?=[,.;!?]|$)", re.IGNORECASE)
 #: A number started and said again whole ("four, four and a half metres", "twenty, twenty feet"): the
 #: first try is no amount of its own.
-#: (The restart may follow a pause or a trailing "and a": "eleven ... eleven feet", "seven and a ... seven and a
-#: half feet".)
+#: (The restart may follow a pause, a trailing "and a" or a "point" left unfinished: "eleven ... eleven feet",
+#: "seven and a ... seven and a half feet", "one point, one point five metres".)
 NUMBER_RESTART: Final = re.compile(
-    rf"\b(?P<num>\d+(?:\.\d+)?|a\s+hundred|one\s+hundred|(?:{NUMBER_WORDS})(?:\s+point(?:\s+(?:{NUMBER_WORDS}|zero|oh))+)?)(?:\s+and(?:\s+a)?(?=\s*(?:,|\.\.|…)))?"
+    rf"\b(?P<num>\d+(?:\.\d+)?|a\s+hundred|one\s+hundred|(?:{NUMBER_WORDS})(?:\s+point(?:\s+(?:{NUMBER_WORDS}|zero|oh))+)?)(?:\s+(?:and(?:\s+a)?|point)(?=\s*(?:,|\.\.|…)))?"
     r"(?:\s*(?:,|\.{2,}|…))*\s+(?=(?P=num)\b(?![/.]\d))", re.IGNORECASE)
 #: Words that name one of several alternatives a speaker may set against each other: sides, ways, compass
 #: points, units and numbers.
@@ -500,6 +516,7 @@ def plain_speech(prompt: str) -> str:
     text = STOP_AFTER_AMOUNT.sub(" ", text)
     text = RADIO_NOISE.sub(" ", RADIO_NO.sub(" no", FOREIGN_NO.sub(" no", RADIO_CALL.sub(" ", text))))
     text = FOREIGN_AMOUNT.sub(lambda m: f" {FOREIGN_AMOUNTS[' '.join(m.group(0).lower().split())]} ", text)
+    text = ARRIVAL_REPORT.sub("", STAND_BY.sub("", CUE_CALL.sub(" ", text)))
     text = _UNIT_THEN_EXACT.sub(r"\g<unit>", NUMBER_RESTART.sub("", text))
     text = FIRST_AFTER.sub(r"\g<b>, then \g<a>", text)
     text = REQUEST_FRAMES.sub(" ", PSEUDO_CLEFT.sub(" ", text))
