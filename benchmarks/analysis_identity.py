@@ -45,6 +45,7 @@ YAML_DIRS = (
     ROOT / "benchmarks" / "blind" / "maps-7" / "maps",
     ROOT / "benchmarks" / "blind" / "maps-8" / "maps",
     ROOT / "benchmarks" / "blind" / "maps-10" / "maps",
+    ROOT / "benchmarks" / "blind" / "maps-11" / "maps",
     ROOT.parent / "blind5-maps-dev",
 )
 BENCH_MAPS = ("env1", "env2")
